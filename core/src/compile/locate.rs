@@ -1,0 +1,122 @@
+//! The variable locator: resolves a textual path (`Tank.Level`, `Arr[1,2]`, `Timer.Q`,
+//! `Flags.3`) to a [`Slot`], case-insensitively, against the main program's variables and
+//! then the globals. Used by the simulator's `--set`, forcing and the variables table.
+
+use super::{Executable, Slot};
+use crate::semantic::types::Type;
+use crate::syntax::VarSection;
+
+/// One step of a path.
+enum Step<'a> {
+    Name(&'a str),
+    Bit(u32),
+    Index(Vec<i64>),
+}
+
+fn parse(path: &str) -> Option<Vec<Step<'_>>> {
+    let s = path.trim();
+    let mut steps = Vec::new();
+    let mut rest = s;
+    let mut first = true;
+    while !rest.is_empty() {
+        if let Some(r) = rest.strip_prefix('[') {
+            let close = r.find(']')?;
+            let idx: Option<Vec<i64>> =
+                r[..close].split(',').map(|t| t.trim().parse::<i64>().ok()).collect();
+            steps.push(Step::Index(idx?));
+            rest = &r[close + 1..];
+            continue;
+        }
+        let r = if first { rest } else { rest.strip_prefix('.')? };
+        first = false;
+        let end = r.find(['.', '[']).unwrap_or(r.len());
+        let word = r[..end].trim();
+        if word.is_empty() {
+            return None;
+        }
+        if word.bytes().all(|b| b.is_ascii_digit()) {
+            steps.push(Step::Bit(word.parse().ok()?));
+        } else {
+            steps.push(Step::Name(word));
+        }
+        rest = &r[end..];
+    }
+    Some(steps)
+}
+
+/// See [`Executable::locate`].
+pub(crate) fn locate(exe: &Executable, path: &str) -> Option<Slot> {
+    let steps = parse(path)?;
+    let mut it = steps.into_iter();
+    let Some(Step::Name(first)) = it.next() else {
+        return None;
+    };
+    let entry = exe
+        .vars
+        .iter()
+        .filter(|v| !v.global)
+        .chain(exe.vars.iter().filter(|v| v.global))
+        .find(|v| v.var.name.eq_ignore_ascii_case(first))?;
+    if entry.var.section == VarSection::InOut {
+        return None;
+    }
+    let mut slot = entry.slot;
+    for step in it {
+        if slot.bit.is_some() {
+            return None;
+        }
+        slot = match (step, slot.ty) {
+            (Step::Name(n), Type::Struct(s)) => {
+                let def = exe.type_table.structs.get(s as usize)?;
+                let i = def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(n))?;
+                let off = exe.lay.cached_struct(s)?.get(i)?;
+                Slot { addr: slot.addr + off, ty: def.fields[i].ty, bit: None }
+            }
+            (Step::Name(n), Type::Fb(q)) => {
+                let code = exe.pous.get(q as usize)?;
+                let i = code.vars.iter().position(|v| v.name.eq_ignore_ascii_case(n))?;
+                let v = &code.vars[i];
+                if v.section == VarSection::InOut {
+                    return None;
+                }
+                Slot { addr: slot.addr + code.offsets.get(i)?, ty: v.ty, bit: None }
+            }
+            (Step::Bit(n), Type::Elem(e)) if e.is_integral() && n < e.bits() => {
+                Slot { addr: slot.addr, ty: Type::BOOL, bit: Some((n, e)) }
+            }
+            (Step::Index(idx), Type::Array(a)) => {
+                let def = exe.type_table.arrays.get(a as usize)?;
+                if idx.len() != def.dims.len() {
+                    return None;
+                }
+                let esize = element_size(exe, def.element)?;
+                let mut flat: u64 = 0;
+                for (i, (lo, hi)) in idx.iter().zip(&def.dims) {
+                    if i < lo || i > hi {
+                        return None;
+                    }
+                    flat = flat * (hi - lo + 1) as u64 + (i - lo) as u64;
+                }
+                let addr = u64::from(slot.addr) + flat * u64::from(esize);
+                Slot { addr: u32::try_from(addr).ok()?, ty: def.element, bit: None }
+            }
+            _ => return None,
+        };
+    }
+    Some(slot)
+}
+
+/// Cells taken by a value of `ty`, from the layout already computed.
+pub(crate) fn element_size(exe: &Executable, ty: Type) -> Option<u32> {
+    Some(match ty {
+        Type::Elem(_) | Type::Enum(_) => 1,
+        Type::Str { wide, len } => crate::vm::memory::string_cells(len * if wide { 2 } else { 1 }),
+        Type::Array(a) => {
+            let def = exe.type_table.arrays.get(a as usize)?;
+            u32::try_from(def.len()).ok()? * element_size(exe, def.element)?
+        }
+        Type::Struct(s) => *exe.lay.cached_struct(s)?.last()?,
+        Type::Fb(q) => exe.pous.get(q as usize)?.size,
+        Type::Void => 0,
+    })
+}

@@ -1,0 +1,150 @@
+//! The table of problem codes. One row per code: the enum variant, the stable code that
+//! students search for, and a one-line explanation. `docs/problems.md` is generated from
+//! nothing but this table (see `Code::all`).
+//!
+//! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
+//! errors (the checker), E0300–E0349 problems with how a program is run, W0001– warnings.
+
+use serde::Serialize;
+
+macro_rules! problem_codes {
+    ($( $variant:ident = $code:literal : $title:literal, )*) => {
+        /// A stable problem code. `Display` prints the code (`E0042`).
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        #[non_exhaustive]
+        pub enum Code {
+            $(
+                #[doc = $title]
+                $variant,
+            )*
+        }
+
+        impl Code {
+            /// The code as students see it, e.g. `E0042`.
+            pub fn as_str(self) -> &'static str {
+                match self { $( Code::$variant => $code, )* }
+            }
+
+            /// A one-line explanation of the code.
+            pub fn title(self) -> &'static str {
+                match self { $( Code::$variant => $title, )* }
+            }
+
+            /// Every code, in table order.
+            pub fn all() -> &'static [Code] {
+                &[ $( Code::$variant, )* ]
+            }
+        }
+    };
+}
+
+problem_codes! {
+    // ---- lexical and syntax errors (parser): E0001–E0099 ----
+    UnexpectedCharacter = "E0001": "a character that cannot start any token",
+    UnterminatedComment = "E0002": "a comment that is never closed",
+    UnterminatedString = "E0003": "a string literal that is never closed",
+    InvalidNumber = "E0004": "a malformed numeric literal",
+    InvalidTimeLiteral = "E0005": "a malformed duration literal (T#…)",
+    UnexpectedToken = "E0006": "the parser expected something else here",
+    MissingEnd = "E0007": "a block is not closed by its END_ keyword",
+    InvalidEscape = "E0008": "an unknown `$` escape in a string literal",
+    InvalidDirectAddress = "E0009": "a malformed directly represented variable (%IX…)",
+    InvalidDateLiteral = "E0010": "a malformed date or time-of-day literal",
+    InvalidIdentifier = "E0011": "an identifier with a trailing or doubled underscore",
+    IntegerLiteralTooLarge = "E0012": "an integer literal too large for any integer type",
+    InvalidTypedLiteral = "E0013": "a type prefix that does not fit its literal",
+
+    // ---- names and declarations (checker): E0100–E0149 ----
+    UndeclaredName = "E0100": "a name that is not declared",
+    DuplicateDeclaration = "E0101": "a name declared twice in the same scope",
+    UnknownType = "E0102": "a type name that is not declared",
+    NotAVariable = "E0103": "a name used as a variable that is something else",
+    NoSuchMember = "E0104": "a struct or function block has no member of that name",
+    NoProgram = "E0105": "the source holds no PROGRAM to run",
+    UnknownProgram = "E0106": "the PROGRAM asked for is not in the source",
+    RecursiveCall = "E0107": "a POU calls itself, directly or indirectly",
+    RecursiveType = "E0108": "a type contains itself",
+    ExternalWithoutGlobal = "E0109": "VAR_EXTERNAL without a matching VAR_GLOBAL",
+    InvalidLocation = "E0110": "an AT location that does not fit the variable's type",
+    DuplicateEnumerator = "E0111": "an enumerator declared twice in one type",
+    SectionNotAllowed = "E0112": "a VAR section that this kind of POU cannot have",
+
+    // ---- types and expressions (checker): E0150–E0199 ----
+    TypeMismatch = "E0150": "a value of one type where another is needed",
+    NotAssignable = "E0151": "an assignment to something that cannot be written",
+    AssignToConstant = "E0152": "an assignment to a CONSTANT, an input of a FUNCTION or a system variable",
+    OperatorTypeMismatch = "E0153": "an operator applied to types it does not accept",
+    ConditionNotBool = "E0154": "a condition that is not BOOL",
+    NotAnArray = "E0155": "an index applied to something that is not an array",
+    WrongIndexCount = "E0156": "an array indexed with the wrong number of subscripts",
+    NotAStruct = "E0157": "a `.member` applied to something without members",
+    BitOutOfRange = "E0158": "a bit number beyond the width of the value",
+    NotConstant = "E0159": "a value that must be known before the program runs",
+    ConstantOutOfRange = "E0160": "a constant that does not fit its type",
+    ConstantIndexOutOfRange = "E0161": "a constant array index outside the declared bounds",
+    DivisionByZeroConstant = "E0162": "a division by a constant zero",
+    ZeroForStep = "E0163": "a FOR loop with a constant step of zero",
+    ForVariableNotInteger = "E0164": "a FOR control variable that is not an integer variable",
+    CaseLabelType = "E0165": "a CASE label of a type that does not match the selector",
+    DuplicateCaseLabel = "E0166": "a CASE label that overlaps an earlier one",
+    InvalidRange = "E0167": "a range whose lower limit is above its upper limit",
+    ExitOutsideLoop = "E0168": "EXIT or CONTINUE outside a loop",
+    SubrangeViolation = "E0169": "a constant outside the subrange of its variable",
+    InvalidArraySize = "E0170": "an array or string too large, or with bad bounds",
+    TooManyInitializers = "E0171": "more initial values than array elements",
+
+    // ---- calls (checker): E0200–E0249 ----
+    UnknownFunction = "E0200": "a call of something that is not a function or function block",
+    WrongArgumentCount = "E0201": "a call with too many or too few arguments",
+    NoSuchParameter = "E0202": "a call naming a parameter the callee does not have",
+    DuplicateArgument = "E0203": "a parameter given twice in one call",
+    MixedArguments = "E0204": "formal and informal arguments mixed in one call",
+    NotAnOutput = "E0205": "`=>` used with a parameter that is not an output",
+    InOutNotVariable = "E0206": "a VAR_IN_OUT argument that is not a variable",
+    MissingInOut = "E0207": "a VAR_IN_OUT parameter not given in a call",
+    FbCalledAsFunction = "E0208": "a function block instance used inside an expression",
+    FunctionBlockInFunction = "E0209": "a function block instance declared in a FUNCTION",
+    ProgramCalled = "E0210": "a PROGRAM called like a function block",
+    NoReturnValue = "E0211": "a FUNCTION without a result type used in an expression",
+
+    // ---- running: E0300–E0349 ----
+    UnknownSetVariable = "E0300": "`--set` names a variable the program does not have",
+    BadSetValue = "E0301": "`--set` gives a value that does not fit the variable",
+    ProgramTooLarge = "E0302": "the program needs more memory than the simulator allows",
+
+    // ---- warnings: W0001– ----
+    UnusedVariable = "W0001": "a variable that is declared but never used",
+    UnreachableCode = "W0002": "a statement that can never run",
+    ImplicitNarrowing = "W0003": "a value that may not fit where it is stored",
+    CaseWithoutMatch = "W0004": "a CASE label that can never match the selector's type",
+}
+
+impl std::fmt::Display for Code {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl Serialize for Code {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::HashSet;
+
+    #[test]
+    fn codes_are_unique_and_well_formed() {
+        let mut seen = HashSet::new();
+        for code in Code::all() {
+            let s = code.as_str();
+            assert!(seen.insert(s), "duplicate code {s}");
+            assert_eq!(s.len(), 5, "{s}");
+            assert!(s.starts_with('E') || s.starts_with('W'), "{s}");
+            assert!(!code.title().is_empty());
+        }
+    }
+}

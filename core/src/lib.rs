@@ -1,0 +1,18 @@
+//! `plc-core`: the engines of the PLC trainer.
+//!
+//! The pipeline (see `core/README.md` for the map):
+//! source text → [`syntax`] (tokens, AST, syntax diagnostics) → [`semantic`] (names, types,
+//! checked IR) → [`compile`] (bytecode, memory layout, debug map) → [`vm`] (executes one
+//! scan) → [`sim`] (scan cycle, virtual clock, inputs, forcing, breakpoints, trace).
+//! The core never reads a wall clock, never touches the DOM and never panics on user input.
+
+#![deny(missing_docs)]
+#![deny(clippy::unwrap_used)]
+
+pub mod compile;
+pub mod diagnostics;
+pub mod run;
+pub mod semantic;
+pub mod sim;
+pub mod syntax;
+pub mod vm;

@@ -1,0 +1,178 @@
+//! One-shot runs: compile a source text, run N scans, and report in the JSON shape that
+//! `plc run --json` prints. The CLI, the conformance suite and the wasm tests all go
+//! through here, so they cannot disagree.
+
+use serde::Serialize;
+use serde_json::Value as Json;
+
+use crate::diagnostics::{Code, Diagnostic, LineIndex, Severity};
+use crate::semantic;
+use crate::sim::{ScanOutcome, SimError, Simulator};
+use crate::syntax::PouKind;
+
+/// What to run and how.
+#[derive(Debug, Clone)]
+pub struct RunOptions {
+    /// The PROGRAM to run; `None` runs the only (or first) one.
+    pub program: Option<String>,
+    /// How many scans to run.
+    pub cycles: u64,
+    /// Virtual milliseconds added to the clock after each scan.
+    pub cycle_ms: u64,
+    /// `VAR=VALUE` settings, values written as IEC literals. An input (VAR_INPUT or `%I`)
+    /// is held at the value on every scan; any other variable is set before the first scan.
+    pub set: Vec<(String, String)>,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        RunOptions { program: None, cycles: 1, cycle_ms: 10, set: Vec::new() }
+    }
+}
+
+/// The overall outcome of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum RunStatus {
+    /// Every scan ran.
+    Ok,
+    /// A runtime fault stopped the PLC.
+    Fault,
+    /// The program did not compile, or the options were wrong.
+    Error,
+}
+
+/// Where and why the PLC stopped.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FaultReport {
+    /// What went wrong, for a student.
+    pub message: String,
+    /// 1-based source line of the faulting statement.
+    pub line: u32,
+    /// 1-based column.
+    pub column: u32,
+}
+
+/// One diagnostic as reported in JSON.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DiagnosticReport {
+    /// `"error"` or `"warning"`.
+    pub severity: crate::diagnostics::Severity,
+    /// The stable code (`E0042`).
+    pub code: String,
+    /// The message.
+    pub message: String,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column.
+    pub column: u32,
+}
+
+/// The result of [`run_source`], serialising to exactly the `plc run --json` object:
+/// `{"status","cycles","vars","fault","diagnostics"}`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunReport {
+    /// ok, fault or error.
+    pub status: RunStatus,
+    /// Scans completed (a faulting scan is not counted).
+    pub cycles: u64,
+    /// Every variable of the program instance by declared name.
+    pub vars: serde_json::Map<String, Json>,
+    /// The fault, when status is fault.
+    pub fault: Option<FaultReport>,
+    /// Diagnostics from compiling (warnings included), and option errors.
+    pub diagnostics: Vec<DiagnosticReport>,
+}
+
+impl RunReport {
+    /// The report as a JSON value.
+    pub fn to_json(&self) -> Json {
+        serde_json::to_value(self).unwrap_or(Json::Null)
+    }
+}
+
+fn diagnostic_report(index: &LineIndex<'_>, d: &Diagnostic) -> DiagnosticReport {
+    let loc = index.location(d.span.start);
+    DiagnosticReport {
+        severity: d.severity,
+        code: d.code.as_str().to_string(),
+        message: d.message.clone(),
+        line: loc.line,
+        column: loc.column,
+    }
+}
+
+fn option_error(code: Code, message: String) -> DiagnosticReport {
+    DiagnosticReport { severity: Severity::Error, code: code.as_str().to_string(), message, line: 0, column: 0 }
+}
+
+/// Compiles and runs `source` as `plc run` does.
+pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
+    let index = LineIndex::new(source);
+    let analysis = semantic::analyze(source);
+    let mut report = RunReport {
+        status: RunStatus::Error,
+        cycles: 0,
+        vars: serde_json::Map::new(),
+        fault: None,
+        diagnostics: analysis.diagnostics.iter().map(|d| diagnostic_report(&index, d)).collect(),
+    };
+    let Some(program) = analysis.program else { return report };
+    let main = match &options.program {
+        Some(name) => match program.find_pou(name).filter(|&p| program.pou(p).kind == PouKind::Program) {
+            Some(p) => p,
+            None => {
+                let msg = format!("there is no PROGRAM `{name}` in the source");
+                report.diagnostics.push(option_error(Code::UnknownProgram, msg));
+                return report;
+            }
+        },
+        None => match program.programs().find(|&p| !program.pou(p).library) {
+            Some(p) => p,
+            None => {
+                let msg = "the source holds no PROGRAM to run".to_string();
+                report.diagnostics.push(option_error(Code::NoProgram, msg));
+                return report;
+            }
+        },
+    };
+    let mut sim = match Simulator::new(program, main) {
+        Ok(sim) => sim,
+        Err(e) => {
+            report.diagnostics.push(option_error(Code::ProgramTooLarge, e.to_string()));
+            return report;
+        }
+    };
+    sim.set_cycle_ns((options.cycle_ms as i64).saturating_mul(1_000_000));
+    for (name, value) in &options.set {
+        let is_input = sim
+            .executable()
+            .main_vars()
+            .iter()
+            .any(|v| v.var.name.eq_ignore_ascii_case(name) && v.var.is_input());
+        let result = if is_input { sim.hold(name, value) } else { sim.write(name, value) };
+        if let Err(e) = result {
+            let code = match e {
+                SimError::UnknownVariable(_) => Code::UnknownSetVariable,
+                _ => Code::BadSetValue,
+            };
+            report.diagnostics.push(option_error(code, format!("--set {name}={value}: {e}")));
+        }
+    }
+    if report.diagnostics.iter().any(|d| d.severity == Severity::Error) {
+        report.vars = sim.vars_json();
+        return report;
+    }
+    let outcome = sim.run_scans(options.cycles);
+    report.cycles = sim.scan_count();
+    report.vars = sim.vars_json();
+    match outcome {
+        ScanOutcome::Fault(info) => {
+            let loc = index.location(info.span.start);
+            report.status = RunStatus::Fault;
+            report.fault = Some(FaultReport { message: info.fault.to_string(), line: loc.line, column: loc.column });
+        }
+        ScanOutcome::Completed | ScanOutcome::Breakpoint(_) => report.status = RunStatus::Ok,
+    }
+    report
+}

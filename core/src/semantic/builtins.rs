@@ -1,0 +1,497 @@
+//! The standard functions: signatures, generic typing and conversion names.
+//! Function blocks of the standard library are ST code in `prelude.rs`, not here.
+
+use super::check::Checker;
+use super::expr::Typed;
+use super::ir::{Builtin, Expr, ExprKind};
+use super::types::{Elem, Type};
+use crate::diagnostics::{Code, Span};
+use crate::syntax::{self as ast};
+
+/// Names of built-in functions other than conversions, with their parameter names in
+/// order (for formal calls); `None` marks variadic functions.
+const FIXED: &[(&str, &[&str])] = &[
+    ("ABS", &["IN"]),
+    ("SQRT", &["IN"]),
+    ("LN", &["IN"]),
+    ("LOG", &["IN"]),
+    ("EXP", &["IN"]),
+    ("SIN", &["IN"]),
+    ("COS", &["IN"]),
+    ("TAN", &["IN"]),
+    ("ASIN", &["IN"]),
+    ("ACOS", &["IN"]),
+    ("ATAN", &["IN"]),
+    ("EXPT", &["IN1", "IN2"]),
+    ("SHL", &["IN", "N"]),
+    ("SHR", &["IN", "N"]),
+    ("ROL", &["IN", "N"]),
+    ("ROR", &["IN", "N"]),
+    ("SEL", &["G", "IN0", "IN1"]),
+    ("LIMIT", &["MN", "IN", "MX"]),
+    ("LEN", &["IN"]),
+    ("LEFT", &["IN", "L"]),
+    ("RIGHT", &["IN", "L"]),
+    ("MID", &["IN", "L", "P"]),
+    ("INSERT", &["IN1", "IN2", "P"]),
+    ("DELETE", &["IN", "L", "P"]),
+    ("REPLACE", &["IN1", "IN2", "L", "P"]),
+    ("FIND", &["IN1", "IN2"]),
+    ("TRUNC", &["IN"]),
+    ("MOVE", &["IN"]),
+    ("NOT", &["IN"]),
+    ("SUB", &["IN1", "IN2"]),
+    ("DIV", &["IN1", "IN2"]),
+    ("MOD", &["IN1", "IN2"]),
+    ("GT", &["IN1", "IN2"]),
+    ("GE", &["IN1", "IN2"]),
+    ("EQ", &["IN1", "IN2"]),
+    ("NE", &["IN1", "IN2"]),
+    ("LT", &["IN1", "IN2"]),
+    ("LE", &["IN1", "IN2"]),
+];
+
+/// Variadic functions (at least two inputs, `IN1`, `IN2`, … or `K`, `IN0`, … for MUX).
+const VARIADIC: &[&str] = &["MAX", "MIN", "MUX", "CONCAT", "ADD", "MUL", "AND", "OR", "XOR"];
+
+/// A `FROM_TO_TO` conversion name, split.
+fn conversion(key: &str) -> Option<(Option<Type>, ConvTarget)> {
+    let (from, to) = match key.strip_prefix("TO_") {
+        Some(to) => (None, to),
+        None => {
+            let i = key.find("_TO_")?;
+            let from = &key[..i];
+            (Some(type_by_name(from)?), &key[i + 4..])
+        }
+    };
+    let target = match to {
+        "BCD" => ConvTarget::Bcd,
+        _ => ConvTarget::Type(type_by_name(to)?),
+    };
+    if from.is_none() && target == ConvTarget::Bcd {
+        return None;
+    }
+    Some((from, target))
+}
+
+fn type_by_name(name: &str) -> Option<Type> {
+    match name {
+        "STRING" => Some(Type::Str { wide: false, len: 80 }),
+        "WSTRING" => Some(Type::Str { wide: true, len: 80 }),
+        "BCD" => Some(Type::Elem(Elem::LWord)),
+        _ => Elem::from_name(name).map(Type::Elem),
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum ConvTarget {
+    Type(Type),
+    Bcd,
+}
+
+/// True when `key` (upper case) names a built-in function.
+pub fn is_builtin(key: &str) -> bool {
+    FIXED.iter().any(|(n, _)| *n == key) || VARIADIC.contains(&key) || conversion(key).is_some()
+}
+
+impl<'a> Checker<'a> {
+    /// Orders the arguments of a built-in call positionally.
+    fn builtin_args<'e>(&mut self, name: &ast::Ident, args: &'e [ast::Arg], span: Span) -> Option<Vec<&'e ast::Expr>> {
+        let key = name.key();
+        let params: Vec<String> = match FIXED.iter().find(|(n, _)| *n == key) {
+            Some((_, p)) => p.iter().map(|s| s.to_string()).collect(),
+            None if key == "MUX" => std::iter::once("K".to_string()).chain((0..args.len()).map(|i| format!("IN{i}"))).collect(),
+            None if VARIADIC.contains(&key.as_str()) => (1..=args.len()).map(|i| format!("IN{i}")).collect(),
+            None => vec!["IN".to_string()],
+        };
+        let mut out: Vec<Option<&ast::Expr>> = vec![None; params.len().max(args.len())];
+        for (k, arg) in args.iter().enumerate() {
+            match arg {
+                ast::Arg::Positional(e) => out[k] = Some(e),
+                ast::Arg::Input { name: p, value } => match params.iter().position(|n| n.eq_ignore_ascii_case(&p.name)) {
+                    Some(i) => out[i] = Some(value),
+                    None => {
+                        self.error(Code::NoSuchParameter, p.span, format!("`{}` has no input `{}`", name.name, p.name));
+                        return None;
+                    }
+                },
+                ast::Arg::Output { name: p, .. } => {
+                    self.error(Code::NotAnOutput, p.span, format!("`{}` has no outputs; use its result", name.name));
+                    return None;
+                }
+            }
+        }
+        let given: Vec<&ast::Expr> = out.iter().flatten().copied().collect();
+        let variadic = VARIADIC.contains(&key.as_str());
+        let wrong = if variadic { given.len() < 2 } else { given.len() != params.len() || out.len() != params.len() };
+        if wrong {
+            let want = if variadic { "at least 2".to_string() } else { params.len().to_string() };
+            let msg = format!("`{}` takes {want} argument(s), {} given", name.name, given.len());
+            self.error(Code::WrongArgumentCount, span, msg);
+            return None;
+        }
+        Some(given)
+    }
+
+    fn builtin_expr(&self, func: Builtin, args: Vec<Expr>, ty: Type, span: Span) -> Expr {
+        Expr { kind: ExprKind::Builtin { func, args }, ty, span }
+    }
+
+    /// The smallest type all `items` convert to, with each converted.
+    fn unify(&mut self, items: Vec<Typed>, span: Span, what: &str, expected: Option<Type>) -> Option<(Type, Vec<Expr>)> {
+        // Untyped literals only: take the type the context expects when every one fits.
+        if let Some(Type::Elem(want)) = expected.filter(|_| items.iter().all(|t| t.flexible)) {
+            let fits = |t: &Typed| match (&t.e.kind, t.e.ty.elem()) {
+                (ExprKind::Const(bits), Some(el)) if el.is_integral() && want.is_integral() => {
+                    let (lo, hi) = want.int_range();
+                    let v = crate::vm::arith::to_i128(el, *bits);
+                    v >= lo && v <= hi
+                }
+                (ExprKind::Const(_), Some(el)) => el.is_num() && want.is_real(),
+                _ => false,
+            };
+            if items.iter().all(fits) {
+                let ty = Type::Elem(want);
+                let exprs = items.into_iter().map(|t| self.convert(t.e, ty)).collect();
+                return Some((ty, exprs));
+            }
+        }
+        let first = items.first()?.e.ty;
+        let ty = match first {
+            Type::Str { wide, .. } => {
+                let mut len = 1;
+                for t in &items {
+                    match t.e.ty {
+                        Type::Str { wide: w, len: l } if w == wide => len = len.max(l),
+                        other => {
+                            let msg = format!("{what}: all inputs must be strings, found {}", self.tname(other));
+                            self.error(Code::TypeMismatch, t.e.span, msg);
+                            return None;
+                        }
+                    }
+                }
+                return Some((Type::Str { wide, len }, items.into_iter().map(|t| t.e).collect()));
+            }
+            Type::Elem(_) => {
+                let mut acc = items[0].clone();
+                for t in &items[1..] {
+                    let el = match (acc.e.ty, t.e.ty) {
+                        (Type::Elem(a), Type::Elem(b)) if a == b => Some(a),
+                        (Type::Elem(_), Type::Elem(_)) => self.common_of(&acc, t),
+                        _ => None,
+                    };
+                    let Some(el) = el else {
+                        let msg = format!("{what}: inputs of types {} and {} do not mix", self.tname(acc.e.ty), self.tname(t.e.ty));
+                        self.error(Code::TypeMismatch, t.e.span, msg);
+                        return None;
+                    };
+                    acc = Typed { e: self.convert(acc.e, Type::Elem(el)), flexible: acc.flexible && t.flexible };
+                }
+                acc.e.ty
+            }
+            other => {
+                if items.iter().any(|t| t.e.ty != other) {
+                    self.error(Code::TypeMismatch, span, format!("{what}: all inputs must have the same type"));
+                    return None;
+                }
+                other
+            }
+        };
+        let exprs = items.into_iter().map(|t| self.convert(t.e, ty)).collect();
+        Some((ty, exprs))
+    }
+
+    fn common_of(&self, a: &Typed, b: &Typed) -> Option<Elem> {
+        // Reuse the operator rules through a tiny shim: pick the first widening target.
+        let (ae, be) = (a.e.ty.elem()?, b.e.ty.elem()?);
+        let order = [
+            Elem::SInt, Elem::USInt, Elem::Byte, Elem::Int, Elem::UInt, Elem::Word, Elem::DInt, Elem::UDInt,
+            Elem::DWord, Elem::LInt, Elem::ULInt, Elem::LWord, Elem::Real, Elem::LReal, Elem::Time,
+        ];
+        if a.flexible && !b.flexible && be.is_num() {
+            return Some(be);
+        }
+        if b.flexible && !a.flexible && ae.is_num() {
+            return Some(ae);
+        }
+        order.into_iter().find(|&t| super::expr::can_widen(ae, t) && super::expr::can_widen(be, t))
+    }
+
+    fn want(&mut self, e: &ast::Expr, ty: Type) -> Option<Expr> {
+        let t = self.expr(e, Some(ty))?;
+        self.coerce(t, ty, e.span)
+    }
+
+    fn want_int(&mut self, e: &ast::Expr) -> Option<Expr> {
+        let t = self.expr(e, None)?;
+        if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
+            let msg = format!("expected an integer, found {}", self.tname(t.e.ty));
+            self.error(Code::TypeMismatch, e.span, msg);
+            return None;
+        }
+        Some(self.convert(t.e, Type::Elem(Elem::LInt)))
+    }
+
+    fn want_string(&mut self, e: &ast::Expr) -> Option<Expr> {
+        let t = self.expr(e, None)?;
+        if !t.e.ty.is_string() {
+            let msg = format!("expected a STRING, found {}", self.tname(t.e.ty));
+            self.error(Code::TypeMismatch, e.span, msg);
+            return None;
+        }
+        Some(t.e)
+    }
+
+    fn want_real(&mut self, e: &ast::Expr) -> Option<Expr> {
+        let t = self.expr(e, None)?;
+        let target = match t.e.ty.elem() {
+            Some(el) if el.is_real() => return Some(t.e),
+            Some(el) if el.is_int() => Type::Elem(if el.bits() <= 16 { Elem::Real } else { Elem::LReal }),
+            _ => {
+                let msg = format!("expected a number, found {}", self.tname(t.e.ty));
+                self.error(Code::TypeMismatch, e.span, msg);
+                return None;
+            }
+        };
+        Some(self.convert(t.e, target))
+    }
+
+    fn binary_ast(op: ast::BinaryOp, a: &ast::Expr, b: &ast::Expr, span: Span) -> ast::Expr {
+        ast::Expr { kind: ast::ExprKind::Binary(op, Box::new(a.clone()), Box::new(b.clone())), span }
+    }
+
+    /// Checks a call of a built-in function.
+    pub fn builtin_call(&mut self, name: &ast::Ident, args: &[ast::Arg], span: Span, expected: Option<Type>) -> Option<Expr> {
+        let key = name.key();
+        let a = self.builtin_args(name, args, span)?;
+        use ast::BinaryOp as B;
+        let fold_ops = |c: &mut Self, op: B| {
+            let mut acc = a[0].clone();
+            for next in &a[1..] {
+                acc = Self::binary_ast(op, &acc, next, span);
+            }
+            c.expr(&acc, None).map(|t| t.e)
+        };
+        let simple = match key.as_str() {
+            "ADD" => return fold_ops(self, B::Add),
+            "MUL" => return fold_ops(self, B::Mul),
+            "AND" => return fold_ops(self, B::And),
+            "OR" => return fold_ops(self, B::Or),
+            "XOR" => return fold_ops(self, B::Xor),
+            "SUB" => Some(B::Sub),
+            "DIV" => Some(B::Div),
+            "MOD" => Some(B::Mod),
+            "GT" => Some(B::Gt),
+            "GE" => Some(B::Ge),
+            "EQ" => Some(B::Eq),
+            "NE" => Some(B::Ne),
+            "LT" => Some(B::Lt),
+            "LE" => Some(B::Le),
+            _ => None,
+        };
+        if let Some(op) = simple {
+            return self.expr(&Self::binary_ast(op, a[0], a[1], span), None).map(|t| t.e);
+        }
+        match key.as_str() {
+            "MOVE" => return self.expr(a[0], None).map(|t| t.e),
+            "NOT" => {
+                let e = ast::Expr { kind: ast::ExprKind::Unary(ast::UnaryOp::Not, Box::new(a[0].clone())), span };
+                return self.expr(&e, None).map(|t| t.e);
+            }
+            _ => {}
+        }
+        let func = match key.as_str() {
+            "ABS" => {
+                let t = self.expr(a[0], None)?;
+                if !t.e.ty.elem().is_some_and(|e| e.is_num()) {
+                    let msg = format!("ABS needs a number, not {}", self.tname(t.e.ty));
+                    self.error(Code::TypeMismatch, a[0].span, msg);
+                    return None;
+                }
+                let ty = t.e.ty;
+                return Some(self.builtin_expr(Builtin::Abs, vec![t.e], ty, span));
+            }
+            "SQRT" => Builtin::Sqrt,
+            "LN" => Builtin::Ln,
+            "LOG" => Builtin::Log,
+            "EXP" => Builtin::Exp,
+            "SIN" => Builtin::Sin,
+            "COS" => Builtin::Cos,
+            "TAN" => Builtin::Tan,
+            "ASIN" => Builtin::Asin,
+            "ACOS" => Builtin::Acos,
+            "ATAN" => Builtin::Atan,
+            "EXPT" => {
+                let base = self.want_real(a[0])?;
+                let exp = self.want_real(a[1])?;
+                let exp = self.convert(exp, Type::Elem(Elem::LReal));
+                let ty = base.ty;
+                return Some(self.builtin_expr(Builtin::Expt, vec![base, exp], ty, span));
+            }
+            "SHL" | "SHR" | "ROL" | "ROR" => {
+                let t = self.expr(a[0], None)?;
+                if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
+                    let msg = format!("{key} needs a bit string or an integer, not {}", self.tname(t.e.ty));
+                    self.error(Code::TypeMismatch, a[0].span, msg);
+                    return None;
+                }
+                let n = self.want_int(a[1])?;
+                let f = match key.as_str() {
+                    "SHL" => Builtin::Shl,
+                    "SHR" => Builtin::Shr,
+                    "ROL" => Builtin::Rol,
+                    _ => Builtin::Ror,
+                };
+                let ty = t.e.ty;
+                return Some(self.builtin_expr(f, vec![t.e, n], ty, span));
+            }
+            "SEL" => {
+                let g = self.want(a[0], Type::BOOL)?;
+                let x = self.expr(a[1], None)?;
+                let y = self.expr(a[2], Some(x.e.ty))?;
+                let (ty, mut rest) = self.unify(vec![x, y], span, "SEL", expected)?;
+                rest.insert(0, g);
+                return Some(self.builtin_expr(Builtin::Sel, rest, ty, span));
+            }
+            "MAX" | "MIN" | "LIMIT" => {
+                let items = a.iter().map(|e| self.expr(e, None)).collect::<Option<Vec<_>>>()?;
+                let (ty, args) = self.unify(items, span, &key, expected)?;
+                let f = match key.as_str() {
+                    "MAX" => Builtin::Max,
+                    "MIN" => Builtin::Min,
+                    _ => Builtin::Limit,
+                };
+                return Some(self.builtin_expr(f, args, ty, span));
+            }
+            "MUX" => {
+                let k = self.want_int(a[0])?;
+                let items = a[1..].iter().map(|e| self.expr(e, None)).collect::<Option<Vec<_>>>()?;
+                let (ty, mut args) = self.unify(items, span, "MUX", expected)?;
+                args.insert(0, k);
+                return Some(self.builtin_expr(Builtin::Mux, args, ty, span));
+            }
+            "LEN" => {
+                let s = self.want_string(a[0])?;
+                return Some(self.builtin_expr(Builtin::Len, vec![s], Type::Elem(Elem::Int), span));
+            }
+            "LEFT" | "RIGHT" => {
+                let s = self.want_string(a[0])?;
+                let n = self.want_int(a[1])?;
+                let ty = s.ty;
+                let f = if key == "LEFT" { Builtin::Left } else { Builtin::Right };
+                return Some(self.builtin_expr(f, vec![s, n], ty, span));
+            }
+            "MID" | "DELETE" => {
+                let s = self.want_string(a[0])?;
+                let l = self.want_int(a[1])?;
+                let p = self.want_int(a[2])?;
+                let ty = s.ty;
+                let f = if key == "MID" { Builtin::Mid } else { Builtin::Delete };
+                return Some(self.builtin_expr(f, vec![s, l, p], ty, span));
+            }
+            "INSERT" | "REPLACE" => {
+                let s1 = self.want_string(a[0])?;
+                let s2 = self.want_string(a[1])?;
+                let ty = sum_string(s1.ty, s2.ty);
+                let mut args = vec![s1, s2];
+                for e in &a[2..] {
+                    args.push(self.want_int(e)?);
+                }
+                let f = if key == "INSERT" { Builtin::Insert } else { Builtin::Replace };
+                return Some(self.builtin_expr(f, args, ty, span));
+            }
+            "FIND" => {
+                let s1 = self.want_string(a[0])?;
+                let s2 = self.want_string(a[1])?;
+                return Some(self.builtin_expr(Builtin::Find, vec![s1, s2], Type::Elem(Elem::Int), span));
+            }
+            "CONCAT" => {
+                let items = a.iter().map(|e| self.want_string(e)).collect::<Option<Vec<_>>>()?;
+                let mut ty = items[0].ty;
+                for i in &items[1..] {
+                    if !matches!((ty, i.ty), (Type::Str { wide: x, .. }, Type::Str { wide: y, .. }) if x == y) {
+                        self.error(Code::TypeMismatch, i.span, "CONCAT cannot mix STRING and WSTRING");
+                        return None;
+                    }
+                    ty = sum_string(ty, i.ty);
+                }
+                return Some(self.builtin_expr(Builtin::Concat, items, ty, span));
+            }
+            "TRUNC" => {
+                let x = self.want_real(a[0])?;
+                return Some(Expr { kind: ExprKind::Trunc(Box::new(x)), ty: Type::Elem(Elem::DInt), span });
+            }
+            _ => return self.conversion_call(name, a[0], span),
+        };
+        let x = self.want_real(a[0])?;
+        let ty = x.ty;
+        Some(self.builtin_expr(func, vec![x], ty, span))
+    }
+
+    fn conversion_call(&mut self, name: &ast::Ident, arg: &ast::Expr, span: Span) -> Option<Expr> {
+        let key = name.key();
+        let (from, to) = conversion(&key)?;
+        let t = self.expr(arg, from)?;
+        let value = match from {
+            Some(Type::Elem(Elem::LWord)) if key.starts_with("BCD_TO_") => {
+                if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
+                    let msg = format!("{} needs a bit string holding BCD digits, not {}", name.name, self.tname(t.e.ty));
+                    self.error(Code::TypeMismatch, arg.span, msg);
+                    return None;
+                }
+                t.e
+            }
+            Some(f) => self.coerce(t, f, arg.span)?,
+            None => t.e,
+        };
+        let from_ty = value.ty;
+        if key.starts_with("BCD_TO_") {
+            let ConvTarget::Type(to) = to else { return None };
+            return Some(self.builtin_expr(Builtin::BcdToInt, vec![value], to, span));
+        }
+        match to {
+            ConvTarget::Bcd => {
+                let Some(el) = from_ty.elem().filter(|e| e.is_integral()) else {
+                    self.error(Code::TypeMismatch, arg.span, "BCD conversion needs an integer");
+                    return None;
+                };
+                let out = match el.bits() {
+                    8 => Elem::Byte,
+                    16 => Elem::Word,
+                    32 => Elem::DWord,
+                    _ => Elem::LWord,
+                };
+                Some(self.builtin_expr(Builtin::IntToBcd, vec![value], Type::Elem(out), span))
+            }
+            ConvTarget::Type(to @ Type::Str { .. }) => match from_ty {
+                Type::Str { .. } => Some(value),
+                Type::Elem(_) | Type::Enum(_) => Some(self.builtin_expr(Builtin::ToString, vec![value], to, span)),
+                other => {
+                    let msg = format!("{} cannot convert a value of type {}", name.name, self.tname(other));
+                    self.error(Code::TypeMismatch, arg.span, msg);
+                    None
+                }
+            },
+            ConvTarget::Type(to) => match from_ty {
+                Type::Str { .. } => Some(self.builtin_expr(Builtin::FromString, vec![value], to, span)),
+                Type::Elem(_) => Some(self.convert(value, to)),
+                Type::Enum(_) if to.elem().is_some_and(|e| e.is_integral()) => {
+                    let as_int = Expr { kind: value.kind, ty: Type::Elem(Elem::LInt), span: value.span };
+                    Some(self.convert(as_int, to))
+                }
+                other => {
+                    let msg = format!("{} cannot convert a value of type {}", name.name, self.tname(other));
+                    self.error(Code::TypeMismatch, arg.span, msg);
+                    None
+                }
+            },
+        }
+    }
+}
+
+fn sum_string(a: Type, b: Type) -> Type {
+    match (a, b) {
+        (Type::Str { wide, len: x }, Type::Str { len: y, .. }) => Type::Str { wide, len: (x + y).min(65_535) },
+        _ => a,
+    }
+}

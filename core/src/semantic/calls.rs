@@ -1,0 +1,234 @@
+//! Calls of functions and function block instances: binding formal and informal arguments.
+
+use super::check::Checker;
+use super::ir::{CallArg, Expr, ExprKind, StmtKind};
+use super::types::{PouId, Type};
+use crate::diagnostics::{Code, Span};
+use crate::syntax::{self as ast, PouKind, VarSection};
+
+/// What a callee expression names.
+enum Callee {
+    Instance(super::ir::Place, PouId),
+    Function(PouId),
+    Builtin,
+}
+
+impl<'a> Checker<'a> {
+    fn callee(&mut self, callee: &ast::Expr, in_expression: bool) -> Option<Callee> {
+        if let ast::ExprKind::Name(id) = &callee.kind {
+            let key = id.key();
+            let is_var = self.pous.get(self.body.pou as usize).is_some_and(|p| p.find_var(&key).is_some())
+                || self.global_index.contains_key(&key);
+            if !is_var {
+                if let Some(&pou) = self.pou_index.get(&key) {
+                    return match self.pous[pou as usize].kind {
+                        PouKind::Function => Some(Callee::Function(pou)),
+                        PouKind::FunctionBlock => {
+                            let msg = format!(
+                                "`{}` is a function block type: declare an instance (`t : {} ;`) and call that",
+                                id.name, id.name
+                            );
+                            self.error(Code::UnknownFunction, callee.span, msg);
+                            None
+                        }
+                        PouKind::Program => {
+                            let msg = format!("`{}` is a PROGRAM; programs are run by the PLC, not called", id.name);
+                            self.error(Code::ProgramCalled, callee.span, msg);
+                            None
+                        }
+                    };
+                }
+                if super::builtins::is_builtin(&key) {
+                    return Some(Callee::Builtin);
+                }
+                self.error(Code::UnknownFunction, callee.span, format!("`{}` is not a function or a function block instance", id.name));
+                return None;
+            }
+        }
+        let (place, ty) = self.place(callee, false)?;
+        match ty {
+            Type::Fb(fb) => {
+                if in_expression {
+                    let msg = "a function block call is a statement of its own; call it, then read its outputs (e.g. `t.Q`)";
+                    self.error(Code::FbCalledAsFunction, callee.span, msg);
+                    return None;
+                }
+                Some(Callee::Instance(place, fb))
+            }
+            other => {
+                let msg = format!("a value of type {} cannot be called", self.tname(other));
+                self.error(Code::UnknownFunction, callee.span, msg);
+                None
+            }
+        }
+    }
+
+    /// A call used inside an expression (a FUNCTION or a built-in).
+    ///
+    /// `expected` is the type the context wants; untyped literal arguments of generic
+    /// functions (`i := MAX(3, 7)`) take it.
+    pub fn call_expr(&mut self, callee: &ast::Expr, args: &[ast::Arg], span: Span, expected: Option<Type>) -> Option<Expr> {
+        match self.callee(callee, true)? {
+            Callee::Instance(..) => None,
+            Callee::Builtin => {
+                let ast::ExprKind::Name(id) = &callee.kind else { return None };
+                self.builtin_call(id, args, span, expected)
+            }
+            Callee::Function(pou) => {
+                self.calls[self.body.pou as usize].insert(pou);
+                let args = self.bind_args(pou, args, span)?;
+                let ty = self.pous[pou as usize].result_type();
+                Some(Expr { kind: ExprKind::Call { pou, args }, ty, span })
+            }
+        }
+    }
+
+    /// A call used as a statement.
+    pub fn call_stmt(&mut self, callee: &ast::Expr, args: &[ast::Arg], span: Span) -> Option<StmtKind> {
+        match self.callee(callee, false)? {
+            Callee::Instance(instance, fb) => {
+                if let Some(calls) = self.calls.get_mut(self.body.pou as usize) {
+                    calls.insert(fb);
+                }
+                let args = self.bind_args(fb, args, span)?;
+                Some(StmtKind::CallFb { instance, fb, args })
+            }
+            Callee::Builtin => {
+                let ast::ExprKind::Name(id) = &callee.kind else { return None };
+                Some(StmtKind::Eval(self.builtin_call(id, args, span, None)?))
+            }
+            Callee::Function(pou) => {
+                self.calls[self.body.pou as usize].insert(pou);
+                let args = self.bind_args(pou, args, span)?;
+                let ty = self.pous[pou as usize].result_type();
+                Some(StmtKind::Eval(Expr { kind: ExprKind::Call { pou, args }, ty, span }))
+            }
+        }
+    }
+
+    /// Binds call arguments to the parameters of `pou`.
+    fn bind_args(&mut self, pou: PouId, args: &[ast::Arg], span: Span) -> Option<Vec<CallArg>> {
+        let callee = self.pous[pou as usize].clone();
+        let params: Vec<u32> = (0..callee.vars.len() as u32)
+            .filter(|&i| Some(i) != callee.result)
+            .filter(|&i| matches!(callee.vars[i as usize].section, VarSection::Input | VarSection::InOut))
+            .collect();
+        let positional = args.iter().any(|a| matches!(a, ast::Arg::Positional(_)));
+        let named = args.iter().any(|a| !matches!(a, ast::Arg::Positional(_)));
+        if positional && named {
+            self.error(Code::MixedArguments, span, "write every argument as `name := value`, or none of them");
+            return None;
+        }
+        let mut out = Vec::new();
+        let mut given: Vec<u32> = Vec::new();
+        let mut ok = true;
+        let mut next_positional = 0usize;
+        for arg in args {
+            let (index, value_expr, output) = match arg {
+                ast::Arg::Positional(e) => {
+                    let Some(&i) = params.get(next_positional) else {
+                        let msg = format!("`{}` takes {} argument(s), more were given", callee.name, params.len());
+                        self.error(Code::WrongArgumentCount, e.span, msg);
+                        return None;
+                    };
+                    next_positional += 1;
+                    (i, e, None)
+                }
+                ast::Arg::Input { name, value } => {
+                    let Some(i) = callee.find_var(&name.name).filter(|i| params.contains(i)) else {
+                        let msg = format!("`{}` has no input `{}`", callee.name, name.name);
+                        self.error(Code::NoSuchParameter, name.span, msg);
+                        ok = false;
+                        continue;
+                    };
+                    (i, value, None)
+                }
+                ast::Arg::Output { name, target, negated } => {
+                    let found = callee.find_var(&name.name).filter(|&i| Some(i) != callee.result);
+                    let Some(i) = found else {
+                        let msg = format!("`{}` has no output `{}`", callee.name, name.name);
+                        self.error(Code::NoSuchParameter, name.span, msg);
+                        ok = false;
+                        continue;
+                    };
+                    if callee.vars[i as usize].section != VarSection::Output {
+                        let msg = format!("`{}` is not an output of `{}`; use `:=` for inputs", name.name, callee.name);
+                        self.error(Code::NotAnOutput, name.span, msg);
+                        ok = false;
+                        continue;
+                    }
+                    (i, target, Some(*negated))
+                }
+            };
+            if given.contains(&index) {
+                let msg = format!("`{}` is given twice", callee.vars[index as usize].name);
+                self.error(Code::DuplicateArgument, value_expr.span, msg);
+                ok = false;
+                continue;
+            }
+            given.push(index);
+            let param = &callee.vars[index as usize];
+            if let Some(negated) = output {
+                let Some((place, ty)) = self.place(value_expr, true) else {
+                    ok = false;
+                    continue;
+                };
+                if ty != param.ty || (negated && !ty.is_bool()) {
+                    let msg = format!(
+                        "output `{}` is {} but `{}` is {}",
+                        param.name,
+                        self.tname(param.ty),
+                        "the target",
+                        self.tname(ty)
+                    );
+                    self.error(Code::TypeMismatch, value_expr.span, msg);
+                    ok = false;
+                    continue;
+                }
+                out.push(CallArg::Out(index, place, negated));
+            } else if param.section == VarSection::InOut {
+                let is_place = matches!(
+                    value_expr.kind,
+                    ast::ExprKind::Name(_) | ast::ExprKind::Member(..) | ast::ExprKind::Index(..) | ast::ExprKind::Paren(_)
+                );
+                if !is_place {
+                    let msg = format!("`{}` is VAR_IN_OUT: pass a variable, not an expression", param.name);
+                    self.error(Code::InOutNotVariable, value_expr.span, msg);
+                    ok = false;
+                    continue;
+                }
+                let Some((place, ty)) = self.place(value_expr, true) else {
+                    ok = false;
+                    continue;
+                };
+                if ty != param.ty && !matches!((ty, param.ty), (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b) {
+                    let msg = format!("VAR_IN_OUT `{}` needs a variable of type {}, not {}", param.name, self.tname(param.ty), self.tname(ty));
+                    self.error(Code::TypeMismatch, value_expr.span, msg);
+                    ok = false;
+                    continue;
+                }
+                out.push(CallArg::InOut(index, place));
+            } else {
+                let pty = param.ty;
+                let Some(t) = self.expr(value_expr, Some(pty)) else {
+                    ok = false;
+                    continue;
+                };
+                let Some(v) = self.coerce(t, pty, value_expr.span) else {
+                    ok = false;
+                    continue;
+                };
+                out.push(CallArg::In(index, v));
+            }
+        }
+        for &i in &params {
+            let p = &callee.vars[i as usize];
+            if p.section == VarSection::InOut && !given.contains(&i) {
+                let msg = format!("VAR_IN_OUT `{}` of `{}` must be given in every call", p.name, callee.name);
+                self.error(Code::MissingInOut, span, msg);
+                ok = false;
+            }
+        }
+        ok.then_some(out)
+    }
+}

@@ -1,0 +1,315 @@
+//! The checker's state and its driver: collect declarations, resolve types, declare
+//! variables, check bodies, then reject recursion.
+
+use std::collections::{HashMap, HashSet};
+
+use super::ir::{self, Pou, Program, Var};
+use super::types::{PouId, Type, TypeTable};
+use super::prelude;
+use crate::diagnostics::{Code, Diagnostic, Span};
+use crate::syntax::{self as ast, Item, PouKind, VarSection};
+
+/// A type declared in a TYPE block, resolved on first use.
+pub(super) enum TypeSlot<'a> {
+    /// Not looked at yet.
+    Pending(&'a ast::TypeDef),
+    /// Being resolved (seeing it again means the type contains itself).
+    Resolving(Span),
+    /// Resolved.
+    Done(Resolved),
+    /// Resolution failed (already reported).
+    Failed,
+}
+
+/// A resolved type with what a declaration of it inherits.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Resolved {
+    /// The type.
+    pub ty: Type,
+    /// Its subrange, if any.
+    pub range: Option<(i64, i64)>,
+    /// The initial value declared on the type, if any.
+    pub init: Option<ir::InitValue>,
+}
+
+/// Per-body state while checking statements.
+#[derive(Default)]
+pub(super) struct BodyState {
+    /// The POU whose body is being checked.
+    pub pou: PouId,
+    /// How many loops enclose the current statement.
+    pub loop_depth: u32,
+    /// True when reading/writing from a breakpoint condition (no writes allowed).
+    pub read_only: bool,
+}
+
+/// The checker's state for one program.
+pub(super) struct Checker<'a> {
+    pub types: TypeTable,
+    pub type_slots: HashMap<String, TypeSlot<'a>>,
+    pub type_order: Vec<String>,
+    pub pous: Vec<Pou>,
+    pub pou_index: HashMap<String, PouId>,
+    pub pou_asts: Vec<&'a ast::Pou>,
+    pub globals: Vec<Var>,
+    pub global_index: HashMap<String, u32>,
+    pub diags: Vec<Diagnostic>,
+    pub body: BodyState,
+    pub calls: Vec<HashSet<PouId>>,
+    pub library_pous: usize,
+}
+
+impl<'a> Checker<'a> {
+    pub fn new() -> Self {
+        Checker {
+            types: TypeTable::default(),
+            type_slots: HashMap::new(),
+            type_order: Vec::new(),
+            pous: Vec::new(),
+            pou_index: HashMap::new(),
+            pou_asts: Vec::new(),
+            globals: Vec::new(),
+            global_index: HashMap::new(),
+            diags: Vec::new(),
+            body: BodyState::default(),
+            calls: Vec::new(),
+            library_pous: 0,
+        }
+    }
+
+    /// Reports an error.
+    pub fn error(&mut self, code: Code, span: Span, message: impl Into<String>) {
+        self.diags.push(Diagnostic::error(code, span, message));
+    }
+
+    /// Reports a warning.
+    pub fn warning(&mut self, code: Code, span: Span, message: impl Into<String>) {
+        self.diags.push(Diagnostic::warning(code, span, message));
+    }
+
+    /// A type's name for messages.
+    pub fn tname(&self, ty: Type) -> String {
+        self.types.display(ty).to_string()
+    }
+
+    /// Registers the types and POUs of a file.
+    fn collect(&mut self, file: &'a ast::SourceFile, library: bool) {
+        for item in &file.items {
+            match item {
+                Item::Types(defs) => {
+                    for def in defs {
+                        let key = def.name.key();
+                        if self.type_slots.contains_key(&key) || ast_elem_name(&key) {
+                            self.error(
+                                Code::DuplicateDeclaration,
+                                def.name.span,
+                                format!("type `{}` is already declared", def.name.name),
+                            );
+                            continue;
+                        }
+                        self.type_order.push(key.clone());
+                        self.type_slots.insert(key, TypeSlot::Pending(def));
+                    }
+                }
+                Item::Pou(pou) => {
+                    let key = pou.name.key();
+                    if let Some(&other) = self.pou_index.get(&key) {
+                        let what = if self.pous[other as usize].library {
+                            "a standard library POU"
+                        } else {
+                            "already declared"
+                        };
+                        self.error(
+                            Code::DuplicateDeclaration,
+                            pou.name.span,
+                            format!("`{}` is {what}; choose another name", pou.name.name),
+                        );
+                        continue;
+                    }
+                    let id = self.pous.len() as PouId;
+                    self.pou_index.insert(key, id);
+                    self.types.pou_names.push(pou.name.name.clone());
+                    self.pou_asts.push(pou);
+                    self.calls.push(HashSet::new());
+                    self.pous.push(Pou {
+                        name: pou.name.name.clone(),
+                        kind: pou.kind,
+                        vars: Vec::new(),
+                        result: None,
+                        body: Vec::new(),
+                        library,
+                        span: pou.span,
+                    });
+                }
+                Item::Globals(_) => {}
+            }
+        }
+    }
+
+    /// Declares the top-level VAR_GLOBAL blocks of a file.
+    fn declare_file_globals(&mut self, file: &'a ast::SourceFile) {
+        for item in &file.items {
+            if let Item::Globals(block) = item {
+                self.declare_globals(block);
+            }
+        }
+    }
+
+    /// Declares a VAR_GLOBAL block (top-level or inside a PROGRAM).
+    pub fn declare_globals(&mut self, block: &ast::VarBlock) {
+        self.body.pou = PouId::MAX;
+        let mut vars = Vec::new();
+        self.declare_block(block, PouKind::Program, &mut vars);
+        for var in vars {
+            let key = var.name.to_ascii_uppercase();
+            if self.global_index.contains_key(&key) {
+                self.error(
+                    Code::DuplicateDeclaration,
+                    var.span,
+                    format!("global variable `{}` is already declared", var.name),
+                );
+                continue;
+            }
+            self.global_index.insert(key, self.globals.len() as u32);
+            self.globals.push(var);
+        }
+    }
+
+    fn finish(self) -> (Program, Vec<Diagnostic>) {
+        let program = Program {
+            types: self.types,
+            globals: self.globals,
+            pous: self.pous,
+            library_pous: self.library_pous,
+        };
+        (program, self.diags)
+    }
+
+    /// Reports calls that recurse (a POU reaching itself through the call graph).
+    fn check_recursion(&mut self) {
+        let n = self.pous.len();
+        for start in 0..n {
+            let mut seen = HashSet::new();
+            let mut stack: Vec<PouId> = self.calls[start].iter().copied().collect();
+            while let Some(p) = stack.pop() {
+                if p as usize == start {
+                    let span = self.pous[start].span;
+                    let name = self.pous[start].name.clone();
+                    self.error(
+                        Code::RecursiveCall,
+                        span,
+                        format!("`{name}` calls itself (directly or through other POUs); PLC programs cannot recurse"),
+                    );
+                    break;
+                }
+                if seen.insert(p) {
+                    stack.extend(self.calls[p as usize].iter().copied());
+                }
+            }
+        }
+    }
+}
+
+fn ast_elem_name(key: &str) -> bool {
+    super::types::Elem::from_name(key).is_some() || key == "STRING" || key == "WSTRING"
+}
+
+/// Checks a parsed user file together with the standard library prelude.
+pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Vec<Diagnostic>) {
+    let (lib, lib_diags) = crate::syntax::parse(prelude::SOURCE);
+    let mut checker = Checker::new();
+    checker.collect(&lib, true);
+    checker.library_pous = checker.pous.len();
+    checker.collect(file, false);
+    let order = checker.type_order.clone();
+    for key in &order {
+        checker.resolve_named_type(key);
+    }
+    checker.declare_file_globals(&lib);
+    checker.declare_file_globals(file);
+    // Program-level VAR_GLOBAL blocks first, so every POU sees them.
+    for i in 0..checker.pous.len() {
+        let pou = checker.pou_asts[i];
+        if pou.kind == PouKind::Program {
+            for block in pou.var_blocks.iter().filter(|b| b.section == VarSection::Global) {
+                checker.declare_globals(block);
+            }
+        }
+    }
+    // Functions and function blocks first: declarations of instances may initialise
+    // their members.
+    let n = checker.pous.len();
+    let (blocks, programs): (Vec<usize>, Vec<usize>) =
+        (0..n).partition(|&i| checker.pous[i].kind != PouKind::Program);
+    for i in blocks.into_iter().chain(programs) {
+        checker.declare_pou_vars(i as PouId);
+    }
+    for i in 0..checker.pous.len() {
+        checker.check_body(i as PouId);
+    }
+    checker.check_recursion();
+    let (program, mut diags) = checker.finish();
+    if !lib_diags.is_empty() {
+        diags.extend(lib_diags.into_iter().map(|mut d| {
+            d.message = format!("standard library: {}", d.message);
+            d.span = Span::default();
+            d
+        }));
+    }
+    (Some(program), diags)
+}
+
+impl<'a> Checker<'a> {
+    /// Rebuilds a checker around an already checked program (for conditions and values).
+    fn around(program: &Program) -> Checker<'static> {
+        let mut c = Checker::new();
+        c.types = program.types.clone();
+        c.pous = program.pous.clone();
+        c.globals = program.globals.clone();
+        c.library_pous = program.library_pous;
+        for (i, p) in program.pous.iter().enumerate() {
+            c.pou_index.insert(p.name.to_ascii_uppercase(), i as PouId);
+            c.calls.push(HashSet::new());
+        }
+        for (i, g) in program.globals.iter().enumerate() {
+            c.global_index.insert(g.name.to_ascii_uppercase(), i as u32);
+        }
+        c
+    }
+
+    /// Checks the body of POU `id`.
+    fn check_body(&mut self, id: PouId) {
+        let ast = self.pou_asts[id as usize];
+        self.body = BodyState { pou: id, loop_depth: 0, read_only: false };
+        let body = self.stmts(&ast.body);
+        self.pous[id as usize].body = body;
+    }
+}
+
+/// Checks one expression in the scope of `pou` of an already checked program.
+pub(super) fn check_expression_in(
+    program: &Program,
+    pou: PouId,
+    expr: &ast::Expr,
+    expected: Option<Type>,
+    read_only: bool,
+) -> Result<ir::Expr, Vec<Diagnostic>> {
+    let mut c = Checker::around(program);
+    c.body = BodyState { pou, loop_depth: 0, read_only };
+    let globals_before = c.globals.len();
+    let result = c.expr(expr, expected).and_then(|t| match expected {
+        Some(ty) => c.coerce(t, ty, expr.span),
+        None => Some(t.e),
+    });
+    if c.globals.len() != globals_before {
+        c.error(
+            Code::UndeclaredName,
+            expr.span,
+            "a direct address that the program does not use cannot be watched",
+        );
+    }
+    if crate::diagnostics::has_errors(&c.diags) {
+        return Err(c.diags);
+    }
+    result.ok_or(c.diags)
+}

@@ -1,0 +1,509 @@
+//! Declarations: TYPE definitions, variable blocks and initial values.
+
+use super::check::{Checker, Resolved, TypeSlot};
+use super::consts;
+use super::ir::{InitValue, Var};
+use super::types::{ArrayDef, Elem, EnumDef, FieldDef, PouId, StructDef, Type};
+use crate::diagnostics::Code;
+use crate::syntax::{self as ast, AddressSize, PouKind, TypeRef, VarSection};
+
+/// Longest STRING the checker accepts.
+const MAX_STRING_LEN: i64 = 65_535;
+/// Most array elements the checker accepts in one array.
+const MAX_ARRAY_ELEMENTS: u64 = 1 << 22;
+
+impl<'a> Checker<'a> {
+    /// Resolves the TYPE declared under `key` (upper case), once.
+    pub fn resolve_named_type(&mut self, key: &str) -> Option<Resolved> {
+        let def = match self.type_slots.get(key) {
+            Some(TypeSlot::Done(r)) => return Some(r.clone()),
+            Some(TypeSlot::Failed) | None => return None,
+            Some(TypeSlot::Resolving(span)) => {
+                let span = *span;
+                self.error(Code::RecursiveType, span, format!("type `{key}` contains itself"));
+                self.type_slots.insert(key.to_string(), TypeSlot::Failed);
+                return None;
+            }
+            Some(TypeSlot::Pending(def)) => *def,
+        };
+        self.type_slots.insert(key.to_string(), TypeSlot::Resolving(def.name.span));
+        let resolved = self.resolve_type(&def.ty, &def.name.name).and_then(|mut r| {
+            if let Some(init) = &def.init {
+                r.init = Some(self.init_value(init, r.ty, r.range)?);
+            }
+            Some(r)
+        });
+        if matches!(self.type_slots.get(key), Some(TypeSlot::Failed)) {
+            return None;
+        }
+        let slot = match &resolved {
+            Some(r) => TypeSlot::Done(r.clone()),
+            None => TypeSlot::Failed,
+        };
+        self.type_slots.insert(key.to_string(), slot);
+        resolved
+    }
+
+    /// Resolves a type reference. `owner` names the declaration (for inline enums).
+    pub fn resolve_type(&mut self, tr: &TypeRef, owner: &str) -> Option<Resolved> {
+        let plain = |ty| Some(Resolved { ty, range: None, init: None });
+        match tr {
+            TypeRef::Named(id) => {
+                let key = id.key();
+                if let Some(e) = Elem::from_name(&key) {
+                    return plain(Type::Elem(e));
+                }
+                match key.as_str() {
+                    "STRING" => return plain(Type::Str { wide: false, len: 80 }),
+                    "WSTRING" => return plain(Type::Str { wide: true, len: 80 }),
+                    _ => {}
+                }
+                if self.type_slots.contains_key(&key) {
+                    return self.resolve_named_type(&key);
+                }
+                if let Some(&pou) = self.pou_index.get(&key) {
+                    if self.pous[pou as usize].kind == PouKind::FunctionBlock {
+                        return plain(Type::Fb(pou));
+                    }
+                    self.error(
+                        Code::UnknownType,
+                        id.span,
+                        format!("`{}` is a {}, not a type", id.name, kind_name(self.pous[pou as usize].kind)),
+                    );
+                    return None;
+                }
+                self.error(Code::UnknownType, id.span, format!("unknown type `{}`", id.name));
+                None
+            }
+            TypeRef::String { wide, length, span } => {
+                let len = match length {
+                    Some(e) => self.const_int(e)?,
+                    None => 80,
+                };
+                if !(1..=MAX_STRING_LEN).contains(&len) {
+                    self.error(
+                        Code::InvalidArraySize,
+                        *span,
+                        format!("a string length must be between 1 and {MAX_STRING_LEN}, not {len}"),
+                    );
+                    return None;
+                }
+                plain(Type::Str { wide: *wide, len: len as u32 })
+            }
+            TypeRef::Array { ranges, element, span } => {
+                let mut dims = Vec::new();
+                for (lo, hi) in ranges {
+                    let (l, h) = (self.const_int(lo)?, self.const_int(hi)?);
+                    if l > h {
+                        self.error(
+                            Code::InvalidRange,
+                            lo.span.to(hi.span),
+                            format!("array bounds {l}..{h}: the lower bound is above the upper bound"),
+                        );
+                        return None;
+                    }
+                    dims.push((l, h));
+                }
+                let elem = self.resolve_type(element, owner)?;
+                let def = ArrayDef {
+                    dims,
+                    element: elem.ty,
+                    element_range: elem.range,
+                    element_init: elem.init,
+                };
+                let total = def.dims.iter().try_fold(1u64, |acc, (l, h)| {
+                    acc.checked_mul((h - l + 1) as u64)
+                });
+                if total.is_none_or(|t| t > MAX_ARRAY_ELEMENTS) {
+                    self.error(
+                        Code::InvalidArraySize,
+                        *span,
+                        format!("arrays may hold at most {MAX_ARRAY_ELEMENTS} elements"),
+                    );
+                    return None;
+                }
+                plain(self.types.array(def))
+            }
+            TypeRef::Subrange { base, low, high, span } => {
+                let base_ty = Elem::from_name(&base.key()).filter(|e| e.is_int());
+                let Some(elem) = base_ty else {
+                    self.error(
+                        Code::TypeMismatch,
+                        base.span,
+                        format!("a subrange needs an integer base type, not `{}`", base.name),
+                    );
+                    return None;
+                };
+                let (l, h) = (self.const_int(low)?, self.const_int(high)?);
+                let (min, max) = elem.int_range();
+                if l > h || (l as i128) < min || (h as i128) > max {
+                    self.error(
+                        Code::InvalidRange,
+                        *span,
+                        format!("subrange {l}..{h} is empty or does not fit {}", elem.name()),
+                    );
+                    return None;
+                }
+                Some(Resolved {
+                    ty: Type::Elem(elem),
+                    range: Some((l, h)),
+                    init: Some(InitValue::Scalar(crate::vm::arith::norm(elem, l as i128))),
+                })
+            }
+            TypeRef::Enum { values, span: _ } => {
+                let mut def = EnumDef { name: owner.to_string(), values: Vec::new() };
+                let mut next = 0i64;
+                for (name, value) in values {
+                    if let Some(v) = value {
+                        next = self.const_int(v)?;
+                    }
+                    if def.values.iter().any(|(n, _)| n.eq_ignore_ascii_case(&name.name)) {
+                        self.error(
+                            Code::DuplicateEnumerator,
+                            name.span,
+                            format!("`{}` appears twice in this enumeration", name.name),
+                        );
+                        continue;
+                    }
+                    def.values.push((name.name.clone(), next));
+                    next = next.wrapping_add(1);
+                }
+                let first = def.values.first().map_or(0, |(_, v)| *v);
+                self.types.enums.push(def);
+                let id = self.types.enums.len() as u32 - 1;
+                Some(Resolved {
+                    ty: Type::Enum(id),
+                    range: None,
+                    init: Some(InitValue::Scalar(first as u64)),
+                })
+            }
+            TypeRef::Struct { fields, span: _ } => {
+                let mut def = StructDef { name: owner.to_string(), fields: Vec::new() };
+                for decl in fields {
+                    let Some(r) = self.resolve_type(&decl.ty, owner) else { continue };
+                    if let Type::Fb(_) = r.ty {
+                        // FB instances inside structs are allowed (CODESYS does too).
+                    }
+                    let init = match &decl.init {
+                        Some(i) => self.init_value(i, r.ty, r.range),
+                        None => r.init.clone(),
+                    };
+                    for name in &decl.names {
+                        if def.fields.iter().any(|f| f.name.eq_ignore_ascii_case(&name.name)) {
+                            self.error(
+                                Code::DuplicateDeclaration,
+                                name.span,
+                                format!("field `{}` is declared twice", name.name),
+                            );
+                            continue;
+                        }
+                        def.fields.push(FieldDef {
+                            name: name.name.clone(),
+                            ty: r.ty,
+                            init: init.clone(),
+                            range: r.range,
+                        });
+                    }
+                }
+                self.types.structs.push(def);
+                plain(Type::Struct(self.types.structs.len() as u32 - 1))
+            }
+        }
+    }
+
+    /// Evaluates a constant integer expression (array bounds, string lengths, CASE labels).
+    pub fn const_int(&mut self, e: &ast::Expr) -> Option<i64> {
+        let typed = self.expr(e, None)?;
+        let value = consts::int_value(&typed.e);
+        if value.is_none() {
+            self.error(
+                Code::NotConstant,
+                e.span,
+                "this must be a constant integer (a literal or a CONSTANT variable)",
+            );
+        }
+        value
+    }
+
+    /// Resolves an initializer for a value of type `ty`.
+    pub fn init_value(
+        &mut self,
+        init: &ast::Initializer,
+        ty: Type,
+        range: Option<(i64, i64)>,
+    ) -> Option<InitValue> {
+        match (init, ty) {
+            (ast::Initializer::Expr(e), _) => {
+                let typed = self.expr(e, Some(ty))?;
+                let value = self.coerce(typed, ty, e.span)?;
+                let Some(v) = consts::to_init_value(&value) else {
+                    self.error(Code::NotConstant, e.span, "an initial value must be a constant");
+                    return None;
+                };
+                if let (Some((lo, hi)), InitValue::Scalar(bits), Type::Elem(el)) = (range, &v, ty) {
+                    let n = crate::vm::arith::to_i128(el, *bits);
+                    if n < lo as i128 || n > hi as i128 {
+                        self.error(
+                            Code::SubrangeViolation,
+                            e.span,
+                            format!("initial value {n} is outside the subrange {lo}..{hi}"),
+                        );
+                    }
+                }
+                Some(v)
+            }
+            (ast::Initializer::Array { elements, span }, Type::Array(id)) => {
+                let def = self.types.arrays[id as usize].clone();
+                let mut out = Vec::new();
+                for el in elements {
+                    match el {
+                        ast::ArrayInitElement::Single(i) => {
+                            out.push(self.init_value(i, def.element, def.element_range)?)
+                        }
+                        ast::ArrayInitElement::Repeat { count, value, span } => {
+                            let n = self.const_int(count)?;
+                            if n < 0 || n as u64 > def.len() {
+                                self.error(
+                                    Code::TooManyInitializers,
+                                    *span,
+                                    format!("repeat count {n} does not fit an array of {} elements", def.len()),
+                                );
+                                return None;
+                            }
+                            let v = match value {
+                                Some(v) => self.init_value(v, def.element, def.element_range)?,
+                                None => consts::default_value(&self.types, &self.pous, def.element),
+                            };
+                            out.extend(std::iter::repeat_n(v, n as usize));
+                        }
+                    }
+                    if out.len() as u64 > def.len() {
+                        self.error(
+                            Code::TooManyInitializers,
+                            *span,
+                            format!("{} initial values for an array of {} elements", out.len(), def.len()),
+                        );
+                        return None;
+                    }
+                }
+                Some(InitValue::Array(out))
+            }
+            (ast::Initializer::Struct { fields, span: _ }, Type::Struct(id)) => {
+                let def = self.types.structs[id as usize].clone();
+                let mut out = vec![None; def.fields.len()];
+                for (name, value) in fields {
+                    let Some(i) = def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(&name.name))
+                    else {
+                        self.error(
+                            Code::NoSuchMember,
+                            name.span,
+                            format!("`{}` has no field `{}`", def.name, name.name),
+                        );
+                        continue;
+                    };
+                    let f = &def.fields[i];
+                    out[i] = Some(self.init_value(value, f.ty, f.range)?);
+                }
+                Some(InitValue::Struct(out))
+            }
+            (ast::Initializer::Struct { fields, span: _ }, Type::Fb(pou)) => {
+                // `tmr : TON := (PT := T#1s);`
+                let mut out = vec![None; self.pous[pou as usize].vars.len()];
+                for (name, value) in fields {
+                    let Some(i) = self.pous[pou as usize].find_var(&name.name) else {
+                        let fb = self.pous[pou as usize].name.clone();
+                        self.error(Code::NoSuchMember, name.span, format!("`{fb}` has no member `{}`", name.name));
+                        continue;
+                    };
+                    let (vty, vrange) = {
+                        let v = &self.pous[pou as usize].vars[i as usize];
+                        (v.ty, v.range)
+                    };
+                    out[i as usize] = Some(self.init_value(value, vty, vrange)?);
+                }
+                Some(InitValue::Struct(out))
+            }
+            (other, _) => {
+                let what = match other {
+                    ast::Initializer::Array { .. } => "an array initializer `[…]`",
+                    _ => "a structure initializer `(…)`",
+                };
+                self.error(
+                    Code::TypeMismatch,
+                    other.span(),
+                    format!("{what} cannot initialise a value of type {}", self.tname(ty)),
+                );
+                None
+            }
+        }
+    }
+
+    /// Declares the variables of one VAR block into `out`.
+    pub fn declare_block(&mut self, block: &ast::VarBlock, kind: PouKind, out: &mut Vec<Var>) {
+        for decl in &block.decls {
+            let owner = decl.names.first().map_or("", |n| n.name.as_str()).to_string();
+            let Some(r) = self.resolve_type(&decl.ty, &owner) else { continue };
+            if kind == PouKind::Function && matches!(r.ty, Type::Fb(_)) {
+                self.error(
+                    Code::FunctionBlockInFunction,
+                    decl.ty.span(),
+                    "a FUNCTION cannot hold function block instances (it keeps no state between calls); use a FUNCTION_BLOCK",
+                );
+                continue;
+            }
+            if block.section == VarSection::External {
+                for name in &decl.names {
+                    self.check_external(name, r.ty);
+                }
+            }
+            let init = match &decl.init {
+                Some(i) => self.init_value(i, r.ty, r.range),
+                None => r.init.clone(),
+            };
+            if let Some(loc) = &decl.location {
+                self.check_location(loc, r.ty);
+            }
+            // `AT %QW4 : WORD;` declares a variable known by its address.
+            let unnamed = decl.location.as_ref().filter(|_| decl.names.is_empty()).map(|loc| ast::Ident {
+                name: super::expr::normalize_address(loc),
+                span: loc.span,
+            });
+            for name in decl.names.iter().chain(unnamed.as_ref()) {
+                if out.iter().any(|v| v.name.eq_ignore_ascii_case(&name.name)) {
+                    self.error(
+                        Code::DuplicateDeclaration,
+                        name.span,
+                        format!("`{}` is already declared in this POU", name.name),
+                    );
+                    continue;
+                }
+                out.push(Var {
+                    name: name.name.clone(),
+                    ty: r.ty,
+                    section: block.section,
+                    retain: block.retain,
+                    constant: block.constant,
+                    location: decl.location.clone(),
+                    init: init.clone(),
+                    range: r.range,
+                    comment: decl.comment.clone(),
+                    span: name.span,
+                });
+            }
+        }
+    }
+
+    fn check_external(&mut self, name: &ast::Ident, ty: Type) {
+        match self.global_index.get(&name.key()) {
+            None => self.error(
+                Code::ExternalWithoutGlobal,
+                name.span,
+                format!("VAR_EXTERNAL `{}` has no matching VAR_GLOBAL", name.name),
+            ),
+            Some(&g) if self.globals[g as usize].ty != ty => {
+                let want = self.tname(self.globals[g as usize].ty);
+                self.error(
+                    Code::ExternalWithoutGlobal,
+                    name.span,
+                    format!("VAR_EXTERNAL `{}` must have the type of its VAR_GLOBAL, {want}", name.name),
+                );
+            }
+            Some(_) => {}
+        }
+    }
+
+    fn check_location(&mut self, loc: &ast::DirectAddress, ty: Type) {
+        // An array at an address (`Outs AT %QW6 : ARRAY[0..9] OF INT`) occupies consecutive
+        // locations of its element's size.
+        let ty = match ty {
+            Type::Array(id) => self.types.arrays[id as usize].element,
+            other => other,
+        };
+        let Type::Elem(e) = ty else {
+            self.error(
+                Code::InvalidLocation,
+                loc.span,
+                format!("{} can only hold an elementary value, not {}", loc.text, self.tname(ty)),
+            );
+            return;
+        };
+        let fits = match loc.size {
+            AddressSize::Bit => e == Elem::Bool,
+            AddressSize::Byte => e.bits() == 8,
+            AddressSize::Word => e.bits() == 16,
+            AddressSize::DWord => e.bits() == 32,
+            AddressSize::LWord => e.bits() == 64,
+        };
+        if !fits {
+            self.error(
+                Code::InvalidLocation,
+                loc.span,
+                format!("{} does not fit a variable of type {}", loc.text, e.name()),
+            );
+        }
+    }
+
+    /// Declares the variables of POU `id` (and a FUNCTION's result variable).
+    pub fn declare_pou_vars(&mut self, id: PouId) {
+        let ast = self.pou_asts[id as usize];
+        let kind = ast.kind;
+        let mut vars = Vec::new();
+        // Constants declared in earlier blocks may size later arrays.
+        self.body.pou = id;
+        for block in &ast.var_blocks {
+            if block.section == VarSection::Global {
+                if kind != PouKind::Program {
+                    self.error(
+                        Code::SectionNotAllowed,
+                        block.span,
+                        "VAR_GLOBAL is only allowed at top level or in a PROGRAM",
+                    );
+                }
+                continue;
+            }
+            if kind == PouKind::Function && block.section == VarSection::External {
+                // Allowed: functions may read globals.
+            }
+            self.declare_block(block, kind, &mut vars);
+            self.pous[id as usize].vars = vars.clone();
+        }
+        let mut result = None;
+        if kind == PouKind::Function {
+            if let Some(rt) = &ast.return_type {
+                if let Some(r) = self.resolve_type(rt, &ast.name.name) {
+                    if vars.iter().any(|v: &Var| v.name.eq_ignore_ascii_case(&ast.name.name)) {
+                        self.error(
+                            Code::DuplicateDeclaration,
+                            ast.name.span,
+                            "a variable cannot have the name of its FUNCTION (that name is the result)",
+                        );
+                    }
+                    result = Some(vars.len() as u32);
+                    vars.push(Var {
+                        name: ast.name.name.clone(),
+                        ty: r.ty,
+                        section: VarSection::Output,
+                        retain: false,
+                        constant: false,
+                        location: None,
+                        init: r.init,
+                        range: r.range,
+                        comment: None,
+                        span: rt.span(),
+                    });
+                }
+            }
+        }
+        let pou = &mut self.pous[id as usize];
+        pou.vars = vars;
+        pou.result = result;
+    }
+}
+
+fn kind_name(kind: PouKind) -> &'static str {
+    match kind {
+        PouKind::Program => "PROGRAM",
+        PouKind::Function => "FUNCTION",
+        PouKind::FunctionBlock => "FUNCTION_BLOCK",
+    }
+}

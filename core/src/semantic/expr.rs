@@ -1,0 +1,910 @@
+//! Expressions: names and places, literals, operators, implicit conversions, folding.
+
+use super::check::Checker;
+use super::ir::{BinOp, Expr, ExprKind, InitValue, Place, SysVar, UnOp, Var};
+use super::types::{Elem, Type};
+use crate::diagnostics::{Code, Span};
+use crate::syntax::{self as ast, AddressArea, AddressSize, LiteralValue, VarSection};
+use crate::vm::arith;
+
+/// A checked expression, and whether it is an untyped literal whose type may still adapt
+/// to its context (`x + 1` with `x : INT` makes the `1` an INT).
+#[derive(Debug, Clone)]
+pub(super) struct Typed {
+    pub e: Expr,
+    pub flexible: bool,
+}
+
+impl Typed {
+    fn fixed(e: Expr) -> Self {
+        Typed { e, flexible: false }
+    }
+}
+
+/// What a name in a body refers to.
+enum NameRef {
+    Var { place: Place, var: Var },
+    Enumerator(Type, i64),
+    Sys(SysVar),
+    Pou,
+}
+
+/// The candidate types for implicit widening, smallest first.
+const WIDENING_ORDER: [Elem; 14] = [
+    Elem::SInt,
+    Elem::USInt,
+    Elem::Byte,
+    Elem::Int,
+    Elem::UInt,
+    Elem::Word,
+    Elem::DInt,
+    Elem::UDInt,
+    Elem::DWord,
+    Elem::LInt,
+    Elem::ULInt,
+    Elem::LWord,
+    Elem::Real,
+    Elem::LReal,
+];
+
+/// True when a value of `from` converts to `to` implicitly without loss (or, for integers
+/// into REAL, the way CODESYS allows).
+pub(super) fn can_widen(from: Elem, to: Elem) -> bool {
+    if from == to {
+        return true;
+    }
+    let (fb, tb) = (from.bits(), to.bits());
+    match (from, to) {
+        _ if from.is_signed_int() && to.is_signed_int() => tb > fb,
+        _ if from.is_unsigned_int() && to.is_unsigned_int() => tb > fb,
+        _ if from.is_unsigned_int() && to.is_signed_int() => tb > fb,
+        _ if from.is_bitstring() && to.is_bitstring() => tb > fb,
+        _ if from.is_bitstring() && to.is_unsigned_int() => tb >= fb,
+        _ if from.is_bitstring() && to.is_signed_int() => tb > fb,
+        _ if from.is_int() && to.is_bitstring() => tb >= fb,
+        _ if from.is_int() && to.is_real() => true,
+        (Elem::Real, Elem::LReal) => true,
+        _ => false,
+    }
+}
+
+fn smallest_int_type(v: i128) -> Option<Elem> {
+    [Elem::DInt, Elem::LInt, Elem::ULInt].into_iter().find(|e| {
+        let (lo, hi) = e.int_range();
+        v >= lo && v <= hi
+    })
+}
+
+fn fits(elem: Elem, v: i128) -> bool {
+    let (lo, hi) = elem.int_range();
+    v >= lo && v <= hi
+}
+
+fn map_binop(op: ast::BinaryOp) -> BinOp {
+    use ast::BinaryOp as A;
+    match op {
+        A::Or => BinOp::Or,
+        A::OrElse => BinOp::OrElse,
+        A::Xor => BinOp::Xor,
+        A::And => BinOp::And,
+        A::AndThen => BinOp::AndThen,
+        A::Eq => BinOp::Eq,
+        A::Ne => BinOp::Ne,
+        A::Lt => BinOp::Lt,
+        A::Le => BinOp::Le,
+        A::Gt => BinOp::Gt,
+        A::Ge => BinOp::Ge,
+        A::Add => BinOp::Add,
+        A::Sub => BinOp::Sub,
+        A::Mul => BinOp::Mul,
+        A::Div => BinOp::Div,
+        A::Mod => BinOp::Mod,
+        A::Pow => BinOp::Pow,
+    }
+}
+
+/// The operator as written, for messages.
+pub(super) fn op_text(op: BinOp) -> &'static str {
+    match op {
+        BinOp::Add => "+",
+        BinOp::Sub => "-",
+        BinOp::Mul => "*",
+        BinOp::Div => "/",
+        BinOp::Mod => "MOD",
+        BinOp::Pow => "**",
+        BinOp::And => "AND",
+        BinOp::Or => "OR",
+        BinOp::Xor => "XOR",
+        BinOp::AndThen => "AND_THEN",
+        BinOp::OrElse => "OR_ELSE",
+        BinOp::Eq => "=",
+        BinOp::Ne => "<>",
+        BinOp::Lt => "<",
+        BinOp::Le => "<=",
+        BinOp::Gt => ">",
+        BinOp::Ge => ">=",
+    }
+}
+
+fn is_comparison(op: BinOp) -> bool {
+    matches!(op, BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge)
+}
+
+/// Normalises a direct address text: upper case, with the `X` of bit addresses written.
+pub(super) fn normalize_address(a: &ast::DirectAddress) -> String {
+    let area = match a.area {
+        AddressArea::Input => 'I',
+        AddressArea::Output => 'Q',
+        AddressArea::Memory => 'M',
+    };
+    let size = match a.size {
+        AddressSize::Bit => 'X',
+        AddressSize::Byte => 'B',
+        AddressSize::Word => 'W',
+        AddressSize::DWord => 'D',
+        AddressSize::LWord => 'L',
+    };
+    let path: Vec<String> = a.path.iter().map(u32::to_string).collect();
+    format!("%{area}{size}{}", path.join("."))
+}
+
+impl<'a> Checker<'a> {
+    fn const_expr(&self, bits: u64, ty: Type, span: Span) -> Expr {
+        Expr { kind: ExprKind::Const(bits), ty, span }
+    }
+
+    /// Checks an expression. `expected` is a hint (enumerators, literals); the caller still
+    /// converts with [`Checker::coerce`].
+    pub fn expr(&mut self, e: &ast::Expr, expected: Option<Type>) -> Option<Typed> {
+        use ast::ExprKind as K;
+        let span = e.span;
+        match &e.kind {
+            K::Literal(lit) => self.literal(lit, span),
+            K::Paren(inner) => {
+                let mut t = self.expr(inner, expected)?;
+                t.e.span = span;
+                Some(t)
+            }
+            K::Name(id) => match self.lookup(id, expected)? {
+                NameRef::Var { place, var } => {
+                    if var.constant {
+                        if let Some(InitValue::Scalar(bits)) = var.init {
+                            return Some(Typed::fixed(self.const_expr(bits, var.ty, span)));
+                        }
+                        if let Some(InitValue::Str(s)) = &var.init {
+                            let e = Expr { kind: ExprKind::ConstStr(s.clone()), ty: var.ty, span };
+                            return Some(Typed::fixed(e));
+                        }
+                    }
+                    self.check_readable(&var, span)?;
+                    Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty: var.ty, span }))
+                }
+                NameRef::Enumerator(ty, v) => Some(Typed::fixed(self.const_expr(v as u64, ty, span))),
+                NameRef::Sys(s) => Some(Typed::fixed(Expr { kind: ExprKind::Sys(s), ty: s.ty(), span })),
+                NameRef::Pou => {
+                    self.error(
+                        Code::NotAVariable,
+                        span,
+                        format!("`{}` is a POU, not a value; call it with `{}(…)`", id.name, id.name),
+                    );
+                    None
+                }
+            },
+            K::EnumValue { type_name, value } => self.enum_value(type_name, value, span),
+            K::Member(..) | K::Bit(..) | K::Index(..) | K::Direct(_) => {
+                let (place, ty) = self.place(e, false)?;
+                Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty, span }))
+            }
+            K::Unary(op, operand) => self.unary(*op, operand, span, expected),
+            K::Binary(op, l, r) => self.binary(map_binop(*op), l, r, span, expected),
+            K::Call { callee, args } => self.call_expr(callee, args, span, expected).map(Typed::fixed),
+        }
+    }
+
+    fn check_readable(&mut self, var: &Var, span: Span) -> Option<()> {
+        if let Type::Fb(_) = var.ty {
+            self.error(
+                Code::TypeMismatch,
+                span,
+                format!("`{}` is a function block instance: use one of its outputs, e.g. `{}.Q`", var.name, var.name),
+            );
+            return None;
+        }
+        Some(())
+    }
+
+    fn literal(&mut self, lit: &ast::Literal, span: Span) -> Option<Typed> {
+        let prefix = lit.type_prefix.as_ref();
+        let prefix_elem = match prefix {
+            None => None,
+            Some(p) => {
+                let key = p.key();
+                match Elem::from_name(&key) {
+                    Some(e) => Some(e),
+                    None if key == "STRING" || key == "WSTRING" => None,
+                    None => {
+                        self.error(Code::InvalidTypedLiteral, p.span, format!("unknown type prefix `{}#`", p.name));
+                        return None;
+                    }
+                }
+            }
+        };
+        let bad_prefix = |c: &mut Self| {
+            if let Some(p) = prefix {
+                c.error(Code::InvalidTypedLiteral, span, format!("`{}#` does not fit this literal", p.name));
+            }
+        };
+        let fixed = |c: &Self, bits, ty| Some(Typed::fixed(c.const_expr(bits, ty, span)));
+        match &lit.value {
+            LiteralValue::Int(v) => match prefix_elem {
+                None if prefix.is_some() => {
+                    bad_prefix(self);
+                    None
+                }
+                None => {
+                    let Some(ty) = smallest_int_type(*v) else {
+                        self.error(Code::IntegerLiteralTooLarge, span, format!("{v} is too large for any integer type"));
+                        return None;
+                    };
+                    let e = self.const_expr(arith::norm(ty, *v), Type::Elem(ty), span);
+                    Some(Typed { e, flexible: true })
+                }
+                Some(el) if el.is_real() => fixed(self, arith::from_f64(el, *v as f64), Type::Elem(el)),
+                Some(el) if el.is_integral() || el == Elem::Bool => {
+                    if !fits(el, *v) {
+                        let (lo, hi) = el.int_range();
+                        self.error(
+                            Code::ConstantOutOfRange,
+                            span,
+                            format!("{v} does not fit {} ({lo}..{hi})", el.name()),
+                        );
+                        return None;
+                    }
+                    fixed(self, arith::norm(el, *v), Type::Elem(el))
+                }
+                Some(_) => {
+                    bad_prefix(self);
+                    None
+                }
+            },
+            LiteralValue::Real(f) => match prefix_elem {
+                None if prefix.is_some() => {
+                    bad_prefix(self);
+                    None
+                }
+                None => {
+                    let e = self.const_expr(f.to_bits(), Type::Elem(Elem::LReal), span);
+                    Some(Typed { e, flexible: true })
+                }
+                Some(el) if el.is_real() => fixed(self, arith::from_f64(el, *f), Type::Elem(el)),
+                Some(_) => {
+                    bad_prefix(self);
+                    None
+                }
+            },
+            LiteralValue::Bool(b) => match prefix_elem {
+                None | Some(Elem::Bool) => fixed(self, u64::from(*b), Type::BOOL),
+                Some(el) if el.is_integral() => fixed(self, u64::from(*b), Type::Elem(el)),
+                Some(_) => {
+                    bad_prefix(self);
+                    None
+                }
+            },
+            LiteralValue::String(bytes) => {
+                let len = bytes.len().max(1) as u32;
+                let e = Expr { kind: ExprKind::ConstStr(bytes.clone()), ty: Type::Str { wide: false, len }, span };
+                Some(Typed { e, flexible: true })
+            }
+            LiteralValue::WString(units) => {
+                let bytes: Vec<u8> = units.iter().flat_map(|u| u.to_le_bytes()).collect();
+                let len = units.len().max(1) as u32;
+                let e = Expr { kind: ExprKind::ConstStr(bytes), ty: Type::Str { wide: true, len }, span };
+                Some(Typed { e, flexible: true })
+            }
+            LiteralValue::Time(ns) => fixed(self, *ns as u64, Type::Elem(Elem::Time)),
+            LiteralValue::Date(ns) => fixed(self, *ns as u64, Type::Elem(Elem::Date)),
+            LiteralValue::TimeOfDay(ns) => fixed(self, *ns as u64, Type::Elem(Elem::Tod)),
+            LiteralValue::DateTime(ns) => fixed(self, *ns as u64, Type::Elem(Elem::Dt)),
+        }
+    }
+
+    fn enum_value(&mut self, type_name: &ast::Ident, value: &ast::Ident, span: Span) -> Option<Typed> {
+        let resolved = self.resolve_type(&ast::TypeRef::Named(type_name.clone()), "")?;
+        let Type::Enum(id) = resolved.ty else {
+            self.error(Code::TypeMismatch, type_name.span, format!("`{}` is not an enumeration", type_name.name));
+            return None;
+        };
+        let def = &self.types.enums[id as usize];
+        match def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&value.name)) {
+            Some((_, v)) => Some(Typed::fixed(self.const_expr(*v as u64, resolved.ty, span))),
+            None => {
+                let msg = format!("`{}` has no value `{}`", def.name, value.name);
+                self.error(Code::UndeclaredName, value.span, msg);
+                None
+            }
+        }
+    }
+
+    /// Resolves a name used in a body.
+    fn lookup(&mut self, id: &ast::Ident, expected: Option<Type>) -> Option<NameRef> {
+        let key = id.key();
+        let pou = self.body.pou as usize;
+        if let Some(p) = self.pous.get(pou) {
+            if let Some(i) = p.find_var(&key) {
+                let var = p.vars[i as usize].clone();
+                if var.section == VarSection::External {
+                    if let Some(&g) = self.global_index.get(&key) {
+                        return Some(NameRef::Var { place: Place::Global(g), var: self.globals[g as usize].clone() });
+                    }
+                    return None;
+                }
+                return Some(NameRef::Var { place: Place::Local(i), var });
+            }
+        }
+        if let Some(&g) = self.global_index.get(&key) {
+            return Some(NameRef::Var { place: Place::Global(g), var: self.globals[g as usize].clone() });
+        }
+        if let Some(Type::Enum(eid)) = expected {
+            if let Some((_, v)) = self.types.enums[eid as usize].values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&key)) {
+                return Some(NameRef::Enumerator(Type::Enum(eid), *v));
+            }
+        }
+        let matches: Vec<(u32, i64)> = self
+            .types
+            .enums
+            .iter()
+            .enumerate()
+            .filter_map(|(i, e)| e.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&key)).map(|(_, v)| (i as u32, *v)))
+            .collect();
+        match matches.as_slice() {
+            [(eid, v)] => return Some(NameRef::Enumerator(Type::Enum(*eid), *v)),
+            [(first, _), (second, _), ..] => {
+                let (a, b) = (self.types.enums[*first as usize].name.clone(), self.types.enums[*second as usize].name.clone());
+                self.error(
+                    Code::UndeclaredName,
+                    id.span,
+                    format!("`{}` is a value of both `{a}` and `{b}`; write `{a}#{}` or `{b}#{}`", id.name, id.name, id.name),
+                );
+                return None;
+            }
+            [] => {}
+        }
+        if let Some(s) = SysVar::from_name(&key) {
+            return Some(NameRef::Sys(s));
+        }
+        if self.pou_index.contains_key(&key) {
+            return Some(NameRef::Pou);
+        }
+        self.error(Code::UndeclaredName, id.span, format!("`{}` is not declared", id.name));
+        None
+    }
+
+    /// Resolves an expression that denotes memory. `write` checks it may be assigned.
+    pub fn place(&mut self, e: &ast::Expr, write: bool) -> Option<(Place, Type)> {
+        use ast::ExprKind as K;
+        match &e.kind {
+            K::Paren(inner) => self.place(inner, write),
+            K::Name(id) => match self.lookup(id, None)? {
+                NameRef::Var { place, var } => {
+                    if write {
+                        self.check_writable(&var, e.span)?;
+                    }
+                    Some((place, var.ty))
+                }
+                NameRef::Sys(_) => {
+                    if write {
+                        self.error(Code::AssignToConstant, e.span, format!("`{}` is a system variable and cannot be written", id.name));
+                        return None;
+                    }
+                    self.error(Code::NotAVariable, e.span, format!("`{}` is a system variable, not a place in memory", id.name));
+                    None
+                }
+                NameRef::Enumerator(..) | NameRef::Pou => {
+                    self.error(Code::NotAssignable, e.span, format!("`{}` is not a variable", id.name));
+                    None
+                }
+            },
+            K::Member(base, field) => {
+                let (bp, bty) = self.place(base, false)?;
+                match bty {
+                    Type::Struct(sid) => {
+                        let def = &self.types.structs[sid as usize];
+                        match def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(&field.name)) {
+                            Some(i) => {
+                                let ty = def.fields[i].ty;
+                                if write {
+                                    self.check_writable_root(base, e.span)?;
+                                }
+                                Some((Place::Field(Box::new(bp), i as u32), ty))
+                            }
+                            None => {
+                                let msg = format!("`{}` has no field `{}`", def.name, field.name);
+                                self.error(Code::NoSuchMember, field.span, msg);
+                                None
+                            }
+                        }
+                    }
+                    Type::Fb(fb) => {
+                        let pou = &self.pous[fb as usize];
+                        let Some(i) = pou.find_var(&field.name) else {
+                            let msg = format!("`{}` has no member `{}`", pou.name, field.name);
+                            self.error(Code::NoSuchMember, field.span, msg);
+                            return None;
+                        };
+                        let var = &pou.vars[i as usize];
+                        let ty = var.ty;
+                        if write && !matches!(var.section, VarSection::Input) {
+                            let msg = format!(
+                                "`{}` is not an input of `{}`; only inputs may be set from outside the block",
+                                field.name, pou.name
+                            );
+                            self.error(Code::NotAssignable, e.span, msg);
+                            return None;
+                        }
+                        Some((Place::Field(Box::new(bp), i), ty))
+                    }
+                    other => {
+                        let msg = format!("`.{}`: a value of type {} has no members", field.name, self.tname(other));
+                        self.error(Code::NotAStruct, field.span, msg);
+                        None
+                    }
+                }
+            }
+            K::Bit(base, n) => {
+                let (bp, bty) = self.place(base, write)?;
+                let Some(el) = bty.elem().filter(|e| e.is_integral()) else {
+                    let msg = format!("bit access `.{n}` needs an integer or bit string, not {}", self.tname(bty));
+                    self.error(Code::NotAStruct, e.span, msg);
+                    return None;
+                };
+                if *n >= el.bits() {
+                    let msg = format!("{} has bits 0..{}; there is no bit {n}", el.name(), el.bits() - 1);
+                    self.error(Code::BitOutOfRange, e.span, msg);
+                    return None;
+                }
+                Some((Place::Bit(Box::new(bp), *n, el), Type::BOOL))
+            }
+            K::Index(base, indices) => {
+                let (bp, bty) = self.place(base, write)?;
+                let Type::Array(aid) = bty else {
+                    self.error(Code::NotAnArray, e.span, format!("a value of type {} cannot be indexed", self.tname(bty)));
+                    return None;
+                };
+                let def = self.types.arrays[aid as usize].clone();
+                if def.dims.len() != indices.len() {
+                    let msg = format!("this array has {} dimension(s) but {} index(es) were given", def.dims.len(), indices.len());
+                    self.error(Code::WrongIndexCount, e.span, msg);
+                    return None;
+                }
+                let mut out = Vec::new();
+                for (ix, (lo, hi)) in indices.iter().zip(&def.dims) {
+                    let t = self.expr(ix, None)?;
+                    if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
+                        let msg = format!("an array index must be an integer, not {}", self.tname(t.e.ty));
+                        self.error(Code::TypeMismatch, ix.span, msg);
+                        return None;
+                    }
+                    if let Some(v) = super::consts::int_value(&t.e) {
+                        if v < *lo || v > *hi {
+                            let msg = format!("index {v} is outside the array bounds {lo}..{hi}");
+                            self.error(Code::ConstantIndexOutOfRange, ix.span, msg);
+                            return None;
+                        }
+                    }
+                    out.push(self.convert(t.e, Type::Elem(Elem::LInt)));
+                }
+                Some((Place::Element(Box::new(bp), aid, out), def.element))
+            }
+            K::Direct(addr) => Some(self.direct_place(addr)),
+            _ => {
+                let what = if write { "assigned to" } else { "used here" };
+                self.error(Code::NotAssignable, e.span, format!("this expression cannot be {what}; it is not a variable"));
+                None
+            }
+        }
+    }
+
+    fn check_writable(&mut self, var: &Var, span: Span) -> Option<()> {
+        let pou_kind = self.pous.get(self.body.pou as usize).map(|p| p.kind);
+        if self.body.read_only {
+            self.error(Code::NotAssignable, span, "a condition cannot change variables");
+            return None;
+        }
+        if var.constant {
+            self.error(Code::AssignToConstant, span, format!("`{}` is a CONSTANT and cannot be changed", var.name));
+            return None;
+        }
+        if pou_kind == Some(crate::syntax::PouKind::Function) && var.section == VarSection::Input {
+            self.error(Code::AssignToConstant, span, format!("`{}` is an input of the FUNCTION and cannot be changed", var.name));
+            return None;
+        }
+        Some(())
+    }
+
+    fn check_writable_root(&mut self, base: &ast::Expr, span: Span) -> Option<()> {
+        // Re-resolve the root name to apply CONSTANT checks to struct members.
+        let mut root = base;
+        loop {
+            match &root.kind {
+                ast::ExprKind::Member(b, _) | ast::ExprKind::Index(b, _) | ast::ExprKind::Bit(b, _) => root = b,
+                ast::ExprKind::Paren(b) => root = b,
+                _ => break,
+            }
+        }
+        if let ast::ExprKind::Name(id) = &root.kind {
+            if let Some(NameRef::Var { var, .. }) = self.lookup(id, None) {
+                return self.check_writable(&var, span);
+            }
+        }
+        Some(())
+    }
+
+    /// The variable a direct address refers to: a declared variable located there, or an
+    /// implicit global of the address's size.
+    fn direct_place(&mut self, addr: &ast::DirectAddress) -> (Place, Type) {
+        let text = normalize_address(addr);
+        let located = |v: &Var| v.location.as_ref().is_some_and(|l| normalize_address(l) == text);
+        if let Some(p) = self.pous.get(self.body.pou as usize) {
+            if let Some(i) = p.vars.iter().position(located) {
+                return (Place::Local(i as u32), p.vars[i].ty);
+            }
+        }
+        if let Some(g) = self.globals.iter().position(|v| located(v) || v.name == text) {
+            return (Place::Global(g as u32), self.globals[g].ty);
+        }
+        let elem = match addr.size {
+            AddressSize::Bit => Elem::Bool,
+            AddressSize::Byte => Elem::Byte,
+            AddressSize::Word => Elem::Word,
+            AddressSize::DWord => Elem::DWord,
+            AddressSize::LWord => Elem::LWord,
+        };
+        let g = self.globals.len() as u32;
+        self.global_index.insert(text.clone(), g);
+        self.globals.push(Var {
+            name: text,
+            ty: Type::Elem(elem),
+            section: VarSection::Global,
+            retain: false,
+            constant: false,
+            location: Some(addr.clone()),
+            init: None,
+            range: None,
+            comment: None,
+            span: addr.span,
+        });
+        (Place::Global(g), Type::Elem(elem))
+    }
+
+    fn unary(&mut self, op: ast::UnaryOp, operand: &ast::Expr, span: Span, expected: Option<Type>) -> Option<Typed> {
+        let t = self.expr(operand, expected)?;
+        let ty = t.e.ty;
+        match op {
+            ast::UnaryOp::Plus => {
+                if !ty.elem().is_some_and(|e| e.is_num() || e == Elem::Time) {
+                    self.error(Code::OperatorTypeMismatch, span, format!("unary `+` needs a number, not {}", self.tname(ty)));
+                    return None;
+                }
+                let mut t = t;
+                t.e.span = span;
+                Some(t)
+            }
+            ast::UnaryOp::Neg => {
+                let Some(el) = ty.elem().filter(|e| e.is_num() || *e == Elem::Time) else {
+                    self.error(Code::OperatorTypeMismatch, span, format!("`-` needs a number or TIME, not {}", self.tname(ty)));
+                    return None;
+                };
+                if let ExprKind::Const(bits) = t.e.kind {
+                    if t.flexible && el.is_integral() {
+                        let v = -arith::to_i128(el, bits);
+                        let nt = smallest_int_type(v)?;
+                        let e = self.const_expr(arith::norm(nt, v), Type::Elem(nt), span);
+                        return Some(Typed { e, flexible: true });
+                    }
+                    let e = self.const_expr(arith::negate(el, bits), ty, span);
+                    return Some(Typed { e, flexible: t.flexible });
+                }
+                Some(Typed::fixed(Expr { kind: ExprKind::Unary(UnOp::Neg, Box::new(t.e)), ty, span }))
+            }
+            ast::UnaryOp::Not => {
+                let Some(el) = ty.elem().filter(|e| *e == Elem::Bool || e.is_integral()) else {
+                    self.error(Code::OperatorTypeMismatch, span, format!("NOT needs a BOOL or a bit string, not {}", self.tname(ty)));
+                    return None;
+                };
+                if let ExprKind::Const(bits) = t.e.kind {
+                    let e = self.const_expr(arith::complement(el, bits), ty, span);
+                    return Some(Typed::fixed(e));
+                }
+                Some(Typed::fixed(Expr { kind: ExprKind::Unary(UnOp::Not, Box::new(t.e)), ty, span }))
+            }
+        }
+    }
+
+    /// The common type two numeric operands convert to, if any.
+    fn common_elem(&self, a: &Typed, b: &Typed) -> Option<Elem> {
+        let (ae, be) = (a.e.ty.elem()?, b.e.ty.elem()?);
+        if ae == be {
+            return Some(ae);
+        }
+        // An untyped literal adopts the other side's type when its value fits.
+        for (lit, other) in [(a, be), (b, ae)] {
+            if lit.flexible && !(if std::ptr::eq(lit, a) { b.flexible } else { a.flexible }) {
+                if let ExprKind::Const(bits) = lit.e.kind {
+                    let le = lit.e.ty.elem()?;
+                    if le.is_integral() && (other.is_integral() && fits(other, arith::to_i128(le, bits)) || other.is_real()) {
+                        return Some(other);
+                    }
+                    if le.is_real() && other.is_real() {
+                        return Some(other);
+                    }
+                }
+            }
+        }
+        WIDENING_ORDER.into_iter().find(|&t| can_widen(ae, t) && can_widen(be, t))
+    }
+
+    /// Converts `e` to `to` (which must be reachable), folding constants.
+    pub fn convert(&self, e: Expr, to: Type) -> Expr {
+        if e.ty == to {
+            return e;
+        }
+        if let (ExprKind::Const(bits), Some(from), Some(t)) = (&e.kind, e.ty.elem(), to.elem()) {
+            return self.const_expr(arith::convert(from, t, *bits), to, e.span);
+        }
+        let span = e.span;
+        Expr { kind: ExprKind::Convert(Box::new(e)), ty: to, span }
+    }
+
+    /// Converts a checked value for storing into (or passing as) `target`; reports a
+    /// mismatch.
+    pub fn coerce(&mut self, t: Typed, target: Type, span: Span) -> Option<Expr> {
+        let from = t.e.ty;
+        if from == target {
+            return Some(t.e);
+        }
+        match (from, target) {
+            (Type::Elem(fe), Type::Elem(te)) => {
+                if let (true, ExprKind::Const(bits)) = (t.flexible, &t.e.kind) {
+                    if fe.is_integral() {
+                        let v = arith::to_i128(fe, *bits);
+                        if (te.is_integral() || te == Elem::Bool) && fits(te, v) {
+                            return Some(self.const_expr(arith::norm(te, v), target, t.e.span));
+                        }
+                        if te.is_real() {
+                            return Some(self.const_expr(arith::from_f64(te, v as f64), target, t.e.span));
+                        }
+                        if te.is_integral() {
+                            let (lo, hi) = te.int_range();
+                            self.error(Code::ConstantOutOfRange, span, format!("{v} does not fit {} ({lo}..{hi})", te.name()));
+                            return None;
+                        }
+                    }
+                    if fe.is_real() && te.is_real() {
+                        return Some(self.const_expr(arith::from_f64(te, f64::from_bits(*bits)), target, t.e.span));
+                    }
+                }
+                if t.flexible && fe.is_real() && te.is_real() {
+                    return Some(self.convert(t.e, target));
+                }
+                if can_widen(fe, te) {
+                    return Some(self.convert(t.e, target));
+                }
+                let hint = if fe.is_num() && te.is_num() || fe.is_integral() && te.is_integral() {
+                    format!(" without possible loss; convert it explicitly with {}_TO_{}(…)", fe.name(), te.name())
+                } else {
+                    String::new()
+                };
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    format!("expected a value of type {}, found {}{hint}", te.name(), fe.name()),
+                );
+                None
+            }
+            (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b => {
+                let mut e = t.e;
+                if let ExprKind::ConstStr(_) = e.kind {
+                    e.ty = target;
+                }
+                Some(e)
+            }
+            _ => {
+                let (f, to) = (self.tname(from), self.tname(target));
+                self.error(Code::TypeMismatch, span, format!("expected a value of type {to}, found {f}"));
+                None
+            }
+        }
+    }
+
+    fn binary(&mut self, op: BinOp, l: &ast::Expr, r: &ast::Expr, span: Span, expected: Option<Type>) -> Option<Typed> {
+        let hint = if is_comparison(op) { None } else { expected };
+        let a = self.expr(l, hint);
+        let b = match &a {
+            Some(a) if is_comparison(op) => self.expr(r, Some(a.e.ty)),
+            _ => self.expr(r, hint),
+        };
+        let (a, b) = (a?, b?);
+        let (at, bt) = (a.e.ty, b.e.ty);
+        let mismatch = |c: &mut Self| {
+            let msg = format!("`{}` cannot combine {} and {}", op_text(op), c.tname(at), c.tname(bt));
+            c.error(Code::OperatorTypeMismatch, span, msg);
+            None
+        };
+        let make = |c: &Self, ty: Type, x: Expr, y: Expr| {
+            let e = Expr { kind: ExprKind::Binary(op, Box::new(x), Box::new(y)), ty, span };
+            c.fold(e)
+        };
+        match op {
+            BinOp::AndThen | BinOp::OrElse => {
+                let x = self.coerce(a, Type::BOOL, l.span)?;
+                let y = self.coerce(b, Type::BOOL, r.span)?;
+                return Some(Typed::fixed(make(self, Type::BOOL, x, y)?));
+            }
+            BinOp::And | BinOp::Or | BinOp::Xor => {
+                if at.is_bool() && bt.is_bool() {
+                    return Some(Typed::fixed(make(self, Type::BOOL, a.e, b.e)?));
+                }
+                let ok = |t: Type| t.elem().is_some_and(|e| e.is_integral());
+                if !ok(at) || !ok(bt) {
+                    return mismatch(self);
+                }
+                let flexible = a.flexible && b.flexible;
+                let el = self.common_elem(&a, &b).filter(|e| e.is_integral());
+                let Some(el) = el else { return mismatch(self) };
+                let ty = Type::Elem(el);
+                let (x, y) = (self.convert(a.e, ty), self.convert(b.e, ty));
+                return Some(Typed { e: make(self, ty, x, y)?, flexible });
+            }
+            _ => {}
+        }
+        if is_comparison(op) {
+            let operand = match (at, bt) {
+                (Type::Str { wide: x, .. }, Type::Str { wide: y, .. }) if x == y => {
+                    return Some(Typed::fixed(make(self, Type::BOOL, a.e, b.e)?));
+                }
+                (Type::Enum(x), Type::Enum(y)) if x == y => at,
+                (Type::Elem(x), Type::Elem(y)) if x == y => at,
+                (Type::Elem(_), Type::Elem(_)) => match self.common_elem(&a, &b) {
+                    Some(el) => Type::Elem(el),
+                    None => return mismatch(self),
+                },
+                _ => return mismatch(self),
+            };
+            if matches!(op, BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge) && operand.is_bool() {
+                // Allowed (FALSE < TRUE), as in IEC.
+            }
+            let (x, y) = (self.convert(a.e, operand), self.convert(b.e, operand));
+            return Some(Typed::fixed(make(self, Type::BOOL, x, y)?));
+        }
+        // Arithmetic.
+        let (ae, be) = match (at.elem(), bt.elem()) {
+            (Some(x), Some(y)) => (x, y),
+            _ => return mismatch(self),
+        };
+        if ae.is_temporal() || be.is_temporal() {
+            return self.temporal_arith(op, a, b, span, mismatch);
+        }
+        // Bit strings take part in arithmetic and wrap in their width, as in CODESYS.
+        let arithmetic = |e: Elem| e.is_num() || e.is_bitstring();
+        if !arithmetic(ae) || !arithmetic(be) {
+            return mismatch(self);
+        }
+        // `i * 1.5` with an integer `i` stays assignable to REAL: the untyped real literal
+        // lends its flexibility to the result.
+        let real_literal = |t: &Typed, other: Elem| t.flexible && t.e.ty.elem().is_some_and(Elem::is_real) && other.is_int();
+        let flexible = (a.flexible && b.flexible) || real_literal(&a, be) || real_literal(&b, ae);
+        if flexible && ae.is_integral() && be.is_integral() && op != BinOp::Pow {
+            // Fold untyped integer literals exactly, then pick the smallest type.
+            if let (ExprKind::Const(x), ExprKind::Const(y)) = (&a.e.kind, &b.e.kind) {
+                let (x, y) = (arith::to_i128(ae, *x), arith::to_i128(be, *y));
+                let v = match op {
+                    BinOp::Add => x.checked_add(y),
+                    BinOp::Sub => x.checked_sub(y),
+                    BinOp::Mul => x.checked_mul(y),
+                    BinOp::Div if y == 0 => {
+                        self.error(Code::DivisionByZeroConstant, span, "division by zero");
+                        return None;
+                    }
+                    BinOp::Div => Some(x / y),
+                    BinOp::Mod => Some(if y == 0 { 0 } else { x % y }),
+                    _ => None,
+                };
+                if let Some(ty) = v.and_then(smallest_int_type) {
+                    let v = v.unwrap_or_default();
+                    let e = self.const_expr(arith::norm(ty, v), Type::Elem(ty), span);
+                    return Some(Typed { e, flexible: true });
+                }
+            }
+        }
+        let el = if op == BinOp::Pow {
+            if ae.is_bitstring() || be.is_bitstring() {
+                return mismatch(self);
+            }
+            if ae == Elem::Real && (be == Elem::Real || b.flexible) { Elem::Real } else { Elem::LReal }
+        } else {
+            match self.common_elem(&a, &b) {
+                Some(el) => el,
+                None => return mismatch(self),
+            }
+        };
+        if op == BinOp::Mod && !el.is_integral() {
+            let msg = format!("MOD needs integers, not {}", el.name());
+            self.error(Code::OperatorTypeMismatch, span, msg);
+            return None;
+        }
+        let ty = Type::Elem(el);
+        let (x, y) = (self.convert(a.e, ty), self.convert(b.e, ty));
+        if op == BinOp::Div && el.is_integral() && matches!(y.kind, ExprKind::Const(0)) {
+            self.error(Code::DivisionByZeroConstant, r.span, "division by a constant zero");
+            return None;
+        }
+        Some(Typed { e: make(self, ty, x, y)?, flexible })
+    }
+
+    fn temporal_arith(
+        &mut self,
+        op: BinOp,
+        a: Typed,
+        b: Typed,
+        span: Span,
+        mismatch: impl Fn(&mut Self) -> Option<Typed>,
+    ) -> Option<Typed> {
+        use Elem::*;
+        let (ae, be) = (a.e.ty.elem()?, b.e.ty.elem()?);
+        let make = |c: &Self, ty: Elem, x: Expr, y: Expr| {
+            let e = Expr { kind: ExprKind::Binary(op, Box::new(x), Box::new(y)), ty: Type::Elem(ty), span };
+            c.fold(e).map(Typed::fixed)
+        };
+        let result = match (op, ae, be) {
+            (BinOp::Add | BinOp::Sub, Time, Time) => Time,
+            (BinOp::Add | BinOp::Sub, Tod, Time) => Tod,
+            (BinOp::Add | BinOp::Sub, Dt, Time) => Dt,
+            (BinOp::Sub, Tod, Tod) | (BinOp::Sub, Dt, Dt) | (BinOp::Sub, Date, Date) => Time,
+            (BinOp::Mul | BinOp::Div, t, n) if t.is_temporal() && t == Time && n.is_num() => {
+                let f = if n.is_real() { LReal } else { LInt };
+                let y = self.convert(b.e, Type::Elem(f));
+                return make(self, t, a.e, y);
+            }
+            (BinOp::Mul, n, Time) if n.is_num() => {
+                let f = if n.is_real() { LReal } else { LInt };
+                let x = self.convert(a.e, Type::Elem(f));
+                let e = Expr { kind: ExprKind::Binary(op, Box::new(b.e), Box::new(x)), ty: Type::Elem(Time), span };
+                return self.fold(e).map(Typed::fixed);
+            }
+            _ => return mismatch(self),
+        };
+        make(self, result, a.e, b.e)
+    }
+
+    /// Folds a binary node whose operands are constants; reports constant faults.
+    fn fold(&self, e: Expr) -> Option<Expr> {
+        let ExprKind::Binary(op, x, y) = &e.kind else { return Some(e) };
+        let (ExprKind::Const(a), ExprKind::Const(b)) = (&x.kind, &y.kind) else { return Some(e) };
+        let Some(xe) = x.ty.elem() else {
+            if let (Type::Enum(_), true) = (x.ty, is_comparison(*op)) {
+                let r = arith::compare(*op, Elem::LInt, *a, *b);
+                return Some(self.const_expr(u64::from(r), Type::BOOL, e.span));
+            }
+            return Some(e);
+        };
+        let bits = if is_comparison(*op) {
+            u64::from(arith::compare(*op, xe, *a, *b))
+        } else if matches!(op, BinOp::AndThen) {
+            a & b
+        } else if matches!(op, BinOp::OrElse) {
+            a | b
+        } else if xe.is_temporal() && matches!(op, BinOp::Mul | BinOp::Div) {
+            let real = y.ty == Type::Elem(Elem::LReal);
+            match arith::scale_time(*op, xe, *a, *b, real) {
+                Ok(v) => v,
+                Err(_) => return Some(e),
+            }
+        } else {
+            match arith::binary(*op, xe, *a, *b) {
+                Ok(v) => v,
+                Err(_) => return Some(e),
+            }
+        };
+        Some(self.const_expr(bits, e.ty, e.span))
+    }
+}

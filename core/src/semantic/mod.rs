@@ -1,0 +1,66 @@
+//! The checker: resolves names (case-insensitively), types every expression, inserts the
+//! implicit widening conversions, folds constants, and turns the syntax tree into the typed
+//! [`ir`] that the compiler consumes. Problems become located diagnostics with stable codes.
+//!
+//! It never executes user code and never panics on a bad program: every check failure is a
+//! diagnostic, and checking goes on so that one mistake does not hide the next.
+
+mod builtins;
+mod calls;
+mod check;
+mod consts;
+mod decl;
+mod expr;
+pub mod ir;
+mod prelude;
+mod stmt;
+pub mod types;
+
+pub use ir::{BinOp, Builtin, CallArg, Expr, ExprKind, InitValue, Place, Program, SysVar, UnOp};
+pub use types::{Elem, PouId, Type, TypeTable};
+
+use crate::diagnostics::{has_errors, Diagnostic};
+use crate::syntax;
+
+/// The outcome of checking a source text.
+#[derive(Debug, Clone)]
+pub struct Analysis {
+    /// The checked program, when there were no errors.
+    pub program: Option<Program>,
+    /// Every diagnostic (errors and warnings), sorted by position.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Parses and checks `source` together with the standard library prelude.
+pub fn analyze(source: &str) -> Analysis {
+    let (file, mut diagnostics) = syntax::parse(source);
+    let (program, more) = check::check_with_prelude(&file);
+    diagnostics.extend(more);
+    diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    let program = if has_errors(&diagnostics) { None } else { program };
+    Analysis { program, diagnostics }
+}
+
+/// Checks `source`, an ST boolean expression, in the scope of POU `pou` of `program` (a
+/// breakpoint condition such as `Level > 80 AND Pump`).
+pub fn check_condition(program: &Program, pou: PouId, source: &str) -> Result<Expr, Vec<Diagnostic>> {
+    let expr = syntax::parse_expression(source)?;
+    check::check_expression_in(program, pou, &expr, Some(Type::BOOL), true)
+}
+
+/// Parses `text`, an IEC literal or constant expression (`TRUE`, `42`, `-1.5`, `T#2s`,
+/// `'text'`, an enumerator), as a value of type `ty` in the scope of POU `pou`.
+pub fn parse_value(program: &Program, pou: PouId, ty: Type, text: &str) -> Result<InitValue, String> {
+    let expr = syntax::parse_expression(text).map_err(|d| first_message(&d))?;
+    let checked = check::check_expression_in(program, pou, &expr, Some(ty), false)
+        .map_err(|d| first_message(&d))?;
+    consts::to_init_value(&checked)
+        .ok_or_else(|| format!("`{text}` is not a constant value"))
+}
+
+fn first_message(diags: &[Diagnostic]) -> String {
+    diags.first().map_or_else(|| "invalid value".to_string(), |d| d.message.clone())
+}
+
+#[cfg(test)]
+mod tests;

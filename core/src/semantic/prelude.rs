@@ -1,0 +1,172 @@
+//! The standard function blocks (IEC 61131-3 §2.5.2.3), written in ST and compiled with the
+//! user's program so they run on the one VM. Their behaviour follows SEMANTICS.md; timers
+//! read the virtual clock through the system variable `SYS_CLOCK`.
+//!
+//! Documented surprises: `F_TRIG` called first with `CLK = FALSE` gives `Q = TRUE` (the
+//! standard body, since its memory starts FALSE); counters let reset/load win over
+//! counting, and `CV` keeps counting past `PV` up to the limit of INT.
+
+/// The prelude's source text.
+pub const SOURCE: &str = r#"
+FUNCTION_BLOCK R_TRIG
+VAR_INPUT CLK : BOOL; END_VAR
+VAR_OUTPUT Q : BOOL; END_VAR
+VAR M : BOOL; END_VAR
+Q := CLK AND NOT M;
+M := CLK;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK F_TRIG
+VAR_INPUT CLK : BOOL; END_VAR
+VAR_OUTPUT Q : BOOL; END_VAR
+VAR M : BOOL; END_VAR
+Q := NOT CLK AND NOT M;
+M := NOT CLK;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK SR
+VAR_INPUT S1 : BOOL; R : BOOL; END_VAR
+VAR_OUTPUT Q1 : BOOL; END_VAR
+Q1 := S1 OR (NOT R AND Q1);
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK RS
+VAR_INPUT S : BOOL; R1 : BOOL; END_VAR
+VAR_OUTPUT Q1 : BOOL; END_VAR
+Q1 := NOT R1 AND (S OR Q1);
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK CTU
+VAR_INPUT CU : BOOL; R : BOOL; PV : INT; END_VAR
+VAR_OUTPUT Q : BOOL; CV : INT; END_VAR
+VAR CU_M : BOOL; END_VAR
+IF R THEN
+    CV := 0;
+ELSIF CU AND NOT CU_M AND CV < 32767 THEN
+    CV := CV + 1;
+END_IF;
+CU_M := CU;
+Q := CV >= PV;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK CTD
+VAR_INPUT CD : BOOL; LD : BOOL; PV : INT; END_VAR
+VAR_OUTPUT Q : BOOL; CV : INT; END_VAR
+VAR CD_M : BOOL; END_VAR
+IF LD THEN
+    CV := PV;
+ELSIF CD AND NOT CD_M AND CV > -32768 THEN
+    CV := CV - 1;
+END_IF;
+CD_M := CD;
+Q := CV <= 0;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK CTUD
+VAR_INPUT CU : BOOL; CD : BOOL; R : BOOL; LD : BOOL; PV : INT; END_VAR
+VAR_OUTPUT QU : BOOL; QD : BOOL; CV : INT; END_VAR
+VAR CU_M : BOOL; CD_M : BOOL; END_VAR
+IF R THEN
+    CV := 0;
+ELSIF LD THEN
+    CV := PV;
+ELSIF NOT (CU AND NOT CU_M AND CD AND NOT CD_M) THEN
+    IF CU AND NOT CU_M AND CV < 32767 THEN
+        CV := CV + 1;
+    ELSIF CD AND NOT CD_M AND CV > -32768 THEN
+        CV := CV - 1;
+    END_IF;
+END_IF;
+CU_M := CU;
+CD_M := CD;
+QU := CV >= PV;
+QD := CV <= 0;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK TON
+VAR_INPUT IN : BOOL; PT : TIME; END_VAR
+VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+VAR StartTime : TIME; Running : BOOL; END_VAR
+IF IN THEN
+    IF NOT Running THEN
+        Running := TRUE;
+        StartTime := SYS_CLOCK;
+    END_IF;
+    ET := SYS_CLOCK - StartTime;
+    IF ET >= PT THEN
+        ET := PT;
+        Q := TRUE;
+    ELSE
+        Q := FALSE;
+    END_IF;
+ELSE
+    Running := FALSE;
+    Q := FALSE;
+    ET := T#0s;
+END_IF;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK TOF
+VAR_INPUT IN : BOOL; PT : TIME; END_VAR
+VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+VAR StartTime : TIME; Running : BOOL; END_VAR
+IF IN THEN
+    Running := FALSE;
+    Q := TRUE;
+    ET := T#0s;
+ELSIF Q THEN
+    IF NOT Running THEN
+        Running := TRUE;
+        StartTime := SYS_CLOCK;
+    END_IF;
+    ET := SYS_CLOCK - StartTime;
+    IF ET >= PT THEN
+        ET := PT;
+        Q := FALSE;
+        Running := FALSE;
+    END_IF;
+END_IF;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK TP
+VAR_INPUT IN : BOOL; PT : TIME; END_VAR
+VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+VAR StartTime : TIME; IN_M : BOOL; END_VAR
+IF NOT Q AND IN AND NOT IN_M AND ET = T#0s THEN
+    Q := TRUE;
+    StartTime := SYS_CLOCK;
+END_IF;
+IF Q THEN
+    ET := SYS_CLOCK - StartTime;
+    IF ET >= PT THEN
+        ET := PT;
+        Q := FALSE;
+    END_IF;
+ELSIF NOT IN THEN
+    ET := T#0s;
+END_IF;
+IN_M := IN;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK RTO
+VAR_INPUT IN : BOOL; R : BOOL; PT : TIME; END_VAR
+VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+VAR LastTime : TIME; Running : BOOL; END_VAR
+IF R THEN
+    ET := T#0s;
+    Running := FALSE;
+ELSIF IN THEN
+    IF Running THEN
+        ET := ET + (SYS_CLOCK - LastTime);
+    END_IF;
+    Running := TRUE;
+    LastTime := SYS_CLOCK;
+    IF ET > PT THEN
+        ET := PT;
+    END_IF;
+ELSE
+    Running := FALSE;
+END_IF;
+Q := ET >= PT;
+END_FUNCTION_BLOCK
+"#;

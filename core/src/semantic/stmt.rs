@@ -1,0 +1,220 @@
+//! Statements: assignments, calls, IF, CASE, loops and jumps.
+
+use super::check::Checker;
+use super::consts;
+use super::ir::{Expr, ExprKind, Place, Stmt, StmtKind};
+use super::types::Type;
+use crate::diagnostics::Code;
+use crate::syntax::{self as ast};
+
+impl<'a> Checker<'a> {
+    /// Checks a list of statements; statements with errors are left out.
+    pub fn stmts(&mut self, list: &[ast::Stmt]) -> Vec<Stmt> {
+        list.iter().filter_map(|s| self.stmt(s)).collect()
+    }
+
+    fn condition(&mut self, e: &ast::Expr, what: &str) -> Option<Expr> {
+        let t = self.expr(e, Some(Type::BOOL))?;
+        if !t.e.ty.is_bool() {
+            let msg = format!("the condition of {what} must be BOOL, not {}", self.tname(t.e.ty));
+            self.error(Code::ConditionNotBool, e.span, msg);
+            return None;
+        }
+        Some(t.e)
+    }
+
+    fn stmt(&mut self, s: &ast::Stmt) -> Option<Stmt> {
+        use ast::StmtKind as K;
+        let span = s.span;
+        let kind = match &s.kind {
+            K::Empty => return None,
+            K::Assign { target, value } => {
+                let place = self.place(target, true);
+                let t = self.expr(value, place.as_ref().map(|p| p.1));
+                let ((place, ty), t) = (place?, t?);
+                if let Type::Fb(_) = ty {
+                    self.error(Code::NotAssignable, target.span, "a function block instance cannot be assigned; call it instead");
+                    return None;
+                }
+                let v = self.coerce(t, ty, value.span)?;
+                self.check_subrange(&place, &v);
+                if let (Type::Array(_) | Type::Struct(_), false) = (ty, matches!(v.kind, ExprKind::Load(_))) {
+                    self.error(Code::NotAssignable, value.span, "arrays and structures can only be copied from a variable");
+                    return None;
+                }
+                StmtKind::Assign(place, v)
+            }
+            K::Call(call) => {
+                let ast::ExprKind::Call { callee, args } = &call.kind else {
+                    self.error(Code::UnexpectedToken, span, "expected a call");
+                    return None;
+                };
+                self.call_stmt(callee, args, span)?
+            }
+            K::If { branches, else_body } => {
+                let mut out = Vec::new();
+                for (cond, body) in branches {
+                    let c = self.condition(cond, "IF");
+                    let b = self.stmts(body);
+                    if let Some(c) = c {
+                        out.push((c, b));
+                    }
+                }
+                let else_body = else_body.as_ref().map(|b| self.stmts(b)).unwrap_or_default();
+                StmtKind::If { branches: out, else_body }
+            }
+            K::Case { selector, arms, else_body } => self.case(selector, arms, else_body.as_deref())?,
+            K::For { var, from, to, by, body } => {
+                let var_expr = ast::Expr { kind: ast::ExprKind::Name(var.clone()), span: var.span };
+                let place = self.place(&var_expr, true);
+                let ty = place.as_ref().map(|p| p.1);
+                let el = ty.and_then(Type::elem).filter(|e| e.is_int());
+                if place.is_some() && el.is_none() {
+                    let msg = format!("the FOR variable `{}` must be an integer variable", var.name);
+                    self.error(Code::ForVariableNotInteger, var.span, msg);
+                }
+                let vty = el.map(Type::Elem);
+                let f = self.expr(from, vty).and_then(|t| vty.and_then(|ty| self.coerce(t, ty, from.span)));
+                let t = self.expr(to, vty).and_then(|t| vty.and_then(|ty| self.coerce(t, ty, to.span)));
+                let b = match by {
+                    Some(b) => self.expr(b, vty).and_then(|t| vty.and_then(|ty| self.coerce(t, ty, b.span))),
+                    None => el.map(|e| Expr { kind: ExprKind::Const(1), ty: Type::Elem(e), span: var.span }),
+                };
+                if let Some(step) = &b {
+                    if consts::int_value(step) == Some(0) {
+                        self.error(Code::ZeroForStep, step.span, "a FOR loop with step 0 never ends");
+                    }
+                }
+                self.body.loop_depth += 1;
+                let body = self.stmts(body);
+                self.body.loop_depth -= 1;
+                let ((place, _), el, from, to, by) = (place?, el?, f?, t?, b?);
+                StmtKind::For { var: place, ty: el, from, to, by, body }
+            }
+            K::While { cond, body } => {
+                let c = self.condition(cond, "WHILE");
+                self.body.loop_depth += 1;
+                let body = self.stmts(body);
+                self.body.loop_depth -= 1;
+                StmtKind::While { cond: c?, body }
+            }
+            K::Repeat { body, until } => {
+                self.body.loop_depth += 1;
+                let body = self.stmts(body);
+                self.body.loop_depth -= 1;
+                let c = self.condition(until, "UNTIL");
+                StmtKind::Repeat { body, until: c? }
+            }
+            K::Exit | K::Continue => {
+                if self.body.loop_depth == 0 {
+                    let kw = if matches!(s.kind, K::Exit) { "EXIT" } else { "CONTINUE" };
+                    self.error(Code::ExitOutsideLoop, span, format!("{kw} can only be used inside FOR, WHILE or REPEAT"));
+                    return None;
+                }
+                if matches!(s.kind, K::Exit) {
+                    StmtKind::Exit
+                } else {
+                    StmtKind::Continue
+                }
+            }
+            K::Return => StmtKind::Return,
+        };
+        Some(Stmt { kind, span })
+    }
+
+    /// The subrange a place is declared with, if any.
+    fn place_range(&self, place: &Place) -> Option<(i64, i64)> {
+        match place {
+            Place::Local(i) => self.pous.get(self.body.pou as usize)?.vars.get(*i as usize)?.range,
+            Place::Global(i) => self.globals.get(*i as usize)?.range,
+            Place::Field(_, _) | Place::Bit(..) => None,
+            Place::Element(_, id, _) => self.types.arrays.get(*id as usize)?.element_range,
+        }
+    }
+
+    /// Reports a constant stored into a subrange variable outside its limits.
+    fn check_subrange(&mut self, place: &Place, value: &Expr) {
+        let (Some((lo, hi)), Some(v)) = (self.place_range(place), consts::int_value(value)) else { return };
+        if v < lo || v > hi {
+            self.error(Code::SubrangeViolation, value.span, format!("{v} is outside the subrange {lo}..{hi} of this variable"));
+        }
+    }
+
+    fn case(&mut self, selector: &ast::Expr, arms: &[ast::CaseArm], else_body: Option<&[ast::Stmt]>) -> Option<StmtKind> {
+        let sel = self.expr(selector, None);
+        let sel_ty = sel.as_ref().map(|s| s.e.ty);
+        let ok_selector = |t: Type| matches!(t, Type::Enum(_)) || t.elem().is_some_and(|e| e.is_integral());
+        if let Some(t) = sel_ty {
+            if !ok_selector(t) {
+                let msg = format!("a CASE selector must be an integer or an enumeration, not {}", self.tname(t));
+                self.error(Code::TypeMismatch, selector.span, msg);
+            }
+        }
+        let label_ty = sel_ty.filter(|t| ok_selector(*t));
+        let mut seen: Vec<(i64, i64)> = Vec::new();
+        let mut out = Vec::new();
+        for arm in arms {
+            let mut ranges = Vec::new();
+            for label in &arm.labels {
+                let (lo_e, hi_e) = match label {
+                    ast::CaseLabel::Value(v) => (v, v),
+                    ast::CaseLabel::Range(a, b) => (a, b),
+                };
+                let (Some(lo), Some(hi)) = (self.case_label(lo_e, label_ty), self.case_label(hi_e, label_ty)) else {
+                    continue;
+                };
+                let span = lo_e.span.to(hi_e.span);
+                if lo > hi {
+                    self.error(Code::InvalidRange, span, format!("the range {lo}..{hi} is empty"));
+                    continue;
+                }
+                if seen.iter().any(|(a, b)| lo <= *b && *a <= hi) {
+                    self.error(Code::DuplicateCaseLabel, span, "this CASE label is already covered by an earlier one");
+                    continue;
+                }
+                seen.push((lo, hi));
+                ranges.push((lo, hi));
+            }
+            let body = self.stmts(&arm.body);
+            out.push((ranges, body));
+        }
+        let else_body = else_body.map(|b| self.stmts(b)).unwrap_or_default();
+        let sel = sel?;
+        label_ty?;
+        Some(StmtKind::Case { selector: sel.e, arms: out, else_body })
+    }
+
+    fn case_label(&mut self, e: &ast::Expr, sel: Option<Type>) -> Option<i64> {
+        let t = self.expr(e, sel)?;
+        let sel = sel?;
+        let value = match sel {
+            Type::Enum(_) => {
+                if t.e.ty != sel {
+                    let msg = format!("this label is not a value of {}", self.tname(sel));
+                    self.error(Code::CaseLabelType, e.span, msg);
+                    return None;
+                }
+                consts::int_value(&t.e)
+            }
+            _ => {
+                if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
+                    let msg = format!("a CASE label must be an integer constant, not {}", self.tname(t.e.ty));
+                    self.error(Code::CaseLabelType, e.span, msg);
+                    return None;
+                }
+                consts::int_value(&t.e)
+            }
+        };
+        if value.is_none() {
+            self.error(Code::NotConstant, e.span, "a CASE label must be a constant");
+        }
+        if let (Some(v), Some(el)) = (value, sel.elem()) {
+            let (lo, hi) = el.int_range();
+            if (v as i128) < lo || (v as i128) > hi {
+                let msg = format!("label {v} can never match a selector of type {}", el.name());
+                self.warning(Code::CaseWithoutMatch, e.span, msg);
+            }
+        }
+        value
+    }
+}

@@ -1,0 +1,119 @@
+#![allow(clippy::unwrap_used)]
+
+use super::*;
+use crate::diagnostics::{Code, LineIndex};
+
+/// Checks `src` and returns its errors as (code, line, column).
+fn errors(src: &str) -> Vec<(Code, u32, u32)> {
+    let index = LineIndex::new(src);
+    analyze(src)
+        .diagnostics
+        .iter()
+        .filter(|d| d.is_error())
+        .map(|d| {
+            let l = index.location(d.span.start);
+            (d.code, l.line, l.column)
+        })
+        .collect()
+}
+
+fn program(body: &str) -> String {
+    format!(
+        "PROGRAM P\nVAR i : INT; s : SINT; d : DINT; r : REAL; b : BOOL; w : WORD; t : TON; str : STRING[5]; END_VAR\n{body}\nEND_PROGRAM\n"
+    )
+}
+
+#[test]
+fn the_prelude_checks_clean() {
+    let a = analyze("PROGRAM P END_PROGRAM");
+    assert!(a.diagnostics.is_empty(), "{:?}", a.diagnostics);
+    let p = a.program.unwrap();
+    for fb in ["TON", "TOF", "TP", "RTO", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "SR", "RS"] {
+        assert!(p.find_pou(fb).is_some(), "{fb}");
+    }
+}
+
+#[test]
+fn names_are_case_insensitive() {
+    assert_eq!(errors(&program("I := 1; STR := 'ab'; T(in := B, pt := t#1s); b := T.q;")), vec![]);
+}
+
+#[test]
+fn each_error_is_located() {
+    assert_eq!(errors(&program("i := d;")), vec![(Code::TypeMismatch, 3, 6)]);
+    assert_eq!(errors(&program("s := 300;")), vec![(Code::ConstantOutOfRange, 3, 6)]);
+    assert_eq!(errors(&program("x := 1;")), vec![(Code::UndeclaredName, 3, 1)]);
+    assert_eq!(errors(&program("IF i THEN END_IF;")), vec![(Code::ConditionNotBool, 3, 4)]);
+    assert_eq!(errors(&program("EXIT;")), vec![(Code::ExitOutsideLoop, 3, 1)]);
+    assert_eq!(errors(&program("i := NOPE(1);")), vec![(Code::UnknownFunction, 3, 6)]);
+    assert_eq!(errors(&program("i := i / 0;")), vec![(Code::DivisionByZeroConstant, 3, 10)]);
+    assert_eq!(errors(&program("FOR i := 1 TO 5 BY 0 DO END_FOR;")), vec![(Code::ZeroForStep, 3, 20)]);
+    assert_eq!(errors(&program("b := w.16;")), vec![(Code::BitOutOfRange, 3, 6)]);
+    assert_eq!(errors(&program("t.Q := TRUE;")), vec![(Code::NotAssignable, 3, 1)]);
+    assert_eq!(errors(&program("i := t(IN := TRUE);")), vec![(Code::FbCalledAsFunction, 3, 6)]);
+    assert_eq!(errors(&program("CASE i OF 1: ; 1..3: ; END_CASE;")), vec![(Code::DuplicateCaseLabel, 3, 16)]);
+    assert_eq!(errors(&program("FST_SCN := TRUE;")), vec![(Code::AssignToConstant, 3, 1)]);
+}
+
+#[test]
+fn widening_is_implicit_and_narrowing_is_not() {
+    assert_eq!(errors(&program("d := i; d := s; r := i; w := 255; i := s * 2;")), vec![]);
+    assert_eq!(errors(&program("i := r;")), vec![(Code::TypeMismatch, 3, 6)]);
+    assert_eq!(errors(&program("r := i * 1.5;")), vec![], "an untyped real literal adapts to REAL");
+    assert_eq!(errors(&program("i := REAL_TO_INT(r); s := INT_TO_SINT(i);")), vec![]);
+}
+
+#[test]
+fn literals_adapt_to_their_context() {
+    assert_eq!(errors(&program("s := -128; w := 16#FFFF; i := 2#0111_1111_1111_1111;")), vec![]);
+    assert_eq!(errors(&program("w := 16#10000;")), vec![(Code::ConstantOutOfRange, 3, 6)]);
+    assert_eq!(errors(&program("i := INT#40000;")), vec![(Code::ConstantOutOfRange, 3, 6)]);
+}
+
+#[test]
+fn declarations_are_checked() {
+    let src = "TYPE A : STRUCT x : B; END_STRUCT; B : STRUCT y : A; END_STRUCT; END_TYPE
+PROGRAM P VAR a : A; END_VAR END_PROGRAM";
+    assert!(errors(src).iter().any(|e| e.0 == Code::RecursiveType), "{:?}", errors(src));
+    let src = "PROGRAM P VAR x : Nope; y : ARRAY[5..1] OF INT; x2 AT %IX0.0 : INT; END_VAR END_PROGRAM";
+    let codes: Vec<Code> = errors(src).into_iter().map(|e| e.0).collect();
+    assert_eq!(codes, vec![Code::UnknownType, Code::InvalidRange, Code::InvalidLocation]);
+    let src = "FUNCTION F : INT VAR_INPUT a : INT; END_VAR F := G(a); END_FUNCTION
+FUNCTION G : INT VAR_INPUT a : INT; END_VAR G := F(a); END_FUNCTION
+PROGRAM P END_PROGRAM";
+    assert!(errors(src).iter().any(|e| e.0 == Code::RecursiveCall));
+    let src = "PROGRAM P VAR CONSTANT N : INT := 3; END_VAR VAR a : ARRAY[1..N] OF INT; END_VAR a[N] := 1; a[4] := 2; END_PROGRAM";
+    assert_eq!(errors(src), vec![(Code::ConstantIndexOutOfRange, 1, 95)]);
+}
+
+#[test]
+fn calls_bind_formal_and_informal_arguments() {
+    let src = "FUNCTION F : INT VAR_INPUT a : INT; b : INT := 10; END_VAR F := a - b; END_FUNCTION
+PROGRAM P VAR x : INT; q : BOOL; t : TON; END_VAR
+x := F(1, 2); x := F(b := 1, a := 2); x := F(a := 1);
+t(IN := TRUE, PT := T#1s, Q => q);
+END_PROGRAM";
+    assert_eq!(errors(src), vec![]);
+    let bad = "FUNCTION F : INT VAR_INPUT a : INT; END_VAR F := a; END_FUNCTION
+PROGRAM P VAR x : INT; t : TON; END_VAR
+x := F(1, 2);
+x := F(1, a := 2);
+x := F(c := 1);
+t(IN := TRUE, ET := T#1s);
+END_PROGRAM";
+    let codes: Vec<Code> = errors(bad).into_iter().map(|e| e.0).collect();
+    assert_eq!(codes, vec![Code::WrongArgumentCount, Code::MixedArguments, Code::NoSuchParameter, Code::NoSuchParameter]);
+}
+
+#[test]
+fn conditions_and_values_check_in_a_program_scope() {
+    let a = analyze(&program(""));
+    let p = a.program.unwrap();
+    let main = p.find_pou("P").unwrap();
+    assert!(check_condition(&p, main, "i > 80 AND b").is_ok());
+    assert!(check_condition(&p, main, "i + 1").is_err());
+    assert_eq!(parse_value(&p, main, Type::Elem(Elem::Int), "-42"), Ok(InitValue::Scalar(-42i64 as u64)));
+    assert_eq!(parse_value(&p, main, Type::Elem(Elem::Time), "T#1s"), Ok(InitValue::Scalar(1_000_000_000)));
+    assert!(parse_value(&p, main, Type::Elem(Elem::Int), "i").is_err());
+    assert!(parse_value(&p, main, Type::Elem(Elem::SInt), "300").is_err());
+}

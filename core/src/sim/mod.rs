@@ -1,0 +1,455 @@
+//! The simulator: a PLC's scan cycle on a virtual clock around the VM.
+//!
+//! One scan: write held inputs and forced values → run the program → write forced values
+//! again (forcing wins over the program's writes) → advance the clock by the cycle time →
+//! record the trace → evaluate breakpoints (a breakpoint pauses at the end of the scan on
+//! which its condition became true). A runtime fault puts the PLC in FAULT until a restart.
+//! The simulator never reads a wall clock: the caller decides how many scans to run and
+//! when, so runs are reproducible natively and in the browser.
+
+mod trace;
+
+pub use trace::{Trace, TraceSample};
+
+use std::fmt;
+
+use crate::compile::{self, CompileError, ConditionId, Executable, Slot};
+use crate::diagnostics::{Diagnostic, Span};
+use crate::semantic::{self, InitValue, PouId, Program};
+use crate::vm::{self, Fault, Machine, RuntimeError, SysState, Value};
+
+/// The default watchdog budget: instructions one scan may execute.
+pub const DEFAULT_WATCHDOG: u64 = 10_000_000;
+
+/// Why the PLC stopped in FAULT.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FaultInfo {
+    /// What went wrong.
+    pub fault: Fault,
+    /// The faulting statement in the source.
+    pub span: Span,
+    /// The POU it belongs to.
+    pub pou: PouId,
+    /// The scan on which it happened (1-based).
+    pub scan: u64,
+    /// The virtual time at the start of that scan, in nanoseconds.
+    pub time_ns: i64,
+}
+
+/// Identifies a breakpoint.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct BreakpointId(pub u32);
+
+/// What the simulator is doing.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SimState {
+    /// Ready to scan.
+    Ready,
+    /// Paused by a breakpoint (scanning again resumes).
+    Paused(BreakpointId),
+    /// Stopped by a runtime fault; only a restart leaves this state.
+    Faulted(FaultInfo),
+}
+
+/// How a call to scan ended.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ScanOutcome {
+    /// Every requested scan ran.
+    Completed,
+    /// A breakpoint's condition became true at the end of a scan.
+    Breakpoint(BreakpointId),
+    /// A runtime fault stopped the PLC (now or earlier).
+    Fault(FaultInfo),
+}
+
+/// Errors of simulator operations (never of the program itself: those are faults).
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum SimError {
+    /// The program could not be compiled.
+    Compile(CompileError),
+    /// No variable has that name or path.
+    UnknownVariable(String),
+    /// The value text does not fit the variable.
+    BadValue {
+        /// The variable path.
+        path: String,
+        /// Why.
+        message: String,
+    },
+    /// A breakpoint condition did not check.
+    BadCondition(Vec<Diagnostic>),
+    /// No breakpoint with that id.
+    UnknownBreakpoint(BreakpointId),
+}
+
+impl fmt::Display for SimError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SimError::Compile(e) => write!(f, "{e}"),
+            SimError::UnknownVariable(p) => write!(f, "the program has no variable `{p}`"),
+            SimError::BadValue { path, message } => write!(f, "`{path}`: {message}"),
+            SimError::BadCondition(d) => {
+                let first = d.first().map_or("invalid condition", |d| d.message.as_str());
+                write!(f, "breakpoint condition: {first}")
+            }
+            SimError::UnknownBreakpoint(id) => write!(f, "no breakpoint #{}", id.0),
+        }
+    }
+}
+
+impl std::error::Error for SimError {}
+
+/// A variable held at (or forced to) a value.
+#[derive(Debug, Clone)]
+struct Pinned {
+    path: String,
+    slot: Slot,
+    value: Value,
+}
+
+#[derive(Debug, Clone)]
+struct Breakpoint {
+    id: BreakpointId,
+    source: String,
+    condition: ConditionId,
+    was_true: bool,
+}
+
+/// A simulated PLC running one PROGRAM.
+#[derive(Debug, Clone)]
+pub struct Simulator {
+    program: Program,
+    exe: Executable,
+    machine: Machine,
+    cycle_ns: i64,
+    time_ns: i64,
+    scans: u64,
+    first_scan: bool,
+    state: SimState,
+    held: Vec<Pinned>,
+    forced: Vec<Pinned>,
+    breakpoints: Vec<Breakpoint>,
+    next_breakpoint: u32,
+    trace: Trace,
+    watchdog: u64,
+}
+
+impl Simulator {
+    /// Compiles PROGRAM `main` of a checked program and powers the PLC on (cold start).
+    pub fn new(program: Program, main: PouId) -> Result<Self, SimError> {
+        let exe = compile::compile(&program, main).map_err(SimError::Compile)?;
+        let machine = Machine::new(&exe);
+        Ok(Simulator {
+            program,
+            exe,
+            machine,
+            cycle_ns: 10_000_000,
+            time_ns: 0,
+            scans: 0,
+            first_scan: true,
+            state: SimState::Ready,
+            held: Vec::new(),
+            forced: Vec::new(),
+            breakpoints: Vec::new(),
+            next_breakpoint: 0,
+            trace: Trace::new(Vec::new(), 0),
+            watchdog: DEFAULT_WATCHDOG,
+        })
+    }
+
+    /// The checked program.
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    /// The compiled program (layout, debug map).
+    pub fn executable(&self) -> &Executable {
+        &self.exe
+    }
+
+    /// The main PROGRAM.
+    pub fn main_pou(&self) -> PouId {
+        self.exe.main_pou()
+    }
+
+    /// The current state.
+    pub fn state(&self) -> &SimState {
+        &self.state
+    }
+
+    /// Virtual time since the last start, in nanoseconds.
+    pub fn time_ns(&self) -> i64 {
+        self.time_ns
+    }
+
+    /// Scans completed since the last start.
+    pub fn scan_count(&self) -> u64 {
+        self.scans
+    }
+
+    /// The cycle time in nanoseconds.
+    pub fn cycle_ns(&self) -> i64 {
+        self.cycle_ns
+    }
+
+    /// Sets the cycle time (at least 1 ns).
+    pub fn set_cycle_ns(&mut self, ns: i64) {
+        self.cycle_ns = ns.max(1);
+    }
+
+    /// Sets the watchdog: the most instructions one scan may run (at least 1).
+    pub fn set_watchdog(&mut self, budget: u64) {
+        self.watchdog = budget.max(1);
+    }
+
+    /// Runs one scan.
+    pub fn scan(&mut self) -> ScanOutcome {
+        if let SimState::Faulted(info) = &self.state {
+            return ScanOutcome::Fault(info.clone());
+        }
+        self.state = SimState::Ready;
+        self.apply_pinned();
+        let sys = SysState { first_scan: self.first_scan, time_ns: self.time_ns };
+        if let Err(RuntimeError { fault, span, pou }) = self.machine.run_scan(&self.exe, sys, self.watchdog) {
+            let info = FaultInfo { fault, span, pou, scan: self.scans + 1, time_ns: self.time_ns };
+            self.state = SimState::Faulted(info.clone());
+            return ScanOutcome::Fault(info);
+        }
+        self.apply_forced();
+        self.scans += 1;
+        self.first_scan = false;
+        self.time_ns = self.time_ns.saturating_add(self.cycle_ns);
+        self.record_trace();
+        self.check_breakpoints()
+    }
+
+    /// Runs up to `n` scans, stopping early at a breakpoint or fault.
+    pub fn run_scans(&mut self, n: u64) -> ScanOutcome {
+        for _ in 0..n {
+            match self.scan() {
+                ScanOutcome::Completed => {}
+                other => return other,
+            }
+        }
+        ScanOutcome::Completed
+    }
+
+    /// Runs scans until the virtual clock reaches `time_ns` (or a breakpoint or fault).
+    pub fn run_until(&mut self, time_ns: i64) -> ScanOutcome {
+        while self.time_ns < time_ns {
+            match self.scan() {
+                ScanOutcome::Completed => {}
+                other => return other,
+            }
+        }
+        ScanOutcome::Completed
+    }
+
+    /// Cold restart: every variable back to its initial value, clock and scan count to 0,
+    /// fault cleared. Held inputs and forcing stay.
+    pub fn cold_restart(&mut self) {
+        self.machine.cold_reset(&self.exe);
+        self.restart_common();
+    }
+
+    /// Warm restart: like a cold restart, but RETAIN variables keep their values.
+    pub fn warm_restart(&mut self) {
+        self.machine.warm_reset(&self.exe);
+        self.restart_common();
+    }
+
+    fn restart_common(&mut self) {
+        self.time_ns = 0;
+        self.scans = 0;
+        self.first_scan = true;
+        self.state = SimState::Ready;
+        for bp in &mut self.breakpoints {
+            bp.was_true = false;
+        }
+        self.trace.clear();
+    }
+
+    fn slot(&self, path: &str) -> Result<Slot, SimError> {
+        self.exe.locate(path).ok_or_else(|| SimError::UnknownVariable(path.to_string()))
+    }
+
+    /// Parses `text` (an IEC literal) as a value for the variable at `path`.
+    pub fn parse_value(&self, path: &str, text: &str) -> Result<(Slot, Value), SimError> {
+        let slot = self.slot(path)?;
+        let init = semantic::parse_value(&self.program, self.main_pou(), slot.ty, text)
+            .map_err(|message| SimError::BadValue { path: path.to_string(), message })?;
+        let value = match init {
+            InitValue::Scalar(bits) => Value::from_bits(slot.ty, bits, self.exe.type_table()),
+            InitValue::Str(bytes) => Value::Str(bytes),
+            _ => {
+                return Err(SimError::BadValue {
+                    path: path.to_string(),
+                    message: "only single values can be set".to_string(),
+                })
+            }
+        };
+        Ok((slot, value))
+    }
+
+    /// Writes a value now (the program may overwrite it on the next scan).
+    pub fn write(&mut self, path: &str, text: &str) -> Result<(), SimError> {
+        let (slot, value) = self.parse_value(path, text)?;
+        self.write_slot(path, &slot, &value)
+    }
+
+    fn write_slot(&mut self, path: &str, slot: &Slot, value: &Value) -> Result<(), SimError> {
+        vm::write(self.machine.memory_mut(), &self.exe, slot, value)
+            .map_err(|f| SimError::BadValue { path: path.to_string(), message: f.to_string() })
+    }
+
+    /// Holds an input at a value: written before every scan until released.
+    pub fn hold(&mut self, path: &str, text: &str) -> Result<(), SimError> {
+        let (slot, value) = self.parse_value(path, text)?;
+        self.write_slot(path, &slot, &value)?;
+        self.held.retain(|p| !p.path.eq_ignore_ascii_case(path));
+        self.held.push(Pinned { path: path.to_string(), slot, value });
+        Ok(())
+    }
+
+    /// Stops holding an input (it keeps its last value).
+    pub fn release(&mut self, path: &str) {
+        self.held.retain(|p| !p.path.eq_ignore_ascii_case(path));
+    }
+
+    /// Forces a variable: its value is written before and after every scan, whatever the
+    /// program does, until unforced.
+    pub fn force(&mut self, path: &str, text: &str) -> Result<(), SimError> {
+        let (slot, value) = self.parse_value(path, text)?;
+        self.write_slot(path, &slot, &value)?;
+        self.forced.retain(|p| !p.path.eq_ignore_ascii_case(path));
+        self.forced.push(Pinned { path: path.to_string(), slot, value });
+        Ok(())
+    }
+
+    /// Removes forcing from a variable.
+    pub fn unforce(&mut self, path: &str) {
+        self.forced.retain(|p| !p.path.eq_ignore_ascii_case(path));
+    }
+
+    /// The forced variables and their values.
+    pub fn forced(&self) -> impl Iterator<Item = (&str, &Value)> {
+        self.forced.iter().map(|p| (p.path.as_str(), &p.value))
+    }
+
+    fn apply_pinned(&mut self) {
+        let pins: Vec<Pinned> = self.held.iter().chain(&self.forced).cloned().collect();
+        for p in pins {
+            // A pinned slot was checked when pinned; a failure here cannot happen for the
+            // same executable, and is ignored rather than stopping the PLC.
+            let _ = vm::write(self.machine.memory_mut(), &self.exe, &p.slot, &p.value);
+        }
+    }
+
+    fn apply_forced(&mut self) {
+        for i in 0..self.forced.len() {
+            let p = self.forced[i].clone();
+            let _ = vm::write(self.machine.memory_mut(), &self.exe, &p.slot, &p.value);
+        }
+    }
+
+    /// Reads a variable (`Name`, `Name.field`, `Arr[2]`, `Fb.Q`, `Word.3`).
+    pub fn read(&self, path: &str) -> Result<Value, SimError> {
+        let slot = self.slot(path)?;
+        Ok(vm::read(self.machine.memory(), &self.exe, &slot))
+    }
+
+    /// Every variable of the main program (and the globals) as JSON, by declared name:
+    /// the `vars` object of `plc run --json`.
+    pub fn vars_json(&self) -> serde_json::Map<String, serde_json::Value> {
+        let mut out = serde_json::Map::new();
+        for entry in self.exe.main_vars() {
+            if out.contains_key(&entry.var.name) {
+                continue;
+            }
+            let value = vm::read(self.machine.memory(), &self.exe, &entry.slot);
+            out.insert(entry.var.name.clone(), vm::to_json(&value));
+        }
+        out
+    }
+
+    /// Adds a breakpoint on an ST boolean condition over the program's variables.
+    pub fn add_breakpoint(&mut self, condition: &str) -> Result<BreakpointId, SimError> {
+        let expr = semantic::check_condition(&self.program, self.main_pou(), condition)
+            .map_err(SimError::BadCondition)?;
+        let id = self.exe.compile_condition(&self.program, &expr).map_err(SimError::Compile)?;
+        let bp = BreakpointId(self.next_breakpoint);
+        self.next_breakpoint += 1;
+        self.breakpoints.push(Breakpoint { id: bp, source: condition.to_string(), condition: id, was_true: false });
+        Ok(bp)
+    }
+
+    /// Removes a breakpoint.
+    pub fn remove_breakpoint(&mut self, id: BreakpointId) -> Result<(), SimError> {
+        let before = self.breakpoints.len();
+        self.breakpoints.retain(|b| b.id != id);
+        if self.breakpoints.len() == before {
+            return Err(SimError::UnknownBreakpoint(id));
+        }
+        Ok(())
+    }
+
+    /// The condition text of a breakpoint.
+    pub fn breakpoint_condition(&self, id: BreakpointId) -> Option<&str> {
+        self.breakpoints.iter().find(|b| b.id == id).map(|b| b.source.as_str())
+    }
+
+    fn check_breakpoints(&mut self) -> ScanOutcome {
+        let sys = SysState { first_scan: false, time_ns: self.time_ns };
+        let mut hit = None;
+        for i in 0..self.breakpoints.len() {
+            let cond = self.breakpoints[i].condition;
+            let now = match self.machine.eval_condition(&self.exe, cond, sys, self.watchdog) {
+                Ok(v) => v,
+                Err(_) => false,
+            };
+            let bp = &mut self.breakpoints[i];
+            if now && !bp.was_true && hit.is_none() {
+                hit = Some(bp.id);
+            }
+            bp.was_true = now;
+        }
+        match hit {
+            Some(id) => {
+                self.state = SimState::Paused(id);
+                ScanOutcome::Breakpoint(id)
+            }
+            None => ScanOutcome::Completed,
+        }
+    }
+
+    /// Starts recording `paths` after every scan, keeping the last `capacity` samples.
+    pub fn set_trace(&mut self, paths: &[&str], capacity: usize) -> Result<(), SimError> {
+        let mut slots = Vec::new();
+        for p in paths {
+            slots.push((p.to_string(), self.slot(p)?));
+        }
+        self.trace = Trace::new(slots, capacity);
+        Ok(())
+    }
+
+    /// The trace recorded so far.
+    pub fn trace(&self) -> &Trace {
+        &self.trace
+    }
+
+    fn record_trace(&mut self) {
+        if self.trace.is_enabled() {
+            let values = self
+                .trace
+                .slots()
+                .iter()
+                .map(|(_, s)| vm::read(self.machine.memory(), &self.exe, s))
+                .collect();
+            self.trace.push(TraceSample { scan: self.scans, time_ns: self.time_ns, values });
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

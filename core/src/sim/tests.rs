@@ -1,0 +1,171 @@
+#![allow(clippy::unwrap_used)]
+
+use super::*;
+use crate::vm::Value;
+
+fn sim(source: &str) -> Simulator {
+    let analysis = semantic::analyze(source);
+    let errors: Vec<_> = analysis.diagnostics.iter().filter(|d| d.is_error()).collect();
+    assert!(errors.is_empty(), "{errors:?}");
+    let program = analysis.program.unwrap();
+    let main = program.programs().find(|&p| !program.pou(p).library).unwrap();
+    Simulator::new(program, main).unwrap()
+}
+
+fn int(s: &Simulator, path: &str) -> i128 {
+    match s.read(path).unwrap() {
+        Value::Int(v, _) => v,
+        other => panic!("{path} is {other:?}"),
+    }
+}
+
+fn boolean(s: &Simulator, path: &str) -> bool {
+    match s.read(path).unwrap() {
+        Value::Bool(b) => b,
+        other => panic!("{path} is {other:?}"),
+    }
+}
+
+const LATCH: &str = "
+PROGRAM Latch
+VAR_INPUT Start : BOOL; Stop : BOOL; END_VAR
+VAR_OUTPUT Motor : BOOL; END_VAR
+VAR RETAIN Count : INT; END_VAR
+VAR n : INT; END_VAR
+Motor := (Start OR Motor) AND NOT Stop;
+Count := Count + 1;
+n := n + 1;
+END_PROGRAM";
+
+#[test]
+fn held_inputs_drive_a_latch_scan_by_scan() {
+    let mut s = sim(LATCH);
+    assert_eq!(s.scan(), ScanOutcome::Completed);
+    assert!(!boolean(&s, "Motor"));
+    s.hold("Start", "TRUE").unwrap();
+    s.scan();
+    assert!(boolean(&s, "motor"), "names are case-insensitive");
+    s.hold("Start", "FALSE").unwrap();
+    s.scan();
+    assert!(boolean(&s, "Motor"), "the latch holds");
+    s.hold("Stop", "TRUE").unwrap();
+    s.scan();
+    assert!(!boolean(&s, "Motor"));
+}
+
+#[test]
+fn warm_restart_keeps_retain_and_cold_restart_does_not() {
+    let mut s = sim(LATCH);
+    s.run_scans(5);
+    assert_eq!((int(&s, "Count"), int(&s, "n")), (5, 5));
+    s.warm_restart();
+    assert_eq!((int(&s, "Count"), int(&s, "n")), (5, 0));
+    assert_eq!((s.scan_count(), s.time_ns()), (0, 0));
+    s.cold_restart();
+    assert_eq!(int(&s, "Count"), 0);
+}
+
+#[test]
+fn forcing_wins_over_the_program() {
+    let mut s = sim(LATCH);
+    s.force("Motor", "TRUE").unwrap();
+    s.hold("Stop", "TRUE").unwrap();
+    s.scan();
+    assert!(boolean(&s, "Motor"));
+    s.unforce("Motor");
+    s.scan();
+    assert!(!boolean(&s, "Motor"));
+}
+
+#[test]
+fn a_breakpoint_pauses_on_the_scan_its_condition_becomes_true() {
+    let mut s = sim(LATCH);
+    let bp = s.add_breakpoint("n >= 3 AND NOT Motor").unwrap();
+    assert_eq!(s.run_scans(10), ScanOutcome::Breakpoint(bp));
+    assert_eq!(s.scan_count(), 3);
+    assert_eq!(s.state(), &SimState::Paused(bp));
+    // Still true: no new pause (it pauses when the condition becomes true).
+    assert_eq!(s.run_scans(4), ScanOutcome::Completed);
+    assert!(matches!(s.add_breakpoint("n +"), Err(SimError::BadCondition(_))));
+    assert!(matches!(s.add_breakpoint("n := 1"), Err(SimError::BadCondition(_))));
+}
+
+#[test]
+fn a_fault_stops_the_plc_until_a_restart() {
+    let src = "PROGRAM P VAR d : INT; x : INT := 10; k : INT; END_VAR
+k := k + 1;
+IF k = 3 THEN d := x / (k - 3); END_IF;
+END_PROGRAM";
+    let mut s = sim(src);
+    let ScanOutcome::Fault(info) = s.run_scans(10) else { panic!("no fault") };
+    assert_eq!(info.fault, Fault::DivisionByZero);
+    assert_eq!(info.scan, 3);
+    assert_eq!(&src[info.span.start as usize..info.span.start as usize + 6], "d := x");
+    assert_eq!(s.scan_count(), 2);
+    assert!(matches!(s.scan(), ScanOutcome::Fault(_)));
+    assert_eq!(int(&s, "k"), 3, "writes before the fault stay");
+    s.cold_restart();
+    assert_eq!(s.scan(), ScanOutcome::Completed);
+}
+
+#[test]
+fn the_watchdog_stops_an_endless_loop() {
+    let mut s = sim("PROGRAM P VAR i : INT; END_VAR WHILE TRUE DO i := i + 1; END_WHILE; END_PROGRAM");
+    s.set_watchdog(100_000);
+    let ScanOutcome::Fault(info) = s.scan() else { panic!("no fault") };
+    assert_eq!(info.fault, Fault::Watchdog { budget: 100_000 });
+}
+
+#[test]
+fn timers_run_on_the_virtual_clock_in_single_scans() {
+    let mut s = sim("PROGRAM P VAR t : TON; END_VAR t(IN := TRUE, PT := T#50ms); END_PROGRAM");
+    s.set_cycle_ns(10_000_000);
+    s.scan();
+    assert_eq!(s.read("t.ET").unwrap(), Value::Time(0));
+    s.run_scans(4);
+    assert!(!boolean(&s, "t.Q"));
+    assert_eq!(s.read("t.ET").unwrap(), Value::Time(40_000_000));
+    s.scan();
+    assert!(boolean(&s, "t.Q"));
+    assert_eq!(s.run_until(1_000_000_000), ScanOutcome::Completed);
+    assert_eq!(s.time_ns(), 1_000_000_000);
+    assert_eq!(s.read("t.ET").unwrap(), Value::Time(50_000_000));
+}
+
+#[test]
+fn first_scan_and_square_waves() {
+    let src = "PROGRAM P VAR RETAIN first : INT; END_VAR VAR sec : INT; on : BOOL; off : BOOL; END_VAR
+IF FST_SCN THEN first := first + 1; END_IF;
+IF T_100MS THEN sec := sec + 1; END_IF;
+on := ALW_ON; off := ALW_OFF;
+END_PROGRAM";
+    let mut s = sim(src);
+    s.run_scans(100);
+    assert_eq!(int(&s, "first"), 1);
+    // 100 scans of 10 ms = 1 s = ten periods of 100 ms, TRUE half of each.
+    assert_eq!(int(&s, "sec"), 50);
+    assert!(boolean(&s, "on") && !boolean(&s, "off"));
+    s.warm_restart();
+    s.scan();
+    assert_eq!(int(&s, "first"), 2);
+}
+
+#[test]
+fn the_trace_keeps_the_last_samples() {
+    let mut s = sim(LATCH);
+    s.set_trace(&["n", "Motor"], 3).unwrap();
+    s.run_scans(5);
+    let scans: Vec<u64> = s.trace().samples().map(|t| t.scan).collect();
+    assert_eq!(scans, vec![3, 4, 5]);
+    assert!(s.set_trace(&["nope"], 3).is_err());
+}
+
+#[test]
+fn bad_values_are_errors_not_panics() {
+    let mut s = sim(LATCH);
+    assert!(matches!(s.write("Count", "'text'"), Err(SimError::BadValue { .. })));
+    assert!(matches!(s.write("Count", "70000"), Err(SimError::BadValue { .. })));
+    assert!(matches!(s.write("Nope", "1"), Err(SimError::UnknownVariable(_))));
+    s.write("Count", "-5").unwrap();
+    assert_eq!(int(&s, "Count"), -5);
+}

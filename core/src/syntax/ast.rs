@@ -1,0 +1,537 @@
+//! The abstract syntax tree of IEC 61131-3 Structured Text.
+//!
+//! The parser produces it; the checker (`crate::semantic`) reads it. Every node carries the
+//! byte [`Span`] of the text it came from so diagnostics can point at it. Names keep the
+//! spelling the user wrote; comparisons are case-insensitive (see [`Ident::key`]).
+//! This module holds data only: no parsing, no checking.
+
+use crate::diagnostics::Span;
+
+/// An identifier as written, with its place in the source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Ident {
+    /// The spelling the user wrote.
+    pub name: String,
+    /// Where it stands in the source.
+    pub span: Span,
+}
+
+impl Ident {
+    /// The case-insensitive lookup key (upper case).
+    pub fn key(&self) -> String {
+        self.name.to_ascii_uppercase()
+    }
+}
+
+/// A whole source file: type declarations, global variables and POUs in source order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SourceFile {
+    /// The top-level items in source order.
+    pub items: Vec<Item>,
+}
+
+/// A top-level item of a source file.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Item {
+    /// `TYPE … END_TYPE` (one block may declare several types).
+    Types(Vec<TypeDef>),
+    /// A top-level `VAR_GLOBAL … END_VAR` block (outside any POU).
+    Globals(VarBlock),
+    /// A PROGRAM, FUNCTION or FUNCTION_BLOCK.
+    Pou(Pou),
+}
+
+/// The kind of a program organisation unit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PouKind {
+    /// `PROGRAM … END_PROGRAM`
+    Program,
+    /// `FUNCTION name : TYPE … END_FUNCTION`
+    Function,
+    /// `FUNCTION_BLOCK … END_FUNCTION_BLOCK`
+    FunctionBlock,
+}
+
+/// A program organisation unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pou {
+    /// PROGRAM, FUNCTION or FUNCTION_BLOCK.
+    pub kind: PouKind,
+    /// The POU's name.
+    pub name: Ident,
+    /// The result type of a FUNCTION (`None` for the others, and for a function declared
+    /// without one).
+    pub return_type: Option<TypeRef>,
+    /// Declaration blocks in source order.
+    pub var_blocks: Vec<VarBlock>,
+    /// The statements of the body.
+    pub body: Vec<Stmt>,
+    /// The whole POU, from its keyword to its END keyword.
+    pub span: Span,
+}
+
+/// Which `VAR…` keyword opened a declaration block.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VarSection {
+    /// `VAR`
+    Var,
+    /// `VAR_INPUT`
+    Input,
+    /// `VAR_OUTPUT`
+    Output,
+    /// `VAR_IN_OUT`
+    InOut,
+    /// `VAR_GLOBAL`
+    Global,
+    /// `VAR_EXTERNAL`
+    External,
+    /// `VAR_TEMP`
+    Temp,
+}
+
+/// One `VAR… [RETAIN|NON_RETAIN] [CONSTANT] … END_VAR` block.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VarBlock {
+    /// The opening keyword.
+    pub section: VarSection,
+    /// `RETAIN` was written.
+    pub retain: bool,
+    /// `CONSTANT` was written.
+    pub constant: bool,
+    /// The declarations inside.
+    pub decls: Vec<VarDecl>,
+    /// From the opening keyword to `END_VAR`.
+    pub span: Span,
+}
+
+/// One declaration line: `a, b AT %IX0.0 : BOOL := TRUE; (* comment *)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VarDecl {
+    /// The declared names (several when written `a, b : INT`).
+    pub names: Vec<Ident>,
+    /// `AT %…` location, if any.
+    pub location: Option<DirectAddress>,
+    /// The declared type.
+    pub ty: TypeRef,
+    /// The initial value, if any.
+    pub init: Option<Initializer>,
+    /// The text of a comment that follows the declaration on the same line (without the
+    /// comment delimiters, trimmed), used as the variable's description.
+    pub comment: Option<String>,
+    /// The whole declaration.
+    pub span: Span,
+}
+
+/// The memory area of a directly represented variable.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AddressArea {
+    /// `%I` inputs.
+    Input,
+    /// `%Q` outputs.
+    Output,
+    /// `%M` memory.
+    Memory,
+}
+
+/// The size prefix of a directly represented variable.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AddressSize {
+    /// `X` or no size letter: a single bit.
+    Bit,
+    /// `B`: byte.
+    Byte,
+    /// `W`: word (16 bits).
+    Word,
+    /// `D`: double word (32 bits).
+    DWord,
+    /// `L`: long word (64 bits).
+    LWord,
+}
+
+/// A directly represented address such as `%IX0.0`, `%QW4`, `%MW6` or `%I*`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DirectAddress {
+    /// I, Q or M.
+    pub area: AddressArea,
+    /// The size letter (X when absent).
+    pub size: AddressSize,
+    /// The dotted numbers: `%IX1.2` gives `[1, 2]`.
+    pub path: Vec<u32>,
+    /// The text as written, e.g. `%IX0.0`.
+    pub text: String,
+    /// Where it stands.
+    pub span: Span,
+}
+
+/// A reference to a type where a variable, field, element or result is declared.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TypeRef {
+    /// An elementary or user type by name: `INT`, `TON`, `MyStruct`.
+    Named(Ident),
+    /// `STRING`, `STRING[10]`, `STRING(10)`, `WSTRING[…]`.
+    String {
+        /// `WSTRING` rather than `STRING`.
+        wide: bool,
+        /// The declared maximum length, if written.
+        length: Option<Box<Expr>>,
+        /// The whole type text.
+        span: Span,
+    },
+    /// `ARRAY [lo..hi, lo..hi] OF elem`.
+    Array {
+        /// One range per dimension.
+        ranges: Vec<(Expr, Expr)>,
+        /// The element type.
+        element: Box<TypeRef>,
+        /// The whole type text.
+        span: Span,
+    },
+    /// `INT (0..100)`: a subrange of an integer type.
+    Subrange {
+        /// The base type.
+        base: Ident,
+        /// Lower limit.
+        low: Box<Expr>,
+        /// Upper limit.
+        high: Box<Expr>,
+        /// The whole type text.
+        span: Span,
+    },
+    /// `(Red, Green := 5, Blue)`, optionally with a base type `INT (A, B)` — only in a TYPE
+    /// block or inline in a declaration.
+    Enum {
+        /// The enumerators with their optional explicit values.
+        values: Vec<(Ident, Option<Expr>)>,
+        /// The whole type text.
+        span: Span,
+    },
+    /// `STRUCT … END_STRUCT` (only in a TYPE block).
+    Struct {
+        /// The fields, declared like variables.
+        fields: Vec<VarDecl>,
+        /// The whole type text.
+        span: Span,
+    },
+}
+
+impl TypeRef {
+    /// The source span of the whole type reference.
+    pub fn span(&self) -> Span {
+        match self {
+            TypeRef::Named(id) => id.span,
+            TypeRef::String { span, .. }
+            | TypeRef::Array { span, .. }
+            | TypeRef::Subrange { span, .. }
+            | TypeRef::Enum { span, .. }
+            | TypeRef::Struct { span, .. } => *span,
+        }
+    }
+}
+
+/// One type in a `TYPE … END_TYPE` block: `Name : spec [:= init];`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TypeDef {
+    /// The new type's name.
+    pub name: Ident,
+    /// What it is.
+    pub ty: TypeRef,
+    /// The initial value declared on the type, if any.
+    pub init: Option<Initializer>,
+    /// The whole definition.
+    pub span: Span,
+}
+
+/// An initial value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Initializer {
+    /// A plain expression (must be constant).
+    Expr(Expr),
+    /// `[1, 2, 3(0), 2(5)]` for arrays.
+    Array {
+        /// The elements, in order.
+        elements: Vec<ArrayInitElement>,
+        /// The whole initializer.
+        span: Span,
+    },
+    /// `(field := value, other := value)` for structs.
+    Struct {
+        /// Field initializers in order.
+        fields: Vec<(Ident, Initializer)>,
+        /// The whole initializer.
+        span: Span,
+    },
+}
+
+impl Initializer {
+    /// The source span of the whole initializer.
+    pub fn span(&self) -> Span {
+        match self {
+            Initializer::Expr(e) => e.span,
+            Initializer::Array { span, .. } | Initializer::Struct { span, .. } => *span,
+        }
+    }
+}
+
+/// One element of an array initializer.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ArrayInitElement {
+    /// A single value.
+    Single(Initializer),
+    /// `n(value)` — the value repeated n times; `n()` repeats the default.
+    Repeat {
+        /// How many times.
+        count: Expr,
+        /// The value, or `None` for `n()`.
+        value: Option<Box<Initializer>>,
+        /// The whole element.
+        span: Span,
+    },
+}
+
+/// A statement with its span.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stmt {
+    /// What the statement is.
+    pub kind: StmtKind,
+    /// From its first token to its terminating `;` (inclusive when present).
+    pub span: Span,
+}
+
+/// The kinds of statement.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StmtKind {
+    /// `target := value;`
+    Assign {
+        /// The assigned place (a variable, member, element or bit).
+        target: Expr,
+        /// The new value.
+        value: Expr,
+    },
+    /// A call used as a statement: `Timer(IN := x, PT := T#1s);` or `F(1, 2);`.
+    /// The expression is always an [`ExprKind::Call`].
+    Call(Expr),
+    /// `IF c THEN … ELSIF c THEN … ELSE … END_IF;`
+    If {
+        /// The IF and ELSIF branches in order.
+        branches: Vec<(Expr, Vec<Stmt>)>,
+        /// The ELSE branch, if written.
+        else_body: Option<Vec<Stmt>>,
+    },
+    /// `CASE selector OF labels: … ELSE … END_CASE;`
+    Case {
+        /// The selector expression.
+        selector: Expr,
+        /// The labelled branches in order.
+        arms: Vec<CaseArm>,
+        /// The ELSE branch, if written.
+        else_body: Option<Vec<Stmt>>,
+    },
+    /// `FOR var := from TO to [BY step] DO … END_FOR;`
+    For {
+        /// The control variable.
+        var: Ident,
+        /// Start value.
+        from: Expr,
+        /// End value.
+        to: Expr,
+        /// Step, if written.
+        by: Option<Expr>,
+        /// The loop body.
+        body: Vec<Stmt>,
+    },
+    /// `WHILE cond DO … END_WHILE;`
+    While {
+        /// Loop condition.
+        cond: Expr,
+        /// The loop body.
+        body: Vec<Stmt>,
+    },
+    /// `REPEAT … UNTIL cond END_REPEAT;`
+    Repeat {
+        /// The loop body.
+        body: Vec<Stmt>,
+        /// Exit condition.
+        until: Expr,
+    },
+    /// `EXIT;`
+    Exit,
+    /// `CONTINUE;`
+    Continue,
+    /// `RETURN;`
+    Return,
+    /// A lone `;`.
+    Empty,
+}
+
+/// One branch of a CASE statement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseArm {
+    /// The labels before the colon.
+    pub labels: Vec<CaseLabel>,
+    /// The statements of the branch.
+    pub body: Vec<Stmt>,
+    /// From the first label to the colon.
+    pub span: Span,
+}
+
+/// A CASE label.
+#[derive(Debug, Clone, PartialEq)]
+pub enum CaseLabel {
+    /// A single value (a constant expression or enumerator).
+    Value(Expr),
+    /// `low..high`.
+    Range(Expr, Expr),
+}
+
+/// An expression with its span.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Expr {
+    /// What the expression is.
+    pub kind: ExprKind,
+    /// Its text in the source.
+    pub span: Span,
+}
+
+/// The kinds of expression.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExprKind {
+    /// A literal constant.
+    Literal(Literal),
+    /// A name: a variable, a constant, an enumerator or a system variable.
+    Name(Ident),
+    /// `Type#Value` for an enumerator qualified by its type.
+    EnumValue {
+        /// The enumeration type.
+        type_name: Ident,
+        /// The enumerator.
+        value: Ident,
+    },
+    /// `base.field` — a struct field or FB member.
+    Member(Box<Expr>, Ident),
+    /// `base.3` or `base.%X3` — one bit of an integer or bit string.
+    Bit(Box<Expr>, u32),
+    /// `base[i, j]` — an array element.
+    Index(Box<Expr>, Vec<Expr>),
+    /// A prefix operator.
+    Unary(UnaryOp, Box<Expr>),
+    /// An infix operator.
+    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    /// A call of a function or a function block instance.
+    Call {
+        /// What is called: a function name, or an FB instance (a name, member or element).
+        callee: Box<Expr>,
+        /// The arguments as written.
+        args: Vec<Arg>,
+    },
+    /// A directly represented variable used in code: `%IX0.1`.
+    Direct(DirectAddress),
+    /// An expression in parentheses (kept so spans and ST views stay faithful).
+    Paren(Box<Expr>),
+}
+
+/// A prefix operator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum UnaryOp {
+    /// `-x`
+    Neg,
+    /// `+x`
+    Plus,
+    /// `NOT x`
+    Not,
+}
+
+/// An infix operator, from loosest to tightest binding:
+/// `OR OR_ELSE` < `XOR` < `AND & AND_THEN` < `= <>` < `< > <= >=` < `+ -` < `* / MOD` < `**`.
+/// Unary operators bind tighter than `**`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BinaryOp {
+    /// `OR`
+    Or,
+    /// `OR_ELSE` (short-circuit)
+    OrElse,
+    /// `XOR`
+    Xor,
+    /// `AND` or `&`
+    And,
+    /// `AND_THEN` (short-circuit)
+    AndThen,
+    /// `=`
+    Eq,
+    /// `<>`
+    Ne,
+    /// `<`
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+    /// `+`
+    Add,
+    /// `-`
+    Sub,
+    /// `*`
+    Mul,
+    /// `/`
+    Div,
+    /// `MOD`
+    Mod,
+    /// `**`
+    Pow,
+}
+
+/// An argument of a call.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Arg {
+    /// An informal (positional) argument.
+    Positional(Expr),
+    /// `name := value`
+    Input {
+        /// The parameter name.
+        name: Ident,
+        /// The value.
+        value: Expr,
+    },
+    /// `name => target` or `NOT name => target`.
+    Output {
+        /// The output parameter name.
+        name: Ident,
+        /// The variable that receives it.
+        target: Expr,
+        /// `NOT` was written before the name.
+        negated: bool,
+    },
+}
+
+/// A literal constant.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Literal {
+    /// The value.
+    pub value: LiteralValue,
+    /// A type prefix such as `DINT#`, `REAL#`, `BOOL#`, `STRING#`, when written.
+    pub type_prefix: Option<Ident>,
+}
+
+/// The value of a literal.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LiteralValue {
+    /// An integer, any base. Wide enough for every IEC integer type and a sign.
+    Int(i128),
+    /// A real number.
+    Real(f64),
+    /// `TRUE` / `FALSE`.
+    Bool(bool),
+    /// A `'…'` string, escapes resolved, as bytes.
+    String(Vec<u8>),
+    /// A `"…"` wide string, escapes resolved, as UTF-16 code units.
+    WString(Vec<u16>),
+    /// `T#…` / `TIME#…` / `LTIME#…`: nanoseconds.
+    Time(i64),
+    /// `D#…` / `DATE#…`: nanoseconds since 1970-01-01 00:00 (a whole number of days).
+    Date(i64),
+    /// `TOD#…` / `TIME_OF_DAY#…`: nanoseconds since midnight.
+    TimeOfDay(i64),
+    /// `DT#…` / `DATE_AND_TIME#…`: nanoseconds since 1970-01-01 00:00.
+    DateTime(i64),
+}

@@ -1,0 +1,27 @@
+//! The ST front-end: lexer, parser and the syntax tree.
+//!
+//! Input is source text; output is a [`SourceFile`] plus located diagnostics. The parser
+//! recovers from errors (one bad line gives one error, not a cascade) so the checker can
+//! still report on the rest. This module never looks at names or types.
+
+pub mod ast;
+mod lexer;
+mod literal;
+mod parser;
+
+pub use ast::*;
+pub use lexer::{Token, TokenKind};
+
+use crate::diagnostics::Diagnostic;
+
+/// Parses a whole source file. Always returns a tree (possibly partial) and every problem
+/// found, in source order.
+pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
+    parser::parse_source(source)
+}
+
+/// Parses a single expression (a breakpoint condition, a `--set` value). Text after the
+/// expression is an error.
+pub fn parse_expression(source: &str) -> Result<Expr, Vec<Diagnostic>> {
+    parser::parse_single_expression(source)
+}

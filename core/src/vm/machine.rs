@@ -1,0 +1,437 @@
+//! The machine: memory plus the dispatch loop that runs one scan of the main program (or a
+//! breakpoint condition).
+//!
+//! The loop is one `match` over the 16-byte [`Op`]s; registers are cells addressed
+//! relative to the current frame base. It never allocates during a scan except for
+//! string temporaries (reused scratch buffers), never panics (every memory and code
+//! index is checked; a bad one is `Fault::Internal`), and counts every instruction
+//! against the watchdog budget.
+
+use super::arith;
+use super::builtins;
+use super::fault::Fault;
+use super::memory::{copy_cells, copy_str, Memory};
+use super::op::{Op, R3};
+use crate::compile::{ConditionId, Executable};
+use crate::diagnostics::Span;
+use crate::semantic::ir::SysVar;
+use crate::semantic::types::{Elem, PouId};
+
+/// The deepest nesting of calls the VM allows.
+pub const MAX_CALL_DEPTH: usize = 64;
+
+/// The system state the simulator passes to each scan.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct SysState {
+    /// TRUE on the first scan after a cold or warm start.
+    pub first_scan: bool,
+    /// The virtual clock in nanoseconds since the start.
+    pub time_ns: i64,
+}
+
+/// A runtime fault with the statement that caused it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RuntimeError {
+    /// What went wrong.
+    pub fault: Fault,
+    /// The innermost statement of user code being executed.
+    pub span: Span,
+    /// The POU of that statement.
+    pub pou: PouId,
+}
+
+impl std::fmt::Display for RuntimeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.fault.fmt(f)
+    }
+}
+
+impl std::error::Error for RuntimeError {}
+
+#[derive(Debug, Clone, Copy)]
+struct CallFrame {
+    ret: u32,
+    base: u32,
+}
+
+/// Reusable buffers for string work.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Scratch {
+    pub a: Vec<u8>,
+    pub b: Vec<u8>,
+    pub text: String,
+}
+
+/// A PLC: memory and the state needed to run scans.
+#[derive(Debug, Clone)]
+pub struct Machine {
+    mem: Memory,
+    stack: Vec<CallFrame>,
+    scratch: Scratch,
+}
+
+const BAD: Fault = Fault::Internal("register address out of range");
+
+impl Machine {
+    /// A machine whose memory is the executable's initial image.
+    pub fn new(exe: &Executable) -> Machine {
+        Machine {
+            mem: Memory { cells: exe.out.init.clone() },
+            stack: Vec::with_capacity(MAX_CALL_DEPTH),
+            scratch: Scratch::default(),
+        }
+    }
+
+    /// The memory.
+    pub fn memory(&self) -> &Memory {
+        &self.mem
+    }
+
+    /// The memory, for writing inputs and forced values.
+    pub fn memory_mut(&mut self) -> &mut Memory {
+        &mut self.mem
+    }
+
+    /// Cold restart: every cell back to its initial value.
+    pub fn cold_reset(&mut self, exe: &Executable) {
+        self.mem.cells.clear();
+        self.mem.cells.extend_from_slice(&exe.out.init);
+    }
+
+    /// Warm restart: as [`Machine::cold_reset`], but RETAIN variables keep their values.
+    pub fn warm_reset(&mut self, exe: &Executable) {
+        let old = std::mem::take(&mut self.mem.cells);
+        self.cold_reset(exe);
+        for &(s, n) in &exe.retained {
+            let (s, e) = (s as usize, s as usize + n as usize);
+            if let (Some(dst), Some(src)) = (self.mem.cells.get_mut(s..e), old.get(s..e)) {
+                dst.copy_from_slice(src);
+            }
+        }
+    }
+
+    /// Runs one scan of the main program with at most `budget` instructions.
+    pub fn run_scan(
+        &mut self,
+        exe: &Executable,
+        sys: SysState,
+        budget: u64,
+    ) -> Result<(), RuntimeError> {
+        let entry = exe.pous.get(exe.main as usize).map_or(u32::MAX, |p| p.entry);
+        self.run(exe, entry, exe.main_base, sys, budget).map(|_| ())
+    }
+
+    /// Evaluates a breakpoint condition (in the main program's scope) with at most
+    /// `budget` instructions.
+    pub fn eval_condition(
+        &mut self,
+        exe: &Executable,
+        id: ConditionId,
+        sys: SysState,
+        budget: u64,
+    ) -> Result<bool, RuntimeError> {
+        let entry = exe.conditions.get(id.0 as usize).copied().unwrap_or(u32::MAX);
+        self.run(exe, entry, exe.main_base, sys, budget).map(|v| v != 0)
+    }
+
+    fn run(
+        &mut self,
+        exe: &Executable,
+        entry: u32,
+        base: u32,
+        sys: SysState,
+        budget: u64,
+    ) -> Result<u64, RuntimeError> {
+        // Conditions compiled after this machine was made may have grown the image.
+        if self.mem.cells.len() < exe.out.init.len() {
+            let n = self.mem.cells.len();
+            self.mem.cells.extend_from_slice(&exe.out.init[n..]);
+        }
+        self.stack.clear();
+        let mut pc = entry as usize;
+        match self.exec(exe, &mut pc, base, sys, budget) {
+            Ok(v) => Ok(v),
+            Err(fault) => Err(self.locate_fault(exe, fault, pc)),
+        }
+    }
+
+    /// Finds the statement to report: the innermost one in user code.
+    fn locate_fault(&self, exe: &Executable, fault: Fault, pc: usize) -> RuntimeError {
+        let user = |pc: usize| {
+            let (span, pou) = exe.statement_at(pc)?;
+            let lib = exe.pous.get(pou as usize).is_some_and(|p| p.library);
+            (!lib).then_some((span, pou))
+        };
+        let found = user(pc.saturating_sub(1))
+            .or_else(|| {
+                self.stack.iter().rev().find_map(|f| user((f.ret as usize).saturating_sub(1)))
+            })
+            .or_else(|| exe.statement_at(pc.saturating_sub(1)));
+        let (span, pou) = found.unwrap_or((Span::default(), exe.main));
+        RuntimeError { fault, span, pou }
+    }
+
+    fn exec(
+        &mut self,
+        exe: &Executable,
+        pc: &mut usize,
+        mut base: u32,
+        sys: SysState,
+        budget: u64,
+    ) -> Result<u64, Fault> {
+        let code = &exe.out.code[..];
+        let cells: &mut [u64] = &mut self.mem.cells;
+        let mut fuel = budget;
+        macro_rules! r {
+            ($x:expr) => {
+                *cells.get(base.wrapping_add($x) as usize).ok_or(BAD)?
+            };
+        }
+        macro_rules! w {
+            ($x:expr, $v:expr) => {{
+                let v = $v;
+                *cells.get_mut(base.wrapping_add($x) as usize).ok_or(BAD)? = v;
+            }};
+        }
+        macro_rules! at {
+            ($a:expr) => {
+                *cells.get_mut(($a) as usize).ok_or(BAD)?
+            };
+        }
+        macro_rules! bin {
+            ($o:expr, |$x:ident, $y:ident| $e:expr) => {{
+                let R3 { dst, a, b } = $o;
+                let ($x, $y) = (r!(a), r!(b));
+                w!(dst, $e)
+            }};
+        }
+        loop {
+            let op = code.get(*pc).ok_or(Fault::Internal("jump outside the code"))?;
+            *pc += 1;
+            if fuel == 0 {
+                return Err(Fault::Watchdog { budget });
+            }
+            fuel -= 1;
+            match *op {
+                Op::Const { dst, bits } => w!(dst, bits),
+                Op::Move { dst, a } => w!(dst, r!(a)),
+                Op::LoadAbs { dst, addr } => w!(dst, at!(addr)),
+                Op::StoreAbs { addr, a } => at!(addr) = r!(a),
+                Op::LoadInd { dst, ptr, off } => w!(dst, at!(r!(ptr).wrapping_add(u64::from(off)))),
+                Op::StoreInd { ptr, off, a } => at!(r!(ptr).wrapping_add(u64::from(off))) = r!(a),
+                Op::AddrOf { dst, off } => w!(dst, u64::from(base.wrapping_add(off))),
+                Op::PtrAdd { dst, ptr, off } => w!(dst, r!(ptr).wrapping_add(u64::from(off))),
+                Op::Index { ptr, idx, dim } => {
+                    let d = exe.out.dims.get(dim as usize).ok_or(BAD)?;
+                    let i = r!(idx) as i64;
+                    if i < d.low || i > d.high {
+                        return Err(Fault::IndexOutOfRange { index: i, low: d.low, high: d.high });
+                    }
+                    let step = (i - d.low) as u64 * u64::from(d.stride);
+                    w!(ptr, r!(ptr).wrapping_add(step));
+                }
+                Op::AddI64(o) => bin!(o, |x, y| (x as i64).wrapping_add(y as i64) as u64),
+                Op::SubI64(o) => bin!(o, |x, y| (x as i64).wrapping_sub(y as i64) as u64),
+                Op::MulI64(o) => bin!(o, |x, y| (x as i64).wrapping_mul(y as i64) as u64),
+                Op::AddI32(o) => bin!(o, |x, y| (x as i32).wrapping_add(y as i32) as i64 as u64),
+                Op::SubI32(o) => bin!(o, |x, y| (x as i32).wrapping_sub(y as i32) as i64 as u64),
+                Op::MulI32(o) => bin!(o, |x, y| (x as i32).wrapping_mul(y as i32) as i64 as u64),
+                Op::AddI16(o) => bin!(o, |x, y| (x as i16).wrapping_add(y as i16) as i64 as u64),
+                Op::SubI16(o) => bin!(o, |x, y| (x as i16).wrapping_sub(y as i16) as i64 as u64),
+                Op::AddF64(o) => bin!(o, |x, y| (f64::from_bits(x) + f64::from_bits(y)).to_bits()),
+                Op::SubF64(o) => bin!(o, |x, y| (f64::from_bits(x) - f64::from_bits(y)).to_bits()),
+                Op::MulF64(o) => bin!(o, |x, y| (f64::from_bits(x) * f64::from_bits(y)).to_bits()),
+                Op::DivF64(o) => bin!(o, |x, y| (f64::from_bits(x) / f64::from_bits(y)).to_bits()),
+                Op::AddF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) + f64::from_bits(y))),
+                Op::SubF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) - f64::from_bits(y))),
+                Op::MulF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) * f64::from_bits(y))),
+                Op::DivF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) / f64::from_bits(y))),
+                Op::EqCell(o) => bin!(o, |x, y| u64::from(x == y)),
+                Op::NeCell(o) => bin!(o, |x, y| u64::from(x != y)),
+                Op::LtI64(o) => bin!(o, |x, y| u64::from((x as i64) < (y as i64))),
+                Op::LeI64(o) => bin!(o, |x, y| u64::from((x as i64) <= (y as i64))),
+                Op::GtI64(o) => bin!(o, |x, y| u64::from((x as i64) > (y as i64))),
+                Op::GeI64(o) => bin!(o, |x, y| u64::from((x as i64) >= (y as i64))),
+                Op::And(o) => bin!(o, |x, y| x & y),
+                Op::Or(o) => bin!(o, |x, y| x | y),
+                Op::Xor(o) => bin!(o, |x, y| x ^ y),
+                Op::Bin { op, elem, dst, a, b } => w!(dst, arith::binary(op, elem, r!(a), r!(b))?),
+                Op::Cmp { op, elem, dst, a, b } => {
+                    w!(dst, u64::from(arith::compare(op, elem, r!(a), r!(b))))
+                }
+                Op::ScaleTime { op, elem, real, dst, a, b } => {
+                    w!(dst, arith::scale_time(op, elem, r!(a), r!(b), real)?)
+                }
+                Op::Neg { elem, dst, a } => w!(dst, arith::negate(elem, r!(a))),
+                Op::Not { elem, dst, a } => w!(dst, arith::complement(elem, r!(a))),
+                Op::Conv { from, to, dst, a } => w!(dst, arith::convert(from, to, r!(a))),
+                Op::RealToDint { dst, a } => w!(dst, real_to_dint(r!(a))),
+                Op::MulRealToDint(o) => {
+                    bin!(o, |x, y| real_to_dint(f32r(f64::from_bits(x) * f64::from_bits(y))))
+                }
+                Op::Trunc { from, to, dst, a } => w!(dst, arith::trunc(from, to, r!(a))),
+                Op::GetBit { dst, a, n } => w!(dst, arith::get_bit(r!(a), n)),
+                Op::SetBit { elem, n, dst, v } => {
+                    w!(dst, arith::set_bit(elem, r!(dst), u32::from(n), r!(v) != 0))
+                }
+                Op::Sys { var, dst } => w!(dst, sys_var(var, sys)),
+                Op::Jump { target } => *pc = target as usize,
+                Op::JumpIf { c, target } => {
+                    if r!(c) != 0 {
+                        loop_done();
+                        *pc = target as usize;
+                    }
+                }
+                Op::JumpIfNot { c, target } => {
+                    if r!(c) == 0 {
+                        loop_done();
+                        *pc = target as usize;
+                    }
+                }
+                Op::ForStart { lim } => {
+                    if r!(lim.wrapping_add(1)) == 0 {
+                        return Err(Fault::ForStepZero);
+                    }
+                }
+                Op::ForTest { elem, v, lim, target } => {
+                    let x = arith::to_i128(elem, r!(v));
+                    let end = arith::to_i128(elem, r!(lim));
+                    let step = arith::to_i128(elem, r!(lim.wrapping_add(1)));
+                    if !(if step > 0 { x <= end } else { x >= end }) {
+                        *pc = target as usize;
+                    }
+                }
+                Op::ForNext32 { bits, signed, v, lim, target } => {
+                    // Values of at most 32 bits: the sum cannot overflow i64.
+                    let (x, end, step) =
+                        (r!(v) as i64, r!(lim) as i64, r!(lim.wrapping_add(1)) as i64);
+                    let next = x + step;
+                    let sh = 64 - u32::from(bits);
+                    let wrapped = if signed {
+                        (next << sh) >> sh
+                    } else {
+                        ((next as u64) << sh >> sh) as i64
+                    };
+                    w!(v, wrapped as u64);
+                    if if step > 0 { next <= end } else { next >= end } {
+                        *pc = target as usize;
+                    } else {
+                        loop_done();
+                    }
+                }
+                Op::ForNext { elem, v, lim, target } => {
+                    let step = arith::to_i128(elem, r!(lim.wrapping_add(1)));
+                    let next = arith::to_i128(elem, r!(v)) + step;
+                    w!(v, arith::norm(elem, next));
+                    let end = arith::to_i128(elem, r!(lim));
+                    if if step > 0 { next <= end } else { next >= end } {
+                        *pc = target as usize;
+                    }
+                }
+                Op::ForStep { elem, v, lim } => {
+                    let end = arith::to_i128(elem, r!(lim));
+                    let step = arith::to_i128(elem, r!(lim.wrapping_add(1)));
+                    let next = arith::to_i128(elem, r!(v)) + step;
+                    w!(v, arith::norm(elem, next));
+                    w!(
+                        lim.wrapping_add(2),
+                        u64::from(if step > 0 { next <= end } else { next >= end })
+                    );
+                }
+                Op::Case { elem, sel, table } => {
+                    let t = exe.out.cases.get(table as usize).ok_or(BAD)?;
+                    *pc = t.target(arith::to_i128(elem, r!(sel))) as usize;
+                }
+                Op::CallFb { pou, ptr } => {
+                    let callee = exe.pous.get(pou as usize).ok_or(BAD)?;
+                    if self.stack.len() >= MAX_CALL_DEPTH {
+                        return Err(Fault::CallDepth);
+                    }
+                    self.stack.push(CallFrame { ret: *pc as u32, base });
+                    base = u32::try_from(r!(ptr)).map_err(|_| BAD)?;
+                    *pc = callee.entry as usize;
+                }
+                Op::CallFn { pou } => {
+                    let callee = exe.pous.get(pou as usize).ok_or(BAD)?;
+                    if self.stack.len() >= MAX_CALL_DEPTH {
+                        return Err(Fault::CallDepth);
+                    }
+                    self.stack.push(CallFrame { ret: *pc as u32, base });
+                    base = callee.frame.ok_or(BAD)?;
+                    *pc = callee.entry as usize;
+                }
+                Op::InitFrame { pou } => {
+                    let f = exe.pous.get(pou as usize).ok_or(BAD)?;
+                    let start = f.frame.ok_or(BAD)? as usize;
+                    let end = start + f.size as usize;
+                    let src = exe.out.init.get(start..end).ok_or(BAD)?;
+                    cells.get_mut(start..end).ok_or(BAD)?.copy_from_slice(src);
+                }
+                Op::InitTemps { pou } => {
+                    let f = exe.pous.get(pou as usize).ok_or(BAD)?;
+                    for &(off, n) in &f.temps {
+                        let (s, e) = (off as usize, off as usize + n as usize);
+                        let src = f.template.get(s..e).ok_or(BAD)?;
+                        let d = base as usize + s;
+                        cells.get_mut(d..d + (e - s)).ok_or(BAD)?.copy_from_slice(src);
+                    }
+                }
+                Op::Ret => match self.stack.pop() {
+                    Some(f) => {
+                        *pc = f.ret as usize;
+                        base = f.base;
+                    }
+                    None => return Ok(0),
+                },
+                Op::Halt { a } => return Ok(r!(a)),
+                Op::Copy { dst, src, n } => {
+                    copy_cells(cells, r!(dst) as usize, r!(src) as usize, n as usize)?
+                }
+                Op::StrCopy { dst, src } => copy_str(cells, r!(dst) as usize, r!(src) as usize)?,
+                _ => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
+            }
+        }
+    }
+}
+
+/// The value of a system variable.
+fn sys_var(var: SysVar, sys: SysState) -> u64 {
+    match var {
+        SysVar::FirstScan => u64::from(sys.first_scan),
+        SysVar::AlwaysOn => 1,
+        SysVar::AlwaysOff => 0,
+        SysVar::Clock => sys.time_ns as u64,
+        other => {
+            let period = other.period_ns().unwrap_or(1).max(1);
+            u64::from(sys.time_ns.rem_euclid(period) < period / 2)
+        }
+    }
+}
+
+/// `arith::convert(Real, DInt, x)`, inlined: round half to even, wrap to 32 bits.
+/// Below 2^51, adding 1.5 * 2^52 rounds to an integer half to even (the default IEEE
+/// rounding, exactly as `round_ties_even`) and leaves that integer in the low mantissa
+/// bits, so no libm call and no saturating float-to-int conversion is needed.
+#[inline]
+fn real_to_dint(x: u64) -> u64 {
+    const MAGIC: f64 = 6_755_399_441_055_744.0;
+    let f = f64::from_bits(x);
+    if f.abs() < 2_251_799_813_685_248.0 {
+        let k = (f + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits()) as i64;
+        k as i32 as i64 as u64
+    } else {
+        arith::convert(Elem::Real, Elem::DInt, x)
+    }
+}
+
+/// Marks the rare path of a branch, so that the compiler keeps a predictable jump there
+/// instead of a conditional move (which would chain the next dispatch on the data).
+#[cold]
+#[inline(never)]
+fn loop_done() {}
+
+/// Rounds an f64 result to REAL precision, as `arith::from_f64(Elem::Real, _)` does.
+#[inline]
+fn f32r(v: f64) -> u64 {
+    (v as f32 as f64).to_bits()
+}
