@@ -4,7 +4,6 @@ use super::testkit::*;
 use super::*;
 use crate::semantic::ir::*;
 use crate::semantic::types::*;
-use crate::syntax::{PouKind, VarSection};
 use crate::vm::{Fault, Machine, SysState, Value};
 
 mod calls;

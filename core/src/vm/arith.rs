@@ -128,7 +128,7 @@ pub fn binary(op: BinOp, elem: Elem, a: u64, b: u64) -> Result<u64, Fault> {
             BinOp::Sub => x - y,
             BinOp::Mul => x * y,
             BinOp::Div => x / y,
-            BinOp::Pow => x.powf(y),
+            BinOp::Pow => math::pow(x, y),
             BinOp::Mod => {
                 if y == 0.0 {
                     0.0
@@ -164,7 +164,7 @@ pub fn binary(op: BinOp, elem: Elem, a: u64, b: u64) -> Result<u64, Fault> {
                 x % y
             }
         }
-        BinOp::Pow => return Ok(norm(elem, (x as f64).powf(y as f64) as i128)),
+        BinOp::Pow => return Ok(norm(elem, math::pow(x as f64, y as f64) as i128)),
         _ => return Err(Fault::Internal("comparison in binary()")),
     };
     Ok(norm(elem, r))
@@ -341,5 +341,54 @@ mod tests {
     fn real_values_are_rounded_to_single_precision() {
         let r = from_f64(Elem::Real, 0.1);
         assert_eq!(f64::from_bits(r), 0.1f32 as f64);
+    }
+}
+
+/// Transcendental functions from the pure-Rust `libm`, so a result is bit-for-bit the same
+/// natively and in wasm (the platforms' own maths libraries differ in the last bit).
+pub mod math {
+    /// Natural logarithm.
+    pub fn ln(x: f64) -> f64 {
+        libm::log(x)
+    }
+    /// Base-10 logarithm.
+    pub fn log10(x: f64) -> f64 {
+        libm::log10(x)
+    }
+    /// e to the power x.
+    pub fn exp(x: f64) -> f64 {
+        libm::exp(x)
+    }
+    /// Sine.
+    pub fn sin(x: f64) -> f64 {
+        libm::sin(x)
+    }
+    /// Cosine.
+    pub fn cos(x: f64) -> f64 {
+        libm::cos(x)
+    }
+    /// Tangent.
+    pub fn tan(x: f64) -> f64 {
+        libm::tan(x)
+    }
+    /// Arc sine.
+    pub fn asin(x: f64) -> f64 {
+        libm::asin(x)
+    }
+    /// Arc cosine.
+    pub fn acos(x: f64) -> f64 {
+        libm::acos(x)
+    }
+    /// Arc tangent.
+    pub fn atan(x: f64) -> f64 {
+        libm::atan(x)
+    }
+    /// x to the power y.
+    pub fn pow(x: f64, y: f64) -> f64 {
+        libm::pow(x, y)
+    }
+    /// Square root (IEEE-exact everywhere; here for uniformity).
+    pub fn sqrt(x: f64) -> f64 {
+        libm::sqrt(x)
     }
 }

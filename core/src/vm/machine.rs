@@ -227,7 +227,7 @@ impl Machine {
                     if i < d.low || i > d.high {
                         return Err(Fault::IndexOutOfRange { index: i, low: d.low, high: d.high });
                     }
-                    let step = (i - d.low) as u64 * u64::from(d.stride);
+                    let step = (i as i128 - d.low as i128) as u64 * u64::from(d.stride);
                     w!(ptr, r!(ptr).wrapping_add(step));
                 }
                 Op::AddI64(o) => bin!(o, |x, y| (x as i64).wrapping_add(y as i64) as u64),

@@ -189,7 +189,7 @@ fn parse_date(t: &str) -> Option<i64> {
     let y: i64 = it.next()?.trim().parse().ok()?;
     let m: u32 = it.next()?.trim().parse().ok()?;
     let d: u32 = it.next()?.trim().parse().ok()?;
-    if !(1..=12).contains(&m) || !(1..=31).contains(&d) {
+    if !(1..=12).contains(&m) || !(1..=31).contains(&d) || !(-300_000..=300_000).contains(&y) {
         return None;
     }
     days_from_civil(y, m, d).checked_mul(NS_PER_DAY)
