@@ -103,7 +103,13 @@ fn diagnostic_report(index: &LineIndex<'_>, d: &Diagnostic) -> DiagnosticReport 
 }
 
 fn option_error(code: Code, message: String) -> DiagnosticReport {
-    DiagnosticReport { severity: Severity::Error, code: code.as_str().to_string(), message, line: 0, column: 0 }
+    DiagnosticReport {
+        severity: Severity::Error,
+        code: code.as_str().to_string(),
+        message,
+        line: 0,
+        column: 0,
+    }
 }
 
 /// Compiles and runs `source` as `plc run` does.
@@ -119,14 +125,16 @@ pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
     };
     let Some(program) = analysis.program else { return report };
     let main = match &options.program {
-        Some(name) => match program.find_pou(name).filter(|&p| program.pou(p).kind == PouKind::Program) {
-            Some(p) => p,
-            None => {
-                let msg = format!("there is no PROGRAM `{name}` in the source");
-                report.diagnostics.push(option_error(Code::UnknownProgram, msg));
-                return report;
+        Some(name) => {
+            match program.find_pou(name).filter(|&p| program.pou(p).kind == PouKind::Program) {
+                Some(p) => p,
+                None => {
+                    let msg = format!("there is no PROGRAM `{name}` in the source");
+                    report.diagnostics.push(option_error(Code::UnknownProgram, msg));
+                    return report;
+                }
             }
-        },
+        }
         None => match program.programs().find(|&p| !program.pou(p).library) {
             Some(p) => p,
             None => {
@@ -170,7 +178,11 @@ pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
         ScanOutcome::Fault(info) => {
             let loc = index.location(info.span.start);
             report.status = RunStatus::Fault;
-            report.fault = Some(FaultReport { message: info.fault.to_string(), line: loc.line, column: loc.column });
+            report.fault = Some(FaultReport {
+                message: info.fault.to_string(),
+                line: loc.line,
+                column: loc.column,
+            });
         }
         ScanOutcome::Completed | ScanOutcome::Breakpoint(_) => report.status = RunStatus::Ok,
     }

@@ -48,7 +48,17 @@ t(IN := Start, PT := T#1s500ms);
 tm := t.ET;
 END_PROGRAM";
     let path = source_file("run.st", src);
-    let out = plc(&["run", path.to_str().expect("utf-8 path"), "--cycles", "3", "--cycle-ms", "100", "--set", "Start=TRUE", "--json"]);
+    let out = plc(&[
+        "run",
+        path.to_str().expect("utf-8 path"),
+        "--cycles",
+        "3",
+        "--cycle-ms",
+        "100",
+        "--set",
+        "Start=TRUE",
+        "--json",
+    ]);
     assert!(out.status.success(), "{}", stdout(&out));
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("one JSON object");
     assert_eq!(v["status"], "ok");
@@ -63,7 +73,10 @@ END_PROGRAM";
 
 #[test]
 fn run_reports_a_fault_with_its_line_and_exits_non_zero() {
-    let path = source_file("fault.st", "PROGRAM P\nVAR a : INT := 1; b : INT; END_VAR\na := a / b;\nEND_PROGRAM\n");
+    let path = source_file(
+        "fault.st",
+        "PROGRAM P\nVAR a : INT := 1; b : INT; END_VAR\na := a / b;\nEND_PROGRAM\n",
+    );
     let out = plc(&["run", path.to_str().expect("utf-8 path"), "--json"]);
     assert!(!out.status.success());
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("one JSON object");

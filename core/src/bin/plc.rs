@@ -9,7 +9,11 @@ use plc_core::diagnostics::{Code, LineIndex};
 use plc_core::run::{run_source, RunOptions, RunReport, RunStatus};
 
 #[derive(Parser)]
-#[command(name = "plc", version, about = "Check and run IEC 61131-3 Structured Text on a simulated PLC")]
+#[command(
+    name = "plc",
+    version,
+    about = "Check and run IEC 61131-3 Structured Text on a simulated PLC"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -51,7 +55,8 @@ enum Command {
 }
 
 fn read_source(path: &Path) -> Result<String, String> {
-    let bytes = std::fs::read(path).map_err(|e| format!("plc: cannot read {}: {e}", path.display()))?;
+    let bytes =
+        std::fs::read(path).map_err(|e| format!("plc: cannot read {}: {e}", path.display()))?;
     Ok(String::from_utf8(bytes).unwrap_or_else(|e| {
         // Latin-1 files (common for PLC sources) become text byte by byte.
         e.into_bytes().into_iter().map(char::from).collect()
@@ -78,7 +83,14 @@ fn check(path: &Path) -> ExitCode {
             warnings += 1;
             "warning"
         };
-        println!("{}:{}:{}: {severity}[{}]: {}", path.display(), loc.line, loc.column, d.code, d.message);
+        println!(
+            "{}:{}:{}: {severity}[{}]: {}",
+            path.display(),
+            loc.line,
+            loc.column,
+            d.code,
+            d.message
+        );
     }
     eprintln!("{}: {errors} error(s), {warnings} warning(s)", path.display());
     if errors > 0 {
@@ -90,13 +102,28 @@ fn check(path: &Path) -> ExitCode {
 
 fn print_text(path: &Path, report: &RunReport) {
     for d in &report.diagnostics {
-        println!("{}:{}:{}: {:?}[{}]: {}", path.display(), d.line, d.column, d.severity, d.code, d.message);
+        println!(
+            "{}:{}:{}: {:?}[{}]: {}",
+            path.display(),
+            d.line,
+            d.column,
+            d.severity,
+            d.code,
+            d.message
+        );
     }
     match report.status {
         RunStatus::Ok => println!("status: ok after {} scan(s)", report.cycles),
         RunStatus::Fault => {
             if let Some(f) = &report.fault {
-                println!("status: FAULT after {} scan(s) at {}:{}:{}: {}", report.cycles, path.display(), f.line, f.column, f.message);
+                println!(
+                    "status: FAULT after {} scan(s) at {}:{}:{}: {}",
+                    report.cycles,
+                    path.display(),
+                    f.line,
+                    f.column,
+                    f.message
+                );
             }
         }
         RunStatus::Error => println!("status: error (the program did not run)"),

@@ -65,11 +65,8 @@ impl<'a> LineIndex<'a> {
             Err(i) => i - 1,
         };
         let start = self.line_starts[line];
-        let column = self
-            .text
-            .get(start..offset)
-            .map(|s| s.chars().count())
-            .unwrap_or(offset - start);
+        let column =
+            self.text.get(start..offset).map(|s| s.chars().count()).unwrap_or(offset - start);
         Location { line: line as u32 + 1, column: column as u32 + 1 }
     }
 

@@ -96,34 +96,57 @@ pub fn is_builtin(key: &str) -> bool {
 
 impl<'a> Checker<'a> {
     /// Orders the arguments of a built-in call positionally.
-    fn builtin_args<'e>(&mut self, name: &ast::Ident, args: &'e [ast::Arg], span: Span) -> Option<Vec<&'e ast::Expr>> {
+    fn builtin_args<'e>(
+        &mut self,
+        name: &ast::Ident,
+        args: &'e [ast::Arg],
+        span: Span,
+    ) -> Option<Vec<&'e ast::Expr>> {
         let key = name.key();
         let params: Vec<String> = match FIXED.iter().find(|(n, _)| *n == key) {
             Some((_, p)) => p.iter().map(|s| s.to_string()).collect(),
-            None if key == "MUX" => std::iter::once("K".to_string()).chain((0..args.len()).map(|i| format!("IN{i}"))).collect(),
-            None if VARIADIC.contains(&key.as_str()) => (1..=args.len()).map(|i| format!("IN{i}")).collect(),
+            None if key == "MUX" => std::iter::once("K".to_string())
+                .chain((0..args.len()).map(|i| format!("IN{i}")))
+                .collect(),
+            None if VARIADIC.contains(&key.as_str()) => {
+                (1..=args.len()).map(|i| format!("IN{i}")).collect()
+            }
             None => vec!["IN".to_string()],
         };
         let mut out: Vec<Option<&ast::Expr>> = vec![None; params.len().max(args.len())];
         for (k, arg) in args.iter().enumerate() {
             match arg {
                 ast::Arg::Positional(e) => out[k] = Some(e),
-                ast::Arg::Input { name: p, value } => match params.iter().position(|n| n.eq_ignore_ascii_case(&p.name)) {
-                    Some(i) => out[i] = Some(value),
-                    None => {
-                        self.error(Code::NoSuchParameter, p.span, format!("`{}` has no input `{}`", name.name, p.name));
-                        return None;
+                ast::Arg::Input { name: p, value } => {
+                    match params.iter().position(|n| n.eq_ignore_ascii_case(&p.name)) {
+                        Some(i) => out[i] = Some(value),
+                        None => {
+                            self.error(
+                                Code::NoSuchParameter,
+                                p.span,
+                                format!("`{}` has no input `{}`", name.name, p.name),
+                            );
+                            return None;
+                        }
                     }
-                },
+                }
                 ast::Arg::Output { name: p, .. } => {
-                    self.error(Code::NotAnOutput, p.span, format!("`{}` has no outputs; use its result", name.name));
+                    self.error(
+                        Code::NotAnOutput,
+                        p.span,
+                        format!("`{}` has no outputs; use its result", name.name),
+                    );
                     return None;
                 }
             }
         }
         let given: Vec<&ast::Expr> = out.iter().flatten().copied().collect();
         let variadic = VARIADIC.contains(&key.as_str());
-        let wrong = if variadic { given.len() < 2 } else { given.len() != params.len() || out.len() != params.len() };
+        let wrong = if variadic {
+            given.len() < 2
+        } else {
+            given.len() != params.len() || out.len() != params.len()
+        };
         if wrong {
             let want = if variadic { "at least 2".to_string() } else { params.len().to_string() };
             let msg = format!("`{}` takes {want} argument(s), {} given", name.name, given.len());
@@ -138,7 +161,13 @@ impl<'a> Checker<'a> {
     }
 
     /// The smallest type all `items` convert to, with each converted.
-    fn unify(&mut self, items: Vec<Typed>, span: Span, what: &str, expected: Option<Type>) -> Option<(Type, Vec<Expr>)> {
+    fn unify(
+        &mut self,
+        items: Vec<Typed>,
+        span: Span,
+        what: &str,
+        expected: Option<Type>,
+    ) -> Option<(Type, Vec<Expr>)> {
         // Untyped literals only: take the type the context expects when every one fits.
         if let Some(Type::Elem(want)) = expected.filter(|_| items.iter().all(|t| t.flexible)) {
             let fits = |t: &Typed| match (&t.e.kind, t.e.ty.elem()) {
@@ -164,7 +193,10 @@ impl<'a> Checker<'a> {
                     match t.e.ty {
                         Type::Str { wide: w, len: l } if w == wide => len = len.max(l),
                         other => {
-                            let msg = format!("{what}: all inputs must be strings, found {}", self.tname(other));
+                            let msg = format!(
+                                "{what}: all inputs must be strings, found {}",
+                                self.tname(other)
+                            );
                             self.error(Code::TypeMismatch, t.e.span, msg);
                             return None;
                         }
@@ -181,17 +213,28 @@ impl<'a> Checker<'a> {
                         _ => None,
                     };
                     let Some(el) = el else {
-                        let msg = format!("{what}: inputs of types {} and {} do not mix", self.tname(acc.e.ty), self.tname(t.e.ty));
+                        let msg = format!(
+                            "{what}: inputs of types {} and {} do not mix",
+                            self.tname(acc.e.ty),
+                            self.tname(t.e.ty)
+                        );
                         self.error(Code::TypeMismatch, t.e.span, msg);
                         return None;
                     };
-                    acc = Typed { e: self.convert(acc.e, Type::Elem(el)), flexible: acc.flexible && t.flexible };
+                    acc = Typed {
+                        e: self.convert(acc.e, Type::Elem(el)),
+                        flexible: acc.flexible && t.flexible,
+                    };
                 }
                 acc.e.ty
             }
             other => {
                 if items.iter().any(|t| t.e.ty != other) {
-                    self.error(Code::TypeMismatch, span, format!("{what}: all inputs must have the same type"));
+                    self.error(
+                        Code::TypeMismatch,
+                        span,
+                        format!("{what}: all inputs must have the same type"),
+                    );
                     return None;
                 }
                 other
@@ -205,8 +248,21 @@ impl<'a> Checker<'a> {
         // Reuse the operator rules through a tiny shim: pick the first widening target.
         let (ae, be) = (a.e.ty.elem()?, b.e.ty.elem()?);
         let order = [
-            Elem::SInt, Elem::USInt, Elem::Byte, Elem::Int, Elem::UInt, Elem::Word, Elem::DInt, Elem::UDInt,
-            Elem::DWord, Elem::LInt, Elem::ULInt, Elem::LWord, Elem::Real, Elem::LReal, Elem::Time,
+            Elem::SInt,
+            Elem::USInt,
+            Elem::Byte,
+            Elem::Int,
+            Elem::UInt,
+            Elem::Word,
+            Elem::DInt,
+            Elem::UDInt,
+            Elem::DWord,
+            Elem::LInt,
+            Elem::ULInt,
+            Elem::LWord,
+            Elem::Real,
+            Elem::LReal,
+            Elem::Time,
         ];
         if a.flexible && !b.flexible && be.is_num() {
             return Some(be);
@@ -246,7 +302,9 @@ impl<'a> Checker<'a> {
         let t = self.expr(e, None)?;
         let target = match t.e.ty.elem() {
             Some(el) if el.is_real() => return Some(t.e),
-            Some(el) if el.is_int() => Type::Elem(if el.bits() <= 16 { Elem::Real } else { Elem::LReal }),
+            Some(el) if el.is_int() => {
+                Type::Elem(if el.bits() <= 16 { Elem::Real } else { Elem::LReal })
+            }
             _ => {
                 let msg = format!("expected a number, found {}", self.tname(t.e.ty));
                 self.error(Code::TypeMismatch, e.span, msg);
@@ -257,11 +315,20 @@ impl<'a> Checker<'a> {
     }
 
     fn binary_ast(op: ast::BinaryOp, a: &ast::Expr, b: &ast::Expr, span: Span) -> ast::Expr {
-        ast::Expr { kind: ast::ExprKind::Binary(op, Box::new(a.clone()), Box::new(b.clone())), span }
+        ast::Expr {
+            kind: ast::ExprKind::Binary(op, Box::new(a.clone()), Box::new(b.clone())),
+            span,
+        }
     }
 
     /// Checks a call of a built-in function.
-    pub fn builtin_call(&mut self, name: &ast::Ident, args: &[ast::Arg], span: Span, expected: Option<Type>) -> Option<Expr> {
+    pub fn builtin_call(
+        &mut self,
+        name: &ast::Ident,
+        args: &[ast::Arg],
+        span: Span,
+        expected: Option<Type>,
+    ) -> Option<Expr> {
         let key = name.key();
         let a = self.builtin_args(name, args, span)?;
         use ast::BinaryOp as B;
@@ -295,7 +362,10 @@ impl<'a> Checker<'a> {
         match key.as_str() {
             "MOVE" => return self.expr(a[0], None).map(|t| t.e),
             "NOT" => {
-                let e = ast::Expr { kind: ast::ExprKind::Unary(ast::UnaryOp::Not, Box::new(a[0].clone())), span };
+                let e = ast::Expr {
+                    kind: ast::ExprKind::Unary(ast::UnaryOp::Not, Box::new(a[0].clone())),
+                    span,
+                };
                 return self.expr(&e, None).map(|t| t.e);
             }
             _ => {}
@@ -331,7 +401,10 @@ impl<'a> Checker<'a> {
             "SHL" | "SHR" | "ROL" | "ROR" => {
                 let t = self.expr(a[0], None)?;
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
-                    let msg = format!("{key} needs a bit string or an integer, not {}", self.tname(t.e.ty));
+                    let msg = format!(
+                        "{key} needs a bit string or an integer, not {}",
+                        self.tname(t.e.ty)
+                    );
                     self.error(Code::TypeMismatch, a[0].span, msg);
                     return None;
                 }
@@ -365,7 +438,8 @@ impl<'a> Checker<'a> {
             }
             "MUX" => {
                 let k = self.want_int(a[0])?;
-                let items = a[1..].iter().map(|e| self.expr(e, None)).collect::<Option<Vec<_>>>()?;
+                let items =
+                    a[1..].iter().map(|e| self.expr(e, None)).collect::<Option<Vec<_>>>()?;
                 let (ty, mut args) = self.unify(items, span, "MUX", expected)?;
                 args.insert(0, k);
                 return Some(self.builtin_expr(Builtin::Mux, args, ty, span));
@@ -403,14 +477,24 @@ impl<'a> Checker<'a> {
             "FIND" => {
                 let s1 = self.want_string(a[0])?;
                 let s2 = self.want_string(a[1])?;
-                return Some(self.builtin_expr(Builtin::Find, vec![s1, s2], Type::Elem(Elem::Int), span));
+                return Some(self.builtin_expr(
+                    Builtin::Find,
+                    vec![s1, s2],
+                    Type::Elem(Elem::Int),
+                    span,
+                ));
             }
             "CONCAT" => {
                 let items = a.iter().map(|e| self.want_string(e)).collect::<Option<Vec<_>>>()?;
                 let mut ty = items[0].ty;
                 for i in &items[1..] {
-                    if !matches!((ty, i.ty), (Type::Str { wide: x, .. }, Type::Str { wide: y, .. }) if x == y) {
-                        self.error(Code::TypeMismatch, i.span, "CONCAT cannot mix STRING and WSTRING");
+                    if !matches!((ty, i.ty), (Type::Str { wide: x, .. }, Type::Str { wide: y, .. }) if x == y)
+                    {
+                        self.error(
+                            Code::TypeMismatch,
+                            i.span,
+                            "CONCAT cannot mix STRING and WSTRING",
+                        );
                         return None;
                     }
                     ty = sum_string(ty, i.ty);
@@ -419,7 +503,11 @@ impl<'a> Checker<'a> {
             }
             "TRUNC" => {
                 let x = self.want_real(a[0])?;
-                return Some(Expr { kind: ExprKind::Trunc(Box::new(x)), ty: Type::Elem(Elem::DInt), span });
+                return Some(Expr {
+                    kind: ExprKind::Trunc(Box::new(x)),
+                    ty: Type::Elem(Elem::DInt),
+                    span,
+                });
             }
             _ => return self.conversion_call(name, a[0], span),
         };
@@ -435,7 +523,11 @@ impl<'a> Checker<'a> {
         let value = match from {
             Some(Type::Elem(Elem::LWord)) if key.starts_with("BCD_TO_") => {
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
-                    let msg = format!("{} needs a bit string holding BCD digits, not {}", name.name, self.tname(t.e.ty));
+                    let msg = format!(
+                        "{} needs a bit string holding BCD digits, not {}",
+                        name.name,
+                        self.tname(t.e.ty)
+                    );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     return None;
                 }
@@ -465,22 +557,35 @@ impl<'a> Checker<'a> {
             }
             ConvTarget::Type(to @ Type::Str { .. }) => match from_ty {
                 Type::Str { .. } => Some(value),
-                Type::Elem(_) | Type::Enum(_) => Some(self.builtin_expr(Builtin::ToString, vec![value], to, span)),
+                Type::Elem(_) | Type::Enum(_) => {
+                    Some(self.builtin_expr(Builtin::ToString, vec![value], to, span))
+                }
                 other => {
-                    let msg = format!("{} cannot convert a value of type {}", name.name, self.tname(other));
+                    let msg = format!(
+                        "{} cannot convert a value of type {}",
+                        name.name,
+                        self.tname(other)
+                    );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     None
                 }
             },
             ConvTarget::Type(to) => match from_ty {
-                Type::Str { .. } => Some(self.builtin_expr(Builtin::FromString, vec![value], to, span)),
+                Type::Str { .. } => {
+                    Some(self.builtin_expr(Builtin::FromString, vec![value], to, span))
+                }
                 Type::Elem(_) => Some(self.convert(value, to)),
                 Type::Enum(_) if to.elem().is_some_and(|e| e.is_integral()) => {
-                    let as_int = Expr { kind: value.kind, ty: Type::Elem(Elem::LInt), span: value.span };
+                    let as_int =
+                        Expr { kind: value.kind, ty: Type::Elem(Elem::LInt), span: value.span };
                     Some(self.convert(as_int, to))
                 }
                 other => {
-                    let msg = format!("{} cannot convert a value of type {}", name.name, self.tname(other));
+                    let msg = format!(
+                        "{} cannot convert a value of type {}",
+                        name.name,
+                        self.tname(other)
+                    );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     None
                 }
@@ -491,7 +596,9 @@ impl<'a> Checker<'a> {
 
 fn sum_string(a: Type, b: Type) -> Type {
     match (a, b) {
-        (Type::Str { wide, len: x }, Type::Str { len: y, .. }) => Type::Str { wide, len: (x + y).min(65_535) },
+        (Type::Str { wide, len: x }, Type::Str { len: y, .. }) => {
+            Type::Str { wide, len: (x + y).min(65_535) }
+        }
         _ => a,
     }
 }

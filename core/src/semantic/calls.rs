@@ -17,8 +17,9 @@ impl<'a> Checker<'a> {
     fn callee(&mut self, callee: &ast::Expr, in_expression: bool) -> Option<Callee> {
         if let ast::ExprKind::Name(id) = &callee.kind {
             let key = id.key();
-            let is_var = self.pous.get(self.body.pou as usize).is_some_and(|p| p.find_var(&key).is_some())
-                || self.global_index.contains_key(&key);
+            let is_var =
+                self.pous.get(self.body.pou as usize).is_some_and(|p| p.find_var(&key).is_some())
+                    || self.global_index.contains_key(&key);
             if !is_var {
                 if let Some(&pou) = self.pou_index.get(&key) {
                     return match self.pous[pou as usize].kind {
@@ -32,7 +33,10 @@ impl<'a> Checker<'a> {
                             None
                         }
                         PouKind::Program => {
-                            let msg = format!("`{}` is a PROGRAM; programs are run by the PLC, not called", id.name);
+                            let msg = format!(
+                                "`{}` is a PROGRAM; programs are run by the PLC, not called",
+                                id.name
+                            );
                             self.error(Code::ProgramCalled, callee.span, msg);
                             None
                         }
@@ -41,7 +45,11 @@ impl<'a> Checker<'a> {
                 if super::builtins::is_builtin(&key) {
                     return Some(Callee::Builtin);
                 }
-                self.error(Code::UnknownFunction, callee.span, format!("`{}` is not a function or a function block instance", id.name));
+                self.error(
+                    Code::UnknownFunction,
+                    callee.span,
+                    format!("`{}` is not a function or a function block instance", id.name),
+                );
                 return None;
             }
         }
@@ -67,7 +75,13 @@ impl<'a> Checker<'a> {
     ///
     /// `expected` is the type the context wants; untyped literal arguments of generic
     /// functions (`i := MAX(3, 7)`) take it.
-    pub fn call_expr(&mut self, callee: &ast::Expr, args: &[ast::Arg], span: Span, expected: Option<Type>) -> Option<Expr> {
+    pub fn call_expr(
+        &mut self,
+        callee: &ast::Expr,
+        args: &[ast::Arg],
+        span: Span,
+        expected: Option<Type>,
+    ) -> Option<Expr> {
         match self.callee(callee, true)? {
             Callee::Instance(..) => None,
             Callee::Builtin => {
@@ -84,7 +98,12 @@ impl<'a> Checker<'a> {
     }
 
     /// A call used as a statement.
-    pub fn call_stmt(&mut self, callee: &ast::Expr, args: &[ast::Arg], span: Span) -> Option<StmtKind> {
+    pub fn call_stmt(
+        &mut self,
+        callee: &ast::Expr,
+        args: &[ast::Arg],
+        span: Span,
+    ) -> Option<StmtKind> {
         match self.callee(callee, false)? {
             Callee::Instance(instance, fb) => {
                 if let Some(calls) = self.calls.get_mut(self.body.pou as usize) {
@@ -111,12 +130,18 @@ impl<'a> Checker<'a> {
         let callee = self.pous[pou as usize].clone();
         let params: Vec<u32> = (0..callee.vars.len() as u32)
             .filter(|&i| Some(i) != callee.result)
-            .filter(|&i| matches!(callee.vars[i as usize].section, VarSection::Input | VarSection::InOut))
+            .filter(|&i| {
+                matches!(callee.vars[i as usize].section, VarSection::Input | VarSection::InOut)
+            })
             .collect();
         let positional = args.iter().any(|a| matches!(a, ast::Arg::Positional(_)));
         let named = args.iter().any(|a| !matches!(a, ast::Arg::Positional(_)));
         if positional && named {
-            self.error(Code::MixedArguments, span, "write every argument as `name := value`, or none of them");
+            self.error(
+                Code::MixedArguments,
+                span,
+                "write every argument as `name := value`, or none of them",
+            );
             return None;
         }
         let mut out = Vec::new();
@@ -127,7 +152,11 @@ impl<'a> Checker<'a> {
             let (index, value_expr, output) = match arg {
                 ast::Arg::Positional(e) => {
                     let Some(&i) = params.get(next_positional) else {
-                        let msg = format!("`{}` takes {} argument(s), more were given", callee.name, params.len());
+                        let msg = format!(
+                            "`{}` takes {} argument(s), more were given",
+                            callee.name,
+                            params.len()
+                        );
                         self.error(Code::WrongArgumentCount, e.span, msg);
                         return None;
                     };
@@ -152,7 +181,10 @@ impl<'a> Checker<'a> {
                         continue;
                     };
                     if callee.vars[i as usize].section != VarSection::Output {
-                        let msg = format!("`{}` is not an output of `{}`; use `:=` for inputs", name.name, callee.name);
+                        let msg = format!(
+                            "`{}` is not an output of `{}`; use `:=` for inputs",
+                            name.name, callee.name
+                        );
                         self.error(Code::NotAnOutput, name.span, msg);
                         ok = false;
                         continue;
@@ -189,10 +221,16 @@ impl<'a> Checker<'a> {
             } else if param.section == VarSection::InOut {
                 let is_place = matches!(
                     value_expr.kind,
-                    ast::ExprKind::Name(_) | ast::ExprKind::Member(..) | ast::ExprKind::Index(..) | ast::ExprKind::Paren(_)
+                    ast::ExprKind::Name(_)
+                        | ast::ExprKind::Member(..)
+                        | ast::ExprKind::Index(..)
+                        | ast::ExprKind::Paren(_)
                 );
                 if !is_place {
-                    let msg = format!("`{}` is VAR_IN_OUT: pass a variable, not an expression", param.name);
+                    let msg = format!(
+                        "`{}` is VAR_IN_OUT: pass a variable, not an expression",
+                        param.name
+                    );
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -201,8 +239,15 @@ impl<'a> Checker<'a> {
                     ok = false;
                     continue;
                 };
-                if ty != param.ty && !matches!((ty, param.ty), (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b) {
-                    let msg = format!("VAR_IN_OUT `{}` needs a variable of type {}, not {}", param.name, self.tname(param.ty), self.tname(ty));
+                if ty != param.ty
+                    && !matches!((ty, param.ty), (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b)
+                {
+                    let msg = format!(
+                        "VAR_IN_OUT `{}` needs a variable of type {}, not {}",
+                        param.name,
+                        self.tname(param.ty),
+                        self.tname(ty)
+                    );
                     self.error(Code::TypeMismatch, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -224,7 +269,10 @@ impl<'a> Checker<'a> {
         for &i in &params {
             let p = &callee.vars[i as usize];
             if p.section == VarSection::InOut && !given.contains(&i) {
-                let msg = format!("VAR_IN_OUT `{}` of `{}` must be given in every call", p.name, callee.name);
+                let msg = format!(
+                    "VAR_IN_OUT `{}` of `{}` must be given in every call",
+                    p.name, callee.name
+                );
                 self.error(Code::MissingInOut, span, msg);
                 ok = false;
             }

@@ -4,8 +4,8 @@
 use std::collections::{HashMap, HashSet};
 
 use super::ir::{self, Pou, Program, Var};
-use super::types::{PouId, Type, TypeTable};
 use super::prelude;
+use super::types::{PouId, Type, TypeTable};
 use crate::diagnostics::{Code, Diagnostic, Span};
 use crate::syntax::{self as ast, Item, PouKind, VarSection};
 

@@ -35,8 +35,13 @@ pub fn default_value(types: &TypeTable, pous: &[Pou], ty: Type) -> InitValue {
         ),
         Type::Array(_) => InitValue::Array(Vec::new()),
         Type::Struct(id) => {
-            InitValue::Struct(vec![None; types.structs.get(id as usize).map_or(0, |s| s.fields.len())])
+            InitValue::Struct(vec![
+                None;
+                types.structs.get(id as usize).map_or(0, |s| s.fields.len())
+            ])
         }
-        Type::Fb(id) => InitValue::Struct(vec![None; pous.get(id as usize).map_or(0, |p| p.vars.len())]),
+        Type::Fb(id) => {
+            InitValue::Struct(vec![None; pous.get(id as usize).map_or(0, |p| p.vars.len())])
+        }
     }
 }

@@ -68,7 +68,11 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::UnknownType,
                         id.span,
-                        format!("`{}` is a {}, not a type", id.name, kind_name(self.pous[pou as usize].kind)),
+                        format!(
+                            "`{}` is a {}, not a type",
+                            id.name,
+                            kind_name(self.pous[pou as usize].kind)
+                        ),
                     );
                     return None;
                 }
@@ -84,7 +88,9 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::InvalidArraySize,
                         *span,
-                        format!("a string length must be between 1 and {MAX_STRING_LEN}, not {len}"),
+                        format!(
+                            "a string length must be between 1 and {MAX_STRING_LEN}, not {len}"
+                        ),
                     );
                     return None;
                 }
@@ -98,7 +104,9 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::InvalidRange,
                             lo.span.to(hi.span),
-                            format!("array bounds {l}..{h}: the lower bound is above the upper bound"),
+                            format!(
+                                "array bounds {l}..{h}: the lower bound is above the upper bound"
+                            ),
                         );
                         return None;
                     }
@@ -111,9 +119,10 @@ impl<'a> Checker<'a> {
                     element_range: elem.range,
                     element_init: elem.init,
                 };
-                let total = def.dims.iter().try_fold(1u64, |acc, (l, h)| {
-                    acc.checked_mul((h - l + 1) as u64)
-                });
+                let total = def
+                    .dims
+                    .iter()
+                    .try_fold(1u64, |acc, (l, h)| acc.checked_mul((h - l + 1) as u64));
                 if total.is_none_or(|t| t > MAX_ARRAY_ELEMENTS) {
                     self.error(
                         Code::InvalidArraySize,
@@ -266,7 +275,10 @@ impl<'a> Checker<'a> {
                                 self.error(
                                     Code::TooManyInitializers,
                                     *span,
-                                    format!("repeat count {n} does not fit an array of {} elements", def.len()),
+                                    format!(
+                                        "repeat count {n} does not fit an array of {} elements",
+                                        def.len()
+                                    ),
                                 );
                                 return None;
                             }
@@ -281,7 +293,11 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::TooManyInitializers,
                             *span,
-                            format!("{} initial values for an array of {} elements", out.len(), def.len()),
+                            format!(
+                                "{} initial values for an array of {} elements",
+                                out.len(),
+                                def.len()
+                            ),
                         );
                         return None;
                     }
@@ -292,7 +308,8 @@ impl<'a> Checker<'a> {
                 let def = self.types.structs[id as usize].clone();
                 let mut out = vec![None; def.fields.len()];
                 for (name, value) in fields {
-                    let Some(i) = def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(&name.name))
+                    let Some(i) =
+                        def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(&name.name))
                     else {
                         self.error(
                             Code::NoSuchMember,
@@ -312,7 +329,11 @@ impl<'a> Checker<'a> {
                 for (name, value) in fields {
                     let Some(i) = self.pous[pou as usize].find_var(&name.name) else {
                         let fb = self.pous[pou as usize].name.clone();
-                        self.error(Code::NoSuchMember, name.span, format!("`{fb}` has no member `{}`", name.name));
+                        self.error(
+                            Code::NoSuchMember,
+                            name.span,
+                            format!("`{fb}` has no member `{}`", name.name),
+                        );
                         continue;
                     };
                     let (vty, vrange) = {
@@ -364,9 +385,8 @@ impl<'a> Checker<'a> {
                 self.check_location(loc, r.ty);
             }
             // `AT %QW4 : WORD;` declares a variable known by its address.
-            let unnamed = decl.location.as_ref().filter(|_| decl.names.is_empty()).map(|loc| ast::Ident {
-                name: super::expr::normalize_address(loc),
-                span: loc.span,
+            let unnamed = decl.location.as_ref().filter(|_| decl.names.is_empty()).map(|loc| {
+                ast::Ident { name: super::expr::normalize_address(loc), span: loc.span }
             });
             for name in decl.names.iter().chain(unnamed.as_ref()) {
                 if out.iter().any(|v| v.name.eq_ignore_ascii_case(&name.name)) {
@@ -405,7 +425,10 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::ExternalWithoutGlobal,
                     name.span,
-                    format!("VAR_EXTERNAL `{}` must have the type of its VAR_GLOBAL, {want}", name.name),
+                    format!(
+                        "VAR_EXTERNAL `{}` must have the type of its VAR_GLOBAL, {want}",
+                        name.name
+                    ),
                 );
             }
             Some(_) => {}

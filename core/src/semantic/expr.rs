@@ -23,7 +23,7 @@ impl Typed {
 
 /// What a name in a body refers to.
 enum NameRef {
-    Var { place: Place, var: Var },
+    Var { place: Place, var: Box<Var> },
     Enumerator(Type, i64),
     Sys(SysVar),
     Pou,
@@ -179,13 +179,20 @@ impl<'a> Checker<'a> {
                     self.check_readable(&var, span)?;
                     Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty: var.ty, span }))
                 }
-                NameRef::Enumerator(ty, v) => Some(Typed::fixed(self.const_expr(v as u64, ty, span))),
-                NameRef::Sys(s) => Some(Typed::fixed(Expr { kind: ExprKind::Sys(s), ty: s.ty(), span })),
+                NameRef::Enumerator(ty, v) => {
+                    Some(Typed::fixed(self.const_expr(v as u64, ty, span)))
+                }
+                NameRef::Sys(s) => {
+                    Some(Typed::fixed(Expr { kind: ExprKind::Sys(s), ty: s.ty(), span }))
+                }
                 NameRef::Pou => {
                     self.error(
                         Code::NotAVariable,
                         span,
-                        format!("`{}` is a POU, not a value; call it with `{}(…)`", id.name, id.name),
+                        format!(
+                            "`{}` is a POU, not a value; call it with `{}(…)`",
+                            id.name, id.name
+                        ),
                     );
                     None
                 }
@@ -197,7 +204,9 @@ impl<'a> Checker<'a> {
             }
             K::Unary(op, operand) => self.unary(*op, operand, span, expected),
             K::Binary(op, l, r) => self.binary(map_binop(*op), l, r, span, expected),
-            K::Call { callee, args } => self.call_expr(callee, args, span, expected).map(Typed::fixed),
+            K::Call { callee, args } => {
+                self.call_expr(callee, args, span, expected).map(Typed::fixed)
+            }
         }
     }
 
@@ -206,7 +215,10 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::TypeMismatch,
                 span,
-                format!("`{}` is a function block instance: use one of its outputs, e.g. `{}.Q`", var.name, var.name),
+                format!(
+                    "`{}` is a function block instance: use one of its outputs, e.g. `{}.Q`",
+                    var.name, var.name
+                ),
             );
             return None;
         }
@@ -223,7 +235,11 @@ impl<'a> Checker<'a> {
                     Some(e) => Some(e),
                     None if key == "STRING" || key == "WSTRING" => None,
                     None => {
-                        self.error(Code::InvalidTypedLiteral, p.span, format!("unknown type prefix `{}#`", p.name));
+                        self.error(
+                            Code::InvalidTypedLiteral,
+                            p.span,
+                            format!("unknown type prefix `{}#`", p.name),
+                        );
                         return None;
                     }
                 }
@@ -231,7 +247,11 @@ impl<'a> Checker<'a> {
         };
         let bad_prefix = |c: &mut Self| {
             if let Some(p) = prefix {
-                c.error(Code::InvalidTypedLiteral, span, format!("`{}#` does not fit this literal", p.name));
+                c.error(
+                    Code::InvalidTypedLiteral,
+                    span,
+                    format!("`{}#` does not fit this literal", p.name),
+                );
             }
         };
         let fixed = |c: &Self, bits, ty| Some(Typed::fixed(c.const_expr(bits, ty, span)));
@@ -243,13 +263,19 @@ impl<'a> Checker<'a> {
                 }
                 None => {
                     let Some(ty) = smallest_int_type(*v) else {
-                        self.error(Code::IntegerLiteralTooLarge, span, format!("{v} is too large for any integer type"));
+                        self.error(
+                            Code::IntegerLiteralTooLarge,
+                            span,
+                            format!("{v} is too large for any integer type"),
+                        );
                         return None;
                     };
                     let e = self.const_expr(arith::norm(ty, *v), Type::Elem(ty), span);
                     Some(Typed { e, flexible: true })
                 }
-                Some(el) if el.is_real() => fixed(self, arith::from_f64(el, *v as f64), Type::Elem(el)),
+                Some(el) if el.is_real() => {
+                    fixed(self, arith::from_f64(el, *v as f64), Type::Elem(el))
+                }
                 Some(el) if el.is_integral() || el == Elem::Bool => {
                     if !fits(el, *v) {
                         let (lo, hi) = el.int_range();
@@ -292,13 +318,21 @@ impl<'a> Checker<'a> {
             },
             LiteralValue::String(bytes) => {
                 let len = bytes.len().max(1) as u32;
-                let e = Expr { kind: ExprKind::ConstStr(bytes.clone()), ty: Type::Str { wide: false, len }, span };
+                let e = Expr {
+                    kind: ExprKind::ConstStr(bytes.clone()),
+                    ty: Type::Str { wide: false, len },
+                    span,
+                };
                 Some(Typed { e, flexible: true })
             }
             LiteralValue::WString(units) => {
                 let bytes: Vec<u8> = units.iter().flat_map(|u| u.to_le_bytes()).collect();
                 let len = units.len().max(1) as u32;
-                let e = Expr { kind: ExprKind::ConstStr(bytes), ty: Type::Str { wide: true, len }, span };
+                let e = Expr {
+                    kind: ExprKind::ConstStr(bytes),
+                    ty: Type::Str { wide: true, len },
+                    span,
+                };
                 Some(Typed { e, flexible: true })
             }
             LiteralValue::Time(ns) => fixed(self, *ns as u64, Type::Elem(Elem::Time)),
@@ -308,10 +342,19 @@ impl<'a> Checker<'a> {
         }
     }
 
-    fn enum_value(&mut self, type_name: &ast::Ident, value: &ast::Ident, span: Span) -> Option<Typed> {
+    fn enum_value(
+        &mut self,
+        type_name: &ast::Ident,
+        value: &ast::Ident,
+        span: Span,
+    ) -> Option<Typed> {
         let resolved = self.resolve_type(&ast::TypeRef::Named(type_name.clone()), "")?;
         let Type::Enum(id) = resolved.ty else {
-            self.error(Code::TypeMismatch, type_name.span, format!("`{}` is not an enumeration", type_name.name));
+            self.error(
+                Code::TypeMismatch,
+                type_name.span,
+                format!("`{}` is not an enumeration", type_name.name),
+            );
             return None;
         };
         let def = &self.types.enums[id as usize];
@@ -334,18 +377,28 @@ impl<'a> Checker<'a> {
                 let var = p.vars[i as usize].clone();
                 if var.section == VarSection::External {
                     if let Some(&g) = self.global_index.get(&key) {
-                        return Some(NameRef::Var { place: Place::Global(g), var: self.globals[g as usize].clone() });
+                        return Some(NameRef::Var {
+                            place: Place::Global(g),
+                            var: Box::new(self.globals[g as usize].clone()),
+                        });
                     }
                     return None;
                 }
-                return Some(NameRef::Var { place: Place::Local(i), var });
+                return Some(NameRef::Var { place: Place::Local(i), var: Box::new(var) });
             }
         }
         if let Some(&g) = self.global_index.get(&key) {
-            return Some(NameRef::Var { place: Place::Global(g), var: self.globals[g as usize].clone() });
+            return Some(NameRef::Var {
+                place: Place::Global(g),
+                var: Box::new(self.globals[g as usize].clone()),
+            });
         }
         if let Some(Type::Enum(eid)) = expected {
-            if let Some((_, v)) = self.types.enums[eid as usize].values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&key)) {
+            if let Some((_, v)) = self.types.enums[eid as usize]
+                .values
+                .iter()
+                .find(|(n, _)| n.eq_ignore_ascii_case(&key))
+            {
                 return Some(NameRef::Enumerator(Type::Enum(eid), *v));
             }
         }
@@ -354,16 +407,27 @@ impl<'a> Checker<'a> {
             .enums
             .iter()
             .enumerate()
-            .filter_map(|(i, e)| e.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&key)).map(|(_, v)| (i as u32, *v)))
+            .filter_map(|(i, e)| {
+                e.values
+                    .iter()
+                    .find(|(n, _)| n.eq_ignore_ascii_case(&key))
+                    .map(|(_, v)| (i as u32, *v))
+            })
             .collect();
         match matches.as_slice() {
             [(eid, v)] => return Some(NameRef::Enumerator(Type::Enum(*eid), *v)),
             [(first, _), (second, _), ..] => {
-                let (a, b) = (self.types.enums[*first as usize].name.clone(), self.types.enums[*second as usize].name.clone());
+                let (a, b) = (
+                    self.types.enums[*first as usize].name.clone(),
+                    self.types.enums[*second as usize].name.clone(),
+                );
                 self.error(
                     Code::UndeclaredName,
                     id.span,
-                    format!("`{}` is a value of both `{a}` and `{b}`; write `{a}#{}` or `{b}#{}`", id.name, id.name, id.name),
+                    format!(
+                        "`{}` is a value of both `{a}` and `{b}`; write `{a}#{}` or `{b}#{}`",
+                        id.name, id.name, id.name
+                    ),
                 );
                 return None;
             }
@@ -393,14 +457,26 @@ impl<'a> Checker<'a> {
                 }
                 NameRef::Sys(_) => {
                     if write {
-                        self.error(Code::AssignToConstant, e.span, format!("`{}` is a system variable and cannot be written", id.name));
+                        self.error(
+                            Code::AssignToConstant,
+                            e.span,
+                            format!("`{}` is a system variable and cannot be written", id.name),
+                        );
                         return None;
                     }
-                    self.error(Code::NotAVariable, e.span, format!("`{}` is a system variable, not a place in memory", id.name));
+                    self.error(
+                        Code::NotAVariable,
+                        e.span,
+                        format!("`{}` is a system variable, not a place in memory", id.name),
+                    );
                     None
                 }
                 NameRef::Enumerator(..) | NameRef::Pou => {
-                    self.error(Code::NotAssignable, e.span, format!("`{}` is not a variable", id.name));
+                    self.error(
+                        Code::NotAssignable,
+                        e.span,
+                        format!("`{}` is not a variable", id.name),
+                    );
                     None
                 }
             },
@@ -409,7 +485,11 @@ impl<'a> Checker<'a> {
                 match bty {
                     Type::Struct(sid) => {
                         let def = &self.types.structs[sid as usize];
-                        match def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(&field.name)) {
+                        match def
+                            .fields
+                            .iter()
+                            .position(|f| f.name.eq_ignore_ascii_case(&field.name))
+                        {
                             Some(i) => {
                                 let ty = def.fields[i].ty;
                                 if write {
@@ -444,7 +524,11 @@ impl<'a> Checker<'a> {
                         Some((Place::Field(Box::new(bp), i), ty))
                     }
                     other => {
-                        let msg = format!("`.{}`: a value of type {} has no members", field.name, self.tname(other));
+                        let msg = format!(
+                            "`.{}`: a value of type {} has no members",
+                            field.name,
+                            self.tname(other)
+                        );
                         self.error(Code::NotAStruct, field.span, msg);
                         None
                     }
@@ -453,12 +537,16 @@ impl<'a> Checker<'a> {
             K::Bit(base, n) => {
                 let (bp, bty) = self.place(base, write)?;
                 let Some(el) = bty.elem().filter(|e| e.is_integral()) else {
-                    let msg = format!("bit access `.{n}` needs an integer or bit string, not {}", self.tname(bty));
+                    let msg = format!(
+                        "bit access `.{n}` needs an integer or bit string, not {}",
+                        self.tname(bty)
+                    );
                     self.error(Code::NotAStruct, e.span, msg);
                     return None;
                 };
                 if *n >= el.bits() {
-                    let msg = format!("{} has bits 0..{}; there is no bit {n}", el.name(), el.bits() - 1);
+                    let msg =
+                        format!("{} has bits 0..{}; there is no bit {n}", el.name(), el.bits() - 1);
                     self.error(Code::BitOutOfRange, e.span, msg);
                     return None;
                 }
@@ -467,12 +555,20 @@ impl<'a> Checker<'a> {
             K::Index(base, indices) => {
                 let (bp, bty) = self.place(base, write)?;
                 let Type::Array(aid) = bty else {
-                    self.error(Code::NotAnArray, e.span, format!("a value of type {} cannot be indexed", self.tname(bty)));
+                    self.error(
+                        Code::NotAnArray,
+                        e.span,
+                        format!("a value of type {} cannot be indexed", self.tname(bty)),
+                    );
                     return None;
                 };
                 let def = self.types.arrays[aid as usize].clone();
                 if def.dims.len() != indices.len() {
-                    let msg = format!("this array has {} dimension(s) but {} index(es) were given", def.dims.len(), indices.len());
+                    let msg = format!(
+                        "this array has {} dimension(s) but {} index(es) were given",
+                        def.dims.len(),
+                        indices.len()
+                    );
                     self.error(Code::WrongIndexCount, e.span, msg);
                     return None;
                 }
@@ -480,7 +576,10 @@ impl<'a> Checker<'a> {
                 for (ix, (lo, hi)) in indices.iter().zip(&def.dims) {
                     let t = self.expr(ix, None)?;
                     if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-                        let msg = format!("an array index must be an integer, not {}", self.tname(t.e.ty));
+                        let msg = format!(
+                            "an array index must be an integer, not {}",
+                            self.tname(t.e.ty)
+                        );
                         self.error(Code::TypeMismatch, ix.span, msg);
                         return None;
                     }
@@ -498,7 +597,11 @@ impl<'a> Checker<'a> {
             K::Direct(addr) => Some(self.direct_place(addr)),
             _ => {
                 let what = if write { "assigned to" } else { "used here" };
-                self.error(Code::NotAssignable, e.span, format!("this expression cannot be {what}; it is not a variable"));
+                self.error(
+                    Code::NotAssignable,
+                    e.span,
+                    format!("this expression cannot be {what}; it is not a variable"),
+                );
                 None
             }
         }
@@ -511,11 +614,19 @@ impl<'a> Checker<'a> {
             return None;
         }
         if var.constant {
-            self.error(Code::AssignToConstant, span, format!("`{}` is a CONSTANT and cannot be changed", var.name));
+            self.error(
+                Code::AssignToConstant,
+                span,
+                format!("`{}` is a CONSTANT and cannot be changed", var.name),
+            );
             return None;
         }
         if pou_kind == Some(crate::syntax::PouKind::Function) && var.section == VarSection::Input {
-            self.error(Code::AssignToConstant, span, format!("`{}` is an input of the FUNCTION and cannot be changed", var.name));
+            self.error(
+                Code::AssignToConstant,
+                span,
+                format!("`{}` is an input of the FUNCTION and cannot be changed", var.name),
+            );
             return None;
         }
         Some(())
@@ -526,7 +637,9 @@ impl<'a> Checker<'a> {
         let mut root = base;
         loop {
             match &root.kind {
-                ast::ExprKind::Member(b, _) | ast::ExprKind::Index(b, _) | ast::ExprKind::Bit(b, _) => root = b,
+                ast::ExprKind::Member(b, _)
+                | ast::ExprKind::Index(b, _)
+                | ast::ExprKind::Bit(b, _) => root = b,
                 ast::ExprKind::Paren(b) => root = b,
                 _ => break,
             }
@@ -576,13 +689,23 @@ impl<'a> Checker<'a> {
         (Place::Global(g), Type::Elem(elem))
     }
 
-    fn unary(&mut self, op: ast::UnaryOp, operand: &ast::Expr, span: Span, expected: Option<Type>) -> Option<Typed> {
+    fn unary(
+        &mut self,
+        op: ast::UnaryOp,
+        operand: &ast::Expr,
+        span: Span,
+        expected: Option<Type>,
+    ) -> Option<Typed> {
         let t = self.expr(operand, expected)?;
         let ty = t.e.ty;
         match op {
             ast::UnaryOp::Plus => {
                 if !ty.elem().is_some_and(|e| e.is_num() || e == Elem::Time) {
-                    self.error(Code::OperatorTypeMismatch, span, format!("unary `+` needs a number, not {}", self.tname(ty)));
+                    self.error(
+                        Code::OperatorTypeMismatch,
+                        span,
+                        format!("unary `+` needs a number, not {}", self.tname(ty)),
+                    );
                     return None;
                 }
                 let mut t = t;
@@ -591,7 +714,11 @@ impl<'a> Checker<'a> {
             }
             ast::UnaryOp::Neg => {
                 let Some(el) = ty.elem().filter(|e| e.is_num() || *e == Elem::Time) else {
-                    self.error(Code::OperatorTypeMismatch, span, format!("`-` needs a number or TIME, not {}", self.tname(ty)));
+                    self.error(
+                        Code::OperatorTypeMismatch,
+                        span,
+                        format!("`-` needs a number or TIME, not {}", self.tname(ty)),
+                    );
                     return None;
                 };
                 if let ExprKind::Const(bits) = t.e.kind {
@@ -604,18 +731,30 @@ impl<'a> Checker<'a> {
                     let e = self.const_expr(arith::negate(el, bits), ty, span);
                     return Some(Typed { e, flexible: t.flexible });
                 }
-                Some(Typed::fixed(Expr { kind: ExprKind::Unary(UnOp::Neg, Box::new(t.e)), ty, span }))
+                Some(Typed::fixed(Expr {
+                    kind: ExprKind::Unary(UnOp::Neg, Box::new(t.e)),
+                    ty,
+                    span,
+                }))
             }
             ast::UnaryOp::Not => {
                 let Some(el) = ty.elem().filter(|e| *e == Elem::Bool || e.is_integral()) else {
-                    self.error(Code::OperatorTypeMismatch, span, format!("NOT needs a BOOL or a bit string, not {}", self.tname(ty)));
+                    self.error(
+                        Code::OperatorTypeMismatch,
+                        span,
+                        format!("NOT needs a BOOL or a bit string, not {}", self.tname(ty)),
+                    );
                     return None;
                 };
                 if let ExprKind::Const(bits) = t.e.kind {
                     let e = self.const_expr(arith::complement(el, bits), ty, span);
                     return Some(Typed::fixed(e));
                 }
-                Some(Typed::fixed(Expr { kind: ExprKind::Unary(UnOp::Not, Box::new(t.e)), ty, span }))
+                Some(Typed::fixed(Expr {
+                    kind: ExprKind::Unary(UnOp::Not, Box::new(t.e)),
+                    ty,
+                    span,
+                }))
             }
         }
     }
@@ -631,7 +770,10 @@ impl<'a> Checker<'a> {
             if lit.flexible && !(if std::ptr::eq(lit, a) { b.flexible } else { a.flexible }) {
                 if let ExprKind::Const(bits) = lit.e.kind {
                     let le = lit.e.ty.elem()?;
-                    if le.is_integral() && (other.is_integral() && fits(other, arith::to_i128(le, bits)) || other.is_real()) {
+                    if le.is_integral()
+                        && (other.is_integral() && fits(other, arith::to_i128(le, bits))
+                            || other.is_real())
+                    {
                         return Some(other);
                     }
                     if le.is_real() && other.is_real() {
@@ -671,16 +813,28 @@ impl<'a> Checker<'a> {
                             return Some(self.const_expr(arith::norm(te, v), target, t.e.span));
                         }
                         if te.is_real() {
-                            return Some(self.const_expr(arith::from_f64(te, v as f64), target, t.e.span));
+                            return Some(self.const_expr(
+                                arith::from_f64(te, v as f64),
+                                target,
+                                t.e.span,
+                            ));
                         }
                         if te.is_integral() {
                             let (lo, hi) = te.int_range();
-                            self.error(Code::ConstantOutOfRange, span, format!("{v} does not fit {} ({lo}..{hi})", te.name()));
+                            self.error(
+                                Code::ConstantOutOfRange,
+                                span,
+                                format!("{v} does not fit {} ({lo}..{hi})", te.name()),
+                            );
                             return None;
                         }
                     }
                     if fe.is_real() && te.is_real() {
-                        return Some(self.const_expr(arith::from_f64(te, f64::from_bits(*bits)), target, t.e.span));
+                        return Some(self.const_expr(
+                            arith::from_f64(te, f64::from_bits(*bits)),
+                            target,
+                            t.e.span,
+                        ));
                     }
                 }
                 if t.flexible && fe.is_real() && te.is_real() {
@@ -690,7 +844,11 @@ impl<'a> Checker<'a> {
                     return Some(self.convert(t.e, target));
                 }
                 let hint = if fe.is_num() && te.is_num() || fe.is_integral() && te.is_integral() {
-                    format!(" without possible loss; convert it explicitly with {}_TO_{}(…)", fe.name(), te.name())
+                    format!(
+                        " without possible loss; convert it explicitly with {}_TO_{}(…)",
+                        fe.name(),
+                        te.name()
+                    )
                 } else {
                     String::new()
                 };
@@ -710,13 +868,24 @@ impl<'a> Checker<'a> {
             }
             _ => {
                 let (f, to) = (self.tname(from), self.tname(target));
-                self.error(Code::TypeMismatch, span, format!("expected a value of type {to}, found {f}"));
+                self.error(
+                    Code::TypeMismatch,
+                    span,
+                    format!("expected a value of type {to}, found {f}"),
+                );
                 None
             }
         }
     }
 
-    fn binary(&mut self, op: BinOp, l: &ast::Expr, r: &ast::Expr, span: Span, expected: Option<Type>) -> Option<Typed> {
+    fn binary(
+        &mut self,
+        op: BinOp,
+        l: &ast::Expr,
+        r: &ast::Expr,
+        span: Span,
+        expected: Option<Type>,
+    ) -> Option<Typed> {
         let hint = if is_comparison(op) { None } else { expected };
         let a = self.expr(l, hint);
         let b = match &a {
@@ -726,7 +895,8 @@ impl<'a> Checker<'a> {
         let (a, b) = (a?, b?);
         let (at, bt) = (a.e.ty, b.e.ty);
         let mismatch = |c: &mut Self| {
-            let msg = format!("`{}` cannot combine {} and {}", op_text(op), c.tname(at), c.tname(bt));
+            let msg =
+                format!("`{}` cannot combine {} and {}", op_text(op), c.tname(at), c.tname(bt));
             c.error(Code::OperatorTypeMismatch, span, msg);
             None
         };
@@ -791,7 +961,9 @@ impl<'a> Checker<'a> {
         }
         // `i * 1.5` with an integer `i` stays assignable to REAL: the untyped real literal
         // lends its flexibility to the result.
-        let real_literal = |t: &Typed, other: Elem| t.flexible && t.e.ty.elem().is_some_and(Elem::is_real) && other.is_int();
+        let real_literal = |t: &Typed, other: Elem| {
+            t.flexible && t.e.ty.elem().is_some_and(Elem::is_real) && other.is_int()
+        };
         let flexible = (a.flexible && b.flexible) || real_literal(&a, be) || real_literal(&b, ae);
         if flexible && ae.is_integral() && be.is_integral() && op != BinOp::Pow {
             // Fold untyped integer literals exactly, then pick the smallest type.
@@ -820,7 +992,11 @@ impl<'a> Checker<'a> {
             if ae.is_bitstring() || be.is_bitstring() {
                 return mismatch(self);
             }
-            if ae == Elem::Real && (be == Elem::Real || b.flexible) { Elem::Real } else { Elem::LReal }
+            if ae == Elem::Real && (be == Elem::Real || b.flexible) {
+                Elem::Real
+            } else {
+                Elem::LReal
+            }
         } else {
             match self.common_elem(&a, &b) {
                 Some(el) => el,
@@ -852,7 +1028,11 @@ impl<'a> Checker<'a> {
         use Elem::*;
         let (ae, be) = (a.e.ty.elem()?, b.e.ty.elem()?);
         let make = |c: &Self, ty: Elem, x: Expr, y: Expr| {
-            let e = Expr { kind: ExprKind::Binary(op, Box::new(x), Box::new(y)), ty: Type::Elem(ty), span };
+            let e = Expr {
+                kind: ExprKind::Binary(op, Box::new(x), Box::new(y)),
+                ty: Type::Elem(ty),
+                span,
+            };
             c.fold(e).map(Typed::fixed)
         };
         let result = match (op, ae, be) {
@@ -868,7 +1048,11 @@ impl<'a> Checker<'a> {
             (BinOp::Mul, n, Time) if n.is_num() => {
                 let f = if n.is_real() { LReal } else { LInt };
                 let x = self.convert(a.e, Type::Elem(f));
-                let e = Expr { kind: ExprKind::Binary(op, Box::new(b.e), Box::new(x)), ty: Type::Elem(Time), span };
+                let e = Expr {
+                    kind: ExprKind::Binary(op, Box::new(b.e), Box::new(x)),
+                    ty: Type::Elem(Time),
+                    span,
+                };
                 return self.fold(e).map(Typed::fixed);
             }
             _ => return mismatch(self),

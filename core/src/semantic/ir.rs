@@ -379,6 +379,9 @@ pub enum Builtin {
     IntToBcd,
 }
 
+/// One CASE branch: inclusive ranges of selector values, and its body.
+pub type CaseArm = (Vec<(i64, i64)>, Vec<Stmt>);
+
 /// A statement with its source span (for the debug map).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stmt {
@@ -416,7 +419,7 @@ pub enum StmtKind {
         /// The selector (an integer or enumeration value).
         selector: Expr,
         /// Per arm: inclusive ranges of selector values, and the body.
-        arms: Vec<(Vec<(i64, i64)>, Vec<Stmt>)>,
+        arms: Vec<CaseArm>,
         /// The ELSE body (empty when absent).
         else_body: Vec<Stmt>,
     },

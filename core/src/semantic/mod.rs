@@ -43,19 +43,27 @@ pub fn analyze(source: &str) -> Analysis {
 
 /// Checks `source`, an ST boolean expression, in the scope of POU `pou` of `program` (a
 /// breakpoint condition such as `Level > 80 AND Pump`).
-pub fn check_condition(program: &Program, pou: PouId, source: &str) -> Result<Expr, Vec<Diagnostic>> {
+pub fn check_condition(
+    program: &Program,
+    pou: PouId,
+    source: &str,
+) -> Result<Expr, Vec<Diagnostic>> {
     let expr = syntax::parse_expression(source)?;
     check::check_expression_in(program, pou, &expr, Some(Type::BOOL), true)
 }
 
 /// Parses `text`, an IEC literal or constant expression (`TRUE`, `42`, `-1.5`, `T#2s`,
 /// `'text'`, an enumerator), as a value of type `ty` in the scope of POU `pou`.
-pub fn parse_value(program: &Program, pou: PouId, ty: Type, text: &str) -> Result<InitValue, String> {
+pub fn parse_value(
+    program: &Program,
+    pou: PouId,
+    ty: Type,
+    text: &str,
+) -> Result<InitValue, String> {
     let expr = syntax::parse_expression(text).map_err(|d| first_message(&d))?;
     let checked = check::check_expression_in(program, pou, &expr, Some(ty), false)
         .map_err(|d| first_message(&d))?;
-    consts::to_init_value(&checked)
-        .ok_or_else(|| format!("`{text}` is not a constant value"))
+    consts::to_init_value(&checked).ok_or_else(|| format!("`{text}` is not a constant value"))
 }
 
 fn first_message(diags: &[Diagnostic]) -> String {

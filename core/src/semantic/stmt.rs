@@ -33,13 +33,23 @@ impl<'a> Checker<'a> {
                 let t = self.expr(value, place.as_ref().map(|p| p.1));
                 let ((place, ty), t) = (place?, t?);
                 if let Type::Fb(_) = ty {
-                    self.error(Code::NotAssignable, target.span, "a function block instance cannot be assigned; call it instead");
+                    self.error(
+                        Code::NotAssignable,
+                        target.span,
+                        "a function block instance cannot be assigned; call it instead",
+                    );
                     return None;
                 }
                 let v = self.coerce(t, ty, value.span)?;
                 self.check_subrange(&place, &v);
-                if let (Type::Array(_) | Type::Struct(_), false) = (ty, matches!(v.kind, ExprKind::Load(_))) {
-                    self.error(Code::NotAssignable, value.span, "arrays and structures can only be copied from a variable");
+                if let (Type::Array(_) | Type::Struct(_), false) =
+                    (ty, matches!(v.kind, ExprKind::Load(_)))
+                {
+                    self.error(
+                        Code::NotAssignable,
+                        value.span,
+                        "arrays and structures can only be copied from a variable",
+                    );
                     return None;
                 }
                 StmtKind::Assign(place, v)
@@ -63,26 +73,42 @@ impl<'a> Checker<'a> {
                 let else_body = else_body.as_ref().map(|b| self.stmts(b)).unwrap_or_default();
                 StmtKind::If { branches: out, else_body }
             }
-            K::Case { selector, arms, else_body } => self.case(selector, arms, else_body.as_deref())?,
+            K::Case { selector, arms, else_body } => {
+                self.case(selector, arms, else_body.as_deref())?
+            }
             K::For { var, from, to, by, body } => {
                 let var_expr = ast::Expr { kind: ast::ExprKind::Name(var.clone()), span: var.span };
                 let place = self.place(&var_expr, true);
                 let ty = place.as_ref().map(|p| p.1);
                 let el = ty.and_then(Type::elem).filter(|e| e.is_int());
                 if place.is_some() && el.is_none() {
-                    let msg = format!("the FOR variable `{}` must be an integer variable", var.name);
+                    let msg =
+                        format!("the FOR variable `{}` must be an integer variable", var.name);
                     self.error(Code::ForVariableNotInteger, var.span, msg);
                 }
                 let vty = el.map(Type::Elem);
-                let f = self.expr(from, vty).and_then(|t| vty.and_then(|ty| self.coerce(t, ty, from.span)));
-                let t = self.expr(to, vty).and_then(|t| vty.and_then(|ty| self.coerce(t, ty, to.span)));
+                let f = self
+                    .expr(from, vty)
+                    .and_then(|t| vty.and_then(|ty| self.coerce(t, ty, from.span)));
+                let t =
+                    self.expr(to, vty).and_then(|t| vty.and_then(|ty| self.coerce(t, ty, to.span)));
                 let b = match by {
-                    Some(b) => self.expr(b, vty).and_then(|t| vty.and_then(|ty| self.coerce(t, ty, b.span))),
-                    None => el.map(|e| Expr { kind: ExprKind::Const(1), ty: Type::Elem(e), span: var.span }),
+                    Some(b) => self
+                        .expr(b, vty)
+                        .and_then(|t| vty.and_then(|ty| self.coerce(t, ty, b.span))),
+                    None => el.map(|e| Expr {
+                        kind: ExprKind::Const(1),
+                        ty: Type::Elem(e),
+                        span: var.span,
+                    }),
                 };
                 if let Some(step) = &b {
                     if consts::int_value(step) == Some(0) {
-                        self.error(Code::ZeroForStep, step.span, "a FOR loop with step 0 never ends");
+                        self.error(
+                            Code::ZeroForStep,
+                            step.span,
+                            "a FOR loop with step 0 never ends",
+                        );
                     }
                 }
                 self.body.loop_depth += 1;
@@ -108,7 +134,11 @@ impl<'a> Checker<'a> {
             K::Exit | K::Continue => {
                 if self.body.loop_depth == 0 {
                     let kw = if matches!(s.kind, K::Exit) { "EXIT" } else { "CONTINUE" };
-                    self.error(Code::ExitOutsideLoop, span, format!("{kw} can only be used inside FOR, WHILE or REPEAT"));
+                    self.error(
+                        Code::ExitOutsideLoop,
+                        span,
+                        format!("{kw} can only be used inside FOR, WHILE or REPEAT"),
+                    );
                     return None;
                 }
                 if matches!(s.kind, K::Exit) {
@@ -134,19 +164,34 @@ impl<'a> Checker<'a> {
 
     /// Reports a constant stored into a subrange variable outside its limits.
     fn check_subrange(&mut self, place: &Place, value: &Expr) {
-        let (Some((lo, hi)), Some(v)) = (self.place_range(place), consts::int_value(value)) else { return };
+        let (Some((lo, hi)), Some(v)) = (self.place_range(place), consts::int_value(value)) else {
+            return;
+        };
         if v < lo || v > hi {
-            self.error(Code::SubrangeViolation, value.span, format!("{v} is outside the subrange {lo}..{hi} of this variable"));
+            self.error(
+                Code::SubrangeViolation,
+                value.span,
+                format!("{v} is outside the subrange {lo}..{hi} of this variable"),
+            );
         }
     }
 
-    fn case(&mut self, selector: &ast::Expr, arms: &[ast::CaseArm], else_body: Option<&[ast::Stmt]>) -> Option<StmtKind> {
+    fn case(
+        &mut self,
+        selector: &ast::Expr,
+        arms: &[ast::CaseArm],
+        else_body: Option<&[ast::Stmt]>,
+    ) -> Option<StmtKind> {
         let sel = self.expr(selector, None);
         let sel_ty = sel.as_ref().map(|s| s.e.ty);
-        let ok_selector = |t: Type| matches!(t, Type::Enum(_)) || t.elem().is_some_and(|e| e.is_integral());
+        let ok_selector =
+            |t: Type| matches!(t, Type::Enum(_)) || t.elem().is_some_and(|e| e.is_integral());
         if let Some(t) = sel_ty {
             if !ok_selector(t) {
-                let msg = format!("a CASE selector must be an integer or an enumeration, not {}", self.tname(t));
+                let msg = format!(
+                    "a CASE selector must be an integer or an enumeration, not {}",
+                    self.tname(t)
+                );
                 self.error(Code::TypeMismatch, selector.span, msg);
             }
         }
@@ -160,7 +205,9 @@ impl<'a> Checker<'a> {
                     ast::CaseLabel::Value(v) => (v, v),
                     ast::CaseLabel::Range(a, b) => (a, b),
                 };
-                let (Some(lo), Some(hi)) = (self.case_label(lo_e, label_ty), self.case_label(hi_e, label_ty)) else {
+                let (Some(lo), Some(hi)) =
+                    (self.case_label(lo_e, label_ty), self.case_label(hi_e, label_ty))
+                else {
                     continue;
                 };
                 let span = lo_e.span.to(hi_e.span);
@@ -169,7 +216,11 @@ impl<'a> Checker<'a> {
                     continue;
                 }
                 if seen.iter().any(|(a, b)| lo <= *b && *a <= hi) {
-                    self.error(Code::DuplicateCaseLabel, span, "this CASE label is already covered by an earlier one");
+                    self.error(
+                        Code::DuplicateCaseLabel,
+                        span,
+                        "this CASE label is already covered by an earlier one",
+                    );
                     continue;
                 }
                 seen.push((lo, hi));
@@ -198,7 +249,10 @@ impl<'a> Checker<'a> {
             }
             _ => {
                 if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-                    let msg = format!("a CASE label must be an integer constant, not {}", self.tname(t.e.ty));
+                    let msg = format!(
+                        "a CASE label must be an integer constant, not {}",
+                        self.tname(t.e.ty)
+                    );
                     self.error(Code::CaseLabelType, e.span, msg);
                     return None;
                 }

@@ -47,11 +47,17 @@ fn each_error_is_located() {
     assert_eq!(errors(&program("EXIT;")), vec![(Code::ExitOutsideLoop, 3, 1)]);
     assert_eq!(errors(&program("i := NOPE(1);")), vec![(Code::UnknownFunction, 3, 6)]);
     assert_eq!(errors(&program("i := i / 0;")), vec![(Code::DivisionByZeroConstant, 3, 10)]);
-    assert_eq!(errors(&program("FOR i := 1 TO 5 BY 0 DO END_FOR;")), vec![(Code::ZeroForStep, 3, 20)]);
+    assert_eq!(
+        errors(&program("FOR i := 1 TO 5 BY 0 DO END_FOR;")),
+        vec![(Code::ZeroForStep, 3, 20)]
+    );
     assert_eq!(errors(&program("b := w.16;")), vec![(Code::BitOutOfRange, 3, 6)]);
     assert_eq!(errors(&program("t.Q := TRUE;")), vec![(Code::NotAssignable, 3, 1)]);
     assert_eq!(errors(&program("i := t(IN := TRUE);")), vec![(Code::FbCalledAsFunction, 3, 6)]);
-    assert_eq!(errors(&program("CASE i OF 1: ; 1..3: ; END_CASE;")), vec![(Code::DuplicateCaseLabel, 3, 16)]);
+    assert_eq!(
+        errors(&program("CASE i OF 1: ; 1..3: ; END_CASE;")),
+        vec![(Code::DuplicateCaseLabel, 3, 16)]
+    );
     assert_eq!(errors(&program("FST_SCN := TRUE;")), vec![(Code::AssignToConstant, 3, 1)]);
 }
 
@@ -75,7 +81,8 @@ fn declarations_are_checked() {
     let src = "TYPE A : STRUCT x : B; END_STRUCT; B : STRUCT y : A; END_STRUCT; END_TYPE
 PROGRAM P VAR a : A; END_VAR END_PROGRAM";
     assert!(errors(src).iter().any(|e| e.0 == Code::RecursiveType), "{:?}", errors(src));
-    let src = "PROGRAM P VAR x : Nope; y : ARRAY[5..1] OF INT; x2 AT %IX0.0 : INT; END_VAR END_PROGRAM";
+    let src =
+        "PROGRAM P VAR x : Nope; y : ARRAY[5..1] OF INT; x2 AT %IX0.0 : INT; END_VAR END_PROGRAM";
     let codes: Vec<Code> = errors(src).into_iter().map(|e| e.0).collect();
     assert_eq!(codes, vec![Code::UnknownType, Code::InvalidRange, Code::InvalidLocation]);
     let src = "FUNCTION F : INT VAR_INPUT a : INT; END_VAR F := G(a); END_FUNCTION
@@ -102,7 +109,15 @@ x := F(c := 1);
 t(IN := TRUE, ET := T#1s);
 END_PROGRAM";
     let codes: Vec<Code> = errors(bad).into_iter().map(|e| e.0).collect();
-    assert_eq!(codes, vec![Code::WrongArgumentCount, Code::MixedArguments, Code::NoSuchParameter, Code::NoSuchParameter]);
+    assert_eq!(
+        codes,
+        vec![
+            Code::WrongArgumentCount,
+            Code::MixedArguments,
+            Code::NoSuchParameter,
+            Code::NoSuchParameter
+        ]
+    );
 }
 
 #[test]
@@ -112,8 +127,14 @@ fn conditions_and_values_check_in_a_program_scope() {
     let main = p.find_pou("P").unwrap();
     assert!(check_condition(&p, main, "i > 80 AND b").is_ok());
     assert!(check_condition(&p, main, "i + 1").is_err());
-    assert_eq!(parse_value(&p, main, Type::Elem(Elem::Int), "-42"), Ok(InitValue::Scalar(-42i64 as u64)));
-    assert_eq!(parse_value(&p, main, Type::Elem(Elem::Time), "T#1s"), Ok(InitValue::Scalar(1_000_000_000)));
+    assert_eq!(
+        parse_value(&p, main, Type::Elem(Elem::Int), "-42"),
+        Ok(InitValue::Scalar(-42i64 as u64))
+    );
+    assert_eq!(
+        parse_value(&p, main, Type::Elem(Elem::Time), "T#1s"),
+        Ok(InitValue::Scalar(1_000_000_000))
+    );
     assert!(parse_value(&p, main, Type::Elem(Elem::Int), "i").is_err());
     assert!(parse_value(&p, main, Type::Elem(Elem::SInt), "300").is_err());
 }

@@ -211,7 +211,9 @@ impl Simulator {
         self.state = SimState::Ready;
         self.apply_pinned();
         let sys = SysState { first_scan: self.first_scan, time_ns: self.time_ns };
-        if let Err(RuntimeError { fault, span, pou }) = self.machine.run_scan(&self.exe, sys, self.watchdog) {
+        if let Err(RuntimeError { fault, span, pou }) =
+            self.machine.run_scan(&self.exe, sys, self.watchdog)
+        {
             let info = FaultInfo { fault, span, pou, scan: self.scans + 1, time_ns: self.time_ns };
             self.state = SimState::Faulted(info.clone());
             return ScanOutcome::Fault(info);
@@ -380,7 +382,12 @@ impl Simulator {
         let id = self.exe.compile_condition(&self.program, &expr).map_err(SimError::Compile)?;
         let bp = BreakpointId(self.next_breakpoint);
         self.next_breakpoint += 1;
-        self.breakpoints.push(Breakpoint { id: bp, source: condition.to_string(), condition: id, was_true: false });
+        self.breakpoints.push(Breakpoint {
+            id: bp,
+            source: condition.to_string(),
+            condition: id,
+            was_true: false,
+        });
         Ok(bp)
     }
 
@@ -404,10 +411,11 @@ impl Simulator {
         let mut hit = None;
         for i in 0..self.breakpoints.len() {
             let cond = self.breakpoints[i].condition;
-            let now = match self.machine.eval_condition(&self.exe, cond, sys, self.watchdog) {
-                Ok(v) => v,
-                Err(_) => false,
-            };
+            // A condition that faults (an index out of range) counts as not true.
+            let now = self
+                .machine
+                .eval_condition(&self.exe, cond, sys, self.watchdog)
+                .unwrap_or_default();
             let bp = &mut self.breakpoints[i];
             if now && !bp.was_true && hit.is_none() {
                 hit = Some(bp.id);

@@ -110,7 +110,8 @@ END_PROGRAM";
 
 #[test]
 fn the_watchdog_stops_an_endless_loop() {
-    let mut s = sim("PROGRAM P VAR i : INT; END_VAR WHILE TRUE DO i := i + 1; END_WHILE; END_PROGRAM");
+    let mut s =
+        sim("PROGRAM P VAR i : INT; END_VAR WHILE TRUE DO i := i + 1; END_WHILE; END_PROGRAM");
     s.set_watchdog(100_000);
     let ScanOutcome::Fault(info) = s.scan() else { panic!("no fault") };
     assert_eq!(info.fault, Fault::Watchdog { budget: 100_000 });
@@ -134,7 +135,8 @@ fn timers_run_on_the_virtual_clock_in_single_scans() {
 
 #[test]
 fn first_scan_and_square_waves() {
-    let src = "PROGRAM P VAR RETAIN first : INT; END_VAR VAR sec : INT; on : BOOL; off : BOOL; END_VAR
+    let src =
+        "PROGRAM P VAR RETAIN first : INT; END_VAR VAR sec : INT; on : BOOL; off : BOOL; END_VAR
 IF FST_SCN THEN first := first + 1; END_IF;
 IF T_100MS THEN sec := sec + 1; END_IF;
 on := ALW_ON; off := ALW_OFF;

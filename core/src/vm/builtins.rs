@@ -136,7 +136,9 @@ pub(crate) fn math(f: MathFn, elem: Elem, x: u64, y: u64) -> u64 {
         MathFn::Asin => real(arith::math::asin),
         MathFn::Acos => real(arith::math::acos),
         MathFn::Atan => real(arith::math::atan),
-        MathFn::Expt => arith::from_f64(elem, arith::math::pow(arith::to_f64(elem, x), arith::to_f64(elem, y))),
+        MathFn::Expt => {
+            arith::from_f64(elem, arith::math::pow(arith::to_f64(elem, x), arith::to_f64(elem, y)))
+        }
         MathFn::Shl => arith::shift(ShiftKind::Shl, elem, x, y as i64),
         MathFn::Shr => arith::shift(ShiftKind::Shr, elem, x, y as i64),
         MathFn::Rol => arith::shift(ShiftKind::Rol, elem, x, y as i64),
