@@ -1,0 +1,60 @@
+//! Share links: a project compressed (DEFLATE, miniz_oxide) and base64url-encoded into
+//! the URL fragment, so no server is involved.
+
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use base64::Engine;
+use std::fmt;
+
+use super::{Project, ProjectError};
+
+/// The fragment prefix of a share link: `#p=<data>`.
+pub const SHARE_PREFIX: &str = "p=";
+
+/// The largest project a link may expand to (protects against decompression bombs).
+const MAX_PROJECT_BYTES: usize = 4 << 20;
+
+/// Why a share link could not be opened.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ShareError {
+    /// The fragment does not start with `p=`.
+    NotAShareLink,
+    /// The data is not base64url.
+    BadEncoding,
+    /// The data does not decompress (truncated or altered link).
+    BadCompression,
+    /// The decompressed data is not a project.
+    BadProject(ProjectError),
+}
+
+impl fmt::Display for ShareError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ShareError::NotAShareLink => f.write_str("this link does not hold a project"),
+            ShareError::BadEncoding | ShareError::BadCompression => {
+                f.write_str("this share link is damaged (was it copied completely?)")
+            }
+            ShareError::BadProject(e) => write!(f, "this share link holds no valid project: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for ShareError {}
+
+/// Encodes a project as a URL fragment (without `#`): `p=<base64url(deflate(json))>`.
+pub fn encode_share(project: &Project) -> String {
+    let json = serde_json::to_vec(project).unwrap_or_default();
+    let packed = miniz_oxide::deflate::compress_to_vec(&json, 9);
+    format!("{SHARE_PREFIX}{}", URL_SAFE_NO_PAD.encode(packed))
+}
+
+/// Decodes a URL fragment (with or without `#`) made by [`encode_share`].
+pub fn decode_share(fragment: &str) -> Result<Project, ShareError> {
+    let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
+    let data = fragment.strip_prefix(SHARE_PREFIX).ok_or(ShareError::NotAShareLink)?;
+    let packed = URL_SAFE_NO_PAD.decode(data.trim()).map_err(|_| ShareError::BadEncoding)?;
+    let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_PROJECT_BYTES)
+        .map_err(|_| ShareError::BadCompression)?;
+    let text = String::from_utf8(json).map_err(|_| ShareError::BadCompression)?;
+    Project::from_file(&text).map_err(ShareError::BadProject)
+}

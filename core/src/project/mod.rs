@@ -1,0 +1,129 @@
+//! Projects: the file format (serde, versioned), the share-link codec, and the storage
+//! abstraction the web app implements over the browser's local storage.
+//!
+//! Nothing here touches the DOM or a real storage: `ProjectStore` is a trait with an
+//! in-memory implementation for tests, as Ruffle's `StorageBackend` does.
+
+mod codec;
+mod store;
+
+pub use codec::{decode_share, encode_share, ShareError, SHARE_PREFIX};
+pub use store::{MemoryBackend, ProjectStore, ProjectSummary, StorageBackend, StoreError};
+
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// The schema version written by this build. Older versions are migrated on load.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// A student's project: its program text and simulation settings.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Project {
+    /// Schema version of this file.
+    pub schema: u32,
+    /// The project's name as shown in the project list.
+    pub name: String,
+    /// The Structured Text source (every POU and type of the project).
+    pub source: String,
+    /// Simulation settings.
+    #[serde(default)]
+    pub settings: Settings,
+}
+
+/// Simulation settings kept with a project.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Settings {
+    /// Cycle time in milliseconds.
+    pub cycle_ms: u64,
+    /// Variables shown on the timeline chart.
+    pub traced: Vec<String>,
+    /// Breakpoint conditions.
+    pub breakpoints: Vec<String>,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings { cycle_ms: 10, traced: Vec::new(), breakpoints: Vec::new() }
+    }
+}
+
+/// The program a new project starts with.
+pub const NEW_PROJECT_SOURCE: &str = "PROGRAM Main
+VAR_INPUT
+    Start : BOOL; (* start button *)
+    Stop : BOOL;  (* stop button *)
+END_VAR
+VAR_OUTPUT
+    Motor : BOOL; (* motor contactor *)
+END_VAR
+
+Motor := (Start OR Motor) AND NOT Stop;
+END_PROGRAM
+";
+
+impl Project {
+    /// A new project named `name` with the starter program.
+    pub fn new(name: impl Into<String>) -> Self {
+        Project {
+            schema: SCHEMA_VERSION,
+            name: name.into(),
+            source: NEW_PROJECT_SOURCE.to_string(),
+            settings: Settings::default(),
+        }
+    }
+
+    /// The project as a project file (pretty JSON).
+    pub fn to_file(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_default()
+    }
+
+    /// Reads a project file, migrating older schemas.
+    pub fn from_file(text: &str) -> Result<Project, ProjectError> {
+        let value: serde_json::Value =
+            serde_json::from_str(text).map_err(|e| ProjectError::NotJson(e.to_string()))?;
+        let schema = value
+            .get("schema")
+            .and_then(serde_json::Value::as_u64)
+            .ok_or(ProjectError::NotAProject)?;
+        if schema > SCHEMA_VERSION as u64 {
+            return Err(ProjectError::TooNew(schema));
+        }
+        let mut project: Project =
+            serde_json::from_value(value).map_err(|e| ProjectError::Invalid(e.to_string()))?;
+        project.schema = SCHEMA_VERSION;
+        Ok(project)
+    }
+}
+
+/// Why a project file could not be read.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ProjectError {
+    /// The text is not JSON.
+    NotJson(String),
+    /// JSON, but not a project (no schema version).
+    NotAProject,
+    /// Written by a newer version of the trainer.
+    TooNew(u64),
+    /// A project with missing or malformed fields.
+    Invalid(String),
+}
+
+impl fmt::Display for ProjectError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ProjectError::NotJson(e) => write!(f, "this is not a project file (not JSON: {e})"),
+            ProjectError::NotAProject => f.write_str("this JSON file is not a PLC trainer project"),
+            ProjectError::TooNew(v) => {
+                write!(f, "this project was saved by a newer trainer (schema {v}); update the page")
+            }
+            ProjectError::Invalid(e) => write!(f, "the project file is damaged: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for ProjectError {}
+
+#[cfg(test)]
+mod tests;

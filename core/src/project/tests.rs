@@ -1,0 +1,72 @@
+#![allow(clippy::unwrap_used)]
+
+use super::*;
+
+#[test]
+fn a_project_file_round_trips() {
+    let mut p = Project::new("Latch");
+    p.settings.traced = vec!["Motor".into()];
+    assert_eq!(Project::from_file(&p.to_file()).unwrap(), p);
+}
+
+#[test]
+fn bad_files_give_clear_errors() {
+    assert!(matches!(Project::from_file("not json"), Err(ProjectError::NotJson(_))));
+    assert_eq!(Project::from_file("{}"), Err(ProjectError::NotAProject));
+    assert_eq!(Project::from_file(r#"{"schema": 99}"#), Err(ProjectError::TooNew(99)));
+    assert!(matches!(
+        Project::from_file(r#"{"schema": 1, "name": 3}"#),
+        Err(ProjectError::Invalid(_))
+    ));
+    // Settings may be missing (older files).
+    let p = Project::from_file(r#"{"schema": 1, "name": "a", "source": "x"}"#).unwrap();
+    assert_eq!(p.settings.cycle_ms, 10);
+}
+
+#[test]
+fn share_links_round_trip_and_reject_damage() {
+    let p = Project::new("Shared latch");
+    let link = encode_share(&p);
+    assert!(link.starts_with("p="));
+    assert!(link.chars().all(|c| c.is_ascii_alphanumeric() || "=-_".contains(c)));
+    assert_eq!(decode_share(&format!("#{link}")).unwrap(), p);
+    assert_eq!(decode_share("#x=abc"), Err(ShareError::NotAShareLink));
+    assert_eq!(decode_share("#p=***"), Err(ShareError::BadEncoding));
+    let truncated = &link[..link.len() / 2];
+    assert!(decode_share(truncated).is_err());
+    let not_a_project = format!("p={}", {
+        use base64::Engine;
+        base64::engine::general_purpose::URL_SAFE_NO_PAD
+            .encode(miniz_oxide::deflate::compress_to_vec(b"[1,2]", 6))
+    });
+    assert!(matches!(decode_share(&not_a_project), Err(ShareError::BadProject(_))));
+}
+
+#[test]
+fn the_store_lists_adds_renames_duplicates_and_deletes() {
+    let mut store = ProjectStore::new(MemoryBackend::default());
+    let a = store.add(&Project::new("A"), 1000).unwrap();
+    let b = store.add(&Project::new("B"), 2000).unwrap();
+    assert_ne!(a, b);
+    let names: Vec<String> = store.list().unwrap().into_iter().map(|p| p.name).collect();
+    assert_eq!(names, ["B", "A"]);
+    store.rename(&a, "A2", 3000).unwrap();
+    assert_eq!(store.load(&a).unwrap().name, "A2");
+    let c = store.duplicate(&a, 4000).unwrap();
+    assert_eq!(store.load(&c).unwrap().name, "A2 (copy)");
+    store.delete(&b).unwrap();
+    assert!(matches!(store.load(&b), Err(StoreError::NotFound(_))));
+    assert_eq!(store.list().unwrap().len(), 2);
+}
+
+#[test]
+fn adding_never_overwrites_and_a_full_quota_loses_nothing() {
+    let mut store = ProjectStore::new(MemoryBackend::with_quota(1500));
+    let a = store.add(&Project::new("A"), 5).unwrap();
+    let b = store.add(&Project::new("B"), 5).unwrap();
+    assert_ne!(a, b, "same clock, still a new id");
+    let mut big = Project::new("Big");
+    big.source = "x".repeat(5000);
+    assert_eq!(store.save(&a, &big, 6), Err(StoreError::QuotaExceeded));
+    assert_eq!(store.load(&a).unwrap().name, "A", "the old version is still there");
+}
