@@ -28,8 +28,25 @@ if [ "$have" != "$want" ] || ! command -v wasm-bindgen-test-runner >/dev/null 2>
   cargo install wasm-bindgen-cli --version "$want"
 fi
 
-if ! command -v node >/dev/null 2>&1; then
-  log "installing Node.js"
-  apt-get update -qq && apt-get install -y -qq nodejs
+# trunk builds the web app. 0.22 needs a newer rustc; 0.21.14 builds only with --locked.
+if [ "$(trunk --version 2>/dev/null | awk '{print $2}')" != "0.21.14" ]; then
+  log "installing trunk 0.21.14 (about 17 minutes)"
+  cargo install trunk --version 0.21.14 --locked
 fi
-log "ready: $(rustc --version), wasm-bindgen $want, node $(node --version)"
+
+apt_updated=""
+apt_install() {
+  if [ -z "$apt_updated" ]; then apt-get update -qq; apt_updated=1; fi
+  apt-get install -y -qq "$@"
+}
+command -v node >/dev/null 2>&1 || { log "installing Node.js"; apt_install nodejs npm; }
+command -v npm >/dev/null 2>&1 || { log "installing npm"; apt_install npm; }
+# Debian's Chromium for the browser tests (never a downloaded browser).
+command -v chromium >/dev/null 2>&1 || { log "installing Chromium"; apt_install chromium chromium-driver; }
+
+# playwright-core (drives Chromium) and binaryen's wasm-opt 132 (used by trunk).
+if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/playwright-core ]; then
+  log "installing npm packages"
+  npm ci --no-audit --no-fund
+fi
+log "ready: $(rustc --version), wasm-bindgen $want, trunk $(trunk --version | awk '{print $2}'), node $(node --version)"

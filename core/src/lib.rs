@@ -11,6 +11,7 @@
 
 pub mod compile;
 pub mod diagnostics;
+pub mod export;
 pub mod project;
 pub mod run;
 pub mod semantic;

@@ -5,11 +5,13 @@
 //! still report on the rest. This module never looks at names or types.
 
 pub mod ast;
+mod highlight;
 mod lexer;
 mod literal;
 mod parser;
 
 pub use ast::*;
+pub use highlight::{highlight_spans, tokens, TokenClass};
 pub use lexer::{Token, TokenKind};
 
 use crate::diagnostics::Diagnostic;

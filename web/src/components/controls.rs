@@ -1,0 +1,104 @@
+//! The simulation controls: run, pause, single scan, N scans, restarts, cycle time,
+//! speed, and read-outs of the run state, scan count and virtual time.
+
+use leptos::prelude::*;
+use plc_core::sim::SimState;
+use plc_core::vm::format_time;
+
+use crate::state::{AppState, RunMode, Speed};
+
+/// The control bar of the simulation pane.
+#[component]
+pub fn Controls() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let mode = state.run_mode;
+    let has_sim = move || state.with_sim(|_| ()).is_some();
+    let faulted =
+        move || state.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);
+    let can_scan = move || has_sim() && !faulted();
+    let running = move || mode.get() == RunMode::Running;
+    let scans_per_step = RwSignal::new(10u64);
+
+    let status = move || {
+        if !has_sim() {
+            ("No program", "status status-stopped")
+        } else if faulted() {
+            ("FAULT", "status status-fault")
+        } else {
+            match mode.get() {
+                RunMode::Running => ("Running", "status status-running"),
+                RunMode::Paused => ("Paused", "status status-paused"),
+                RunMode::Stopped => ("Stopped", "status status-stopped"),
+            }
+        }
+    };
+    let scans = move || state.with_sim(|s| s.scan_count()).unwrap_or(0).to_string();
+    let time = move || state.with_sim(|s| format_time(s.time_ns())).unwrap_or_default();
+    let cycle = move || state.project.with(|p| p.settings.cycle_ms).to_string();
+    let speed_value = move || match state.speed.get() {
+        Speed::RealTime => "1",
+        Speed::Times10 => "10",
+        Speed::Max => "max",
+    };
+
+    view! {
+        <section class="panel controls" aria-label="Simulation controls">
+            <h2>"Simulation"</h2>
+            <div class="control-row">
+                <button class="primary" disabled=move || !can_scan() || running()
+                    on:click=move |_| state.run()>"Run"</button>
+                <button disabled=move || !running() on:click=move |_| state.pause()>"Pause"</button>
+                <button disabled=move || !can_scan() on:click=move |_| state.step(1)>"Step"</button>
+                <button disabled=move || !has_sim() on:click=move |_| state.reset()>"Reset"</button>
+                <button disabled=move || !has_sim() on:click=move |_| state.warm_restart()>
+                    "Warm restart"
+                </button>
+            </div>
+            <div class="control-row">
+                <label class="field">
+                    <span>"Scans per step"</span>
+                    <input type="number" min="1" max="1000000" class="num"
+                        prop:value=move || scans_per_step.get().to_string()
+                        on:change=move |ev| {
+                            let n = event_target_value(&ev).trim().parse::<u64>().unwrap_or(1);
+                            scans_per_step.set(n.clamp(1, 1_000_000));
+                        }/>
+                </label>
+                <button disabled=move || !can_scan()
+                    on:click=move |_| state.step(scans_per_step.get_untracked())>"Step N"</button>
+                <label class="field">
+                    <span>"Cycle time (ms)"</span>
+                    <input type="number" min="1" max="60000" class="num" prop:value=cycle
+                        on:change=move |ev| {
+                            match event_target_value(&ev).trim().parse::<u64>() {
+                                Ok(ms) => state.set_cycle_ms(ms),
+                                Err(_) => state.error("The cycle time is a whole number of milliseconds (1 to 60000)."),
+                            }
+                        }/>
+                </label>
+                <label class="field">
+                    <span>"Speed"</span>
+                    <select prop:value=speed_value on:change=move |ev| {
+                        let speed = match event_target_value(&ev).as_str() {
+                            "10" => Speed::Times10,
+                            "max" => Speed::Max,
+                            _ => Speed::RealTime,
+                        };
+                        state.speed.set(speed);
+                    }>
+                        <option value="1" selected=move || speed_value() == "1">"Real time"</option>
+                        <option value="10" selected=move || speed_value() == "10">"×10"</option>
+                        <option value="max" selected=move || speed_value() == "max">"As fast as possible"</option>
+                    </select>
+                </label>
+            </div>
+            <div class="readouts">
+                <span class=move || status().1 role="status" aria-label=move || format!("PLC state: {}", status().0)>
+                    {move || status().0}
+                </span>
+                <span class="readout">"Scan " <output aria-label="Scan count">{scans}</output></span>
+                <span class="readout">"Time " <output aria-label="Virtual time">{time}</output></span>
+            </div>
+        </section>
+    }
+}

@@ -1,0 +1,241 @@
+//! The page header: the app title, the open project's name, and the project menu (open,
+//! new, rename, duplicate, delete, export, import, share).
+
+use leptos::ev;
+use leptos::html;
+use leptos::prelude::*;
+use plc_core::project::Project;
+use wasm_bindgen::JsCast;
+use wasm_bindgen_futures::JsFuture;
+
+use crate::state::AppState;
+
+/// The first free "Untitled N" name.
+fn untitled_name(existing: &[String]) -> String {
+    (1..)
+        .map(|n| format!("Untitled {n}"))
+        .find(|name| !existing.iter().any(|e| e.eq_ignore_ascii_case(name)))
+        .unwrap_or_else(|| "Untitled".to_string())
+}
+
+/// A file name for the project: its name without characters file systems refuse.
+fn file_name(name: &str) -> String {
+    let clean: String = name
+        .trim()
+        .chars()
+        .map(|c| if c.is_control() || "/\\:*?\"<>|".contains(c) { '_' } else { c })
+        .collect();
+    let clean = if clean.is_empty() { "project".to_string() } else { clean };
+    format!("{clean}.plcproj.json")
+}
+
+/// Offers `text` as a download named `name`.
+fn download(name: &str, text: &str) -> Result<(), String> {
+    let err = |e: wasm_bindgen::JsValue| format!("{e:?}");
+    let window = web_sys::window().ok_or("no window")?;
+    let document = window.document().ok_or("no document")?;
+    let parts = js_sys::Array::of1(&wasm_bindgen::JsValue::from_str(text));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type("application/json");
+    let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(err)?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(err)?;
+    let a: web_sys::HtmlAnchorElement =
+        document.create_element("a").map_err(err)?.dyn_into().map_err(|_| "not an anchor")?;
+    a.set_href(&url);
+    a.set_download(name);
+    let body = document.body().ok_or("no body")?;
+    body.append_child(&a).map_err(err)?;
+    a.click();
+    a.remove();
+    set_timeout(
+        move || drop(web_sys::Url::revoke_object_url(&url)),
+        std::time::Duration::from_secs(5),
+    );
+    Ok(())
+}
+
+/// Reads the chosen file and imports it as a new project.
+async fn import_file(state: AppState, file: web_sys::File) {
+    let name = file.name();
+    let text = match JsFuture::from(file.text()).await {
+        Ok(v) => v.as_string().unwrap_or_default(),
+        Err(_) => {
+            state.error(format!("Could not read “{name}”. Nothing was changed."));
+            return;
+        }
+    };
+    match Project::from_file(&text) {
+        Ok(project) => {
+            let pname = project.name.clone();
+            state.add_and_open(project);
+            state.info(format!("Imported “{pname}” from {name}."));
+        }
+        Err(e) => state.error(format!("Could not import “{name}”: {e}. Nothing was changed.")),
+    }
+}
+
+/// Copies the share link to the clipboard (when allowed) and shows it.
+async fn share(state: AppState, link: String) {
+    let copied = match web_sys::window() {
+        Some(w) => JsFuture::from(w.navigator().clipboard().write_text(&link)).await.is_ok(),
+        None => false,
+    };
+    if copied {
+        state.info(format!("Share link copied to the clipboard: {link}"));
+    } else {
+        state.info(format!("Copy this share link (the clipboard is not available here): {link}"));
+    }
+}
+
+/// The header with the project menu.
+#[component]
+pub fn Header() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let renaming = RwSignal::new(false);
+    let rename_input = NodeRef::<html::Input>::new();
+    let file_input = NodeRef::<html::Input>::new();
+    let share_link = RwSignal::new(None::<String>);
+
+    // A different project: its share link is not this one's.
+    Effect::new(move |_| {
+        state.project_id.track();
+        share_link.set(None);
+        renaming.set(false);
+    });
+    // Focus and select the name when renaming starts.
+    Effect::new(move |_| {
+        if renaming.get() {
+            if let Some(input) = rename_input.get() {
+                let _ = input.focus();
+                input.select();
+            }
+        }
+    });
+
+    let name = move || state.project.with(|p| p.name.clone());
+    let confirm_rename = move || {
+        if !renaming.get_untracked() {
+            return;
+        }
+        renaming.set(false);
+        if let Some(input) = rename_input.get_untracked() {
+            state.rename(&input.value());
+        }
+    };
+    let new_project = move |_| {
+        let names: Vec<String> =
+            state.projects.with_untracked(|ps| ps.iter().map(|p| p.name.clone()).collect());
+        state.add_and_open(Project::new(untitled_name(&names)));
+    };
+    let delete = move |_| {
+        let name = state.project.with_untracked(|p| p.name.clone());
+        let ok = web_sys::window()
+            .and_then(|w| {
+                w.confirm_with_message(&format!(
+                    "Delete the project “{name}”? This cannot be undone."
+                ))
+                .ok()
+            })
+            .unwrap_or(false);
+        if ok {
+            state.delete_current();
+            state.info(format!("Deleted “{name}”."));
+        }
+    };
+    let export = move |_| {
+        let (name, text) = state.project.with_untracked(|p| (p.name.clone(), p.to_file()));
+        if let Err(e) = download(&file_name(&name), &text) {
+            state.error(format!("Could not export the project: {e}"));
+        }
+    };
+    let on_file = move |_| {
+        let Some(input) = file_input.get_untracked() else { return };
+        let file = input.files().and_then(|f| f.get(0));
+        input.set_value("");
+        if let Some(file) = file {
+            leptos::task::spawn_local(import_file(state, file));
+        }
+    };
+    let on_share = move |_| {
+        let link = state.share_link();
+        share_link.set(Some(link.clone()));
+        leptos::task::spawn_local(share(state, link));
+    };
+    let on_select = move |ev: ev::Event| {
+        let id = event_target_value(&ev);
+        if !id.is_empty() && Some(&id) != state.project_id.get_untracked().as_ref() {
+            state.open(&id);
+        }
+    };
+
+    view! {
+        <header class="app-header">
+            <h1 class="app-title">"PLC trainer"</h1>
+            <div class="project-title">
+                {move || if renaming.get() {
+                    view! {
+                        <input class="rename-input" type="text" node_ref=rename_input aria-label="Project name"
+                            prop:value=name
+                            on:keydown=move |ev: ev::KeyboardEvent| match ev.key().as_str() {
+                                "Enter" => { ev.prevent_default(); confirm_rename(); }
+                                "Escape" => renaming.set(false),
+                                _ => {}
+                            }
+                            on:blur=move |_| confirm_rename()/>
+                    }.into_any()
+                } else {
+                    view! { <span class="project-name" title="The open project">{name}</span> }.into_any()
+                }}
+            </div>
+            <nav class="project-menu" aria-label="Project">
+                <label class="project-select">
+                    <span class="visually-hidden">"Open project"</span>
+                    <select aria-label="Open project" on:change=on_select
+                        prop:value=move || state.project_id.get().unwrap_or_default()>
+                        {move || {
+                            let current = state.project_id.get();
+                            state.projects.get().into_iter().map(|p| {
+                                let selected = current.as_deref() == Some(p.id.as_str());
+                                view! { <option value=p.id.clone() selected=selected>{p.name.clone()}</option> }
+                            }).collect_view()
+                        }}
+                    </select>
+                </label>
+                <button on:click=new_project>"New project"</button>
+                <button on:click=move |_| renaming.set(true) disabled=move || renaming.get()>"Rename"</button>
+                <button on:click=move |_| state.duplicate()>"Duplicate"</button>
+                <button on:click=delete>"Delete"</button>
+                <button on:click=export title="Download the project file">"Export"</button>
+                <button on:click=move |_| { if let Some(i) = file_input.get_untracked() { i.click(); } }
+                    title="Open a project file as a new project">"Import"</button>
+                <input type="file" class="visually-hidden" tabindex="-1" node_ref=file_input
+                    accept=".json,.plcproj.json,application/json" aria-label="Import project file"
+                    on:change=on_file/>
+                <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
+            </nav>
+            {move || share_link.get().map(|link| view! {
+                <div class="share-box">
+                    <input type="text" readonly aria-label="Share link" prop:value=link
+                        on:focus=move |ev: ev::FocusEvent| {
+                            if let Some(i) = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok()) {
+                                i.select();
+                            }
+                        }/>
+                    <button class="close" aria-label="Close share link" on:click=move |_| share_link.set(None)>"×"</button>
+                </div>
+            })}
+        </header>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names() {
+        assert_eq!(untitled_name(&["Untitled 1".into(), "x".into()]), "Untitled 2");
+        assert_eq!(file_name("a/b: c"), "a_b_ c.plcproj.json");
+        assert_eq!(file_name("  "), "project.plcproj.json");
+    }
+}

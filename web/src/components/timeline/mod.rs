@@ -1,0 +1,361 @@
+//! The timeline: chosen variables charted against virtual time (BOOL as digital lanes,
+//! numbers as analog lanes) as plain SVG, with zoom, pan, follow mode, a read-out cursor
+//! and CSV / VCD / SVG export.
+
+mod chart;
+mod download;
+
+pub use download::download;
+
+use leptos::prelude::*;
+use plc_core::export::{trace_csv, trace_vcd, value_text};
+use plc_core::semantic::Type;
+use wasm_bindgen::JsCast;
+
+use crate::state::AppState;
+use chart::{build, t_of, value_at, Chart, AXIS_H, LEFT, WIDTH};
+
+/// Lane colours (also used in the exported SVG, so not in CSS).
+const COLORS: [&str; 8] =
+    ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"];
+
+/// The smallest and largest visible window (1 ms … 1 day).
+const MIN_SPAN: i64 = 1_000_000;
+const MAX_SPAN: i64 = 86_400_000_000_000;
+
+/// The view's window over virtual time.
+#[derive(Clone, Copy)]
+struct View {
+    follow: RwSignal<bool>,
+    span: RwSignal<i64>,
+    end: RwSignal<i64>,
+    cursor: RwSignal<Option<i64>>,
+}
+
+impl View {
+    fn window(&self, now: i64) -> (i64, i64) {
+        let span = self.span.get();
+        let end = if self.follow.get() { now.max(span) } else { self.end.get() };
+        (end - span, end)
+    }
+
+    /// Zooms by `factor` (> 1 zooms out) keeping time `at` in place.
+    fn zoom(&self, factor: f64, at: Option<i64>, now: i64) {
+        let (start, end) = self.window(now);
+        let old = (end - start).max(1);
+        let new = ((old as f64 * factor) as i64).clamp(MIN_SPAN, MAX_SPAN);
+        self.span.set(new);
+        if !self.follow.get_untracked() {
+            let at = at.unwrap_or(start + old / 2);
+            let frac = (at - start) as f64 / old as f64;
+            self.end.set(at + ((1.0 - frac) * new as f64) as i64);
+        }
+    }
+
+    /// Pans by `dt` nanoseconds (leaves follow mode).
+    fn pan(&self, dt: i64, now: i64) {
+        let (_, end) = self.window(now);
+        self.follow.set(false);
+        self.end.set(end.saturating_add(dt));
+    }
+}
+
+/// The variables one can chart: the main program's BOOL and numeric variables.
+fn candidates(state: AppState) -> Vec<String> {
+    state
+        .with_sim(|s| {
+            s.executable()
+                .main_vars()
+                .iter()
+                .filter(|e| match e.var.ty {
+                    Type::Elem(el) => {
+                        el.is_integral()
+                            || el.is_real()
+                            || el == plc_core::semantic::Elem::Bool
+                            || el == plc_core::semantic::Elem::Time
+                    }
+                    Type::Enum(_) => true,
+                    _ => false,
+                })
+                .map(|e| e.var.name.clone())
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// SVG x of a pointer event over the chart.
+fn pointer_x(ev: &web_sys::PointerEvent) -> Option<f64> {
+    let el = ev.current_target()?.dyn_into::<web_sys::Element>().ok()?;
+    let rect = el.get_bounding_client_rect();
+    if rect.width() <= 0.0 {
+        return None;
+    }
+    Some((f64::from(ev.client_x()) - rect.left()) / rect.width() * WIDTH)
+}
+
+/// The timeline panel.
+#[component]
+pub fn Timeline() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let view = View {
+        follow: RwSignal::new(true),
+        span: RwSignal::new(5_000_000_000),
+        end: RwSignal::new(5_000_000_000),
+        cursor: RwSignal::new(None),
+    };
+    let traced = Memo::new(move |_| state.project.with(|p| p.settings.traced.clone()));
+    let names = Memo::new(move |_| candidates(state));
+    let now = move || state.with_sim(|s| s.time_ns()).unwrap_or(0);
+    let chart = Memo::new(move |_| {
+        let window = view.window(now());
+        state.with_sim(|s| build(s.trace(), window)).unwrap_or_default()
+    });
+    let toggle = move |name: String, on: bool| {
+        let mut list = traced.get_untracked();
+        list.retain(|p| !p.eq_ignore_ascii_case(&name));
+        if on {
+            list.push(name);
+        }
+        state.set_traced(list);
+    };
+    let path_text = RwSignal::new(String::new());
+    let add_path = move || {
+        let p = path_text.get_untracked().trim().to_string();
+        if p.is_empty() {
+            return;
+        }
+        if state.with_sim(|s| s.executable().locate(&p).is_some()) != Some(true) {
+            state.error(format!("The program has no variable `{p}`."));
+            return;
+        }
+        toggle(p, true);
+        path_text.set(String::new());
+    };
+    let export = move |kind: &'static str| {
+        let text = match kind {
+            "svg" => svg_text(),
+            _ => state.sim.with_value(|s| {
+                s.as_ref().map(|s| {
+                    if kind == "csv" {
+                        trace_csv(s.trace())
+                    } else {
+                        trace_vcd(s.trace())
+                    }
+                })
+            }),
+        };
+        let Some(text) = text else {
+            state.error("Nothing to export yet.");
+            return;
+        };
+        let (name, mime) = match kind {
+            "csv" => ("timeline.csv", "text/csv"),
+            "vcd" => ("timeline.vcd", "text/plain"),
+            _ => ("timeline.svg", "image/svg+xml"),
+        };
+        if let Err(e) = download(name, mime, &text) {
+            state.error(e);
+        }
+    };
+
+    view! {
+        <section class="panel timeline" aria-label="Timeline">
+            <div class="panel-head">
+                <h2>"Timeline"</h2>
+                <div class="control-row">
+                    <button on:click=move |_| export("csv")>"Export CSV"</button>
+                    <button on:click=move |_| export("vcd")>"Export VCD"</button>
+                    <button on:click=move |_| export("svg")>"Export SVG"</button>
+                </div>
+            </div>
+            <fieldset class="trace-pick">
+                <legend>"Variables on the timeline"</legend>
+                {move || names.get().into_iter().map(|n| {
+                    let on = {
+                        let n = n.clone();
+                        move || traced.with(|t| t.iter().any(|p| p.eq_ignore_ascii_case(&n)))
+                    };
+                    let name = n.clone();
+                    let label = format!("Chart {n}");
+                    view! {
+                        <label class="chip">
+                            <input type="checkbox" aria-label=label prop:checked=on
+                                on:change=move |ev| toggle(name.clone(), event_target_checked(&ev))/>
+                            {n}
+                        </label>
+                    }
+                }).collect_view()}
+                <span class="add-path">
+                    <input class="mono" aria-label="Variable path" placeholder="e.g. T1.ET, Arr[2]"
+                        prop:value=move || path_text.get()
+                        on:input=move |ev| path_text.set(event_target_value(&ev))
+                        on:keydown=move |ev| if ev.key() == "Enter" { add_path() }/>
+                    <button on:click=move |_| add_path()>"Add to timeline"</button>
+                </span>
+                {move || traced.get().into_iter()
+                    .filter(|p| !names.with(|n| n.iter().any(|x| x.eq_ignore_ascii_case(p))))
+                    .map(|p| {
+                        let q = p.clone();
+                        view! {
+                            <span class="chip">
+                                <code>{p.clone()}</code>
+                                <button class="small" aria-label=format!("Remove {p} from the timeline")
+                                    on:click=move |_| toggle(q.clone(), false)>"×"</button>
+                            </span>
+                        }
+                    }).collect_view()}
+            </fieldset>
+            <div class="control-row">
+                <button aria-label="Zoom in" title="Zoom in" on:click=move |_| view.zoom(0.5, None, now())>"+"</button>
+                <button aria-label="Zoom out" title="Zoom out" on:click=move |_| view.zoom(2.0, None, now())>"−"</button>
+                <button aria-label="Pan left" title="Earlier" on:click=move |_| {
+                    let s = view.span.get_untracked();
+                    view.pan(-s / 4, now())
+                }>"◀"</button>
+                <button aria-label="Pan right" title="Later" on:click=move |_| {
+                    let s = view.span.get_untracked();
+                    view.pan(s / 4, now())
+                }>"▶"</button>
+                <button aria-pressed=move || if view.follow.get() { "true" } else { "false" }
+                    class:active=move || view.follow.get()
+                    on:click=move |_| view.follow.update(|f| *f = !*f)>"Follow"</button>
+                <span class="muted">{move || {
+                    let (a, b) = chart.with(|c| c.window);
+                    format!("{} – {}", chart::time_label(a, 1_000_000), chart::time_label(b, 1_000_000))
+                }}</span>
+            </div>
+            <ChartSvg chart=chart view=view/>
+            <Legend chart=chart view=view/>
+        </section>
+    }
+}
+
+/// The exported SVG: the drawn chart's markup.
+fn svg_text() -> Option<String> {
+    let doc = web_sys::window()?.document()?;
+    let el = doc.query_selector("svg.timeline-chart").ok()??;
+    Some(format!("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n{}", el.outer_html()))
+}
+
+/// The chart itself.
+#[component]
+fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let now = move || state.with_sim(|s| s.time_ns()).unwrap_or(0);
+    // While dragging: (start x, window end at start, window span).
+    let drag = StoredValue::new(None::<(f64, i64, i64)>);
+    let height = move || chart.with(|c| c.height);
+    let on_move = move |ev: web_sys::PointerEvent| {
+        let Some(x) = pointer_x(&ev) else { return };
+        let window = chart.with_untracked(|c| c.window);
+        if let Some((x0, end0, span)) = drag.get_value().filter(|d| (d.0 - x).abs() > 2.0) {
+            let dt = ((x0 - x) / (WIDTH - LEFT) * span as f64) as i64;
+            view.follow.set(false);
+            view.end.set(end0.saturating_add(dt));
+        }
+        view.cursor.set((x >= LEFT).then(|| t_of(x, window)));
+    };
+    let on_down = move |ev: web_sys::PointerEvent| {
+        let Some(x) = pointer_x(&ev) else { return };
+        let (a, b) = chart.with_untracked(|c| c.window);
+        drag.set_value(Some((x, b, b - a)));
+        if let Some(el) = ev.current_target().and_then(|t| t.dyn_into::<web_sys::Element>().ok()) {
+            let _ = el.set_pointer_capture(ev.pointer_id());
+        }
+    };
+    let on_wheel = move |ev: web_sys::WheelEvent| {
+        ev.prevent_default();
+        let factor = if ev.delta_y() > 0.0 { 1.25 } else { 0.8 };
+        view.zoom(factor, view.cursor.get_untracked(), now());
+    };
+    view! {
+        <svg class="timeline-chart" role="img" aria-label="Timeline chart"
+            xmlns="http://www.w3.org/2000/svg"
+            viewBox=move || format!("0 0 {WIDTH} {}", height())
+            width="100%"
+            font-family="sans-serif" font-size="11"
+            on:pointermove=on_move
+            on:pointerdown=on_down
+            on:pointerup=move |_| drag.set_value(None)
+            on:pointercancel=move |_| drag.set_value(None)
+            on:pointerleave=move |_| { drag.set_value(None); view.cursor.set(None); }
+            on:wheel=on_wheel>
+            <rect x="0" y="0" width=WIDTH height=height fill="#ffffff"/>
+            {move || chart.with(|c| c.ticks.iter().map(|(x, label)| {
+                let h = c.height - AXIS_H;
+                view! {
+                    <line x1=*x x2=*x y1="0" y2=h stroke="#e3e8ee" stroke-width="1"/>
+                    <text x=*x y=h + 14.0 text-anchor="middle" fill="#5b6b7c">{label.clone()}</text>
+                }
+            }).collect_view())}
+            {move || chart.with(|c| c.lanes.iter().enumerate().map(|(i, lane)| {
+                let color = COLORS[i % COLORS.len()];
+                view! {
+                    <g>
+                        <rect x=LEFT y=lane.top width=WIDTH - LEFT height=lane.height fill="#f7f9fb"/>
+                        <text x="4" y=lane.top + 14.0 fill=color font-weight="bold">{lane.path.clone()}</text>
+                        {(!lane.digital).then(|| view! {
+                            <text x="4" y=lane.top + 28.0 fill="#5b6b7c">{format!("max {}", short(lane.range.1))}</text>
+                            <text x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{format!("min {}", short(lane.range.0))}</text>
+                        })}
+                        <polyline points=lane.points.clone() fill="none" stroke=color stroke-width="1.5"/>
+                    </g>
+                }
+            }).collect_view())}
+            <line x1=LEFT x2=WIDTH y1=move || height() - AXIS_H y2=move || height() - AXIS_H stroke="#5b6b7c"/>
+            {move || view.cursor.get().map(|t| {
+                let x = chart::x_of(t, chart.with(|c| c.window));
+                view! { <line class="cursor" x1=x x2=x y1="0" y2=height() - AXIS_H stroke="#333" stroke-dasharray="3 3"/> }
+            })}
+        </svg>
+    }
+}
+
+fn short(x: f64) -> String {
+    if x.fract() == 0.0 && x.abs() < 1e15 {
+        format!("{x}")
+    } else {
+        format!("{x:.3}")
+    }
+}
+
+/// The legend: every lane's value at the cursor (or the latest value).
+#[component]
+fn Legend(chart: Memo<Chart>, view: View) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let rows = move || {
+        let at = view.cursor.get();
+        let t = at.unwrap_or(i64::MAX);
+        state
+            .with_sim(|s| {
+                s.trace()
+                    .paths()
+                    .enumerate()
+                    .map(|(i, p)| {
+                        let v = value_at(s.trace(), i, t)
+                            .map(|v| value_text(&v))
+                            .unwrap_or_else(|| "–".into());
+                        (p.to_string(), v)
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .unwrap_or_default()
+    };
+    let _ = chart;
+    view! {
+        <div class="legend" aria-live="off">
+            <span class="legend-time">{move || match view.cursor.get() {
+                Some(t) => format!("at {}", chart::time_label(t, 1)),
+                None => "latest".to_string(),
+            }}</span>
+            {move || rows().into_iter().enumerate().map(|(i, (p, v))| view! {
+                <span class="legend-item">
+                    <span class="swatch" style=format!("background: {}", COLORS[i % COLORS.len()])></span>
+                    <span>{p}</span>
+                    ": "
+                    <output class="mono">{v}</output>
+                </span>
+            }).collect_view()}
+        </div>
+    }
+}

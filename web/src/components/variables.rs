@@ -1,0 +1,290 @@
+//! The live variables table (address, name, type, description, value) with expandable
+//! structs, arrays and FB instances, editing, forcing, CSV export and breakpoints.
+
+use std::collections::HashSet;
+
+use leptos::prelude::*;
+use plc_core::compile::Executable;
+use plc_core::export::{children, is_expandable, snapshot, value_text, variables_csv};
+use plc_core::semantic::Type;
+use plc_core::syntax::VarSection;
+
+use crate::components::timeline::download;
+use crate::state::AppState;
+
+/// One row of the table.
+#[derive(Debug, Clone, PartialEq)]
+struct Row {
+    path: String,
+    label: String,
+    depth: usize,
+    address: String,
+    ty: String,
+    comment: String,
+    expandable: bool,
+    scalar: bool,
+}
+
+impl Row {
+    /// A key that changes when the row's declaration does (so a recompile re-renders it).
+    fn key(&self) -> String {
+        format!("{}\u{1}{}\u{1}{}\u{1}{}", self.path, self.ty, self.address, self.comment)
+    }
+}
+
+fn push_rows(exe: &Executable, open: &HashSet<String>, row: Row, ty: Type, out: &mut Vec<Row>) {
+    let expanded = row.expandable && open.contains(&row.path.to_ascii_lowercase());
+    let (path, depth) = (row.path.clone(), row.depth);
+    out.push(row);
+    if !expanded || out.len() > 20_000 {
+        return;
+    }
+    for c in children(exe, &path, ty) {
+        let r = Row {
+            path: c.path.clone(),
+            label: c.label.clone(),
+            depth: depth + 1,
+            address: String::new(),
+            ty: exe.type_table().display(c.ty).to_string(),
+            comment: c.comment.clone().unwrap_or_default(),
+            expandable: is_expandable(c.ty),
+            scalar: c.ty.is_scalar() || c.ty.is_string(),
+        };
+        push_rows(exe, open, r, c.ty, out);
+    }
+}
+
+fn rows(exe: &Executable, open: &HashSet<String>) -> Vec<Row> {
+    let mut out = Vec::new();
+    let mut seen = HashSet::new();
+    for e in exe.main_vars() {
+        let v = &e.var;
+        if v.section == VarSection::InOut || !seen.insert(v.name.to_ascii_lowercase()) {
+            continue;
+        }
+        let row = Row {
+            path: v.name.clone(),
+            label: v.name.clone(),
+            depth: 0,
+            address: v.location.as_ref().map(|a| a.text.clone()).unwrap_or_default(),
+            ty: exe.type_table().display(v.ty).to_string(),
+            comment: v.comment.clone().unwrap_or_default(),
+            expandable: is_expandable(v.ty),
+            scalar: v.ty.is_scalar() || v.ty.is_string(),
+        };
+        push_rows(exe, open, row, v.ty, &mut out);
+    }
+    out
+}
+
+/// The variables table and the breakpoints.
+#[component]
+pub fn Variables() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let open = RwSignal::new(HashSet::<String>::new());
+    let table = Memo::new(move |_| {
+        let open = open.get();
+        state.with_sim(|s| rows(s.executable(), &open)).unwrap_or_default()
+    });
+    let export = move |_| {
+        let Some(csv) = state.sim.with_value(|s| s.as_ref().map(|s| variables_csv(&snapshot(s))))
+        else {
+            state.error("No program to export: fix the errors first.");
+            return;
+        };
+        if let Err(e) = download("variables.csv", "text/csv", &csv) {
+            state.error(e);
+        }
+    };
+    provide_context(open);
+    view! {
+        <section class="panel variables" aria-label="Variables">
+            <div class="panel-head">
+                <h2>"Variables"</h2>
+                <button on:click=export>"Export CSV"</button>
+            </div>
+            <div class="table-wrap">
+                <table class="var-table">
+                    <thead>
+                        <tr>
+                            <th scope="col">"Address"</th>
+                            <th scope="col">"Name"</th>
+                            <th scope="col">"Type"</th>
+                            <th scope="col">"Description"</th>
+                            <th scope="col">"Value"</th>
+                            <th scope="col"><span class="sr-only">"Actions"</span></th>
+                        </tr>
+                    </thead>
+                    <tbody>
+                        <For each=move || table.get() key=Row::key let:row>
+                            <VarRow row=row/>
+                        </For>
+                    </tbody>
+                </table>
+            </div>
+            <Breakpoints/>
+        </section>
+    }
+}
+
+/// One variable (or part of one).
+#[component]
+fn VarRow(row: Row) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let open = expect_context::<RwSignal<HashSet<String>>>();
+    let path = StoredValue::new(row.path.clone());
+    let key = row.path.to_ascii_lowercase();
+    let is_open = {
+        let key = key.clone();
+        Memo::new(move |_| open.with(|o| o.contains(&key)))
+    };
+    let toggle = move |_| {
+        let key = key.clone();
+        open.update(|o| {
+            if !o.remove(&key) {
+                o.insert(key);
+            }
+        });
+    };
+    let value = move || {
+        path.with_value(|p| {
+            state.with_sim(|s| s.read(p).map(|v| value_text(&v)).unwrap_or_default())
+        })
+        .unwrap_or_default()
+    };
+    let forced = move || {
+        path.with_value(|p| state.with_sim(|s| s.forced().any(|(f, _)| f.eq_ignore_ascii_case(p))))
+            .unwrap_or(false)
+    };
+    let editing = RwSignal::new(false);
+    let draft = RwSignal::new(String::new());
+    let scalar = row.scalar;
+    let start_edit = move || {
+        if scalar {
+            draft.set(value());
+            editing.set(true);
+        }
+    };
+    let commit = move || {
+        let text = draft.get_untracked();
+        let result = path.with_value(|p| {
+            state.with_sim_mut(|s| {
+                if s.forced().any(|(f, _)| f.eq_ignore_ascii_case(p)) {
+                    s.force(p, &text)
+                } else {
+                    s.write(p, &text)
+                }
+            })
+        });
+        match result {
+            Some(Err(e)) => state.error(e.to_string()),
+            _ => editing.set(false),
+        }
+    };
+    let force = move |_| {
+        if forced() {
+            path.with_value(|p| state.with_sim_mut(|s| s.unforce(p)));
+        } else {
+            let text = if editing.get_untracked() { draft.get_untracked() } else { value() };
+            if let Some(Err(e)) = path.with_value(|p| state.with_sim_mut(|s| s.force(p, &text))) {
+                state.error(e.to_string());
+            } else {
+                editing.set(false);
+            }
+        }
+    };
+    let name_cell = {
+        let label = row.label.clone();
+        let expandable = row.expandable;
+        let disclosure_label = format!("Expand {}", row.path);
+        view! {
+            <th scope="row" class="var-name" style=format!("padding-left: {}em", 0.4 + row.depth as f64 * 1.2)>
+                {expandable.then(|| view! {
+                    <button class="disclosure" aria-label=disclosure_label.clone()
+                        aria-expanded=move || if is_open.get() { "true" } else { "false" }
+                        on:click=toggle.clone()>
+                        {move || if is_open.get() { "▾" } else { "▸" }}
+                    </button>
+                })}
+                <span>{label}</span>
+                <Show when=forced>
+                    <span class="badge-forced" title="Forced">"F"</span>
+                </Show>
+            </th>
+        }
+    };
+    let path_text = row.path.clone();
+    let child = row.depth > 0;
+    view! {
+        <tr class:forced=forced class:child=child>
+            <td class="mono">{row.address.clone()}</td>
+            {name_cell}
+            <td class="mono">{row.ty.clone()}</td>
+            <td>{row.comment.clone()}</td>
+            <td class="mono value" on:dblclick=move |_| start_edit()>
+                <Show when=move || editing.get()
+                    fallback=move || view! { <span>{move || if row.expandable { String::new() } else { value() }}</span> }>
+                    <input class="edit" aria-label=format!("New value of {}", path.get_value())
+                        prop:value=move || draft.get()
+                        on:input=move |ev| draft.set(event_target_value(&ev))
+                        on:keydown=move |ev| match ev.key().as_str() {
+                            "Enter" => commit(),
+                            "Escape" => editing.set(false),
+                            _ => {}
+                        }
+                        on:blur=move |_| editing.set(false)/>
+                </Show>
+            </td>
+            <td class="actions">
+                {scalar.then(|| view! {
+                    <button class="small" aria-label=format!("Edit {path_text}") title="Edit (or double-click the value)"
+                        on:click=move |_| start_edit()>"✎"</button>
+                    <button class="small" class:active=forced
+                        aria-label=move || format!("{} {}", if forced() { "Unforce" } else { "Force" }, path.get_value())
+                        on:click=force>
+                        {move || if forced() { "Unforce" } else { "Force" }}
+                    </button>
+                })}
+            </td>
+        </tr>
+    }
+}
+
+/// Breakpoints: conditions that pause the PLC at the end of the scan they become true.
+#[component]
+fn Breakpoints() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let text = RwSignal::new(String::new());
+    let add = move || match state.add_breakpoint(&text.get_untracked()) {
+        Ok(()) => text.set(String::new()),
+        Err(e) => state.error(e),
+    };
+    view! {
+        <div class="breakpoints">
+            <h3>"Breakpoints"</h3>
+            <div class="control-row">
+                <label class="field grow">
+                    <span>"Breakpoint condition"</span>
+                    <input class="mono" placeholder="e.g. Level >= 50 AND Motor"
+                        prop:value=move || text.get()
+                        on:input=move |ev| text.set(event_target_value(&ev))
+                        on:keydown=move |ev| if ev.key() == "Enter" { add() }/>
+                </label>
+                <button on:click=move |_| add()>"Add breakpoint"</button>
+            </div>
+            <ul class="bp-list">
+                {move || state.breakpoints.get().into_iter().enumerate().map(|(i, (cond, id))| {
+                    let inactive = id.is_none();
+                    view! {
+                        <li class:inactive=inactive>
+                            <code>{cond.clone()}</code>
+                            {inactive.then(|| view! { <span class="muted">" (does not fit the program)"</span> })}
+                            <button class="small" aria-label=format!("Remove breakpoint {cond}")
+                                on:click=move |_| state.remove_breakpoint(i)>"Remove"</button>
+                        </li>
+                    }
+                }).collect_view()}
+            </ul>
+        </div>
+    }
+}
