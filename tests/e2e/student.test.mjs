@@ -146,3 +146,26 @@ test('a corrupt share link shows a message and loses nothing', async () => {
   assert.match(text, /MyWork/);
   await context.close();
 });
+
+test('while stepping, the active CASE branch is lit in the editor', async () => {
+  const context = await browser.newContext();
+  const { page, errors } = await openApp(context);
+  await page.getByRole('button', { name: 'New project' }).click();
+  await typeProgram(page, `PROGRAM Steps
+VAR p : INT := 1; END_VAR
+CASE p OF
+    1: p := 2;
+    2: p := 1;
+END_CASE;
+END_PROGRAM
+`);
+  const band = page.locator('.ed-active');
+  assert.equal(await band.count(), 0);
+  await page.getByRole('button', { name: 'Step', exact: true }).click();
+  await band.first().waitFor();
+  const first = await band.first().getAttribute('style');
+  await page.getByRole('button', { name: 'Step', exact: true }).click();
+  await page.waitForFunction((prev) => document.querySelector('.ed-active')?.getAttribute('style') !== prev, first);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -100,6 +100,8 @@ pub struct AppState {
     /// The breakpoints (condition text, and its id when it compiled against the current
     /// program); the texts are kept in the project's settings.
     pub breakpoints: RwSignal<Vec<(String, Option<BreakpointId>)>>,
+    /// Lines of the active CASE branches of the last scan (marked in the editor).
+    pub active_lines: RwSignal<Vec<u32>>,
     /// Virtual nanoseconds owed to the run loop but not yet scanned (less than one cycle).
     pending_ns: StoredValue<f64>,
 }
@@ -130,6 +132,7 @@ impl AppState {
             jump_to: RwSignal::new(None),
             marked_line: RwSignal::new(None),
             breakpoints: RwSignal::new(Vec::new()),
+            active_lines: RwSignal::new(Vec::new()),
             pending_ns: StoredValue::new(0.0),
         };
         state.open_initial_project();
@@ -388,6 +391,21 @@ impl AppState {
     /// Tells the panels the simulator changed.
     pub fn bump(&self) {
         self.sim_version.update(|v| *v += 1);
+        let spans = self
+            .sim
+            .with_value(|s| s.as_ref().map(Simulator::active_case_branches))
+            .unwrap_or_default();
+        let lines: Vec<u32> = if spans.is_empty() {
+            Vec::new()
+        } else {
+            self.project.with_untracked(|p| {
+                let index = LineIndex::new(&p.source);
+                spans.iter().map(|s| index.location(s.start).line).collect()
+            })
+        };
+        if self.active_lines.with_untracked(|l| *l != lines) {
+            self.active_lines.set(lines);
+        }
     }
 
     /// Reads from the simulator (tracks `sim_version`, so views update).

@@ -375,6 +375,26 @@ impl Simulator {
         out
     }
 
+    /// The first statement of the branch each CASE took on its last execution (CASEs whose
+    /// selector matched no label and that have no ELSE are left out). The editor marks
+    /// these lines while the program runs.
+    pub fn active_case_branches(&self) -> Vec<Span> {
+        let mut out: Vec<Span> = self
+            .machine
+            .case_hits()
+            .filter_map(|(case_pc, target)| {
+                let (case_span, _) = self.exe.statement_at(case_pc)?;
+                let (arm, _) = self.exe.statement_at(target)?;
+                let inside =
+                    arm.start >= case_span.start && arm.end <= case_span.end && arm != case_span;
+                inside.then_some(arm)
+            })
+            .collect();
+        out.sort_by_key(|s| s.start);
+        out.dedup();
+        out
+    }
+
     /// Adds a breakpoint on an ST boolean condition over the program's variables.
     pub fn add_breakpoint(&mut self, condition: &str) -> Result<BreakpointId, SimError> {
         let expr = semantic::check_condition(&self.program, self.main_pou(), condition)

@@ -171,3 +171,33 @@ fn bad_values_are_errors_not_panics() {
     s.write("Count", "-5").unwrap();
     assert_eq!(int(&s, "Count"), -5);
 }
+
+#[test]
+fn the_active_case_branch_is_reported() {
+    let src = "PROGRAM P VAR p : INT := 1; x : INT; END_VAR
+CASE p OF
+    1: x := 10;
+       p := 2;
+    2: x := 20;
+END_CASE;
+END_PROGRAM";
+    let mut s = sim(src);
+    assert!(s.active_case_branches().is_empty());
+    s.scan();
+    let first: Vec<&str> = s
+        .active_case_branches()
+        .iter()
+        .map(|sp| &src[sp.start as usize..sp.end as usize])
+        .collect();
+    assert_eq!(first, ["x := 10;"]);
+    s.scan();
+    let second: Vec<&str> = s
+        .active_case_branches()
+        .iter()
+        .map(|sp| &src[sp.start as usize..sp.end as usize])
+        .collect();
+    assert_eq!(second, ["x := 20;"]);
+    s.write("p", "7").unwrap();
+    s.scan();
+    assert!(s.active_case_branches().is_empty(), "no label matched");
+}

@@ -68,6 +68,8 @@ pub struct Machine {
     mem: Memory,
     stack: Vec<CallFrame>,
     scratch: Scratch,
+    /// Per CASE table: (instruction of the CASE, branch target) of its last execution.
+    case_hits: Vec<(u32, u32)>,
 }
 
 const BAD: Fault = Fault::Internal("register address out of range");
@@ -79,7 +81,15 @@ impl Machine {
             mem: Memory { cells: exe.out.init.clone() },
             stack: Vec::with_capacity(MAX_CALL_DEPTH),
             scratch: Scratch::default(),
+            case_hits: vec![(u32::MAX, u32::MAX); exe.out.cases.len()],
         }
+    }
+
+    /// For every CASE statement that has run: the instruction of the CASE and the
+    /// instruction its last execution jumped to (the active branch, or the end of the
+    /// CASE when no label matched). The debug map turns both into source spans.
+    pub fn case_hits(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.case_hits.iter().filter(|h| h.0 != u32::MAX).map(|&(c, t)| (c as usize, t as usize))
     }
 
     /// The memory.
@@ -96,6 +106,7 @@ impl Machine {
     pub fn cold_reset(&mut self, exe: &Executable) {
         self.mem.cells.clear();
         self.mem.cells.extend_from_slice(&exe.out.init);
+        self.case_hits.iter_mut().for_each(|h| *h = (u32::MAX, u32::MAX));
     }
 
     /// Warm restart: as [`Machine::cold_reset`], but RETAIN variables keep their values.
@@ -340,7 +351,11 @@ impl Machine {
                 }
                 Op::Case { elem, sel, table } => {
                     let t = exe.out.cases.get(table as usize).ok_or(BAD)?;
-                    *pc = t.target(arith::to_i128(elem, r!(sel))) as usize;
+                    let target = t.target(arith::to_i128(elem, r!(sel)));
+                    if let Some(hit) = self.case_hits.get_mut(table as usize) {
+                        *hit = ((*pc).saturating_sub(1) as u32, target);
+                    }
+                    *pc = target as usize;
                 }
                 Op::CallFb { pou, ptr } => {
                     let callee = exe.pous.get(pou as usize).ok_or(BAD)?;

@@ -379,6 +379,19 @@ pub fn Editor() -> impl IntoView {
         })
     };
 
+    // The branch each CASE took on the last scan, lit while the program runs.
+    let active_bands = move || {
+        state
+            .active_lines
+            .get()
+            .into_iter()
+            .map(|l| {
+                let top = PAD_PX + (l.max(1) as i32 - 1) * LINE_PX;
+                view! { <div class="ed-active" style=format!("top: {top}px")></div> }
+            })
+            .collect_view()
+    };
+
     let problems = move || {
         let ds = state.diagnostics.get();
         if ds.is_empty() {
@@ -427,6 +440,7 @@ pub fn Editor() -> impl IntoView {
                 <div class="ed-gutter" aria-hidden="true" node_ref=ed.gutter inner_html=move || gutter.get()></div>
                 <div class="ed-code">
                     <pre class="ed-hl" aria-hidden="true" node_ref=ed.hl>
+                        {active_bands}
                         {marked_band}
                         <code inner_html=move || highlighted.get()></code>
                     </pre>
