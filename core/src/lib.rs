@@ -9,9 +9,13 @@
 #![deny(missing_docs)]
 #![deny(clippy::unwrap_used)]
 
+#[cfg(not(target_arch = "wasm32"))]
+pub mod bench;
 pub mod compile;
 pub mod diagnostics;
 pub mod export;
+pub mod ladder;
+pub mod plcopen;
 pub mod project;
 pub mod run;
 pub mod semantic;

@@ -188,3 +188,79 @@ pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
     }
     report
 }
+
+fn ladder_report(pou: &str, d: &crate::ladder::LadderDiagnostic) -> DiagnosticReport {
+    DiagnosticReport {
+        severity: d.severity,
+        code: d.code.as_str().to_string(),
+        message: format!("POU {pou}, {d}"),
+        line: 0,
+        column: 0,
+    }
+}
+
+/// Compiles and runs a project (its ST source and ladder POUs) as `plc run` does. Ladder
+/// problems are reported with line 0 and `POU Name, rung R, row r, column c:` in the
+/// message; the hidden variables of the ladder lowering are left out of `vars`.
+pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> RunReport {
+    let src = match crate::ladder::project_source(project) {
+        Ok(src) => src,
+        Err(diags) => {
+            return RunReport {
+                status: RunStatus::Error,
+                cycles: 0,
+                vars: serde_json::Map::new(),
+                fault: None,
+                diagnostics: diags.iter().map(|(p, d)| ladder_report(p, d)).collect(),
+            }
+        }
+    };
+    let mut report = run_source(&src.text, options);
+    for d in &mut report.diagnostics {
+        if d.line > 0 {
+            let (line, message) = src.map.locate_message(d.line, &d.message);
+            d.message = message;
+            if line.is_none() {
+                d.line = 0;
+                d.column = 0;
+            }
+        }
+    }
+    if let Some(f) = &mut report.fault {
+        let (line, message) = src.map.locate_message(f.line, &f.message);
+        f.message = message;
+        if line.is_none() {
+            f.line = 0;
+            f.column = 0;
+        }
+    }
+    let warnings: Vec<DiagnosticReport> =
+        src.warnings.iter().map(|(p, d)| ladder_report(p, d)).collect();
+    report.diagnostics.splice(0..0, warnings);
+    report.vars.retain(|k, _| !crate::ladder::is_hidden_name(k));
+    report
+}
+
+/// Compiles a project and powers a simulator on for PROGRAM `program` (or the first one),
+/// for scan-by-scan use (tests, the web app). Errors come as [`run_project`] reports them.
+pub fn project_simulator(
+    project: &crate::project::Project,
+    program: Option<&str>,
+) -> Result<Simulator, Vec<DiagnosticReport>> {
+    let options =
+        RunOptions { program: program.map(str::to_string), cycles: 0, ..RunOptions::default() };
+    let report = run_project(project, &options);
+    if report.status == RunStatus::Error {
+        return Err(report.diagnostics);
+    }
+    let src = crate::ladder::project_source(project)
+        .map_err(|d| d.iter().map(|(p, d)| ladder_report(p, d)).collect::<Vec<_>>())?;
+    let analysis = semantic::analyze(&src.text);
+    let Some(prog) = analysis.program else { return Err(report.diagnostics) };
+    let main = match program {
+        Some(name) => prog.find_pou(name),
+        None => prog.programs().find(|&p| !prog.pou(p).library),
+    };
+    let Some(main) = main else { return Err(report.diagnostics) };
+    Simulator::new(prog, main).map_err(|e| vec![option_error(Code::ProgramTooLarge, e.to_string())])
+}

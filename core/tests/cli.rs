@@ -113,3 +113,65 @@ fn explain_describes_a_code() {
     assert!(out.status.success());
     assert!(stdout(&out).starts_with("E0150: "));
 }
+
+fn example(name: &str) -> String {
+    format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn run_accepts_a_project_with_ladder_pous() {
+    let path = example("latch-ladder.plcproj.json");
+    let out = plc(&["run", &path, "--cycles", "150", "--set", "Start=TRUE", "--json"]);
+    assert!(out.status.success(), "{}", stdout(&out));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
+    assert_eq!(v["vars"]["Motor"], true);
+    assert_eq!(v["vars"]["Lamp"], false, "the TON needs 2 s; 150 scans are 1.5 s");
+    assert!(
+        v["vars"].as_object().expect("vars").keys().all(|k| !k.starts_with("Ld")),
+        "hidden power variables are not reported"
+    );
+    let out = plc(&["run", &path, "--cycles", "201", "--set", "Start=TRUE", "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
+    assert_eq!(v["vars"]["Lamp"], true);
+    let out = plc(&["check", &path]);
+    assert!(out.status.success(), "{}", stdout(&out));
+}
+
+#[test]
+fn st_view_prints_the_readable_program() {
+    let out = plc(&["st-view", &example("latch-ladder.plcproj.json"), "--pou", "latch"]);
+    assert!(out.status.success());
+    assert!(stdout(&out).contains("Motor := (Start OR Motor) AND NOT Stop;"), "{}", stdout(&out));
+    let out = plc(&["st-view", &example("latch-ladder.plcproj.json"), "--pou", "Nope"]);
+    assert!(!out.status.success());
+}
+
+#[test]
+fn bench_quick_prints_every_figure() {
+    let out = plc(&["bench", "--quick", "--json"]);
+    assert!(out.status.success());
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
+    for key in ["B1", "B2", "B3", "B5", "B6"] {
+        assert!(v.get(key).is_some(), "{key} missing");
+    }
+    assert!(v["B1"]["ratio"].as_f64().is_some_and(|r| r > 0.0));
+}
+
+#[test]
+fn export_to_plcopen_and_run_the_xml() {
+    let out = plc(&["export", "--plcopen", &example("latch-ladder.plcproj.json")]);
+    assert!(out.status.success());
+    let xml = stdout(&out);
+    assert!(xml.contains("http://www.plcopen.org/xml/tc6_0201"));
+    let path = source_file("latch.xml", &xml);
+    let p = path.to_str().expect("utf-8 path");
+    let out = plc(&["run", p, "--cycles", "201", "--set", "Start=TRUE", "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
+    assert_eq!((v["vars"]["Motor"].clone(), v["vars"]["Lamp"].clone()), (true.into(), true.into()));
+    let out = plc(&["import", p]);
+    assert!(out.status.success());
+    assert!(plc_core::project::Project::from_file(&stdout(&out)).is_ok());
+    let bad = source_file("bad.xml", "<?xml version=\"1.0\"?><project><pous><pou");
+    let out = plc(&["run", bad.to_str().expect("utf-8 path"), "--json"]);
+    assert_eq!(out.status.code(), Some(2));
+}

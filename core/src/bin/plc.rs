@@ -6,7 +6,8 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use plc_core::diagnostics::{Code, LineIndex};
-use plc_core::run::{run_source, RunOptions, RunReport, RunStatus};
+use plc_core::project::Project;
+use plc_core::run::{run_project, run_source, RunOptions, RunReport, RunStatus};
 
 #[derive(Parser)]
 #[command(
@@ -52,6 +53,72 @@ enum Command {
         /// The code.
         code: String,
     },
+    /// Print the readable ST view of a ladder POU of a project.
+    StView {
+        /// The project file.
+        project: PathBuf,
+        /// The ladder POU.
+        #[arg(long)]
+        pou: String,
+    },
+    /// Convert a PLCopen XML file into a project file (printed to standard output).
+    Import {
+        /// The PLCopen XML file.
+        file: PathBuf,
+    },
+    /// Convert a project (or ST file) into another format (printed to standard output).
+    Export {
+        /// Write PLCopen XML (TC6 0201).
+        #[arg(long, required = true)]
+        plcopen: bool,
+        /// The project file.
+        project: PathBuf,
+    },
+    /// Run the benchmark suite (B1–B6) and print each figure with its ratio.
+    Bench {
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+        /// A short smoke pass with tiny sizes (for CI).
+        #[arg(long)]
+        quick: bool,
+    },
+}
+
+/// What a file holds: plain ST text or a whole project (with ladder POUs).
+enum Input {
+    Source(String),
+    Project(Project),
+}
+
+/// Reads FILE as ST text, a project file (JSON) or a PLCopen XML file.
+fn load_input(path: &Path) -> Result<Input, String> {
+    let text = read_source(path)?;
+    let trimmed = text.trim_start();
+    if trimmed.starts_with('{') {
+        return Project::from_file(&text)
+            .map(Input::Project)
+            .map_err(|e| format!("plc: {}: {e}", path.display()));
+    }
+    if trimmed.starts_with("<?xml") || trimmed.starts_with("<project") {
+        return import_xml(path, &text).map(Input::Project);
+    }
+    Ok(Input::Source(text))
+}
+
+/// Loads a project file (JSON) or a PLCopen XML file as a project.
+fn load_project(path: &Path) -> Result<Project, String> {
+    match load_input(path)? {
+        Input::Project(p) => Ok(p),
+        Input::Source(text) => {
+            let mut p = Project::new(
+                path.file_stem().map_or("project".into(), |s| s.to_string_lossy().into_owned()),
+            );
+            p.source = text;
+            p.ladder.clear();
+            Ok(p)
+        }
+    }
 }
 
 fn read_source(path: &Path) -> Result<String, String> {
@@ -64,8 +131,9 @@ fn read_source(path: &Path) -> Result<String, String> {
 }
 
 fn check(path: &Path) -> ExitCode {
-    let source = match read_source(path) {
-        Ok(s) => s,
+    let source = match load_input(path) {
+        Ok(Input::Source(s)) => s,
+        Ok(Input::Project(project)) => return check_project(path, &project),
         Err(e) => {
             eprintln!("{e}");
             return ExitCode::from(2);
@@ -97,6 +165,79 @@ fn check(path: &Path) -> ExitCode {
         ExitCode::FAILURE
     } else {
         ExitCode::SUCCESS
+    }
+}
+
+/// Checks a project (ST and ladder POUs): diagnostics as for ST; ladder problems name
+/// their POU, rung, row and column in the message.
+fn check_project(path: &Path, project: &Project) -> ExitCode {
+    let report = run_project(project, &RunOptions { cycles: 0, ..RunOptions::default() });
+    let mut errors = 0;
+    for d in &report.diagnostics {
+        let severity = match d.severity {
+            plc_core::diagnostics::Severity::Error => {
+                errors += 1;
+                "error"
+            }
+            plc_core::diagnostics::Severity::Warning => "warning",
+        };
+        println!(
+            "{}:{}:{}: {severity}[{}]: {}",
+            path.display(),
+            d.line,
+            d.column,
+            d.code,
+            d.message
+        );
+    }
+    eprintln!("{}: {errors} error(s)", path.display());
+    if errors > 0 {
+        ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
+    }
+}
+
+fn st_view(path: &Path, pou: &str) -> ExitCode {
+    let project = match load_project(path) {
+        Ok(p) => p,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(2);
+        }
+    };
+    match project.ladder.iter().find(|p| p.name.eq_ignore_ascii_case(pou)) {
+        Some(lp) => {
+            print!("{}", plc_core::ladder::st_view_pou(lp));
+            ExitCode::SUCCESS
+        }
+        None => {
+            let names: Vec<&str> = project.ladder.iter().map(|p| p.name.as_str()).collect();
+            eprintln!(
+                "plc: no ladder POU `{pou}` in {} (ladder POUs: {})",
+                path.display(),
+                names.join(", ")
+            );
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn bench(json: bool, quick: bool) -> ExitCode {
+    let effort = if quick { plc_core::bench::Effort::Quick } else { plc_core::bench::Effort::Full };
+    match plc_core::bench::run_all(effort) {
+        Ok(report) if json => {
+            println!("{report}");
+            ExitCode::SUCCESS
+        }
+        Ok(report) => {
+            println!("{}", serde_json::to_string_pretty(&report).unwrap_or_default());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("plc: {e}");
+            ExitCode::FAILURE
+        }
     }
 }
 
@@ -134,14 +275,14 @@ fn print_text(path: &Path, report: &RunReport) {
 }
 
 fn run(path: &Path, options: RunOptions, json: bool) -> ExitCode {
-    let source = match read_source(path) {
-        Ok(s) => s,
+    let report = match load_input(path) {
+        Ok(Input::Source(source)) => run_source(&source, &options),
+        Ok(Input::Project(project)) => run_project(&project, &options),
         Err(e) => {
             eprintln!("{e}");
             return ExitCode::from(2);
         }
     };
-    let report = run_source(&source, &options);
     if json {
         println!("{}", report.to_json());
     } else {
@@ -185,5 +326,47 @@ fn main() -> ExitCode {
             run(&file, RunOptions { program, cycles, cycle_ms, set: pairs }, json)
         }
         Command::Explain { code } => explain(&code),
+        Command::StView { project, pou } => st_view(&project, &pou),
+        Command::Bench { json, quick } => bench(json, quick),
+        Command::Import { file } => import(&file),
+        Command::Export { plcopen: _, project } => export(&project),
+    }
+}
+
+/// Imports a PLCopen XML file as a project (warnings go to stderr).
+fn import_xml(path: &Path, text: &str) -> Result<Project, String> {
+    let import =
+        plc_core::plcopen::import(text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
+    for w in &import.warnings {
+        eprintln!("plc: {}: warning: {w}", path.display());
+    }
+    Ok(import.project)
+}
+
+/// `plc import FILE.xml`: prints the project file converted from PLCopen XML.
+fn import(path: &Path) -> ExitCode {
+    match load_project(path) {
+        Ok(p) => {
+            println!("{}", p.to_file());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `plc export --plcopen PROJECT`: prints the project as PLCopen XML (TC6 0201).
+fn export(path: &Path) -> ExitCode {
+    match load_project(path) {
+        Ok(p) => {
+            print!("{}", plc_core::plcopen::export(&p));
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::FAILURE
+        }
     }
 }

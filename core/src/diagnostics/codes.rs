@@ -3,7 +3,8 @@
 //! nothing but this table (see `Code::all`).
 //!
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
-//! errors (the checker), E0300–E0349 problems with how a program is run, W0001– warnings.
+//! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder
+//! diagrams (W0005–W0006 are ladder warnings), W0001– warnings.
 
 use serde::Serialize;
 
@@ -112,11 +113,27 @@ problem_codes! {
     BadSetValue = "E0301": "`--set` gives a value that does not fit the variable",
     ProgramTooLarge = "E0302": "the program needs more memory than the simulator allows",
 
+    // ---- ladder diagrams: E0400–E0449 ----
+    LadderOpenCircuit = "E0400": "a ladder element that no power path reaches, or that leads nowhere",
+    LadderShortCircuit = "E0401": "a coil with no condition before it (wired straight to the rail)",
+    LadderAmbiguousBranch = "E0402": "a branch that starts or ends inside another branch (not series-parallel)",
+    LadderMissingOperand = "E0403": "a contact, coil or block pin without an operand",
+    LadderBadOperand = "E0404": "an operand that is not a variable, member, element or direct address",
+    LadderUnknownBlock = "E0405": "a block type that is neither standard nor a POU of the project",
+    LadderMissingInstance = "E0406": "a function block in a rung without an instance variable",
+    LadderEdgeCoilShared = "E0407": "an edge coil sharing its rung with another coil",
+    LadderAfterCoil = "E0408": "an element after a coil, jump or return in the same row",
+    LadderStrayCovered = "E0409": "a covered cell with no block above it",
+    LadderBadJump = "E0410": "a jump to an unknown label or backwards",
+    LadderBadGrid = "E0411": "a rung whose rows differ in length or whose block leaves the grid",
+
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",
     UnreachableCode = "W0002": "a statement that can never run",
     ImplicitNarrowing = "W0003": "a value that may not fit where it is stored",
     CaseWithoutMatch = "W0004": "a CASE label that can never match the selector's type",
+    LadderEnableFromRail = "W0005": "a ladder block whose enable is tied straight to the rail",
+    LadderDuplicateCoil = "W0006": "two coils writing the same variable in one ladder POU",
 }
 
 impl std::fmt::Display for Code {

@@ -28,6 +28,9 @@ pub struct Project {
     /// Simulation settings.
     #[serde(default)]
     pub settings: Settings,
+    /// The ladder (LD) POUs of the project.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub ladder: Vec<crate::ladder::LadderPou>,
 }
 
 /// Simulation settings kept with a project.
@@ -70,6 +73,7 @@ impl Project {
             name: name.into(),
             source: NEW_PROJECT_SOURCE.to_string(),
             settings: Settings::default(),
+            ladder: Vec::new(),
         }
     }
 

@@ -314,6 +314,18 @@ impl Simulator {
         Ok(())
     }
 
+    /// Holds an input at an already typed value (no parsing: for plant models and
+    /// benchmarks that set inputs every scan).
+    pub fn hold_value(&mut self, path: &str, value: Value) -> Result<(), SimError> {
+        let slot = self.slot(path)?;
+        self.write_slot(path, &slot, &value)?;
+        match self.held.iter_mut().find(|p| p.path.eq_ignore_ascii_case(path)) {
+            Some(p) => p.value = value,
+            None => self.held.push(Pinned { path: path.to_string(), slot, value }),
+        }
+        Ok(())
+    }
+
     /// Stops holding an input (it keeps its last value).
     pub fn release(&mut self, path: &str) {
         self.held.retain(|p| !p.path.eq_ignore_ascii_case(path));

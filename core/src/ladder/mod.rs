@@ -1,0 +1,115 @@
+//! Ladder diagrams (LD): the rung grid model, validation with located diagnostics,
+//! lowering to ST (so ladder runs on the one ST compiler and VM), the readable ST view,
+//! and the glue that turns a project's ST and LD POUs into one source text.
+
+pub mod lower;
+pub mod model;
+mod network;
+pub mod st_view;
+pub mod validate;
+
+pub use lower::{is_hidden_name, lower, power_map, power_var, LineMap, LoweredPou};
+pub use model::*;
+pub use st_view::{st_view, st_view_pou};
+pub use validate::{validate, validate_with, LadderDiagnostic};
+
+use crate::project::Project;
+
+/// One lowered ladder POU inside a combined project source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment {
+    /// The POU's name.
+    pub pou: String,
+    /// 1-based line of the combined text where the lowered POU starts.
+    pub first_line: u32,
+    /// The lowered POU.
+    pub lowered: LoweredPou,
+}
+
+/// Where the lines of a combined project source come from.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SourceMap {
+    /// Lines `1..=st_lines` are the project's ST source, unchanged.
+    pub st_lines: u32,
+    /// The lowered ladder POUs, in order.
+    pub segments: Vec<Segment>,
+}
+
+/// Where a line of the combined source comes from.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Origin {
+    /// A line of the ST source (1-based).
+    St(u32),
+    /// A ladder POU: its name and the 0-based `(rung, row, column)` when the line comes
+    /// from a cell (`None` for declarations and generated framing).
+    Ladder(String, Option<(usize, usize, usize)>),
+}
+
+impl SourceMap {
+    /// The origin of a 1-based line of the combined source.
+    pub fn origin(&self, line: u32) -> Origin {
+        if line <= self.st_lines {
+            return Origin::St(line);
+        }
+        match self.segments.iter().rev().find(|s| s.first_line <= line) {
+            Some(s) => {
+                Origin::Ladder(s.pou.clone(), s.lowered.cell_of_line(line + 1 - s.first_line))
+            }
+            None => Origin::St(line),
+        }
+    }
+
+    /// Rewrites a message for a line of the combined source: ladder lines get
+    /// `POU Name, rung R, row r, column c: ` (1-based) in front.
+    pub fn locate_message(&self, line: u32, message: &str) -> (Option<u32>, String) {
+        match self.origin(line) {
+            Origin::St(l) => (Some(l), message.to_string()),
+            Origin::Ladder(pou, Some((r, row, c))) => (
+                None,
+                format!("POU {pou}, rung {}, row {}, column {}: {message}", r + 1, row + 1, c + 1),
+            ),
+            Origin::Ladder(pou, None) => (None, format!("POU {pou}: {message}")),
+        }
+    }
+}
+
+/// A project's ST source and lowered ladder POUs as one text for `semantic::analyze`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProjectSource {
+    /// The combined text: the ST source first (so its lines keep their numbers).
+    pub text: String,
+    /// Where each line comes from.
+    pub map: SourceMap,
+    /// Ladder warnings, with the POU they belong to.
+    pub warnings: Vec<(String, LadderDiagnostic)>,
+}
+
+/// Validates every ladder POU of a project and combines them with the ST source. Fails
+/// with every ladder diagnostic (errors and warnings) when any ladder POU has errors.
+pub fn project_source(project: &Project) -> Result<ProjectSource, Vec<(String, LadderDiagnostic)>> {
+    let mut diags = Vec::new();
+    for pou in &project.ladder {
+        diags.extend(validate(pou).into_iter().map(|d| (pou.name.clone(), d)));
+    }
+    if diags.iter().any(|(_, d)| d.is_error()) {
+        return Err(diags);
+    }
+    let mut text = project.source.clone();
+    if !text.is_empty() && !text.ends_with('\n') {
+        text.push('\n');
+    }
+    let st_lines = text.lines().count() as u32;
+    let mut map = SourceMap { st_lines, segments: Vec::new() };
+    let mut line = st_lines + 1;
+    for pou in &project.ladder {
+        let lowered = lower(pou);
+        let n = lowered.st.lines().count() as u32;
+        text.push_str(&lowered.st);
+        map.segments.push(Segment { pou: pou.name.clone(), first_line: line, lowered });
+        line += n;
+    }
+    Ok(ProjectSource { text, map, warnings: diags })
+}
+
+#[cfg(test)]
+mod tests;

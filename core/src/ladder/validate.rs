@@ -1,0 +1,479 @@
+//! Validation of ladder POUs with located diagnostics (rung, row, column).
+
+use std::collections::HashMap;
+use std::fmt;
+
+use serde::Serialize;
+
+use super::model::{Block, CoilKind, Element, LadderPou, Rung};
+use super::network::{is_terminal, Network};
+use crate::diagnostics::{Code, Severity};
+use crate::syntax::{self, ExprKind};
+
+/// A problem in a ladder POU. `rung`, `row` and `column` are 0-based; `Display` prints them
+/// 1-based as students count.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LadderDiagnostic {
+    /// The stable problem code.
+    pub code: Code,
+    /// A message a student understands.
+    pub message: String,
+    /// 0-based rung index.
+    pub rung: usize,
+    /// 0-based row.
+    pub row: usize,
+    /// 0-based column.
+    pub column: usize,
+    /// Error or warning.
+    pub severity: Severity,
+}
+
+impl LadderDiagnostic {
+    fn error(code: Code, rung: usize, row: usize, column: usize, message: String) -> Self {
+        LadderDiagnostic { code, message, rung, row, column, severity: Severity::Error }
+    }
+
+    fn warning(code: Code, rung: usize, row: usize, column: usize, message: String) -> Self {
+        LadderDiagnostic { code, message, rung, row, column, severity: Severity::Warning }
+    }
+
+    /// Whether this is an error.
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+}
+
+impl fmt::Display for LadderDiagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "rung {}, row {}, column {}: {}",
+            self.rung + 1,
+            self.row + 1,
+            self.column + 1,
+            self.message
+        )
+    }
+}
+
+/// Standard function blocks: (name, power input, power output).
+pub(crate) const STANDARD_FBS: &[(&str, &str, &str)] = &[
+    ("TON", "IN", "Q"),
+    ("TOF", "IN", "Q"),
+    ("TP", "IN", "Q"),
+    ("RTO", "IN", "Q"),
+    ("CTU", "CU", "Q"),
+    ("CTD", "CD", "Q"),
+    ("CTUD", "CU", "QU"),
+    ("R_TRIG", "CLK", "Q"),
+    ("F_TRIG", "CLK", "Q"),
+    ("SR", "S1", "Q1"),
+    ("RS", "S", "Q1"),
+];
+
+/// Standard functions and operations usable as blocks.
+pub(crate) const STANDARD_FUNCTIONS: &[&str] = &[
+    "EQ",
+    "NE",
+    "GT",
+    "GE",
+    "LT",
+    "LE",
+    "ADD",
+    "SUB",
+    "MUL",
+    "DIV",
+    "MOD",
+    "SQRT",
+    "MOVE",
+    "AND",
+    "OR",
+    "XOR",
+    "NOT",
+    "SHL",
+    "SHR",
+    "ROL",
+    "ROR",
+    "BCD_TO_INT",
+    "INT_TO_BCD",
+];
+
+/// The standard FB entry for a block type, if it is one.
+pub(crate) fn standard_fb(name: &str) -> Option<(&'static str, &'static str, &'static str)> {
+    STANDARD_FBS.iter().copied().find(|(n, _, _)| n.eq_ignore_ascii_case(name))
+}
+
+/// Validates a ladder POU. Block types that are not standard are accepted when they are
+/// identifiers (the ST checker reports unknown ones); see [`validate_with`].
+pub fn validate(pou: &LadderPou) -> Vec<LadderDiagnostic> {
+    validate_inner(pou, None)
+}
+
+/// Validates a ladder POU knowing the names of the project's own FUNCTION_BLOCKs and
+/// FUNCTIONs (`user_fbs`, `user_functions`), so unknown block types are reported here.
+pub fn validate_with(
+    pou: &LadderPou,
+    user_fbs: &[String],
+    user_functions: &[String],
+) -> Vec<LadderDiagnostic> {
+    validate_inner(pou, Some((user_fbs, user_functions)))
+}
+
+fn is_operand(text: &str) -> bool {
+    fn place(e: &syntax::Expr) -> bool {
+        match &e.kind {
+            ExprKind::Name(_) | ExprKind::Direct(_) => true,
+            ExprKind::Member(b, _) | ExprKind::Bit(b, _) => place(b),
+            ExprKind::Index(b, _) => place(b),
+            _ => false,
+        }
+    }
+    syntax::parse_expression(text).is_ok_and(|e| place(&e))
+}
+
+fn is_value(text: &str) -> bool {
+    syntax::parse_expression(text).is_ok()
+}
+
+fn validate_inner(pou: &LadderPou, users: Option<(&[String], &[String])>) -> Vec<LadderDiagnostic> {
+    let mut out = Vec::new();
+    let labels: HashMap<String, usize> = pou
+        .rungs
+        .iter()
+        .enumerate()
+        .filter_map(|(i, r)| r.label.as_ref().map(|l| (l.to_ascii_uppercase(), i)))
+        .collect();
+    let mut coils: HashMap<String, (usize, usize, usize)> = HashMap::new();
+    for (ri, rung) in pou.rungs.iter().enumerate() {
+        validate_rung(ri, rung, users, &labels, &mut coils, &mut out);
+    }
+    out
+}
+
+#[allow(clippy::collapsible_match)]
+fn validate_block(
+    ri: usize,
+    r: usize,
+    c: usize,
+    b: &Block,
+    users: Option<(&[String], &[String])>,
+    out: &mut Vec<LadderDiagnostic>,
+) {
+    let name = b.type_name.trim();
+    let std_fb = standard_fb(name).is_some();
+    let std_fn = STANDARD_FUNCTIONS.iter().any(|n| n.eq_ignore_ascii_case(name));
+    let user_fb = users.is_some_and(|(fbs, _)| fbs.iter().any(|n| n.eq_ignore_ascii_case(name)));
+    let user_fn = users.is_some_and(|(_, fns)| fns.iter().any(|n| n.eq_ignore_ascii_case(name)));
+    let known = std_fb
+        || std_fn
+        || user_fb
+        || user_fn
+        || (users.is_none()
+            && syntax::parse_expression(name).is_ok_and(|e| matches!(e.kind, ExprKind::Name(_))));
+    if name.is_empty() {
+        out.push(LadderDiagnostic::error(
+            Code::LadderMissingOperand,
+            ri,
+            r,
+            c,
+            "this block has no type".into(),
+        ));
+        return;
+    }
+    if !known {
+        out.push(LadderDiagnostic::error(
+            Code::LadderUnknownBlock,
+            ri,
+            r,
+            c,
+            format!(
+                "`{name}` is not a standard block nor a FUNCTION_BLOCK or FUNCTION of the project"
+            ),
+        ));
+    }
+    let needs_instance = std_fb || user_fb;
+    match &b.instance {
+        Some(i) if !i.trim().is_empty() => {
+            if !is_operand(i) {
+                out.push(LadderDiagnostic::error(
+                    Code::LadderBadOperand,
+                    ri,
+                    r,
+                    c,
+                    format!("the instance `{i}` of this {name} is not a variable name"),
+                ));
+            }
+        }
+        _ if needs_instance => out.push(LadderDiagnostic::error(
+            Code::LadderMissingInstance,
+            ri,
+            r,
+            c,
+            format!("this {name} needs an instance variable (declare e.g. `T1 : {name};`)"),
+        )),
+        _ => {}
+    }
+    for p in &b.inputs {
+        if p.operand.trim().is_empty() {
+            out.push(LadderDiagnostic::error(
+                Code::LadderMissingOperand,
+                ri,
+                r,
+                c,
+                format!("input {} of this {name} has no operand", p.name),
+            ));
+        } else if !is_value(&p.operand) {
+            out.push(LadderDiagnostic::error(
+                Code::LadderBadOperand,
+                ri,
+                r,
+                c,
+                format!("input {} of this {name}: `{}` is not a value", p.name, p.operand),
+            ));
+        }
+    }
+    for p in &b.outputs {
+        if p.operand.trim().is_empty() {
+            out.push(LadderDiagnostic::error(
+                Code::LadderMissingOperand,
+                ri,
+                r,
+                c,
+                format!("output {} of this {name} has no operand", p.name),
+            ));
+        } else if !is_operand(&p.operand) {
+            out.push(LadderDiagnostic::error(
+                Code::LadderBadOperand,
+                ri,
+                r,
+                c,
+                format!("output {} of this {name}: `{}` is not a variable", p.name, p.operand),
+            ));
+        }
+    }
+}
+
+fn validate_rung(
+    ri: usize,
+    rung: &Rung,
+    users: Option<(&[String], &[String])>,
+    labels: &HashMap<String, usize>,
+    coils: &mut HashMap<String, (usize, usize, usize)>,
+    out: &mut Vec<LadderDiagnostic>,
+) {
+    let start = out.len();
+    let cols = rung.columns();
+    for (r, row) in rung.cells.iter().enumerate() {
+        if row.len() != cols {
+            out.push(LadderDiagnostic::error(
+                Code::LadderBadGrid,
+                ri,
+                r,
+                0,
+                format!("row {} has {} cells but the rung has {cols} columns", r + 1, row.len()),
+            ));
+            return;
+        }
+    }
+    // Cell-level rules.
+    let mut coil_count = 0;
+    let mut edge_coil = None;
+    for (r, row) in rung.cells.iter().enumerate() {
+        let mut ended = false;
+        for (c, cell) in row.iter().enumerate() {
+            let e = &cell.element;
+            if ended && !matches!(e, Element::Empty) {
+                out.push(LadderDiagnostic::error(
+                    Code::LadderAfterCoil,
+                    ri,
+                    r,
+                    c,
+                    "nothing may follow a coil, jump or return in its row".into(),
+                ));
+                continue;
+            }
+            match e {
+                Element::Contact { operand, .. } | Element::Coil { operand, .. } => {
+                    let what =
+                        if matches!(e, Element::Contact { .. }) { "contact" } else { "coil" };
+                    if operand.trim().is_empty() {
+                        out.push(LadderDiagnostic::error(
+                            Code::LadderMissingOperand,
+                            ri,
+                            r,
+                            c,
+                            format!("this {what} has no operand"),
+                        ));
+                    } else if !is_operand(operand) {
+                        out.push(LadderDiagnostic::error(
+                            Code::LadderBadOperand,
+                            ri,
+                            r,
+                            c,
+                            format!(
+                                "`{operand}` is not a variable, member, element or direct address"
+                            ),
+                        ));
+                    }
+                    if let Element::Coil { kind, operand } = e {
+                        coil_count += 1;
+                        if matches!(kind, CoilKind::Rising | CoilKind::Falling) {
+                            edge_coil = edge_coil.or(Some((r, c)));
+                        }
+                        if matches!(kind, CoilKind::Normal | CoilKind::Negated)
+                            || matches!(kind, CoilKind::Rising | CoilKind::Falling)
+                        {
+                            let key = operand.trim().to_ascii_uppercase();
+                            if let Some(&(pr, prow, pcol)) = coils.get(&key) {
+                                out.push(LadderDiagnostic::warning(
+                                    Code::LadderDuplicateCoil,
+                                    ri,
+                                    r,
+                                    c,
+                                    format!(
+                                        "`{}` is already written by the coil at rung {}, row {}, column {}",
+                                        operand.trim(),
+                                        pr + 1,
+                                        prow + 1,
+                                        pcol + 1
+                                    ),
+                                ));
+                            } else if !key.is_empty() {
+                                coils.insert(key, (ri, r, c));
+                            }
+                        }
+                    }
+                }
+                Element::Block(b) => {
+                    validate_block(ri, r, c, b, users, out);
+                    let h = b.height.max(1) as usize;
+                    if r + h > rung.rows() {
+                        out.push(LadderDiagnostic::error(
+                            Code::LadderBadGrid,
+                            ri,
+                            r,
+                            c,
+                            format!("this {} is {h} rows high and leaves the grid", b.type_name),
+                        ));
+                    }
+                }
+                Element::Covered => {
+                    let covered =
+                        (0..r).rev().find_map(|a| match rung.cell(a, c).map(|x| &x.element) {
+                            Some(Element::Covered) => None,
+                            Some(Element::Block(b)) => Some(a + (b.height.max(1) as usize) > r),
+                            _ => Some(false),
+                        });
+                    if covered != Some(true) {
+                        out.push(LadderDiagnostic::error(
+                            Code::LadderStrayCovered,
+                            ri,
+                            r,
+                            c,
+                            "this cell is marked as part of a block, but no block above covers it"
+                                .into(),
+                        ));
+                    }
+                }
+                Element::Jump { label } => match labels.get(&label.trim().to_ascii_uppercase()) {
+                    None => out.push(LadderDiagnostic::error(
+                        Code::LadderBadJump,
+                        ri,
+                        r,
+                        c,
+                        format!("there is no rung labelled `{}`", label.trim()),
+                    )),
+                    Some(&target) if target <= ri => out.push(LadderDiagnostic::error(
+                        Code::LadderBadJump,
+                        ri,
+                        r,
+                        c,
+                        format!(
+                            "jumps may only go forward; `{}` is not below this rung",
+                            label.trim()
+                        ),
+                    )),
+                    Some(_) => {}
+                },
+                _ => {}
+            }
+            if is_terminal(e) {
+                ended = true;
+            }
+        }
+    }
+    if let Some((r, c)) = edge_coil {
+        if coil_count > 1 {
+            out.push(LadderDiagnostic::error(
+                Code::LadderEdgeCoilShared,
+                ri,
+                r,
+                c,
+                "an edge coil must be the only coil of its rung".into(),
+            ));
+        }
+    }
+    // Power flow rules.
+    let net = Network::new(rung);
+    let mut open = false;
+    for e in &net.elements {
+        if !net.powered[e.input] {
+            open = true;
+            let what = match e.element {
+                Element::Coil { .. } => "this coil is not reached from the left rail",
+                Element::Block(_) => "this block is not reached from the left rail",
+                _ => "open circuit: no power path from the left rail reaches this element",
+            };
+            out.push(LadderDiagnostic::error(
+                Code::LadderOpenCircuit,
+                ri,
+                e.row,
+                e.col,
+                what.into(),
+            ));
+            continue;
+        }
+        match e.element {
+            Element::Contact { .. } | Element::Wire if !net.consumed(e.output) => {
+                open = true;
+                out.push(LadderDiagnostic::error(
+                    Code::LadderOpenCircuit,
+                    ri,
+                    e.row,
+                    e.col,
+                    "open circuit: this element leads nowhere (end the row with a coil)".into(),
+                ));
+            }
+            Element::Coil { .. } if !net.conditioned[e.input] => out.push(LadderDiagnostic::error(
+                Code::LadderShortCircuit,
+                ri,
+                e.row,
+                e.col,
+                "this coil has no condition before it: put a contact between the rail and the coil"
+                    .into(),
+            )),
+            Element::Block(b) if !net.conditioned[e.input] => out.push(LadderDiagnostic::warning(
+                Code::LadderEnableFromRail,
+                ri,
+                e.row,
+                e.col,
+                format!("the enable of this {} is tied straight to the rail", b.type_name),
+            )),
+            _ => {}
+        }
+    }
+    let has_errors = out[start..].iter().any(LadderDiagnostic::is_error);
+    if !open && !has_errors {
+        if let Some(node) = net.non_series_parallel() {
+            let (r, c) = net.place[node];
+            // Report the link that opens or closes the overlapping branch.
+            out.push(LadderDiagnostic::error(
+                Code::LadderAmbiguousBranch,
+                ri,
+                r,
+                c,
+                "this branch starts or ends inside another branch: the network is ambiguous".into(),
+            ));
+        }
+    }
+}

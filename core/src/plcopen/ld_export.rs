@@ -1,0 +1,246 @@
+//! Ladder POU → `<pou>` with an `<LD>` body: elements at grid positions, wired per the grid.
+
+use super::export::vars_xml;
+use super::xml::esc;
+use crate::ladder::{CoilKind, ContactKind, Element, LadderPou, LadderPouKind};
+use crate::syntax::ast::{Item, VarSection};
+use std::fmt::Write;
+
+/// The pins that carry power through a block, by block type.
+pub(crate) fn power_pins(type_name: &str) -> (&'static str, &'static str) {
+    match type_name.to_ascii_uppercase().as_str() {
+        "TON" | "TOF" | "TP" | "RTO" => ("IN", "Q"),
+        "CTU" => ("CU", "Q"),
+        "CTD" => ("CD", "Q"),
+        "CTUD" => ("CU", "QU"),
+        "R_TRIG" | "F_TRIG" => ("CLK", "Q"),
+        "SR" => ("S1", "Q1"),
+        "RS" => ("S", "Q1"),
+        _ => ("EN", "ENO"),
+    }
+}
+
+struct Uf(Vec<usize>);
+
+impl Uf {
+    fn find(&mut self, mut x: usize) -> usize {
+        while self.0[x] != x {
+            self.0[x] = self.0[self.0[x]];
+            x = self.0[x];
+        }
+        x
+    }
+    fn union(&mut self, a: usize, b: usize) {
+        let (a, b) = (self.find(a), self.find(b));
+        if a != b {
+            self.0[b] = a;
+        }
+    }
+}
+
+fn section_tag(s: VarSection) -> &'static str {
+    match s {
+        VarSection::Var => "localVars",
+        VarSection::Input => "inputVars",
+        VarSection::Output => "outputVars",
+        VarSection::InOut => "inOutVars",
+        VarSection::Global => "globalVars",
+        VarSection::External => "externalVars",
+        VarSection::Temp => "tempVars",
+    }
+}
+
+const X0: i64 = 100;
+const DX: i64 = 80;
+const DY: i64 = 40;
+
+/// One ladder POU as a `<pou>` element.
+pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
+    let pou_type = match lp.kind {
+        LadderPouKind::Program => "program",
+        LadderPouKind::FunctionBlock => "functionBlock",
+    };
+    let mut out = format!(
+        "      <pou name=\"{}\" pouType=\"{pou_type}\">\n        <interface>\n",
+        esc(&lp.name)
+    );
+    let wrapped = format!("PROGRAM X\n{}\nEND_PROGRAM\n", lp.declarations);
+    let (file, _) = crate::syntax::parse(&wrapped);
+    for item in &file.items {
+        if let Item::Pou(p) = item {
+            for b in &p.var_blocks {
+                out.push_str(&vars_xml(b, &wrapped, section_tag(b.section), "          "));
+            }
+        }
+    }
+    out.push_str("        </interface>\n        <body>\n          <LD>\n");
+    let mut next_id = 1usize;
+    let mut y0: i64 = 20;
+    let mut body = String::new();
+    for rung in &lp.rungs {
+        let rows = rung.rows();
+        let cols = rung.columns();
+        if rows == 0 || cols == 0 {
+            continue;
+        }
+        let mut id = || {
+            next_id += 1;
+            next_id - 1
+        };
+        if let Some(label) = &rung.label {
+            let _ = writeln!(body, "            <label localId=\"{}\" height=\"20\" width=\"80\" label=\"{}\">\n              <position x=\"{X0}\" y=\"{y0}\"/>\n            </label>", id(), esc(label));
+            y0 += DY;
+        }
+        if !rung.comment.is_empty() {
+            let _ = writeln!(body, "            <comment localId=\"{}\" height=\"30\" width=\"400\">\n              <position x=\"{X0}\" y=\"{y0}\"/>\n              <content>\n                <xhtml:p><![CDATA[{}]]></xhtml:p>\n              </content>\n            </comment>", id(), rung.comment.replace("]]>", "]] >"));
+            y0 += DY;
+        }
+        // Nodes (row, col) for col in 0..=cols.
+        let node = |r: usize, c: usize| r * (cols + 1) + c;
+        let mut uf = Uf((0..rows * (cols + 1)).collect());
+        for r in 0..rows {
+            uf.union(node(0, 0), node(r, 0));
+            for c in 0..cols {
+                let cell = &rung.cells[r][c];
+                if cell.element == Element::Wire {
+                    uf.union(node(r, c), node(r, c + 1));
+                }
+                if cell.link_down && r + 1 < rows {
+                    uf.union(node(r, c), node(r + 1, c));
+                }
+            }
+        }
+        let left_id = id();
+        let right_id = id();
+        // Elements and their ids.
+        let mut items: Vec<(usize, usize, usize)> = Vec::new(); // (row, col, localId)
+        for r in 0..rows {
+            for c in 0..cols {
+                if matches!(
+                    rung.cells[r][c].element,
+                    Element::Contact { .. }
+                        | Element::Coil { .. }
+                        | Element::Block(_)
+                        | Element::Jump { .. }
+                        | Element::Return
+                ) {
+                    items.push((r, c, id()));
+                }
+            }
+        }
+        let rail_root = uf.find(node(0, 0));
+        let sources_of = |uf: &mut Uf, n: usize| -> Vec<(usize, Option<String>)> {
+            let root = uf.find(n);
+            let mut v = Vec::new();
+            if root == rail_root {
+                v.push((left_id, None));
+            }
+            for &(r, c, eid) in &items {
+                if uf.find(node(r, c + 1)) == root {
+                    let param = match &rung.cells[r][c].element {
+                        Element::Block(b) => Some(power_pins(&b.type_name).1.to_string()),
+                        _ => None,
+                    };
+                    v.push((eid, param));
+                }
+            }
+            v
+        };
+        let conn_xml = |srcs: &[(usize, Option<String>)], indent: &str| -> String {
+            let mut s =
+                format!("{indent}<connectionPointIn>\n{indent}  <relPosition x=\"0\" y=\"10\"/>\n");
+            for (sid, p) in srcs {
+                match p {
+                    Some(p) => {
+                        let _ = writeln!(
+                            s,
+                            "{indent}  <connection refLocalId=\"{sid}\" formalParameter=\"{}\"/>",
+                            esc(p)
+                        );
+                    }
+                    None => {
+                        let _ = writeln!(s, "{indent}  <connection refLocalId=\"{sid}\"/>");
+                    }
+                }
+            }
+            let _ = writeln!(s, "{indent}</connectionPointIn>");
+            s
+        };
+        let height = rows as i64 * DY;
+        let _ = writeln!(body, "            <leftPowerRail localId=\"{left_id}\" height=\"{height}\" width=\"10\">\n              <position x=\"{}\" y=\"{y0}\"/>\n              <connectionPointOut formalParameter=\"\">\n                <relPosition x=\"10\" y=\"20\"/>\n              </connectionPointOut>\n            </leftPowerRail>", X0 - 20);
+        let mut extra = String::new();
+        for &(r, c, eid) in &items {
+            let x = X0 + c as i64 * DX;
+            let y = y0 + r as i64 * DY;
+            let srcs = sources_of(&mut uf, node(r, c));
+            let cin = conn_xml(&srcs, "              ");
+            match &rung.cells[r][c].element {
+                Element::Contact { kind, operand } => {
+                    let attrs = match kind {
+                        ContactKind::NormallyOpen => " negated=\"false\"",
+                        ContactKind::NormallyClosed => " negated=\"true\"",
+                        ContactKind::Rising => " negated=\"false\" edge=\"rising\"",
+                        ContactKind::Falling => " negated=\"false\" edge=\"falling\"",
+                    };
+                    let _ = write!(body, "            <contact localId=\"{eid}\" height=\"20\" width=\"21\"{attrs}>\n              <position x=\"{x}\" y=\"{y}\"/>\n{cin}              <connectionPointOut>\n                <relPosition x=\"21\" y=\"10\"/>\n              </connectionPointOut>\n              <variable>{}</variable>\n            </contact>\n", esc(operand));
+                }
+                Element::Coil { kind, operand } => {
+                    let attrs = match kind {
+                        CoilKind::Normal => " negated=\"false\"",
+                        CoilKind::Negated => " negated=\"true\"",
+                        CoilKind::Set => " negated=\"false\" storage=\"set\"",
+                        CoilKind::Reset => " negated=\"false\" storage=\"reset\"",
+                        CoilKind::Rising => " negated=\"false\" edge=\"rising\"",
+                        CoilKind::Falling => " negated=\"false\" edge=\"falling\"",
+                    };
+                    let _ = write!(body, "            <coil localId=\"{eid}\" height=\"20\" width=\"21\"{attrs}>\n              <position x=\"{x}\" y=\"{y}\"/>\n{cin}              <connectionPointOut>\n                <relPosition x=\"21\" y=\"10\"/>\n              </connectionPointOut>\n              <variable>{}</variable>\n            </coil>\n", esc(operand));
+                }
+                Element::Jump { label } => {
+                    let _ = write!(body, "            <jump localId=\"{eid}\" height=\"20\" width=\"40\" label=\"{}\">\n              <position x=\"{x}\" y=\"{y}\"/>\n{cin}            </jump>\n", esc(label));
+                }
+                Element::Return => {
+                    let _ = write!(body, "            <return localId=\"{eid}\" height=\"20\" width=\"40\">\n              <position x=\"{x}\" y=\"{y}\"/>\n{cin}            </return>\n");
+                }
+                Element::Block(b) => {
+                    let (pin_in, pin_out) = power_pins(&b.type_name);
+                    let h = b.height.max(1) as i64 * DY;
+                    let _ = write!(body, "            <block localId=\"{eid}\" height=\"{h}\" width=\"60\" typeName=\"{}\"", esc(&b.type_name));
+                    if let Some(inst) = &b.instance {
+                        let _ = write!(body, " instanceName=\"{}\"", esc(inst));
+                    }
+                    let _ = write!(body, ">\n              <position x=\"{x}\" y=\"{y}\"/>\n              <inputVariables>\n                <variable formalParameter=\"{pin_in}\">\n{}                </variable>\n", conn_xml(&srcs, "                  "));
+                    for (k, p) in b.inputs.iter().enumerate() {
+                        let vid = next_id;
+                        next_id += 1;
+                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                </variable>\n", esc(&p.name), conn_xml(&[(vid, None)], "                  "));
+                        let _ = write!(extra, "            <inVariable localId=\"{vid}\" height=\"20\" width=\"60\">\n              <position x=\"{}\" y=\"{}\"/>\n              <connectionPointOut>\n                <relPosition x=\"60\" y=\"10\"/>\n              </connectionPointOut>\n              <expression>{}</expression>\n            </inVariable>\n", x - 70, y + (k as i64 + 1) * 20, esc(&p.operand));
+                    }
+                    let _ = write!(body, "              </inputVariables>\n              <inOutVariables/>\n              <outputVariables>\n                <variable formalParameter=\"{pin_out}\">\n                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"10\"/>\n                  </connectionPointOut>\n                </variable>\n");
+                    for (k, p) in b.outputs.iter().enumerate() {
+                        let vid = next_id;
+                        next_id += 1;
+                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"{}\"/>\n                  </connectionPointOut>\n                </variable>\n", esc(&p.name), (k + 1) * 20 + 10);
+                        let _ = write!(extra, "            <outVariable localId=\"{vid}\" height=\"20\" width=\"60\">\n              <position x=\"{}\" y=\"{}\"/>\n              <connectionPointIn>\n                <relPosition x=\"0\" y=\"10\"/>\n                <connection refLocalId=\"{eid}\" formalParameter=\"{}\"/>\n              </connectionPointIn>\n              <expression>{}</expression>\n            </outVariable>\n", x + 70, y + (k as i64 + 1) * 20, esc(&p.name), esc(&p.operand));
+                    }
+                    body.push_str("              </outputVariables>\n            </block>\n");
+                }
+                _ => {}
+            }
+        }
+        body.push_str(&extra);
+        // The right rail takes every output on the right edge.
+        let mut rsrcs = Vec::new();
+        for r in 0..rows {
+            for s in sources_of(&mut uf, node(r, cols)) {
+                if s.0 != left_id && !rsrcs.iter().any(|x: &(usize, Option<String>)| x.0 == s.0) {
+                    rsrcs.push(s);
+                }
+            }
+        }
+        let _ = write!(body, "            <rightPowerRail localId=\"{right_id}\" height=\"{height}\" width=\"10\">\n              <position x=\"{}\" y=\"{y0}\"/>\n{}            </rightPowerRail>\n", X0 + cols as i64 * DX + 20, conn_xml(&rsrcs, "              "));
+        y0 += height + DY;
+    }
+    out.push_str(&body);
+    out.push_str("          </LD>\n        </body>\n      </pou>\n");
+    out
+}

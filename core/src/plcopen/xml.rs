@@ -1,0 +1,126 @@
+//! A tiny owned element tree read with quick-xml's event reader (namespaces dropped: only
+//! local names are kept, which is what PLCopen files from every tool agree on).
+
+use quick_xml::events::{BytesStart, Event};
+use quick_xml::Reader;
+
+/// One XML element.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Node {
+    /// Local name (`xhtml:p` → `p`).
+    pub name: String,
+    /// Attributes by local name, in document order.
+    pub attrs: Vec<(String, String)>,
+    /// Child elements in document order.
+    pub children: Vec<Node>,
+    /// Concatenated character data directly inside this element (text and CDATA).
+    pub text: String,
+}
+
+impl Node {
+    /// The attribute `name`, if present.
+    pub fn attr(&self, name: &str) -> Option<&str> {
+        self.attrs.iter().find(|(k, _)| k == name).map(|(_, v)| v.as_str())
+    }
+
+    /// The first child named `name`.
+    pub fn child(&self, name: &str) -> Option<&Node> {
+        self.children.iter().find(|c| c.name == name)
+    }
+
+    /// Every child named `name`.
+    pub fn children_named<'a>(&'a self, name: &'a str) -> impl Iterator<Item = &'a Node> + 'a {
+        self.children.iter().filter(move |c| c.name == name)
+    }
+
+    /// All text inside this element and its descendants, in document order.
+    pub fn deep_text(&self) -> String {
+        let mut out = self.text.clone();
+        for c in &self.children {
+            out.push_str(&c.deep_text());
+        }
+        out
+    }
+}
+
+fn start_node(e: &BytesStart<'_>) -> Result<Node, String> {
+    let name = e.local_name().as_ref().to_string();
+    let mut attrs = Vec::new();
+    for a in e.attributes() {
+        let a = a.map_err(|err| format!("bad attribute in <{name}>: {err}"))?;
+        let key = a.key.local_name().as_ref().to_string();
+        let value = a
+            .normalized_value(quick_xml::XmlVersion::Implicit1_0)
+            .map_err(|err| format!("bad attribute value {key:?} in <{name}>: {err}"))?
+            .into_owned();
+        attrs.push((key, value));
+    }
+    Ok(Node { name, attrs, children: Vec::new(), text: String::new() })
+}
+
+/// Parses a whole document and returns its root element.
+pub(crate) fn parse(xml: &str) -> Result<Node, String> {
+    let mut reader = Reader::from_str(xml);
+    let mut stack: Vec<Node> = Vec::new();
+    let mut root: Option<Node> = None;
+    loop {
+        let pos = reader.buffer_position();
+        let event =
+            reader.read_event().map_err(|e| format!("malformed XML near byte {pos}: {e}"))?;
+        match event {
+            Event::Start(e) => stack.push(start_node(&e)?),
+            Event::Empty(e) => {
+                let node = start_node(&e)?;
+                match stack.last_mut() {
+                    Some(parent) => parent.children.push(node),
+                    None if root.is_none() => root = Some(node),
+                    None => return Err("more than one root element".into()),
+                }
+            }
+            Event::End(_) => {
+                let node = stack.pop().ok_or("unbalanced end tag")?;
+                match stack.last_mut() {
+                    Some(parent) => parent.children.push(node),
+                    None if root.is_none() => root = Some(node),
+                    None => return Err("more than one root element".into()),
+                }
+            }
+            Event::Text(t) => {
+                if let Some(top) = stack.last_mut() {
+                    top.text.push_str(&t.xml10_content());
+                }
+            }
+            Event::CData(t) => {
+                if let Some(top) = stack.last_mut() {
+                    top.text.push_str(&t.into_inner());
+                }
+            }
+            Event::GeneralRef(r) => {
+                let resolved = match r.resolve_char_ref() {
+                    Ok(Some(c)) => c.to_string(),
+                    Ok(None) => {
+                        let name = r.into_inner().into_owned();
+                        quick_xml::escape::resolve_predefined_entity(&name)
+                            .ok_or_else(|| format!("unknown entity &{name};"))?
+                            .to_string()
+                    }
+                    Err(e) => return Err(format!("bad character reference: {e}")),
+                };
+                if let Some(top) = stack.last_mut() {
+                    top.text.push_str(&resolved);
+                }
+            }
+            Event::Eof => break,
+            _ => {}
+        }
+    }
+    if !stack.is_empty() {
+        return Err("the document ends inside an element (missing end tags)".into());
+    }
+    root.ok_or_else(|| "the document has no root element".into())
+}
+
+/// Escapes text for element content and attribute values.
+pub(crate) fn esc(s: &str) -> String {
+    quick_xml::escape::escape(s).into_owned()
+}

@@ -1,0 +1,456 @@
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+//! Ladder rungs run scan by scan through the one VM, validation locations, and the
+//! LD ↔ ST-view equivalence property.
+
+use plc_core::diagnostics::Code;
+use plc_core::ladder::*;
+use plc_core::project::Project;
+use plc_core::run::{project_simulator, run_project, RunOptions, RunStatus};
+use plc_core::sim::Simulator;
+use plc_core::vm::Value;
+
+/// Parses a test grid: whitespace-separated cells; `.` empty, `-` wire, `[X]` NO, `[/X]` NC,
+/// `[P:X]`/`[N:X]` edge contacts, `(X)`, `(/X)`, `(S:X)`, `(R:X)`, `(P:X)` coils, `#`
+/// covered, `B` a block placeholder; a leading `+` sets `link_down`.
+fn rung(rows: &[&str]) -> Rung {
+    let cells = rows
+        .iter()
+        .map(|row| {
+            row.split_whitespace()
+                .map(|tok| {
+                    let (link, t) = match tok.strip_prefix('+') {
+                        Some(t) => (true, t),
+                        None => (false, tok),
+                    };
+                    let element = if t == "." || t == "B" {
+                        Element::Empty
+                    } else if t == "-" {
+                        Element::Wire
+                    } else if t == "#" {
+                        Element::Covered
+                    } else if let Some(x) = t.strip_prefix('[').and_then(|x| x.strip_suffix(']')) {
+                        let (kind, op) = match x.split_once(':') {
+                            Some(("P", o)) => (ContactKind::Rising, o),
+                            Some(("N", o)) => (ContactKind::Falling, o),
+                            _ => match x.strip_prefix('/') {
+                                Some(o) => (ContactKind::NormallyClosed, o),
+                                None => (ContactKind::NormallyOpen, x),
+                            },
+                        };
+                        Element::Contact { kind, operand: op.to_string() }
+                    } else if let Some(x) = t.strip_prefix('(').and_then(|x| x.strip_suffix(')')) {
+                        let (kind, op) = match x.split_once(':') {
+                            Some(("S", o)) => (CoilKind::Set, o),
+                            Some(("R", o)) => (CoilKind::Reset, o),
+                            Some(("P", o)) => (CoilKind::Rising, o),
+                            Some(("N", o)) => (CoilKind::Falling, o),
+                            _ => match x.strip_prefix('/') {
+                                Some(o) => (CoilKind::Negated, o),
+                                None => (CoilKind::Normal, x),
+                            },
+                        };
+                        Element::Coil { kind, operand: op.to_string() }
+                    } else {
+                        panic!("bad token {t}")
+                    };
+                    Cell { element, link_down: link }
+                })
+                .collect()
+        })
+        .collect();
+    Rung { comment: String::new(), label: None, cells }
+}
+
+fn block(
+    ty: &str,
+    inst: Option<&str>,
+    inputs: &[(&str, &str)],
+    outputs: &[(&str, &str)],
+) -> Element {
+    let pins = |v: &[(&str, &str)]| {
+        v.iter().map(|(n, o)| Pin { name: n.to_string(), operand: o.to_string() }).collect()
+    };
+    Element::Block(Block {
+        type_name: ty.into(),
+        instance: inst.map(str::to_string),
+        height: 1,
+        inputs: pins(inputs),
+        outputs: pins(outputs),
+    })
+}
+
+fn pou(decls: &str, rungs: Vec<Rung>) -> LadderPou {
+    LadderPou {
+        name: "Main".into(),
+        kind: LadderPouKind::Program,
+        declarations: decls.into(),
+        rungs,
+    }
+}
+
+fn project(p: LadderPou) -> Project {
+    let mut project = Project::new("t");
+    project.source = String::new();
+    project.ladder = vec![p];
+    project
+}
+
+fn sim(p: &LadderPou) -> Simulator {
+    project_simulator(&project(p.clone()), None)
+        .unwrap_or_else(|e| panic!("{e:?}\n{}", lower(p).st))
+}
+
+fn b(s: &Simulator, path: &str) -> bool {
+    match s.read(path).unwrap() {
+        Value::Bool(v) => v,
+        other => panic!("{path} is {other:?}"),
+    }
+}
+
+fn int(s: &Simulator, path: &str) -> i128 {
+    match s.read(path).unwrap() {
+        Value::Int(v, _) => v,
+        other => panic!("{path} is {other:?}"),
+    }
+}
+
+const LATCH_DECLS: &str =
+    "VAR_INPUT Start : BOOL; Stop : BOOL; END_VAR\nVAR_OUTPUT Motor : BOOL; END_VAR";
+
+fn latch() -> LadderPou {
+    pou(LATCH_DECLS, vec![rung(&["[Start] +[/Stop] (Motor)", "[Motor] . ."])])
+}
+
+#[test]
+fn latch_runs_scan_by_scan_and_has_its_st_view() {
+    let p = latch();
+    assert!(validate(&p).is_empty(), "{:?}", validate(&p));
+    let (view, map) = st_view(&p);
+    assert_eq!(view.trim(), "Motor := (Start OR Motor) AND NOT Stop;");
+    assert_eq!(map, vec![(1, 0)]);
+    let mut s = sim(&p);
+    s.scan();
+    assert!(!b(&s, "Motor"));
+    s.write("Start", "TRUE").unwrap();
+    s.scan();
+    assert!(b(&s, "Motor"));
+    s.write("Start", "FALSE").unwrap();
+    s.scan();
+    assert!(b(&s, "Motor"), "latched");
+    assert!(b(&s, "LdPow_0_1_0"), "power map: the Motor contact conducts");
+    s.write("Stop", "TRUE").unwrap();
+    s.scan();
+    assert!(!b(&s, "Motor"));
+    assert!(power_map(&p)
+        .iter()
+        .any(|(r, row, c, v)| (*r, *row, *c) == (0, 1, 0) && v == "LdPow_0_1_0"));
+}
+
+#[test]
+fn latch_through_run_project_json() {
+    let options = RunOptions {
+        set: vec![("Start".into(), "TRUE".into())],
+        cycles: 2,
+        ..RunOptions::default()
+    };
+    let report = run_project(&project(latch()), &options);
+    assert_eq!(report.status, RunStatus::Ok, "{:?}", report.diagnostics);
+    assert_eq!(report.vars["Motor"], serde_json::json!(true));
+    assert!(!report.vars.keys().any(|k| k.starts_with("LdPow")));
+}
+
+#[test]
+fn ton_delayed_lamp() {
+    let mut r = rung(&["[Go] B (Lamp)"]);
+    r.cells[0][1].element = block("TON", Some("T1"), &[("PT", "T#30ms")], &[("ET", "Elapsed")]);
+    let p = pou("VAR Go : BOOL; Lamp : BOOL; T1 : TON; Elapsed : TIME; END_VAR", vec![r]);
+    assert!(validate(&p).is_empty(), "{:?}", validate(&p));
+    let mut s = sim(&p);
+    s.write("Go", "TRUE").unwrap();
+    s.scan(); // t = 0
+    assert!(!b(&s, "Lamp"));
+    s.scan(); // 10
+    s.scan(); // 20
+    assert!(!b(&s, "Lamp"));
+    s.scan(); // 30
+    assert!(b(&s, "Lamp"));
+    s.write("Go", "FALSE").unwrap();
+    s.scan();
+    assert!(!b(&s, "Lamp"));
+}
+
+#[test]
+fn ctu_counter_with_reset() {
+    let mut r = rung(&["[P:Pulse] B (Done)"]);
+    r.cells[0][1].element =
+        block("CTU", Some("C1"), &[("R", "Reset"), ("PV", "3")], &[("CV", "Count")]);
+    let p =
+        pou("VAR Pulse : BOOL; Reset : BOOL; Done : BOOL; C1 : CTU; Count : INT; END_VAR", vec![r]);
+    let mut s = sim(&p);
+    for i in 1..=3 {
+        s.write("Pulse", "TRUE").unwrap();
+        s.scan();
+        s.write("Pulse", "FALSE").unwrap();
+        s.scan();
+        assert_eq!(int(&s, "Count"), i);
+    }
+    assert!(b(&s, "Done"));
+    s.write("Reset", "TRUE").unwrap();
+    s.scan();
+    assert_eq!(int(&s, "Count"), 0);
+    assert!(!b(&s, "Done"));
+}
+
+#[test]
+fn compare_and_move() {
+    let mut r = rung(&["[Enable] B B (Big)"]);
+    r.cells[0][1].element = block("GT", None, &[("IN1", "Level"), ("IN2", "50")], &[]);
+    r.cells[0][2].element = block("MOVE", None, &[("IN", "Level")], &[("OUT", "Copy")]);
+    let p = pou("VAR Enable : BOOL; Level : INT; Copy : INT; Big : BOOL; END_VAR", vec![r]);
+    assert!(validate(&p).is_empty(), "{:?}", validate(&p));
+    let mut s = sim(&p);
+    s.write("Enable", "TRUE").unwrap();
+    s.write("Level", "40").unwrap();
+    s.scan();
+    assert_eq!(int(&s, "Copy"), 0);
+    assert!(!b(&s, "Big"));
+    s.write("Level", "70").unwrap();
+    s.scan();
+    assert_eq!(int(&s, "Copy"), 70);
+    assert!(b(&s, "Big"));
+    let (view, _) = st_view(&p);
+    assert!(view.contains("IF Enable AND (Level > 50) THEN Copy := Level; END_IF;"), "{view}");
+}
+
+#[test]
+fn three_row_parallel_branch() {
+    let p = pou(
+        "VAR A : BOOL; B : BOOL; C : BOOL; D : BOOL; Out : BOOL; END_VAR",
+        vec![rung(&["[A] +[D] (Out)", "[B] +. .", "[C] . ."])],
+    );
+    assert!(validate(&p).is_empty(), "{:?}", validate(&p));
+    assert_eq!(st_view(&p).0.trim(), "Out := (A OR B OR C) AND D;");
+    let mut s = sim(&p);
+    s.write("D", "TRUE").unwrap();
+    for (a, bb, c) in
+        [(false, false, false), (false, false, true), (false, true, false), (true, false, false)]
+    {
+        s.write("A", if a { "TRUE" } else { "FALSE" }).unwrap();
+        s.write("B", if bb { "TRUE" } else { "FALSE" }).unwrap();
+        s.write("C", if c { "TRUE" } else { "FALSE" }).unwrap();
+        s.scan();
+        assert_eq!(b(&s, "Out"), a || bb || c);
+    }
+}
+
+fn only(p: &LadderPou, code: Code) -> (usize, usize, usize) {
+    let d = validate(p);
+    let hits: Vec<_> = d.iter().filter(|d| d.code == code).collect();
+    assert_eq!(hits.len(), 1, "{d:?}");
+    (hits[0].rung, hits[0].row, hits[0].column)
+}
+
+const D: &str = "VAR A : BOOL; B : BOOL; C : BOOL; X : BOOL; Y : BOOL; T1 : TON; END_VAR";
+
+#[test]
+fn validation_rules_report_exact_locations() {
+    let ok = rung(&["[A] (X)"]);
+    // open circuit: a gap in the row
+    let d = validate(&pou(D, vec![ok, rung(&["[A] . (Y)"])]));
+    let open: Vec<_> = d
+        .iter()
+        .filter(|d| d.code == Code::LadderOpenCircuit)
+        .map(|d| (d.rung, d.row, d.column))
+        .collect();
+    assert_eq!(open, vec![(1, 0, 0), (1, 0, 2)]);
+    // leads nowhere
+    assert_eq!(only(&pou(D, vec![rung(&["[A] [B] ."])]), Code::LadderOpenCircuit), (0, 0, 1));
+    // short circuit
+    assert_eq!(only(&pou(D, vec![rung(&["- - (X)"])]), Code::LadderShortCircuit), (0, 0, 2));
+    assert_eq!(
+        only(&pou(D, vec![rung(&["[A] +- (X)", "- . ."])]), Code::LadderShortCircuit),
+        (0, 0, 2)
+    );
+    // ambiguous branch: rows 1 and 2 overlap (bridge)
+    let bridge = rung(&["[A] +[B] [F] +(X)", ". [E] +[G] .", "[D] - . ."]);
+    assert_eq!(only(&pou(D, vec![bridge]), Code::LadderAmbiguousBranch), (0, 0, 1));
+    // missing operand
+    assert_eq!(
+        only(&pou(D, vec![rung(&["[A] (X)"]), rung(&["[] (X)"])]), Code::LadderMissingOperand),
+        (1, 0, 0)
+    );
+    // bad operand
+    assert_eq!(only(&pou(D, vec![rung(&["[A+B] (X)"])]), Code::LadderBadOperand), (0, 0, 0));
+    // unknown block
+    let mut r = rung(&["[A] B (X)"]);
+    r.cells[0][1].element = block("NOPE", None, &[], &[]);
+    let d = validate_with(&pou(D, vec![r]), &[], &[]);
+    assert!(
+        d.iter().any(|d| d.code == Code::LadderUnknownBlock && (d.row, d.column) == (0, 1)),
+        "{d:?}"
+    );
+    // FB without instance
+    let mut r = rung(&["[A] B (X)"]);
+    r.cells[0][1].element = block("TON", None, &[("PT", "T#1s")], &[]);
+    assert_eq!(only(&pou(D, vec![r]), Code::LadderMissingInstance), (0, 0, 1));
+    // edge coil sharing a rung
+    assert_eq!(
+        only(&pou(D, vec![rung(&["[A] +(P:X)", "[B] (Y)"])]), Code::LadderEdgeCoilShared),
+        (0, 0, 1)
+    );
+    // enable tied to the rail (warning)
+    let mut r = rung(&["B (X)"]);
+    r.cells[0][0].element = block("TON", Some("T1"), &[("PT", "T#1s")], &[]);
+    assert_eq!(only(&pou(D, vec![r]), Code::LadderEnableFromRail), (0, 0, 0));
+    // duplicate coil (warning)
+    assert_eq!(
+        only(&pou(D, vec![rung(&["[A] (X)"]), rung(&["[B] (X)"])]), Code::LadderDuplicateCoil),
+        (1, 0, 1)
+    );
+    // after a coil
+    assert_eq!(only(&pou(D, vec![rung(&["[A] (X) [B]"])]), Code::LadderAfterCoil), (0, 0, 2));
+    // covered without block
+    assert_eq!(only(&pou(D, vec![rung(&["[A] (X)", "# ."])]), Code::LadderStrayCovered), (0, 1, 0));
+    // backward jump
+    let mut r = rung(&["[A] (X)"]);
+    r.label = Some("L1".into());
+    let mut j = rung(&["[A] ."]);
+    j.cells[0][1].element = Element::Jump { label: "L1".into() };
+    assert_eq!(only(&pou(D, vec![r, j]), Code::LadderBadJump), (1, 0, 1));
+}
+
+#[test]
+fn forward_jump_skips_rungs() {
+    let mut j = rung(&["[A] ."]);
+    j.cells[0][1].element = Element::Jump { label: "End".into() };
+    let mut end = rung(&["[B] (Y)"]);
+    end.label = Some("End".into());
+    let p = pou(D, vec![j, rung(&["[B] (X)"]), end]);
+    assert!(validate(&p).is_empty(), "{:?}", validate(&p));
+    let mut s = sim(&p);
+    s.write("A", "TRUE").unwrap();
+    s.write("B", "TRUE").unwrap();
+    s.scan();
+    assert!(!b(&s, "X"));
+    assert!(b(&s, "Y"));
+    s.write("A", "FALSE").unwrap();
+    s.scan();
+    assert!(b(&s, "X"));
+}
+
+#[test]
+fn st_type_errors_map_to_cells() {
+    let p = pou("VAR A : BOOL; N : INT; END_VAR", vec![rung(&["[A] (N)"])]);
+    let report = run_project(&project(p), &RunOptions::default());
+    assert_eq!(report.status, RunStatus::Error);
+    assert!(
+        report.diagnostics.iter().any(|d| d.message.contains("rung 1, row 1, column 2")),
+        "{:?}",
+        report.diagnostics
+    );
+}
+
+/// A deterministic xorshift generator.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n
+    }
+}
+
+const VARS: [&str; 6] = ["V0", "V1", "V2", "V3", "V4", "V5"];
+
+/// A random series-parallel rung: a series of `k` sections, each either one contact or a
+/// parallel block of 2–3 one-contact rows, then 1–2 parallel coils.
+fn random_rung(rng: &mut Rng) -> Rung {
+    let sections = 1 + rng.below(3) as usize;
+    let coils = 1 + rng.below(2) as usize;
+    let rows = 3;
+    let cols = sections + 1;
+    let mut r = Rung::new(rows as u32, cols as u32);
+    let coil_vars: Vec<usize> = {
+        let first = rng.below(6) as usize;
+        let second = (first + 1 + rng.below(5) as usize) % 6;
+        vec![first, second]
+    };
+    let contact = |rng: &mut Rng| {
+        let mut v = rng.below(6) as usize;
+        if coils > 1 && coil_vars[..coils].contains(&v) {
+            v = 6; // only read coil targets when the rung has a single coil
+        }
+        let operand = if v == 6 { VARS[(coil_vars[0] + 3) % 6] } else { VARS[v] };
+        let operand = if coils > 1 && coil_vars[..coils].iter().any(|&c| VARS[c] == operand) {
+            VARS[(0..6).find(|i| !coil_vars[..coils].contains(i)).unwrap_or(0)]
+        } else {
+            operand
+        };
+        let kind =
+            if rng.below(2) == 0 { ContactKind::NormallyOpen } else { ContactKind::NormallyClosed };
+        Element::Contact { kind, operand: operand.to_string() }
+    };
+    for c in 0..sections {
+        let par = 1 + rng.below(3) as usize;
+        for row in 0..par {
+            r.cells[row][c].element = contact(rng);
+        }
+        if par > 1 {
+            for row in 0..par - 1 {
+                if c > 0 {
+                    r.cells[row][c].link_down = true;
+                }
+                r.cells[row][c + 1].link_down = true;
+            }
+        }
+    }
+    for (i, &v) in coil_vars.iter().take(coils).enumerate() {
+        let kind = match rng.below(4) {
+            0 => CoilKind::Normal,
+            1 => CoilKind::Negated,
+            2 => CoilKind::Set,
+            _ => CoilKind::Reset,
+        };
+        r.cells[i][sections].element = Element::Coil { kind, operand: VARS[v].to_string() };
+        if i > 0 {
+            r.cells[i - 1][sections].link_down = true;
+        }
+    }
+    r
+}
+
+#[test]
+fn ladder_and_its_st_view_agree() {
+    let decls = "VAR V0 : BOOL; V1 : BOOL; V2 : BOOL; V3 : BOOL; V4 : BOOL; V5 : BOOL; END_VAR";
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    for case in 0..40 {
+        let rungs: Vec<Rung> = (0..1 + rng.below(3)).map(|_| random_rung(&mut rng)).collect();
+        let p = pou(decls, rungs);
+        let diags: Vec<_> = validate(&p).into_iter().filter(LadderDiagnostic::is_error).collect();
+        assert!(diags.is_empty(), "case {case}: {diags:?}\n{p:#?}");
+        let mut ld = sim(&p);
+        let view = st_view_pou(&p);
+        let mut st_project = Project::new("v");
+        st_project.source = view.clone();
+        let mut st =
+            project_simulator(&st_project, None).unwrap_or_else(|e| panic!("{e:?}\n{view}"));
+        for _ in 0..12 {
+            for v in VARS {
+                if rng.below(3) == 0 {
+                    let value = if rng.below(2) == 0 { "TRUE" } else { "FALSE" };
+                    ld.write(v, value).unwrap();
+                    st.write(v, value).unwrap();
+                }
+            }
+            ld.scan();
+            st.scan();
+            let mut a = ld.vars_json();
+            a.retain(|k, _| !is_hidden_name(k));
+            assert_eq!(a, st.vars_json(), "case {case}\n{view}\n{}", lower(&p).st);
+        }
+    }
+}

@@ -1,0 +1,318 @@
+//! PLCopen XML import/export: real samples, hand-written LD snippets, errors, round trips.
+//! The samples are read from `../shared/samples/plcopen/` (beside the repository, as in CI).
+
+use plc_core::ladder::{CoilKind, ContactKind, Element, Rung};
+use plc_core::plcopen::{export, import, load, ImportError};
+use plc_core::project::Project;
+
+fn sample(name: &str) -> plc_core::plcopen::Import {
+    load(&format!("{}/../../shared/samples/plcopen/{name}", env!("CARGO_MANIFEST_DIR")))
+        .unwrap_or_else(|e| panic!("{name}: {e}"))
+}
+
+fn st_errors(p: &Project) -> Vec<String> {
+    plc_core::semantic::analyze(&p.source)
+        .diagnostics
+        .iter()
+        .filter(|d| format!("{:?}", d.severity).contains("Error"))
+        .map(|d| d.message.clone())
+        .collect()
+}
+
+fn norm(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+fn elements(r: &Rung) -> Vec<&Element> {
+    r.cells
+        .iter()
+        .flatten()
+        .map(|c| &c.element)
+        .filter(|e| !matches!(e, Element::Empty | Element::Wire | Element::Covered))
+        .collect()
+}
+
+fn assert_round_trip(p: &Project) {
+    let xml = export(p);
+    let back = import(&xml).unwrap_or_else(|e| panic!("re-import failed: {e}\n{xml}")).project;
+    assert_eq!(norm(&back.source), norm(&p.source), "ST differs after round trip");
+    assert_eq!(back.ladder, p.ladder, "ladder differs after round trip");
+    assert_eq!(back.name, p.name);
+    assert_eq!(back.settings.cycle_ms, p.settings.cycle_ms);
+}
+
+#[test]
+fn start_stop_latch_sample() {
+    let i = sample("ld_start_stop_latch.xml");
+    let p = &i.project;
+    assert_eq!(p.ladder.len(), 1);
+    let lp = &p.ladder[0];
+    assert_eq!(lp.name, "Hello_World");
+    assert_eq!(lp.rungs.len(), 1);
+    assert!(lp.declarations.contains("Start_PB AT %I0.0 : BOOL := FALSE; (* Start Push Button *)"));
+    let r = &lp.rungs[0];
+    assert_eq!(r.rows(), 2);
+    assert!(!r.comment.is_empty());
+    // Start_PB on row 0, the seal-in contact below it, joined by vertical links.
+    assert!(
+        matches!(&r.cells[0][0].element, Element::Contact { kind: ContactKind::NormallyOpen, operand } if operand == "Start_PB")
+    );
+    assert!(
+        matches!(&r.cells[1][0].element, Element::Contact { kind: ContactKind::NormallyClosed, operand } if operand == "Motor_Starter")
+    );
+    assert!(r.cells[0][0].link_down && r.cells[0][1].link_down);
+    assert!(
+        matches!(&r.cells[0][r.columns() - 1].element, Element::Coil { kind: CoilKind::Normal, operand } if operand == "Motor_Starter")
+    );
+    assert_round_trip(p);
+}
+
+#[test]
+fn multi_rung_sample_splits_shared_rail() {
+    let i = sample("ld_multi_rung_parallel_branches.xml");
+    let lp = &i.project.ladder[0];
+    assert_eq!(lp.rungs.len(), 5);
+    let coils: Vec<String> = lp
+        .rungs
+        .iter()
+        .flat_map(|r| {
+            elements(r).into_iter().filter_map(|e| match e {
+                Element::Coil { operand, .. } => Some(operand.clone()),
+                _ => None,
+            })
+        })
+        .collect();
+    assert_eq!(coils, ["H1", "H2", "H3", "H4", "H5"]);
+    assert!(lp.rungs.iter().filter(|r| r.rows() > 1).count() >= 2);
+    assert_round_trip(&i.project);
+}
+
+#[test]
+fn timers_counters_sample() {
+    let i = sample("ld_timers_counters_setreset.xml");
+    let lp = &i.project.ladder[0];
+    assert_eq!(lp.rungs.len(), 6);
+    let blocks: Vec<_> = lp
+        .rungs
+        .iter()
+        .flat_map(|r| elements(r))
+        .filter_map(|e| match e {
+            Element::Block(b) => Some(b.clone()),
+            _ => None,
+        })
+        .collect();
+    let ton = blocks.iter().find(|b| b.type_name == "TON").expect("TON");
+    assert!(ton.inputs.iter().any(|p| p.name == "PT" && p.operand == "TON_TIME1"));
+    let ctu = blocks.iter().find(|b| b.type_name == "CTU").expect("CTU");
+    assert!(ctu.inputs.iter().any(|p| p.name == "PV"));
+    assert!(ctu.inputs.iter().any(|p| p.name == "R"));
+    assert!(
+        i.warnings.iter().any(|w| w.contains("45")),
+        "dangling contact 45 reported: {:?}",
+        i.warnings
+    );
+    assert!(st_errors(&i.project).is_empty());
+    assert_round_trip(&i.project);
+}
+
+#[test]
+fn wastewater_sample_ld_and_st_fbs() {
+    let i = sample("ld_st_user_fbs_wastewater_pump.xml");
+    let p = &i.project;
+    assert_eq!(p.ladder.len(), 1);
+    assert_eq!(p.ladder[0].rungs.len(), 11);
+    assert!(p.source.contains("FUNCTION_BLOCK Run_Mode"));
+    assert!(p.source.contains("FUNCTION_BLOCK Start_CMD"));
+    assert!(p.source.contains("HOA_MODE"));
+    assert_round_trip(p);
+}
+
+#[test]
+fn oven_control_st_sample() {
+    let i = sample("st_multi_program_oven_control.xml");
+    let p = &i.project;
+    assert!(p.ladder.is_empty());
+    let (file, _) = plc_core::syntax::parse(&p.source);
+    let pous =
+        file.items.iter().filter(|it| matches!(it, plc_core::syntax::ast::Item::Pou(_))).count();
+    assert!(pous >= 5, "{pous} POUs");
+    assert!(p.source.contains("Mode_t"));
+    assert!(p.source.contains("VAR_GLOBAL"));
+    assert!(p.source.contains("VAR CONSTANT"));
+    // Only the Beremiz-specific python_poll FBs are unknown to our checker.
+    let errs = st_errors(p);
+    assert!(
+        errs.iter().all(|e| e.contains("python_poll")
+            || e.contains("VAR_EXTERNAL")
+            || e.contains("PID")
+            || e.contains("_pid`")),
+        "{errs:?}"
+    );
+    assert_round_trip(p);
+}
+
+#[test]
+fn fbd_and_sfc_are_skipped_with_warnings() {
+    let i = sample("fbd_user_function_and_fbs.xml");
+    assert!(i.warnings.iter().any(|w| w.contains("FA_SERV") && w.contains("FBD")));
+    assert!(i.project.source.contains("S_FA_STATUS"));
+    let i = sample("sfc_traffic_light.xml");
+    assert!(i.warnings.iter().any(|w| w.contains("Traffic_Control") && w.contains("SFC")));
+}
+
+#[test]
+fn mixing_tank_reports_unsupported_second_power_input() {
+    let e = load(&format!(
+        "{}/../../shared/samples/plcopen/ld_mixing_tank_plant.xml",
+        env!("CARGO_MANIFEST_DIR")
+    ))
+    .unwrap_err();
+    let msg = e.to_string();
+    assert!(msg.contains("Mixer") && msg.contains("localId"), "{msg}");
+}
+
+fn doc(body: &str, vars: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="x" productName="x" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="Snippet"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Main" pouType="program">
+      <interface><localVars>{vars}</localVars></interface>
+      <body><LD>{body}</LD></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>"#
+    )
+}
+
+fn var(name: &str, ty: &str) -> String {
+    format!(r#"<variable name="{name}"><type><{ty}/></type></variable>"#)
+}
+
+/// OpenPLC style: start with a parallel seal-in, NC stop, coil, wired by refLocalId.
+#[test]
+fn openplc_style_latch() {
+    let vars = ["Start", "Stop", "Motor"].map(|v| var(v, "BOOL")).concat();
+    let body = r#"
+<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>
+<contact localId="2" negated="false"><position x="50" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>Start</variable></contact>
+<contact localId="3" negated="false"><position x="50" y="60"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>Motor</variable></contact>
+<contact localId="4" negated="true"><position x="150" y="10"/><connectionPointIn><connection refLocalId="2"/><connection refLocalId="3"/></connectionPointIn><connectionPointOut/><variable>Stop</variable></contact>
+<coil localId="5"><position x="250" y="10"/><connectionPointIn><connection refLocalId="4"/></connectionPointIn><connectionPointOut/><variable>Motor</variable></coil>
+<rightPowerRail localId="6"><position x="300" y="0"/><connectionPointIn><connection refLocalId="5"/></connectionPointIn></rightPowerRail>
+<comment localId="7" height="10" width="100"><position x="0" y="-20"/><content><xhtml:p>Latch</xhtml:p></content></comment>"#;
+    let i = import(&doc(body, &vars)).unwrap();
+    let r = &i.project.ladder[0].rungs[0];
+    assert_eq!(r.comment, "Latch");
+    assert_eq!(r.rows(), 2);
+    assert_eq!(elements(r).len(), 4);
+    assert!(matches!(
+        &r.cells[0][1].element,
+        Element::Contact { kind: ContactKind::NormallyClosed, .. }
+    ));
+    assert!(r.cells[0][0].link_down && r.cells[0][1].link_down && !r.cells[1][1].link_down);
+    assert_round_trip(&i.project);
+}
+
+/// Beremiz style: TON with PT from an inVariable and ET to an outVariable.
+#[test]
+fn beremiz_style_ton_with_in_variable() {
+    let vars = [
+        var("Go", "BOOL"),
+        var("Lamp", "BOOL"),
+        var("Elapsed", "TIME"),
+        r#"<variable name="T1"><type><derived name="TON"/></type></variable>"#.to_string(),
+    ]
+    .concat();
+    let body = r#"
+<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>
+<contact localId="2"><position x="50" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>Go</variable></contact>
+<inVariable localId="3"><position x="50" y="40"/><connectionPointOut/><expression>T#2s</expression></inVariable>
+<block localId="4" typeName="TON" instanceName="T1"><position x="100" y="10"/>
+  <inputVariables>
+    <variable formalParameter="IN"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+    <variable formalParameter="PT"><connectionPointIn><connection refLocalId="3"/></connectionPointIn></variable>
+  </inputVariables><inOutVariables/>
+  <outputVariables>
+    <variable formalParameter="Q"><connectionPointOut/></variable>
+    <variable formalParameter="ET"><connectionPointOut/></variable>
+  </outputVariables></block>
+<outVariable localId="5"><position x="200" y="40"/><connectionPointIn><connection refLocalId="4" formalParameter="ET"/></connectionPointIn><expression>Elapsed</expression></outVariable>
+<coil localId="6"><position x="250" y="10"/><connectionPointIn><connection refLocalId="4" formalParameter="Q"/></connectionPointIn><connectionPointOut/><variable>Lamp</variable></coil>
+<rightPowerRail localId="7"><position x="300" y="0"/><connectionPointIn><connection refLocalId="6"/></connectionPointIn></rightPowerRail>"#;
+    let i = import(&doc(body, &vars)).unwrap();
+    let r = &i.project.ladder[0].rungs[0];
+    let Element::Block(b) = &r.cells[0][1].element else { panic!("{:?}", r.cells[0]) };
+    assert_eq!(b.type_name, "TON");
+    assert_eq!(b.instance.as_deref(), Some("T1"));
+    assert_eq!(b.inputs[0].name, "PT");
+    assert_eq!(b.inputs[0].operand, "T#2s");
+    assert_eq!(b.outputs[0].name, "ET");
+    assert_eq!(b.outputs[0].operand, "Elapsed");
+    assert_eq!(r.cells[1][1].element, Element::Covered);
+    assert_round_trip(&i.project);
+}
+
+#[test]
+fn non_series_parallel_network_names_the_element() {
+    let vars = ["A", "B", "C", "D", "E", "Y"].map(|v| var(v, "BOOL")).concat();
+    let c = |id: u32, v: &str, from: &[u32], y: u32| {
+        let conns: String =
+            from.iter().map(|f| format!(r#"<connection refLocalId="{f}"/>"#)).collect();
+        format!(
+            r#"<contact localId="{id}"><position x="0" y="{y}"/><connectionPointIn>{conns}</connectionPointIn><connectionPointOut/><variable>{v}</variable></contact>"#
+        )
+    };
+    // A Wheatstone bridge: C links the middle of two parallel paths.
+    let body = [
+        r#"<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut/></leftPowerRail>"#.to_string(),
+        c(2, "A", &[1], 0),
+        c(3, "B", &[1], 50),
+        c(4, "C", &[2], 25),
+        c(5, "D", &[2], 0),
+        c(6, "E", &[3, 4], 50),
+        r#"<coil localId="7"><position x="0" y="0"/><connectionPointIn><connection refLocalId="5"/><connection refLocalId="6"/></connectionPointIn><connectionPointOut/><variable>Y</variable></coil>"#.to_string(),
+    ]
+    .concat();
+    let e = import(&doc(&body, &vars)).unwrap_err();
+    match &e {
+        ImportError::Element { pou, local_id, message } => {
+            assert_eq!(pou, "Main");
+            assert!(["2", "3", "4", "5", "6"].contains(&local_id.as_str()), "{e}");
+            assert!(message.contains("series-parallel"));
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn unknown_ref_and_garbage_are_errors() {
+    let body = r#"<coil localId="5"><position x="0" y="0"/><connectionPointIn><connection refLocalId="99"/></connectionPointIn><variable>Y</variable></coil>"#;
+    let e = import(&doc(body, &var("Y", "BOOL"))).unwrap_err();
+    assert!(e.to_string().contains("99"), "{e}");
+    for bad in ["", "garbage", "<project>", "<a></b>", "<?xml version='1.0'?><root/>", "<project><types><pous><pou/></pous></types></project>", "<project><types><pous><pou name='x' pouType='program'><body><LD><contact/></LD></body></pou></pous></types></project>", "\u{0}\u{1}<<<&&&"] {
+        assert!(import(bad).is_err(), "{bad:?} should fail");
+    }
+}
+
+#[test]
+fn st_project_round_trip() {
+    let mut p = Project::new("Demo");
+    p.source = "TYPE\n    Color : (Red, Green := 5, Blue);\n    Pt : STRUCT\n        x : INT := 1;\n        y : INT;\n    END_STRUCT;\n    Arr : ARRAY[1..3] OF INT := [1, 2, 3];\n    Small : INT(0..10);\nEND_TYPE\n\nVAR_GLOBAL\n    g AT %MW10 : INT := 5; (* a global *)\nEND_VAR\n\nFUNCTION Twice : INT\nVAR_INPUT\n    x : INT;\nEND_VAR\nTwice := x * 2;\nEND_FUNCTION\n\nFUNCTION_BLOCK Fb\nVAR_OUTPUT\n    s : STRING[20] := 'hi';\nEND_VAR\nEND_FUNCTION_BLOCK\n\nPROGRAM Main\nVAR_INPUT\n    Start : BOOL; (* start button *)\nEND_VAR\nVAR RETAIN\n    n : INT;\n    c : Color := Green;\nEND_VAR\nIF Start THEN\n    n := Twice(n) + g; (* comment kept *)\nEND_IF;\nEND_PROGRAM\n".into();
+    assert!(st_errors(&p).is_empty(), "{:?}", st_errors(&p));
+    let xml = export(&p);
+    assert!(xml.contains("xmlns=\"http://www.plcopen.org/xml/tc6_0201\""));
+    assert!(xml.contains("<coordinateInfo>"));
+    assert!(xml.contains("typeName=\"Main\""));
+    assert_round_trip(&p);
+    let back = import(&xml).unwrap().project;
+    assert!(st_errors(&back).is_empty());
+}
+
+#[test]
+fn starter_project_round_trip() {
+    assert_round_trip(&Project::new("Starter"));
+}
