@@ -120,7 +120,7 @@ impl Emitter<'_> {
     pub fn expr_lint(&mut self, e: &Expr) -> Result<Reg, CompileError> {
         let from = self.elem_of(e.ty)?;
         let r = self.expr(e, None)?;
-        if from == Elem::LInt {
+        if identity_widening(from, Elem::LInt) {
             return Ok(r);
         }
         let dst = self.alloc(1)?;
@@ -211,7 +211,7 @@ impl Emitter<'_> {
         }
         let from = self.elem_of(a.ty)?;
         let to = self.elem_of(to_ty)?;
-        if from == to {
+        if identity_widening(from, to) {
             return self.expr(a, hint);
         }
         if let (Elem::Real, Elem::DInt, ExprKind::Binary(BinOp::Mul, x, y)) = (from, to, &a.kind) {
@@ -519,5 +519,65 @@ impl Emitter<'_> {
             self.emit(Op::Conv { from: Elem::LInt, to, dst, a: dst });
         }
         Ok(dst)
+    }
+}
+
+/// True when converting `from` to `to` leaves a cell's bits unchanged (see the cell
+/// encoding in `vm::arith`): signed values are kept sign-extended and unsigned values and
+/// bit strings zero-extended, so widening within those families is free.
+fn identity_widening(from: Elem, to: Elem) -> bool {
+    if from == to {
+        return true;
+    }
+    let integral = |e: Elem| e.is_integral() || e == Elem::Bool;
+    if !integral(from) || !integral(to) || to == Elem::Bool {
+        return false;
+    }
+    if from.is_signed_int() {
+        return to.is_signed_int() && to.bits() >= from.bits();
+    }
+    // Zero-extended sources (unsigned, bit strings, BOOL).
+    if to.is_signed_int() {
+        to.bits() > from.bits()
+    } else {
+        to.bits() >= from.bits()
+    }
+}
+
+#[cfg(test)]
+mod identity_tests {
+    use super::identity_widening;
+    use crate::semantic::Elem;
+    use crate::vm::arith;
+
+    #[test]
+    fn identity_widenings_really_leave_the_bits_alone() {
+        let elems = [
+            Elem::Bool,
+            Elem::SInt,
+            Elem::Int,
+            Elem::DInt,
+            Elem::LInt,
+            Elem::USInt,
+            Elem::UInt,
+            Elem::UDInt,
+            Elem::ULInt,
+            Elem::Byte,
+            Elem::Word,
+            Elem::DWord,
+            Elem::LWord,
+        ];
+        for from in elems {
+            for to in elems {
+                if !identity_widening(from, to) {
+                    continue;
+                }
+                let (lo, hi) = from.int_range();
+                for v in [lo, hi, 0, 1, lo / 2, hi / 2] {
+                    let bits = arith::norm(from, v);
+                    assert_eq!(arith::convert(from, to, bits), bits, "{from:?} -> {to:?} of {v}");
+                }
+            }
+        }
     }
 }
