@@ -245,32 +245,18 @@ impl<'a> Checker<'a> {
     }
 
     fn common_of(&self, a: &Typed, b: &Typed) -> Option<Elem> {
-        // Reuse the operator rules through a tiny shim: pick the first widening target.
+        // The operator rules: an untyped literal adopts the other side's type, else the
+        // first widening target of both.
         let (ae, be) = (a.e.ty.elem()?, b.e.ty.elem()?);
-        let order = [
-            Elem::SInt,
-            Elem::USInt,
-            Elem::Byte,
-            Elem::Int,
-            Elem::UInt,
-            Elem::Word,
-            Elem::DInt,
-            Elem::UDInt,
-            Elem::DWord,
-            Elem::LInt,
-            Elem::ULInt,
-            Elem::LWord,
-            Elem::Real,
-            Elem::LReal,
-            Elem::Time,
-        ];
         if a.flexible && !b.flexible && be.is_num() {
             return Some(be);
         }
         if b.flexible && !a.flexible && ae.is_num() {
             return Some(ae);
         }
-        order.into_iter().find(|&t| super::expr::can_widen(ae, t) && super::expr::can_widen(be, t))
+        super::expr::WIDENING_ORDER
+            .into_iter()
+            .find(|&t| super::expr::can_widen(ae, t) && super::expr::can_widen(be, t))
     }
 
     fn want(&mut self, e: &ast::Expr, ty: Type) -> Option<Expr> {

@@ -30,7 +30,7 @@ enum NameRef {
 }
 
 /// The candidate types for implicit widening, smallest first.
-const WIDENING_ORDER: [Elem; 14] = [
+pub(super) const WIDENING_ORDER: [Elem; 14] = [
     Elem::SInt,
     Elem::USInt,
     Elem::Byte,
