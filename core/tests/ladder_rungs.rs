@@ -67,16 +67,11 @@ fn block(
     inputs: &[(&str, &str)],
     outputs: &[(&str, &str)],
 ) -> Element {
-    let pins = |v: &[(&str, &str)]| {
-        v.iter().map(|(n, o)| Pin { name: n.to_string(), operand: o.to_string() }).collect()
-    };
-    Element::Block(Block {
-        type_name: ty.into(),
-        instance: inst.map(str::to_string),
-        height: 1,
-        inputs: pins(inputs),
-        outputs: pins(outputs),
-    })
+    let pins = |v: &[(&str, &str)]| v.iter().map(|(n, o)| Pin::operand(n, o)).collect();
+    let mut b = Block::new(ty, inst);
+    b.inputs = pins(inputs);
+    b.outputs = pins(outputs);
+    Element::Block(b)
 }
 
 fn pou(decls: &str, rungs: Vec<Rung>) -> LadderPou {
@@ -284,7 +279,7 @@ fn validation_rules_report_exact_locations() {
     // unknown block
     let mut r = rung(&["[A] B (X)"]);
     r.cells[0][1].element = block("NOPE", None, &[], &[]);
-    let d = validate_with(&pou(D, vec![r]), &[], &[]);
+    let d = validate_with(&pou(D, vec![r]), &Catalog::standard());
     assert!(
         d.iter().any(|d| d.code == Code::LadderUnknownBlock && (d.row, d.column) == (0, 1)),
         "{d:?}"

@@ -1,13 +1,25 @@
 //! PLCopen XML import/export: real samples, hand-written LD snippets, errors, round trips.
-//! The samples are read from `../shared/samples/plcopen/` (beside the repository, as in CI).
+//! The samples are read from `shared/samples/plcopen/` beside the repository (as in CI; for a
+//! worktree nested deeper, the nearest such folder above the crate).
 
 use plc_core::ladder::{CoilKind, ContactKind, Element, Rung};
 use plc_core::plcopen::{export, import, load, ImportError};
 use plc_core::project::Project;
 
+/// The path of a sample: `shared/samples/plcopen/NAME` in the nearest folder above the crate
+/// that has one.
+fn sample_path(name: &str) -> String {
+    let crate_dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    crate_dir
+        .ancestors()
+        .map(|a| a.join("shared/samples/plcopen"))
+        .find(|d| d.is_dir())
+        .map(|d| d.join(name).display().to_string())
+        .unwrap_or_else(|| panic!("no shared/samples/plcopen above {}", crate_dir.display()))
+}
+
 fn sample(name: &str) -> plc_core::plcopen::Import {
-    load(&format!("{}/../../shared/samples/plcopen/{name}", env!("CARGO_MANIFEST_DIR")))
-        .unwrap_or_else(|e| panic!("{name}: {e}"))
+    load(&sample_path(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
 fn st_errors(p: &Project) -> Vec<String> {
@@ -162,11 +174,7 @@ fn fbd_and_sfc_are_skipped_with_warnings() {
 
 #[test]
 fn mixing_tank_reports_unsupported_second_power_input() {
-    let e = load(&format!(
-        "{}/../../shared/samples/plcopen/ld_mixing_tank_plant.xml",
-        env!("CARGO_MANIFEST_DIR")
-    ))
-    .unwrap_err();
+    let e = load(&sample_path("ld_mixing_tank_plant.xml")).unwrap_err();
     let msg = e.to_string();
     assert!(msg.contains("Mixer") && msg.contains("localId"), "{msg}");
 }

@@ -4,7 +4,7 @@
 //!
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
 //! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder
-//! diagrams (W0005–W0006 are ladder warnings), W0001– warnings.
+//! diagrams (W0005–W0009 are ladder warnings), W0001– warnings.
 
 use serde::Serialize;
 
@@ -126,6 +126,13 @@ problem_codes! {
     LadderStrayCovered = "E0409": "a covered cell with no block above it",
     LadderBadJump = "E0410": "a jump to an unknown label or backwards",
     LadderBadGrid = "E0411": "a rung whose rows differ in length or whose block leaves the grid",
+    LadderUnknownPin = "E0412": "a block pin the block type does not have, a pin given twice, or a pin that is the block's power input",
+    LadderPinType = "E0413": "a block pin operand whose type does not fit the pin",
+    LadderMissingPin = "E0414": "a block input or VAR_IN_OUT that the block needs but does not get",
+    LadderBadWiredPin = "E0415": "a wired block input outside the block's rows, sharing a row, with an operand too, or not BOOL",
+    LadderBadPowerPin = "E0416": "a block power input or output that cannot carry the rung's power (not BOOL, or ENO without EN)",
+    LadderInstanceType = "E0417": "a block instance declared with another type, or an instance given to a FUNCTION",
+    LadderUndeclaredOperand = "E0418": "a ladder operand naming a variable that is not declared",
 
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",
@@ -134,6 +141,7 @@ problem_codes! {
     CaseWithoutMatch = "W0004": "a CASE label that can never match the selector's type",
     LadderEnableFromRail = "W0005": "a ladder block whose enable is tied straight to the rail",
     LadderDuplicateCoil = "W0006": "two coils writing the same variable in one ladder POU",
+    LadderPinFromRail = "W0007": "a wired block input tied straight to the rail (always TRUE)",
 }
 
 impl std::fmt::Display for Code {

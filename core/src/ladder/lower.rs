@@ -3,9 +3,9 @@
 use std::fmt::Write as _;
 use std::ops::Range;
 
-use super::model::{Block, CoilKind, ContactKind, Element, LadderPou, LadderPouKind};
+use super::blocks::block_code;
+use super::model::{CoilKind, ContactKind, Element, LadderPou, LadderPouKind};
 use super::network::{Network, RAIL};
-use super::validate::standard_fb;
 
 /// Prefixes of the hidden variables the lowering declares.
 pub const HIDDEN_PREFIXES: &[&str] = &["LdPow_", "LdEdge_", "LdJmp_"];
@@ -61,115 +61,6 @@ pub fn power_map(pou: &LadderPou) -> Vec<(usize, usize, usize, String)> {
         }
     }
     out
-}
-
-pub(crate) fn compare_op(name: &str) -> Option<&'static str> {
-    Some(match name.to_ascii_uppercase().as_str() {
-        "EQ" => "=",
-        "NE" => "<>",
-        "GT" => ">",
-        "GE" => ">=",
-        "LT" => "<",
-        "LE" => "<=",
-        _ => return None,
-    })
-}
-
-fn binary_op(name: &str) -> Option<&'static str> {
-    Some(match name.to_ascii_uppercase().as_str() {
-        "ADD" => "+",
-        "SUB" => "-",
-        "MUL" => "*",
-        "DIV" => "/",
-        "MOD" => "MOD",
-        "AND" => "AND",
-        "OR" => "OR",
-        "XOR" => "XOR",
-        _ => return None,
-    })
-}
-
-/// The value a function block computes from its input operands, as ST (`a + b`, `SQRT(x)`).
-pub(crate) fn function_value(b: &Block) -> String {
-    let args: Vec<&str> = b.inputs.iter().map(|p| p.operand.trim()).collect();
-    let name = b.type_name.trim();
-    if let Some(op) = binary_op(name) {
-        if args.len() >= 2 {
-            return args
-                .iter()
-                .map(|a| format!("({a})"))
-                .collect::<Vec<_>>()
-                .join(&format!(" {op} "));
-        }
-    }
-    match name.to_ascii_uppercase().as_str() {
-        "MOVE" => args.first().map_or_else(String::new, |a| (*a).to_string()),
-        "NOT" => format!("NOT ({})", args.first().copied().unwrap_or_default()),
-        _ => format!("{name}({})", args.join(", ")),
-    }
-}
-
-/// The statements of an FB call: `Inst(IN := power, PT := …);` and output copies. Returns
-/// the statements and the power output expression.
-pub(crate) fn fb_call(b: &Block, power: &str) -> (Vec<String>, String) {
-    let inst = b.instance.as_deref().unwrap_or_default().trim().to_string();
-    let mut args = Vec::new();
-    let mut out = power.to_string();
-    if let Some((_, pin, q)) = standard_fb(&b.type_name) {
-        if !b.inputs.iter().any(|p| p.name.eq_ignore_ascii_case(pin)) {
-            args.push(format!("{pin} := {power}"));
-        }
-        out = format!("{inst}.{q}");
-    }
-    for p in &b.inputs {
-        args.push(format!("{} := {}", p.name.trim(), p.operand.trim()));
-    }
-    let mut stmts = vec![format!("{inst}({});", args.join(", "))];
-    for p in &b.outputs {
-        stmts.push(format!("{} := {inst}.{};", p.operand.trim(), p.name.trim()));
-    }
-    (stmts, out)
-}
-
-/// The statements of a function block (EN = power): compare gives `power AND (a > b)`,
-/// others `IF power THEN out := f(…); END_IF;` with ENO = power.
-pub(crate) fn function_call(b: &Block, power: &str) -> (Vec<String>, String) {
-    if let Some(op) = compare_op(&b.type_name) {
-        let args: Vec<&str> = b.inputs.iter().map(|p| p.operand.trim()).collect();
-        let cmp = match args.as_slice() {
-            [a, rest @ ..] if !rest.is_empty() => {
-                let mut parts = Vec::new();
-                let mut prev = a;
-                for x in rest {
-                    parts.push(format!("({prev} {op} {x})"));
-                    prev = x;
-                }
-                parts.join(" AND ")
-            }
-            _ => "FALSE".to_string(),
-        };
-        let out = if power == "TRUE" { cmp } else { format!("{power} AND {cmp}") };
-        return (Vec::new(), out);
-    }
-    let value = function_value(b);
-    let stmts = match b.outputs.first() {
-        Some(o) => {
-            let assign = format!("{} := {value};", o.operand.trim());
-            if power == "TRUE" {
-                vec![assign]
-            } else {
-                vec![format!("IF {power} THEN {assign} END_IF;")]
-            }
-        }
-        None => Vec::new(),
-    };
-    (stmts, power.to_string())
-}
-
-/// Whether a block is a function block (has an instance) rather than a function.
-pub(crate) fn is_fb(b: &Block) -> bool {
-    standard_fb(&b.type_name).is_some()
-        || b.instance.as_deref().is_some_and(|i| !i.trim().is_empty())
 }
 
 /// The ST keyword pair of a POU kind.
@@ -254,7 +145,7 @@ pub fn lower(pou: &LadderPou) -> LoweredPou {
                 _ => format!("({})", feeders.join(" OR ")),
             }
         };
-        for e in &net.elements {
+        for (i, e) in net.elements.iter().enumerate() {
             let pow = power_var(ri, e.row, e.col);
             let _ = writeln!(hidden, "    {pow} : BOOL;");
             let input = if net.powered[e.input] { node_expr(e.input) } else { "FALSE".into() };
@@ -298,10 +189,20 @@ pub fn lower(pou: &LadderPou) -> LoweredPou {
                     }
                 }
                 Element::Block(b) => {
-                    let (mut s, out) =
-                        if is_fb(b) { fb_call(b, &input) } else { function_call(b, &input) };
-                    stmts.append(&mut s);
-                    stmts.push(format!("{pow} := {out};"));
+                    let wired: Vec<Option<String>> = (0..b.inputs.len())
+                        .map(|k| {
+                            net.pin_node(i, k).map(|n| {
+                                if net.powered[n] {
+                                    node_expr(n)
+                                } else {
+                                    "FALSE".to_string()
+                                }
+                            })
+                        })
+                        .collect();
+                    let code = block_code(b, &input, &wired);
+                    stmts.extend(code.statements);
+                    stmts.push(format!("{pow} := {};", code.power_out.render(&input)));
                 }
                 Element::Jump { .. } => {
                     stmts.push(format!("{pow} := {input};"));

@@ -2,12 +2,15 @@
 //! lowering to ST (so ladder runs on the one ST compiler and VM), the readable ST view,
 //! and the glue that turns a project's ST and LD POUs into one source text.
 
+mod blocks;
+pub mod catalog;
 pub mod lower;
 pub mod model;
 mod network;
 pub mod st_view;
 pub mod validate;
 
+pub use catalog::Catalog;
 pub use lower::{is_hidden_name, lower, power_map, power_var, LineMap, LoweredPou};
 pub use model::*;
 pub use st_view::{st_view, st_view_pou};
@@ -88,8 +91,9 @@ pub struct ProjectSource {
 /// with every ladder diagnostic (errors and warnings) when any ladder POU has errors.
 pub fn project_source(project: &Project) -> Result<ProjectSource, Vec<(String, LadderDiagnostic)>> {
     let mut diags = Vec::new();
+    let catalog = Catalog::of_project(project);
     for pou in &project.ladder {
-        diags.extend(validate(pou).into_iter().map(|d| (pou.name.clone(), d)));
+        diags.extend(validate_with(pou, &catalog).into_iter().map(|d| (pou.name.clone(), d)));
     }
     if diags.iter().any(|(_, d)| d.is_error()) {
         return Err(diags);

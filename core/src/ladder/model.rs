@@ -154,6 +154,12 @@ pub enum CoilKind {
 
 /// A block in a rung: a standard FB (TON, CTU, …), an operation (ADD, GT, MOVE, …) or a user
 /// FUNCTION_BLOCK / FUNCTION of the project.
+///
+/// Power enters the block at one input and leaves it at one output ([`Block::power_input`],
+/// [`Block::power_output`]). When the power input is `EN`, the block runs only on scans where
+/// power reaches it (IEC 61131-3 execution control): otherwise it is skipped, its outputs keep
+/// their values and `ENO` is FALSE. When the power input is a BOOL input (`IN` of a timer),
+/// the block runs on every scan with that input following the power.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Block {
     /// The block type as named in ST (`TON`, `CTU`, `GT`, `ADD`, `MOVE`, `MyFb`).
@@ -163,19 +169,123 @@ pub struct Block {
     pub instance: Option<String>,
     /// Rows the block spans (at least 1).
     pub height: u32,
-    /// Input pins other than the power input, with their operands (`PT` ← `T#2s`).
+    /// Input pins other than the power input: bound to operands (`PT` ← `T#2s`) or wired to
+    /// a contact network on one of the block's rows (`R` of a counter).
     #[serde(default)]
     pub inputs: Vec<Pin>,
     /// Output pins other than the power output, with the variables they write (`ET` → `t1`).
     #[serde(default)]
     pub outputs: Vec<Pin>,
+    /// VAR_IN_OUT pins, with the variables passed to them.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub in_outs: Vec<Pin>,
+    /// The input that takes the rung's power; `None` is the type's own: `IN`, `CU`, `CD`,
+    /// `CLK`, `S1` or `S` for the standard FBs, `EN` for everything else.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub power_in: Option<String>,
+    /// The output that carries power on; `None` is the type's own: `Q`, `QU` or `Q1` for the
+    /// standard FBs, `OUT` for comparisons, `ENO` for everything else.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub power_out: Option<String>,
 }
 
-/// A block pin bound to an operand.
+/// The standard FBs and the pins that carry power through them (IEC 61131-3: the first
+/// BOOL input and the first BOOL output).
+const STANDARD_FB_POWER: &[(&str, &str, &str)] = &[
+    ("TON", "IN", "Q"),
+    ("TOF", "IN", "Q"),
+    ("TP", "IN", "Q"),
+    ("RTO", "IN", "Q"),
+    ("CTU", "CU", "Q"),
+    ("CTD", "CD", "Q"),
+    ("CTUD", "CU", "QU"),
+    ("R_TRIG", "CLK", "Q"),
+    ("F_TRIG", "CLK", "Q"),
+    ("SR", "S1", "Q1"),
+    ("RS", "S", "Q1"),
+];
+
+/// Comparison functions: power leaves through their BOOL result.
+const COMPARISONS: &[&str] = &["EQ", "NE", "GT", "GE", "LT", "LE"];
+
+/// The power pins of a standard FB type (`TON` → `("IN", "Q")`), if it is one.
+pub fn standard_fb_power(type_name: &str) -> Option<(&'static str, &'static str)> {
+    STANDARD_FB_POWER
+        .iter()
+        .find(|(n, _, _)| n.eq_ignore_ascii_case(type_name.trim()))
+        .map(|&(_, i, o)| (i, o))
+}
+
+/// Whether `type_name` is a comparison function (`GT`, `EQ`, …).
+pub fn is_comparison(type_name: &str) -> bool {
+    COMPARISONS.iter().any(|n| n.eq_ignore_ascii_case(type_name.trim()))
+}
+
+impl Block {
+    /// A one-row block of `type_name` with an optional instance and no pins.
+    pub fn new(type_name: &str, instance: Option<&str>) -> Self {
+        Block {
+            type_name: type_name.to_string(),
+            instance: instance.map(str::to_string),
+            height: 1,
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+            in_outs: Vec::new(),
+            power_in: None,
+            power_out: None,
+        }
+    }
+
+    /// The input that takes the rung's power (`EN`, `IN`, `CU`, …).
+    pub fn power_input(&self) -> &str {
+        match &self.power_in {
+            Some(p) if !p.trim().is_empty() => p.trim(),
+            _ => standard_fb_power(&self.type_name).map_or("EN", |(i, _)| i),
+        }
+    }
+
+    /// The output that carries power on (`ENO`, `Q`, `OUT`, …).
+    pub fn power_output(&self) -> &str {
+        match &self.power_out {
+            Some(p) if !p.trim().is_empty() => p.trim(),
+            _ => match standard_fb_power(&self.type_name) {
+                Some((_, o)) => o,
+                None if is_comparison(&self.type_name) => "OUT",
+                None => "ENO",
+            },
+        }
+    }
+
+    /// Whether the block runs only when power reaches its `EN` input.
+    pub fn has_enable(&self) -> bool {
+        self.power_input().eq_ignore_ascii_case("EN")
+    }
+}
+
+/// A block pin bound to an operand, or (inputs only) wired to a contact network.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Pin {
     /// The formal parameter name (`PT`, `IN2`, `CV`).
     pub name: String,
-    /// The operand: a variable, literal or direct address.
+    /// The operand: a variable, literal or direct address; empty for a wired pin.
+    #[serde(default)]
     pub operand: String,
+    /// For a BOOL input driven by its own contact network, as CODESYS and OpenPLC draw the
+    /// reset input of a counter: the block row (1 = the row below the block's top row, up to
+    /// `height - 1`) whose left edge the network ends at. The pin then takes the power that
+    /// reaches the left edge of the block on that row.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wired_row: Option<u32>,
+}
+
+impl Pin {
+    /// A pin bound to an operand.
+    pub fn operand(name: &str, operand: &str) -> Self {
+        Pin { name: name.to_string(), operand: operand.to_string(), wired_row: None }
+    }
+
+    /// An input wired to the contact network ending on block row `row`.
+    pub fn wired(name: &str, row: u32) -> Self {
+        Pin { name: name.to_string(), operand: String::new(), wired_row: Some(row) }
+    }
 }

@@ -18,11 +18,28 @@ pub(crate) struct Placed<'a> {
     pub output: usize,
 }
 
+/// A block input wired to a contact network: it consumes the power of `node`.
+#[derive(Debug, Clone)]
+pub(crate) struct PinSink {
+    /// Index of the block in [`Network::elements`].
+    pub block: usize,
+    /// Index of the pin in the block's inputs.
+    pub pin: usize,
+    /// Grid row of the pin (the block's row plus its `wired_row`).
+    pub row: usize,
+    /// The block's column.
+    pub col: usize,
+    /// The node whose power the pin takes.
+    pub node: usize,
+}
+
 /// A rung's nodes and elements.
 #[derive(Debug)]
 pub(crate) struct Network<'a> {
     /// Elements in evaluation order: column by column, top to bottom.
     pub elements: Vec<Placed<'a>>,
+    /// Wired block inputs, in the order of their blocks.
+    pub pins: Vec<PinSink>,
     /// Whether power from the rail reaches a node.
     pub powered: Vec<bool>,
     /// Whether every power path to a node passes a condition (contact or block).
@@ -75,6 +92,18 @@ impl<'a> Network<'a> {
                 });
             }
         }
+        let mut pins = Vec::new();
+        for (i, e) in elements.iter().enumerate() {
+            let Element::Block(b) = e.element else { continue };
+            for (k, p) in b.inputs.iter().enumerate() {
+                let Some(w) = p.wired_row else { continue };
+                let row = e.row + w as usize;
+                if w == 0 || w >= b.height.max(1) || row >= rows {
+                    continue; // reported by validation
+                }
+                pins.push(PinSink { block: i, pin: k, row, col: e.col, node: node[e.col][row] });
+            }
+        }
         let n = place.len();
         let mut powered = vec![false; n];
         let mut conditioned = vec![true; n];
@@ -93,12 +122,17 @@ impl<'a> Network<'a> {
                 conditioned[e.output] &= cond;
             }
         }
-        Network { elements, powered, conditioned, place }
+        Network { elements, pins, powered, conditioned, place }
     }
 
-    /// Whether some element takes its power from `node`.
+    /// Whether some element or wired block input takes its power from `node`.
     pub fn consumed(&self, node: usize) -> bool {
-        self.elements.iter().any(|e| e.input == node)
+        self.elements.iter().any(|e| e.input == node) || self.pins.iter().any(|p| p.node == node)
+    }
+
+    /// The wired input `pin` of the block at `elements[block]`, if it is wired and in the grid.
+    pub fn pin_node(&self, block: usize, pin: usize) -> Option<usize> {
+        self.pins.iter().find(|p| p.block == block && p.pin == pin).map(|p| p.node)
     }
 
     /// The powered elements feeding `node`.
@@ -109,26 +143,68 @@ impl<'a> Network<'a> {
             .filter(move |(_, e)| e.output == node && self.powered[e.input])
     }
 
-    /// `None` when the powered part of the network is series-parallel; otherwise the node
-    /// where the reduction got stuck.
+    /// `None` when the network feeding every output (a coil, jump or return, a wired block
+    /// input, or a block with nothing after it) is series-parallel between the rail and that
+    /// output; otherwise the node where the reduction got stuck. Each output is checked on its
+    /// own cone, so outputs may share the beginning of their paths (a timer's output feeding
+    /// both a coil and another block's reset input).
     pub fn non_series_parallel(&self) -> Option<usize> {
-        let sink = self.place.len();
+        let n = self.place.len();
+        let live: Vec<&Placed<'a>> =
+            self.elements.iter().filter(|e| self.powered[e.input]).collect();
+        // Sinks get ids from `n` up; every output gets its own.
+        let mut next_sink = n;
         let mut edges: Vec<(usize, usize)> = Vec::new();
-        for e in self.elements.iter().filter(|e| self.powered[e.input]) {
-            let out = if is_terminal(e.element) { sink } else { e.output };
-            edges.push((e.input, out));
-        }
-        // Dead ends (a block with nothing after it) end at the sink.
-        let ends: Vec<usize> = edges
-            .iter()
-            .map(|&(_, v)| v)
-            .filter(|&v| v != sink && !edges.iter().any(|&(u, _)| u == v))
-            .collect();
-        for edge in &mut edges {
-            if ends.contains(&edge.1) {
-                edge.1 = sink;
+        for e in &live {
+            if is_terminal(e.element) {
+                edges.push((e.input, next_sink));
+                next_sink += 1;
+            } else {
+                edges.push((e.input, e.output));
             }
         }
+        for p in self.pins.iter().filter(|p| self.powered[p.node]) {
+            edges.push((p.node, next_sink));
+            next_sink += 1;
+        }
+        let mut sinks: Vec<usize> = (n..next_sink).collect();
+        // Dead ends (a block with nothing after it) are outputs too.
+        let mut ends: Vec<usize> = edges
+            .iter()
+            .map(|&(_, v)| v)
+            .filter(|&v| v < n && !edges.iter().any(|&(u, _)| u == v))
+            .collect();
+        ends.sort_unstable();
+        ends.dedup();
+        sinks.extend(ends);
+        for sink in sinks {
+            // The cone of the sink: every edge from which it can be reached.
+            let mut reach = vec![false; next_sink];
+            reach[sink] = true;
+            loop {
+                let mut changed = false;
+                for &(u, v) in &edges {
+                    if reach[v] && !reach[u] {
+                        reach[u] = true;
+                        changed = true;
+                    }
+                }
+                if !changed {
+                    break;
+                }
+            }
+            let cone: Vec<(usize, usize)> =
+                edges.iter().copied().filter(|&(_, v)| reach[v]).collect();
+            if let Some(node) = self.stuck_node(cone, sink) {
+                return Some(node);
+            }
+        }
+        None
+    }
+
+    /// Series-parallel reduction of `edges` between the rail and `sink`: `None` when it
+    /// reduces to one edge, else the leftmost node where it got stuck.
+    fn stuck_node(&self, mut edges: Vec<(usize, usize)>, sink: usize) -> Option<usize> {
         loop {
             let before = edges.len();
             edges.sort_unstable();
@@ -159,11 +235,14 @@ impl<'a> Network<'a> {
         if edges.len() <= 1 {
             return None;
         }
-        edges.iter().flat_map(|&(u, v)| [u, v]).filter(|&x| x != RAIL && x != sink).min_by_key(
-            |&x| {
+        let n = self.place.len();
+        edges
+            .iter()
+            .flat_map(|&(u, v)| [u, v])
+            .filter(|&x| x != RAIL && x != sink && x < n)
+            .min_by_key(|&x| {
                 let (r, c) = self.place[x];
                 (c, r)
-            },
-        )
+            })
     }
 }

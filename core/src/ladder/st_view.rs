@@ -3,7 +3,8 @@
 
 use std::collections::HashMap;
 
-use super::lower::{fb_call, function_call, is_fb, jumps, pou_keywords};
+use super::blocks::{block_code, PowerOut};
+use super::lower::{jumps, pou_keywords};
 use super::model::{CoilKind, ContactKind, Element, LadderPou};
 use super::network::{Network, RAIL};
 
@@ -169,16 +170,33 @@ fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
                 }
                 Element::Block(b) => {
                     let p = render(&input);
-                    let (stmts, out) = if is_fb(b) { fb_call(b, &p) } else { function_call(b, &p) };
-                    for s in stmts {
+                    let wired: Vec<Option<String>> = (0..b.inputs.len())
+                        .map(|k| {
+                            net.pin_node(i, k).map(|n| {
+                                if !net.powered[n] {
+                                    return "FALSE".to_string();
+                                }
+                                let feed = or(net
+                                    .feeders(n)
+                                    .map(|(j, _)| outs.get(&j).cloned().unwrap_or(B::False))
+                                    .collect());
+                                render(&feed)
+                            })
+                        })
+                        .collect();
+                    let code = block_code(b, &p, &wired);
+                    for s in code.statements {
                         emit(s);
                     }
-                    if out == p {
-                        input
-                    } else if !is_fb(b) && out.starts_with(&format!("{p} AND ")) {
-                        and(input, atom(out[p.len() + 5..].to_string()))
-                    } else {
-                        atom(out)
+                    match code.power_out {
+                        PowerOut::Same => input,
+                        PowerOut::And(x) => and(input, atom(x)),
+                        PowerOut::AndThen(x) => match input {
+                            B::True => atom(x),
+                            B::Or(_) => B::Atom(format!("(({p}) AND_THEN {x})")),
+                            _ => B::Atom(format!("({p} AND_THEN {x})")),
+                        },
+                        PowerOut::Value(x) => atom(x),
                     }
                 }
                 Element::Jump { .. } => {

@@ -6,20 +6,6 @@ use crate::ladder::{CoilKind, ContactKind, Element, LadderPou, LadderPouKind};
 use crate::syntax::ast::{Item, VarSection};
 use std::fmt::Write;
 
-/// The pins that carry power through a block, by block type.
-pub(crate) fn power_pins(type_name: &str) -> (&'static str, &'static str) {
-    match type_name.to_ascii_uppercase().as_str() {
-        "TON" | "TOF" | "TP" | "RTO" => ("IN", "Q"),
-        "CTU" => ("CU", "Q"),
-        "CTD" => ("CD", "Q"),
-        "CTUD" => ("CU", "QU"),
-        "R_TRIG" | "F_TRIG" => ("CLK", "Q"),
-        "SR" => ("S1", "Q1"),
-        "RS" => ("S", "Q1"),
-        _ => ("EN", "ENO"),
-    }
-}
-
 struct Uf(Vec<usize>);
 
 impl Uf {
@@ -138,7 +124,7 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
             for &(r, c, eid) in &items {
                 if uf.find(node(r, c + 1)) == root {
                     let param = match &rung.cells[r][c].element {
-                        Element::Block(b) => Some(power_pins(&b.type_name).1.to_string()),
+                        Element::Block(b) => Some(b.power_output().to_string()),
                         _ => None,
                     };
                     v.push((eid, param));
@@ -202,7 +188,7 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
                     let _ = write!(body, "            <return localId=\"{eid}\" height=\"20\" width=\"40\">\n              <position x=\"{x}\" y=\"{y}\"/>\n{cin}            </return>\n");
                 }
                 Element::Block(b) => {
-                    let (pin_in, pin_out) = power_pins(&b.type_name);
+                    let (pin_in, pin_out) = (b.power_input(), b.power_output());
                     let h = b.height.max(1) as i64 * DY;
                     let _ = write!(body, "            <block localId=\"{eid}\" height=\"{h}\" width=\"60\" typeName=\"{}\"", esc(&b.type_name));
                     if let Some(inst) = &b.instance {

@@ -152,13 +152,8 @@ fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError> {
                 if n.child("inOutVariables").is_some_and(|v| v.child("variable").is_some()) {
                     return Err(err(format!("block {type_name}: in-out pins are not supported")));
                 }
-                let block = Block {
-                    type_name,
-                    instance,
-                    height: 1,
-                    inputs: Vec::new(),
-                    outputs: Vec::new(),
-                };
+                let mut block = Block::new(&type_name, None);
+                block.instance = instance;
                 Kind::Block { block, power_in: Vec::new(), pin_inputs }
             }
             "inVariable" => Kind::InVar(text_of(n, "expression")),
@@ -235,7 +230,7 @@ pub(crate) fn import_ld(
             let srcs = conns.iter().map(|c| lookup(c, &id)).collect::<Result<Vec<_>, _>>()?;
             if let [s] = srcs[..] {
                 if let Kind::InVar(expr) = &els[s].kind {
-                    inputs.push(Pin { name: pin, operand: expr.clone() });
+                    inputs.push(Pin::operand(&pin, expr));
                     consumed[s] = true;
                     continue;
                 }
@@ -273,7 +268,7 @@ pub(crate) fn import_ld(
                         "POU {pou}: input {pin} of block localId {id} was driven by contact localId {}; it became the operand {operand}",
                         els[s].id
                     ));
-                    inputs.push(Pin { name: pin, operand });
+                    inputs.push(Pin::operand(&pin, &operand));
                 }
                 None => {
                     return Err(err(
@@ -311,7 +306,7 @@ pub(crate) fn import_ld(
             ));
         };
         let pin = c.param.clone().unwrap_or_else(|| "OUT".into());
-        block.outputs.push(Pin { name: pin, operand: expr });
+        block.outputs.push(Pin::operand(&pin, &expr));
     }
     for e in &mut els {
         if let Kind::Block { block, .. } = &mut e.kind {

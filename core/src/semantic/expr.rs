@@ -49,7 +49,7 @@ pub(super) const WIDENING_ORDER: [Elem; 14] = [
 
 /// True when a value of `from` converts to `to` implicitly without loss (or, for integers
 /// into REAL, the way CODESYS allows).
-pub(super) fn can_widen(from: Elem, to: Elem) -> bool {
+pub(crate) fn can_widen(from: Elem, to: Elem) -> bool {
     if from == to {
         return true;
     }

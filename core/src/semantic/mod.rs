@@ -19,6 +19,11 @@ pub mod types;
 pub use ir::{BinOp, Builtin, CallArg, Expr, ExprKind, InitValue, Place, Program, SysVar, UnOp};
 pub use types::{Elem, PouId, Type, TypeTable};
 
+/// The implicit widening rule, for front-ends that check operands before the checker runs.
+pub(crate) use expr::can_widen;
+/// The standard function blocks' ST source (their pins are read from it by the ladder).
+pub(crate) use prelude::SOURCE as PRELUDE_SOURCE;
+
 use crate::diagnostics::{has_errors, Diagnostic};
 use crate::syntax;
 

@@ -5,10 +5,14 @@ use std::fmt;
 
 use serde::Serialize;
 
-use super::model::{Block, CoilKind, Element, LadderPou, Rung};
+mod block;
+
+use super::catalog::Catalog;
+use super::model::{CoilKind, Element, LadderPou, Rung};
 use super::network::{is_terminal, Network};
 use crate::diagnostics::{Code, Severity};
 use crate::syntax::{self, ExprKind};
+use block::{validate_block, At, Context};
 
 /// A problem in a ladder POU. `rung`, `row` and `column` are 0-based; `Display` prints them
 /// 1-based as students count.
@@ -56,67 +60,19 @@ impl fmt::Display for LadderDiagnostic {
     }
 }
 
-/// Standard function blocks: (name, power input, power output).
-pub(crate) const STANDARD_FBS: &[(&str, &str, &str)] = &[
-    ("TON", "IN", "Q"),
-    ("TOF", "IN", "Q"),
-    ("TP", "IN", "Q"),
-    ("RTO", "IN", "Q"),
-    ("CTU", "CU", "Q"),
-    ("CTD", "CD", "Q"),
-    ("CTUD", "CU", "QU"),
-    ("R_TRIG", "CLK", "Q"),
-    ("F_TRIG", "CLK", "Q"),
-    ("SR", "S1", "Q1"),
-    ("RS", "S", "Q1"),
-];
-
-/// Standard functions and operations usable as blocks.
-pub(crate) const STANDARD_FUNCTIONS: &[&str] = &[
-    "EQ",
-    "NE",
-    "GT",
-    "GE",
-    "LT",
-    "LE",
-    "ADD",
-    "SUB",
-    "MUL",
-    "DIV",
-    "MOD",
-    "SQRT",
-    "MOVE",
-    "AND",
-    "OR",
-    "XOR",
-    "NOT",
-    "SHL",
-    "SHR",
-    "ROL",
-    "ROR",
-    "BCD_TO_INT",
-    "INT_TO_BCD",
-];
-
-/// The standard FB entry for a block type, if it is one.
-pub(crate) fn standard_fb(name: &str) -> Option<(&'static str, &'static str, &'static str)> {
-    STANDARD_FBS.iter().copied().find(|(n, _, _)| n.eq_ignore_ascii_case(name))
-}
-
-/// Validates a ladder POU. Block types that are not standard are accepted when they are
-/// identifiers (the ST checker reports unknown ones); see [`validate_with`].
+/// Validates a ladder POU on its own. Block types that are not standard are accepted when
+/// they are identifiers, and pins are not checked against declarations (the ST checker
+/// reports what is wrong later); see [`validate_with`].
 pub fn validate(pou: &LadderPou) -> Vec<LadderDiagnostic> {
     validate_inner(pou, None)
 }
 
-/// Validates a ladder POU knowing the names of the project's own FUNCTION_BLOCKs and
-/// FUNCTIONs (`user_fbs`, `user_functions`), so unknown block types are reported here.
-pub fn validate_with(
-    pou: &LadderPou,
-    user_fbs: &[String],
-    user_functions: &[String],
-) -> Vec<LadderDiagnostic> {
-    validate_inner(pou, Some((user_fbs, user_functions)))
+/// Validates a ladder POU knowing the project ([`Catalog::of_project`]): unknown block types,
+/// pins the block type does not have, operands that are not declared or do not fit their
+/// pin, and wrong power pins are reported at their rung, row and column.
+pub fn validate_with(pou: &LadderPou, catalog: &Catalog) -> Vec<LadderDiagnostic> {
+    let ctx = Context { catalog, scope: catalog.scope(&pou.declarations) };
+    validate_inner(pou, Some(&ctx))
 }
 
 fn is_operand(text: &str) -> bool {
@@ -135,7 +91,7 @@ fn is_value(text: &str) -> bool {
     syntax::parse_expression(text).is_ok()
 }
 
-fn validate_inner(pou: &LadderPou, users: Option<(&[String], &[String])>) -> Vec<LadderDiagnostic> {
+fn validate_inner(pou: &LadderPou, ctx: Option<&Context<'_>>) -> Vec<LadderDiagnostic> {
     let mut out = Vec::new();
     let labels: HashMap<String, usize> = pou
         .rungs
@@ -145,118 +101,15 @@ fn validate_inner(pou: &LadderPou, users: Option<(&[String], &[String])>) -> Vec
         .collect();
     let mut coils: HashMap<String, (usize, usize, usize)> = HashMap::new();
     for (ri, rung) in pou.rungs.iter().enumerate() {
-        validate_rung(ri, rung, users, &labels, &mut coils, &mut out);
+        validate_rung(ri, rung, ctx, &labels, &mut coils, &mut out);
     }
     out
-}
-
-#[allow(clippy::collapsible_match)]
-fn validate_block(
-    ri: usize,
-    r: usize,
-    c: usize,
-    b: &Block,
-    users: Option<(&[String], &[String])>,
-    out: &mut Vec<LadderDiagnostic>,
-) {
-    let name = b.type_name.trim();
-    let std_fb = standard_fb(name).is_some();
-    let std_fn = STANDARD_FUNCTIONS.iter().any(|n| n.eq_ignore_ascii_case(name));
-    let user_fb = users.is_some_and(|(fbs, _)| fbs.iter().any(|n| n.eq_ignore_ascii_case(name)));
-    let user_fn = users.is_some_and(|(_, fns)| fns.iter().any(|n| n.eq_ignore_ascii_case(name)));
-    let known = std_fb
-        || std_fn
-        || user_fb
-        || user_fn
-        || (users.is_none()
-            && syntax::parse_expression(name).is_ok_and(|e| matches!(e.kind, ExprKind::Name(_))));
-    if name.is_empty() {
-        out.push(LadderDiagnostic::error(
-            Code::LadderMissingOperand,
-            ri,
-            r,
-            c,
-            "this block has no type".into(),
-        ));
-        return;
-    }
-    if !known {
-        out.push(LadderDiagnostic::error(
-            Code::LadderUnknownBlock,
-            ri,
-            r,
-            c,
-            format!(
-                "`{name}` is not a standard block nor a FUNCTION_BLOCK or FUNCTION of the project"
-            ),
-        ));
-    }
-    let needs_instance = std_fb || user_fb;
-    match &b.instance {
-        Some(i) if !i.trim().is_empty() => {
-            if !is_operand(i) {
-                out.push(LadderDiagnostic::error(
-                    Code::LadderBadOperand,
-                    ri,
-                    r,
-                    c,
-                    format!("the instance `{i}` of this {name} is not a variable name"),
-                ));
-            }
-        }
-        _ if needs_instance => out.push(LadderDiagnostic::error(
-            Code::LadderMissingInstance,
-            ri,
-            r,
-            c,
-            format!("this {name} needs an instance variable (declare e.g. `T1 : {name};`)"),
-        )),
-        _ => {}
-    }
-    for p in &b.inputs {
-        if p.operand.trim().is_empty() {
-            out.push(LadderDiagnostic::error(
-                Code::LadderMissingOperand,
-                ri,
-                r,
-                c,
-                format!("input {} of this {name} has no operand", p.name),
-            ));
-        } else if !is_value(&p.operand) {
-            out.push(LadderDiagnostic::error(
-                Code::LadderBadOperand,
-                ri,
-                r,
-                c,
-                format!("input {} of this {name}: `{}` is not a value", p.name, p.operand),
-            ));
-        }
-    }
-    for p in &b.outputs {
-        if p.operand.trim().is_empty() {
-            out.push(LadderDiagnostic::error(
-                Code::LadderMissingOperand,
-                ri,
-                r,
-                c,
-                format!("output {} of this {name} has no operand", p.name),
-            ));
-        } else if !is_operand(&p.operand) {
-            out.push(LadderDiagnostic::error(
-                Code::LadderBadOperand,
-                ri,
-                r,
-                c,
-                format!("output {} of this {name}: `{}` is not a variable", p.name, p.operand),
-            ));
-        }
-    }
 }
 
 fn validate_rung(
     ri: usize,
     rung: &Rung,
-    users: Option<(&[String], &[String])>,
+    ctx: Option<&Context<'_>>,
     labels: &HashMap<String, usize>,
     coils: &mut HashMap<String, (usize, usize, usize)>,
     out: &mut Vec<LadderDiagnostic>,
@@ -345,7 +198,8 @@ fn validate_rung(
                     }
                 }
                 Element::Block(b) => {
-                    validate_block(ri, r, c, b, users, out);
+                    let at = At { rung: ri, row: r, col: c };
+                    validate_block(at, rung.rows(), b, ctx, out);
                     let h = b.height.max(1) as usize;
                     if r + h > rung.rows() {
                         out.push(LadderDiagnostic::error(
@@ -460,6 +314,34 @@ fn validate_rung(
                 format!("the enable of this {} is tied straight to the rail", b.type_name),
             )),
             _ => {}
+        }
+    }
+    for p in &net.pins {
+        let Element::Block(b) = net.elements[p.block].element else { continue };
+        let pin = b.inputs.get(p.pin).map_or("", |x| x.name.trim());
+        if !net.powered[p.node] {
+            open = true;
+            out.push(LadderDiagnostic::error(
+                Code::LadderOpenCircuit,
+                ri,
+                p.row,
+                p.col,
+                format!(
+                    "input {pin} of this {} is wired to this row, but no power path from the left rail reaches it",
+                    b.type_name
+                ),
+            ));
+        } else if !net.conditioned[p.node] {
+            out.push(LadderDiagnostic::warning(
+                Code::LadderPinFromRail,
+                ri,
+                p.row,
+                p.col,
+                format!(
+                    "input {pin} of this {} is tied straight to the rail, so it is always TRUE",
+                    b.type_name
+                ),
+            ));
         }
     }
     let has_errors = out[start..].iter().any(LadderDiagnostic::is_error);
