@@ -2,9 +2,11 @@
 //! The samples are read from `shared/samples/plcopen/` beside the repository (as in CI; for a
 //! worktree nested deeper, the nearest such folder above the crate).
 
-use plc_core::ladder::{CoilKind, ContactKind, Element, Rung};
+use plc_core::ladder::{st_view, validate, Block, CoilKind, ContactKind, Element, Rung};
 use plc_core::plcopen::{export, import, load, ImportError};
 use plc_core::project::Project;
+use plc_core::run::project_simulator;
+use plc_core::vm::Value;
 
 /// The path of a sample: `shared/samples/plcopen/NAME` in the nearest folder above the crate
 /// that has one.
@@ -172,11 +174,113 @@ fn fbd_and_sfc_are_skipped_with_warnings() {
     assert!(i.warnings.iter().any(|w| w.contains("Traffic_Control") && w.contains("SFC")));
 }
 
+/// The element of rung `r` at `(row, col)`.
+fn at(p: &Project, r: usize, row: usize, col: usize) -> &Element {
+    &p.ladder[0].rungs[r].cells[row][col].element
+}
+
+fn block_at(p: &Project, r: usize, row: usize, col: usize) -> &Block {
+    match at(p, r, row, col) {
+        Element::Block(b) => b,
+        other => panic!("rung {r} ({row}, {col}) holds {other:?}"),
+    }
+}
+
 #[test]
-fn mixing_tank_reports_unsupported_second_power_input() {
-    let e = load(&sample_path("ld_mixing_tank_plant.xml")).unwrap_err();
-    let msg = e.to_string();
-    assert!(msg.contains("Mixer") && msg.contains("localId"), "{msg}");
+fn mixing_tank_lays_out_reset_networks_as_wired_inputs() {
+    let i = sample("ld_mixing_tank_plant.xml");
+    let p = &i.project;
+    let lp = &p.ladder[0];
+    assert_eq!(lp.rungs.len(), 3, "pumps, mixer, valve");
+    // Rung 1: SR0's R is wired to H_LEVEL OR STOP, laid out below the seal-in branches.
+    let sr0 = block_at(p, 0, 0, 4);
+    assert_eq!(sr0.instance.as_deref(), Some("SR0"));
+    let r = &sr0.inputs[0];
+    assert_eq!((r.name.as_str(), r.operand.as_str()), ("R", ""));
+    let row = r.wired_row.expect("R is wired") as usize;
+    assert!(
+        matches!(at(p, 0, row, 3), Element::Contact { kind: ContactKind::NormallyOpen, operand } if operand == "H_LEVEL")
+    );
+    assert!(
+        matches!(at(p, 0, row + 1, 3), Element::Contact { kind: ContactKind::NormallyOpen, operand } if operand == "STOP")
+    );
+    // Rung 2: SR1's R takes F_TRIG0, which taps TP0's output, besides VALVE and STOP.
+    let sr1 = block_at(p, 1, 0, 5);
+    assert_eq!(sr1.inputs[0].wired_row, Some(1));
+    let f_trig = block_at(p, 1, 1, 4);
+    assert_eq!(f_trig.instance.as_deref(), Some("F_TRIG0"));
+    assert!(lp.rungs[1].cells[0][4].link_down, "F_TRIG0 hangs from TP0's output");
+    let (view, _) = st_view(lp);
+    assert!(view.contains("SR0(S1 := (START AND L_LEVEL OR PUMP_1 OR PUMP_1) AND NOT H_LEVEL AND NOT STOP, R := H_LEVEL OR STOP);"), "{view}");
+    assert!(view.contains("F_TRIG0(CLK := TP0.Q);"), "{view}");
+    assert!(
+        view.contains("SR1(S1 := TP0.Q AND NOT STOP, R := F_TRIG0.Q OR VALVE OR STOP);"),
+        "{view}"
+    );
+    assert!(view.contains("RS0(S := (START AND H_LEVEL AND NOT MIXER_MOTOR OR VALVE) AND NOT STOP, R1 := NOT L_LEVEL OR STOP);"), "{view}");
+    assert!(i.warnings.is_empty(), "{:?}", i.warnings);
+    assert!(validate(lp).iter().all(|d| !d.is_error()), "{:?}", validate(lp));
+    assert_round_trip(p);
+}
+
+/// The plant as its rung comments describe it: fill with both pumps, mix for the TP's 8 s,
+/// drain through the valve, STOP overrides. `L_LEVEL` is TRUE while liquid covers the low
+/// sensor (the valve rung closes the valve through an NC contact when it uncovers).
+#[test]
+fn mixing_tank_runs_fill_mix_drain_scan_by_scan() {
+    let p = sample("ld_mixing_tank_plant.xml").project;
+    assert_eq!(p.settings.cycle_ms, 20, "the task interval T#20ms");
+    let mut s = project_simulator(&p, None).unwrap_or_else(|e| panic!("{e:?}"));
+    s.set_cycle_ns(20_000_000);
+    let set = |s: &mut plc_core::sim::Simulator, v: &str, on: bool| {
+        s.write(v, if on { "TRUE" } else { "FALSE" }).unwrap();
+    };
+    let get = |s: &plc_core::sim::Simulator, v: &str| s.read(v).unwrap() == Value::Bool(true);
+    let outputs = |s: &plc_core::sim::Simulator| {
+        ["PUMP_1", "PUMP_2", "MIXER_MOTOR", "VALVE"].map(|v| get(s, v))
+    };
+    s.scan();
+    assert_eq!(outputs(&s), [false; 4]);
+    // Fill: START with liquid at the low sensor starts both pumps, which hold themselves.
+    set(&mut s, "L_LEVEL", true);
+    set(&mut s, "START", true);
+    s.scan();
+    assert_eq!(outputs(&s), [true, true, false, false]);
+    set(&mut s, "START", false);
+    s.scan();
+    assert_eq!(outputs(&s), [true, true, false, false]);
+    // Full: H_LEVEL stops the pumps.
+    set(&mut s, "H_LEVEL", true);
+    s.scan();
+    assert_eq!(outputs(&s), [false; 4]);
+    // Mix: START on a full tank runs the mixer for TP0's 8 s (400 scans of 20 ms).
+    set(&mut s, "START", true);
+    s.scan();
+    assert_eq!(outputs(&s), [false, false, true, false]);
+    for k in 1..400 {
+        s.scan();
+        assert_eq!(outputs(&s), [false, false, true, false], "mixing, scan {k} of the pulse");
+    }
+    // The pulse ends: F_TRIG0 resets the mixer and, START still held on a full tank, the
+    // valve rung opens the valve in the same scan.
+    s.scan();
+    assert_eq!(outputs(&s), [false, false, false, true]);
+    // Drain: the valve holds itself while the level falls, and closes at the low sensor.
+    set(&mut s, "START", false);
+    set(&mut s, "H_LEVEL", false);
+    s.scan();
+    assert_eq!(outputs(&s), [false, false, false, true]);
+    set(&mut s, "L_LEVEL", false);
+    s.scan();
+    assert_eq!(outputs(&s), [false; 4]);
+    // STOP wins: pumps started again stop at once, and START cannot set them while held.
+    set(&mut s, "L_LEVEL", true);
+    set(&mut s, "START", true);
+    s.scan();
+    assert_eq!(outputs(&s), [true, true, false, false]);
+    set(&mut s, "STOP", true);
+    s.scan();
+    assert_eq!(outputs(&s), [false; 4]);
 }
 
 fn doc(body: &str, vars: &str) -> String {

@@ -108,8 +108,18 @@ fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
             .map(|(id, ..)| format!("LdJmp_{id}"))
             .collect();
         let indent = if skip.is_empty() { "" } else { "    " };
-        if !rung.comment.trim().is_empty() {
-            lines.push((format!("(* {} *)", rung.comment.trim().replace("*)", "* )")), Some(ri)));
+        let comment = rung.comment.trim().replace("*)", "* )");
+        let comment: Vec<&str> = comment.lines().collect();
+        match comment.as_slice() {
+            [] => {}
+            [one] => lines.push((format!("(* {one} *)"), Some(ri))),
+            [first, rest @ ..] => {
+                lines.push((format!("(* {first}"), Some(ri)));
+                for (k, l) in rest.iter().enumerate() {
+                    let end = if k + 1 == rest.len() { " *)" } else { "" };
+                    lines.push((format!("   {l}{end}"), Some(ri)));
+                }
+            }
         }
         if let Some(l) = &rung.label {
             lines.push((format!("(* label {} *)", l.trim()), Some(ri)));

@@ -84,23 +84,47 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         source.push('\n');
     }
 
-    // POUs.
+    // POUs: ST texts and LD declarations first, so LD bodies know every block type.
     let mut ladder = Vec::new();
+    let mut bodies = Vec::new();
     if let Some(pous) = types.and_then(|t| t.child("pous")) {
         for pou in pous.children_named("pou") {
-            import_pou(pou, &mut source, &mut ladder, &mut warnings)?;
+            if let Some(body) = import_pou(pou, &mut source, &mut ladder, &mut warnings)? {
+                bodies.push(body);
+            }
         }
     }
-    let project = Project { schema: SCHEMA_VERSION, name, source, settings, ladder };
+    let mut project = Project { schema: SCHEMA_VERSION, name, source, settings, ladder };
+    let catalog = crate::ladder::Catalog::of_project(&project);
+    for (k, body) in bodies.into_iter().enumerate() {
+        let lp = &mut project.ladder[k];
+        let ld =
+            super::ld_import::import_ld(body, &lp.name, &catalog, &lp.declarations, &mut warnings)?;
+        lp.rungs = ld.rungs;
+        if !ld.declarations.is_empty() {
+            lp.declarations.push_str("VAR\n");
+            for d in ld.declarations {
+                lp.declarations.push_str(&d);
+                lp.declarations.push('\n');
+            }
+            lp.declarations.push_str("END_VAR\n");
+            warnings.push(format!(
+                "POU {}: data wires from function outputs got variables of their own (see the last VAR block)",
+                lp.name
+            ));
+        }
+    }
     Ok(Import { project, warnings })
 }
 
-fn import_pou(
-    pou: &Node,
+/// Imports one POU: ST POUs into `source`, LD POUs into `ladder` with no rungs yet (their
+/// `<LD>` body is returned, to be laid out once every POU is known).
+fn import_pou<'a>(
+    pou: &'a Node,
     source: &mut String,
     ladder: &mut Vec<LadderPou>,
     warnings: &mut Vec<String>,
-) -> Result<(), ImportError> {
+) -> Result<Option<&'a Node>, ImportError> {
     let name = pou.attr("name").unwrap_or("").to_string();
     let err = |message: String| ImportError::Pou { pou: name.clone(), message };
     if name.is_empty() {
@@ -181,13 +205,13 @@ fn import_pou(
                             .into(),
                     )),
                 };
-            let rungs = super::ld_import::import_ld(lang, &name, warnings)?;
-            ladder.push(LadderPou { name, kind, declarations, rungs });
+            ladder.push(LadderPou { name, kind, declarations, rungs: Vec::new() });
+            return Ok(Some(lang));
         }
         other => warnings
             .push(format!("POU {name}: {other} bodies are not supported yet; the POU was skipped")),
     }
-    Ok(())
+    Ok(None)
 }
 
 /// Parses a task interval such as `T#20ms`, `T#1s`, `PT0.02S` into milliseconds.

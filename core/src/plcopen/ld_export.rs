@@ -152,6 +152,40 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
             let _ = writeln!(s, "{indent}</connectionPointIn>");
             s
         };
+        // Data wires: an input reading `Inst.PIN` of a block placed in an earlier column of
+        // this rung is wired to that block's output (unless PIN carries its power).
+        let instances: Vec<(String, usize, usize, String)> = items
+            .iter()
+            .filter_map(|&(r, c, eid)| match &rung.cells[r][c].element {
+                Element::Block(b) => b.instance.as_ref().map(|i| {
+                    (i.trim().to_ascii_uppercase(), c, eid, b.power_output().to_ascii_uppercase())
+                }),
+                _ => None,
+            })
+            .collect();
+        let data_source = |operand: &str, col: usize| -> Option<(usize, String)> {
+            let (inst, pin) = operand.trim().split_once('.')?;
+            let pin = pin.trim();
+            if pin.is_empty() || !pin.chars().all(|ch| ch.is_ascii_alphanumeric() || ch == '_') {
+                return None;
+            }
+            let (_, _, eid, _) = instances.iter().find(|(i, c, _, out)| {
+                *i == inst.trim().to_ascii_uppercase()
+                    && *c < col
+                    && *out != pin.to_ascii_uppercase()
+            })?;
+            Some((*eid, pin.to_string()))
+        };
+        let mut data_reads: std::collections::HashMap<usize, Vec<String>> = Default::default();
+        for &(r, c, _) in &items {
+            if let Element::Block(b) = &rung.cells[r][c].element {
+                for p in b.inputs.iter().filter(|p| p.wired_row.is_none()) {
+                    if let Some((sid, pin)) = data_source(&p.operand, c) {
+                        data_reads.entry(sid).or_default().push(pin);
+                    }
+                }
+            }
+        }
         let height = rows as i64 * DY;
         let _ = writeln!(body, "            <leftPowerRail localId=\"{left_id}\" height=\"{height}\" width=\"10\">\n              <position x=\"{}\" y=\"{y0}\"/>\n              <connectionPointOut formalParameter=\"\">\n                <relPosition x=\"10\" y=\"20\"/>\n              </connectionPointOut>\n            </leftPowerRail>", X0 - 20);
         let mut extra = String::new();
@@ -194,19 +228,58 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
                     if let Some(inst) = &b.instance {
                         let _ = write!(body, " instanceName=\"{}\"", esc(inst));
                     }
-                    let _ = write!(body, ">\n              <position x=\"{x}\" y=\"{y}\"/>\n              <inputVariables>\n                <variable formalParameter=\"{pin_in}\">\n{}                </variable>\n", conn_xml(&srcs, "                  "));
+                    let _ = write!(body, ">\n              <position x=\"{x}\" y=\"{y}\"/>\n              <inputVariables>\n                <variable formalParameter=\"{}\">\n{}                </variable>\n", esc(pin_in), conn_xml(&srcs, "                  "));
+                    let in_var = |extra: &mut String,
+                                  next_id: &mut usize,
+                                  k: usize,
+                                  operand: &str| {
+                        let vid = *next_id;
+                        *next_id += 1;
+                        let _ = write!(extra, "            <inVariable localId=\"{vid}\" height=\"20\" width=\"60\">\n              <position x=\"{}\" y=\"{}\"/>\n              <connectionPointOut>\n                <relPosition x=\"60\" y=\"10\"/>\n              </connectionPointOut>\n              <expression>{}</expression>\n            </inVariable>\n", x - 70, y + (k as i64 + 1) * 20, esc(operand));
+                        vid
+                    };
                     for (k, p) in b.inputs.iter().enumerate() {
-                        let vid = next_id;
-                        next_id += 1;
-                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                </variable>\n", esc(&p.name), conn_xml(&[(vid, None)], "                  "));
-                        let _ = write!(extra, "            <inVariable localId=\"{vid}\" height=\"20\" width=\"60\">\n              <position x=\"{}\" y=\"{}\"/>\n              <connectionPointOut>\n                <relPosition x=\"60\" y=\"10\"/>\n              </connectionPointOut>\n              <expression>{}</expression>\n            </inVariable>\n", x - 70, y + (k as i64 + 1) * 20, esc(&p.operand));
+                        let wires = match (p.wired_row, data_source(&p.operand, c)) {
+                            (Some(w), _) => sources_of(&mut uf, node(r + w as usize, c)),
+                            (None, Some((sid, pin))) => vec![(sid, Some(pin))],
+                            (None, None) => {
+                                vec![(in_var(&mut extra, &mut next_id, k, &p.operand), None)]
+                            }
+                        };
+                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                </variable>\n", esc(&p.name), conn_xml(&wires, "                  "));
                     }
-                    let _ = write!(body, "              </inputVariables>\n              <inOutVariables/>\n              <outputVariables>\n                <variable formalParameter=\"{pin_out}\">\n                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"10\"/>\n                  </connectionPointOut>\n                </variable>\n");
+                    body.push_str("              </inputVariables>\n");
+                    if b.in_outs.is_empty() {
+                        body.push_str("              <inOutVariables/>\n");
+                    } else {
+                        body.push_str("              <inOutVariables>\n");
+                        for (k, p) in b.in_outs.iter().enumerate() {
+                            let vid =
+                                in_var(&mut extra, &mut next_id, b.inputs.len() + k, &p.operand);
+                            let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"{}\"/>\n                  </connectionPointOut>\n                </variable>\n", esc(&p.name), conn_xml(&[(vid, None)], "                  "), (b.inputs.len() + k + 1) * 20 + 10);
+                        }
+                        body.push_str("              </inOutVariables>\n");
+                    }
+                    let _ = write!(body, "              <outputVariables>\n                <variable formalParameter=\"{}\">\n                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"10\"/>\n                  </connectionPointOut>\n                </variable>\n", esc(pin_out));
+                    let mut declared: Vec<String> = vec![pin_out.to_ascii_uppercase()];
+                    let read_here = data_reads.get(&eid).cloned().unwrap_or_default();
+                    for (k, name) in b
+                        .outputs
+                        .iter()
+                        .map(|p| p.name.trim())
+                        .chain(read_here.iter().map(String::as_str))
+                        .enumerate()
+                    {
+                        if declared.contains(&name.to_ascii_uppercase()) {
+                            continue;
+                        }
+                        declared.push(name.to_ascii_uppercase());
+                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"{}\"/>\n                  </connectionPointOut>\n                </variable>\n", esc(name), (k + 1) * 20 + 10);
+                    }
                     for (k, p) in b.outputs.iter().enumerate() {
                         let vid = next_id;
                         next_id += 1;
-                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"{}\"/>\n                  </connectionPointOut>\n                </variable>\n", esc(&p.name), (k + 1) * 20 + 10);
-                        let _ = write!(extra, "            <outVariable localId=\"{vid}\" height=\"20\" width=\"60\">\n              <position x=\"{}\" y=\"{}\"/>\n              <connectionPointIn>\n                <relPosition x=\"0\" y=\"10\"/>\n                <connection refLocalId=\"{eid}\" formalParameter=\"{}\"/>\n              </connectionPointIn>\n              <expression>{}</expression>\n            </outVariable>\n", x + 70, y + (k as i64 + 1) * 20, esc(&p.name), esc(&p.operand));
+                        let _ = write!(extra, "            <outVariable localId=\"{vid}\" height=\"20\" width=\"60\">\n              <position x=\"{}\" y=\"{}\"/>\n              <connectionPointIn>\n                <relPosition x=\"0\" y=\"10\"/>\n                <connection refLocalId=\"{eid}\" formalParameter=\"{}\"/>\n              </connectionPointIn>\n              <expression>{}</expression>\n            </outVariable>\n", x + 70, y + (k as i64 + 1) * 20, esc(p.name.trim()), esc(&p.operand));
                     }
                     body.push_str("              </outputVariables>\n            </block>\n");
                 }

@@ -1,0 +1,548 @@
+//! LD bodies → rungs. The stages, one file each:
+//! - `read`: XML elements and their `refLocalId` wiring (connectors resolved);
+//! - `pins`: block pins sorted into power, wired inputs, variables and data wires;
+//! - here: the electrical graph, split into networks (one rung each, ordered top to bottom
+//!   and so that a block feeding another by a data wire runs first);
+//! - `layout`: each network reduced to a series-parallel tree and laid onto the grid, with
+//!   the networks of wired block inputs below;
+//! - `verify`: the laid-out rung is checked against the file's wiring.
+
+#![allow(clippy::needless_range_loop)] // graph code reads best with explicit indices
+
+mod layout;
+mod pins;
+mod read;
+mod verify;
+
+use std::collections::{BTreeMap, HashMap};
+
+use super::xml::Node;
+use super::ImportError;
+use crate::ladder::catalog::Catalog;
+use crate::ladder::{Element, Rung, DEFAULT_COLUMNS, DEFAULT_ROWS};
+use layout::{Grid, Parts, PinJob, Sp};
+use read::{Conn, El, Kind};
+use verify::{Expect, Feeders};
+
+/// A laid-out LD body.
+pub(crate) struct LdBody {
+    /// The rungs, top to bottom.
+    pub rungs: Vec<Rung>,
+    /// Declarations (`    name : TYPE;`) of the variables created for data wires from
+    /// function outputs.
+    pub declarations: Vec<String>,
+}
+
+/// Union-find over small integer node ids.
+#[derive(Default)]
+struct Uf(Vec<usize>);
+
+impl Uf {
+    fn add(&mut self) -> usize {
+        self.0.push(self.0.len());
+        self.0.len() - 1
+    }
+    fn find(&mut self, mut x: usize) -> usize {
+        while self.0[x] != x {
+            self.0[x] = self.0[self.0[x]];
+            x = self.0[x];
+        }
+        x
+    }
+    fn union(&mut self, a: usize, b: usize) {
+        let (a, b) = (self.find(a), self.find(b));
+        if a != b {
+            self.0[b] = a;
+        }
+    }
+}
+
+/// The electrical graph: element `i` is an edge `in_node[i]` → `out_node[i]`; wired block
+/// inputs consume `pin_node[(block, input)]`.
+struct Graph {
+    s: usize,
+    t: usize,
+    in_node: Vec<usize>,
+    out_node: Vec<usize>,
+    pin_node: HashMap<(usize, usize), usize>,
+    alive: Vec<usize>,
+}
+
+impl Graph {
+    /// The file's feeders of node `n` among `edges`.
+    fn feeders(&self, n: usize, edges: &[usize]) -> Feeders {
+        let mut f: Feeders =
+            edges.iter().filter(|&&j| self.out_node[j] == n).map(|&j| Some(j)).collect();
+        if n == self.s {
+            f.insert(None);
+        }
+        f
+    }
+}
+
+/// Lays out one LD body as rungs. `declarations` are the POU's own (for the types of data
+/// wires); `catalog` knows the project's block types.
+pub(crate) fn import_ld(
+    ld: &Node,
+    pou: &str,
+    catalog: &Catalog,
+    declarations: &str,
+    warnings: &mut Vec<String>,
+) -> Result<LdBody, ImportError> {
+    let mut els = read::read_elements(ld, pou)?;
+    let mut index: HashMap<String, usize> = HashMap::new();
+    for (i, e) in els.iter().enumerate() {
+        if e.id.is_empty() {
+            continue;
+        }
+        if index.insert(e.id.clone(), i).is_some() && !matches!(els[i].kind, Kind::Comment(_)) {
+            return Err(ImportError::Element {
+                pou: pou.into(),
+                local_id: e.id.clone(),
+                message: "duplicate localId".into(),
+            });
+        }
+    }
+    let mut ctx = pins::Ctx { pou, catalog, scope: catalog.scope(declarations) };
+    let sorted = pins::sort_pins(&mut els, &mut index, &mut ctx, warnings)?;
+    let err = |id: &str, message: String| ImportError::Element {
+        pou: pou.to_string(),
+        local_id: id.to_string(),
+        message,
+    };
+    let graph = build_graph(&els, &index, &sorted.blocks, pou, warnings)?;
+    let parts = Parts { els: &els, blocks: &sorted.blocks };
+
+    // Networks: edges sharing an internal node (a wired input joins its block's network).
+    let alive = &graph.alive;
+    let mut comp = Uf::default();
+    for _ in 0..alive.len() {
+        comp.add();
+    }
+    let mut by_node: HashMap<usize, usize> = HashMap::new();
+    for (k, &i) in alive.iter().enumerate() {
+        let mut nodes = vec![graph.in_node[i], graph.out_node[i]];
+        nodes.extend(graph.pin_node.iter().filter(|((b, _), _)| *b == i).map(|(_, &n)| n));
+        for node in nodes {
+            if node == graph.s || node == graph.t {
+                continue;
+            }
+            match by_node.get(&node) {
+                Some(&other) => comp.union(other, k),
+                None => {
+                    by_node.insert(node, k);
+                }
+            }
+        }
+    }
+    let mut groups: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+    for k in 0..alive.len() {
+        let root = comp.find(k);
+        groups.entry(root).or_default().push(alive[k]);
+    }
+    let mut networks: Vec<(f64, Vec<usize>)> = groups
+        .into_values()
+        .map(|g| (g.iter().map(|&i| els[i].y).fold(f64::INFINITY, f64::min), g))
+        .collect();
+    networks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    order_by_data(&mut networks, &sorted.data);
+
+    let mut rungs = Vec::new();
+    for (_, edges) in &networks {
+        let (rung, pos) =
+            layout_network(&graph, edges, &parts).map_err(|(i, m)| err(&els[i].id, m))?;
+        for &(a, b) in &sorted.data {
+            if let (Some(&(_, ca)), Some(&(_, cb))) = (pos.get(&a), pos.get(&b)) {
+                if ca >= cb {
+                    return Err(err(
+                        &els[b].id,
+                        format!("this block reads an output of block localId {} by a data wire, but the grid would run it first", els[a].id),
+                    ));
+                }
+            }
+        }
+        rungs.push(rung);
+    }
+    for (r, rung) in rungs.iter().enumerate() {
+        if rung.rows() > DEFAULT_ROWS as usize || rung.columns() > DEFAULT_COLUMNS as usize {
+            warnings.push(format!(
+                "POU {pou}: rung {} needs {}×{} cells, more than the default {DEFAULT_ROWS}×{DEFAULT_COLUMNS} grid",
+                r + 1,
+                rung.rows(),
+                rung.columns()
+            ));
+        }
+    }
+    // Comments and labels go to the first rung below them.
+    for e in &els {
+        let ((Kind::Comment(text), y) | (Kind::Label(text), y)) = (&e.kind, e.y) else { continue };
+        if rungs.is_empty() {
+            warnings
+                .push(format!("POU {pou}: comment or label localId {} has no rung; dropped", e.id));
+            continue;
+        }
+        let r = networks.iter().position(|(top, _)| *top >= y).unwrap_or(rungs.len() - 1);
+        if matches!(e.kind, Kind::Label(_)) {
+            rungs[r].label = Some(text.clone());
+        } else if rungs[r].comment.is_empty() {
+            rungs[r].comment = text.clone();
+        } else {
+            rungs[r].comment.push('\n');
+            rungs[r].comment.push_str(text);
+        }
+    }
+    Ok(LdBody { rungs, declarations: sorted.declarations })
+}
+
+/// Builds the electrical graph and drops what no power reaches (with warnings).
+fn build_graph(
+    els: &[El],
+    index: &HashMap<String, usize>,
+    blocks: &HashMap<usize, pins::BlockEl>,
+    pou: &str,
+    warnings: &mut Vec<String>,
+) -> Result<Graph, ImportError> {
+    let err = |id: &str, message: String| ImportError::Element {
+        pou: pou.to_string(),
+        local_id: id.to_string(),
+        message,
+    };
+    let mut uf = Uf::default();
+    let s_node = uf.add();
+    let t_node = uf.add();
+    let n = els.len();
+    let mut in_node = vec![usize::MAX; n];
+    let mut out_node = vec![usize::MAX; n];
+    let is_edge = |i: usize| matches!(els[i].kind, Kind::Leaf(_)) || blocks.contains_key(&i);
+    for i in 0..n {
+        if is_edge(i) {
+            in_node[i] = uf.add();
+            out_node[i] = uf.add();
+        }
+    }
+    let mut pin_node: HashMap<(usize, usize), usize> = HashMap::new();
+    for (&b, el) in blocks {
+        for (k, _) in &el.wired {
+            pin_node.insert((b, *k), uf.add());
+        }
+    }
+    let source = |c: &Conn, at: &str| -> Result<Option<usize>, ImportError> {
+        let s = *index.get(&c.from).ok_or_else(|| {
+            err(at, format!("connection refers to localId {}, which does not exist", c.from))
+        })?;
+        match &els[s].kind {
+            Kind::LeftRail => Ok(None),
+            Kind::Leaf(_) => Ok(Some(s)),
+            Kind::Block(_) => {
+                let el =
+                    blocks.get(&s).ok_or_else(|| err(at, "a block that was not read".into()))?;
+                if let Some(p) = &c.param {
+                    let out = el.block.power_output();
+                    if !p.eq_ignore_ascii_case(out) {
+                        return Err(err(
+                            at,
+                            format!("power input wired to output {p} of block localId {}, which is not the output that carries its power ({out})", els[s].id),
+                        ));
+                    }
+                }
+                Ok(Some(s))
+            }
+            _ => Err(err(
+                at,
+                format!(
+                    "power input wired to localId {}, which is not a rail, contact, coil or block",
+                    els[s].id
+                ),
+            )),
+        }
+    };
+    for i in 0..n {
+        let (target, conns): (usize, &[Conn]) = match &els[i].kind {
+            Kind::RightRail => (t_node, &els[i].conns),
+            Kind::Leaf(_) => (in_node[i], &els[i].conns),
+            Kind::Block(_) => match blocks.get(&i) {
+                Some(b) => (in_node[i], &b.power),
+                None => continue,
+            },
+            _ => continue,
+        };
+        for c in conns {
+            let src = match source(c, &els[i].id)? {
+                None => s_node,
+                Some(s) => out_node[s],
+            };
+            uf.union(target, src);
+        }
+        if let Some(b) = blocks.get(&i) {
+            for (k, conns) in &b.wired {
+                for c in conns {
+                    let src = match source(c, &els[i].id)? {
+                        None => s_node,
+                        Some(s) => out_node[s],
+                    };
+                    if let Some(&p) = pin_node.get(&(i, *k)) {
+                        uf.union(p, src);
+                    }
+                }
+            }
+        }
+    }
+    // Alive edges; prune dangling parts with warnings.
+    let mut alive: Vec<usize> = (0..n).filter(|&i| is_edge(i)).collect();
+    loop {
+        let s = uf.find(s_node);
+        let t = uf.find(t_node);
+        let mut ins: HashMap<usize, usize> = HashMap::new();
+        let mut outs: HashMap<usize, usize> = HashMap::new();
+        for &i in &alive {
+            *outs.entry(uf.find(in_node[i])).or_default() += 1;
+            *ins.entry(uf.find(out_node[i])).or_default() += 1;
+            for ((b, _), &p) in &pin_node {
+                if *b == i {
+                    *outs.entry(uf.find(p)).or_default() += 1;
+                }
+            }
+        }
+        let mut changed = false;
+        let mut keep = Vec::new();
+        for &i in &alive {
+            let a = uf.find(in_node[i]);
+            let b = uf.find(out_node[i]);
+            let terminal = !matches!(els[i].kind, Kind::Leaf(Element::Contact { .. }));
+            if a != s && !ins.contains_key(&a) {
+                warnings.push(format!(
+                    "POU {pou}: element localId {} is not connected to the left rail; skipped",
+                    els[i].id
+                ));
+                changed = true;
+                continue;
+            }
+            if b != t && !outs.contains_key(&b) {
+                if terminal {
+                    uf.union(t_node, out_node[i]);
+                } else {
+                    warnings.push(format!(
+                        "POU {pou}: contact localId {} leads nowhere; skipped",
+                        els[i].id
+                    ));
+                    changed = true;
+                    continue;
+                }
+            }
+            keep.push(i);
+        }
+        alive = keep;
+        if !changed {
+            break;
+        }
+    }
+    let s = uf.find(s_node);
+    let t = uf.find(t_node);
+    for i in 0..n {
+        if in_node[i] != usize::MAX {
+            in_node[i] = uf.find(in_node[i]);
+            out_node[i] = uf.find(out_node[i]);
+        }
+    }
+    let pin_node = pin_node.into_iter().map(|(k, v)| (k, uf.find(v))).collect();
+    Ok(Graph { s, t, in_node, out_node, pin_node, alive })
+}
+
+/// Puts a network holding a block that another network's block reads by a data wire
+/// before that network (keeping the top-to-bottom order otherwise).
+fn order_by_data(networks: &mut Vec<(f64, Vec<usize>)>, data: &[(usize, usize)]) {
+    let net_of = |networks: &[(f64, Vec<usize>)], el: usize| {
+        networks.iter().position(|(_, e)| e.contains(&el))
+    };
+    let mut out: Vec<(f64, Vec<usize>)> = Vec::new();
+    let mut rest = std::mem::take(networks);
+    while !rest.is_empty() {
+        // The first network that needs nothing still waiting (else the first one: a loop).
+        let pick = (0..rest.len())
+            .find(|&k| {
+                !data.iter().any(|&(a, b)| {
+                    net_of(&rest, b) == Some(k) && net_of(&rest, a).is_some_and(|na| na != k)
+                })
+            })
+            .unwrap_or(0);
+        out.push(rest.remove(pick));
+    }
+    *networks = out;
+}
+
+/// Lays out one network: the part reaching the coils, then each wired input's network.
+/// On failure: the element to blame and why.
+fn layout_network(
+    g: &Graph,
+    edges: &[usize],
+    parts: &Parts<'_>,
+) -> Result<(Rung, HashMap<usize, (usize, usize)>), (usize, String)> {
+    let not_sp = "the network is not series-parallel, so it cannot be laid out on the rung grid";
+    // The cone of the coils.
+    let mut reach = vec![g.t];
+    loop {
+        let before = reach.len();
+        for &i in edges {
+            if reach.contains(&g.out_node[i]) && !reach.contains(&g.in_node[i]) {
+                reach.push(g.in_node[i]);
+            }
+        }
+        if reach.len() == before {
+            break;
+        }
+    }
+    let main: Vec<usize> =
+        edges.iter().copied().filter(|&i| reach.contains(&g.out_node[i])).collect();
+    let first = edges.first().copied().unwrap_or(0);
+    if main.is_empty() {
+        return Err((first, "nothing in this network reaches a coil or the right rail".into()));
+    }
+    let work: Vec<(usize, usize, Sp)> =
+        main.iter().map(|&i| (g.in_node[i], g.out_node[i], Sp::Leaf(i))).collect();
+    let tree = layout::reduce(work, g.s, g.t, parts)
+        .map_err(|b| (b.unwrap_or(first), not_sp.to_string()))?;
+    let mut grid = layout::main_grid(tree, parts).map_err(|()| (first, not_sp.to_string()))?;
+    // Wired inputs, block by block as they are placed.
+    let mut done: Vec<(usize, usize)> = Vec::new();
+    loop {
+        let next = g
+            .pin_node
+            .keys()
+            .filter(|k| grid.pos.contains_key(&k.0) && !done.contains(k))
+            .min_by_key(|&&(b, k)| (grid.pos[&b].1, grid.pos[&b].0, k))
+            .copied();
+        let Some(key) = next else { break };
+        wire_input(g, edges, parts, &mut grid, key, &done)?;
+        done.push(key);
+    }
+    if let Some(&missing) = edges.iter().find(|i| !grid.pos.contains_key(i)) {
+        return Err((missing, "this element could not be placed on the rung grid".into()));
+    }
+    let rung = layout::into_rung(grid.clone());
+    let mut expects = Vec::new();
+    for &i in edges {
+        let (r, c) = grid.pos[&i];
+        expects.push(Expect { node: (r, c), want: g.feeders(g.in_node[i], edges), blame: i });
+    }
+    for &(b, k) in &done {
+        let (r, c) = grid.pos[&b];
+        let row = wired_row(&grid, b, k).unwrap_or(0);
+        expects.push(Expect {
+            node: (r + row, c),
+            want: g.feeders(g.pin_node[&(b, k)], edges),
+            blame: b,
+        });
+    }
+    verify::check(&rung, &grid.pos, &expects).map_err(|i| {
+        (i, "this element's wiring crosses another connection, so it cannot be laid out on the rung grid".to_string())
+    })?;
+    Ok((rung, grid.pos))
+}
+
+/// The wired row of input `k` of the block placed for element `b`.
+fn wired_row(grid: &Grid, b: usize, k: usize) -> Option<usize> {
+    let (r, c) = grid.pos.get(&b)?;
+    match &grid.cells[*r][*c].element {
+        Element::Block(blk) => blk.inputs.get(k)?.wired_row.map(|w| w as usize),
+        _ => None,
+    }
+}
+
+/// Lays out the network of wired input `k` of block element `b` below the block and wires it.
+fn wire_input(
+    g: &Graph,
+    edges: &[usize],
+    parts: &Parts<'_>,
+    grid: &mut Grid,
+    (b, k): (usize, usize),
+    done: &[(usize, usize)],
+) -> Result<(), (usize, String)> {
+    let pin = g.pin_node[&(b, k)];
+    let placed = |i: usize| grid.pos.contains_key(&i);
+    // The input's own cone: unplaced edges reaching the pin node; taps where it meets the
+    // rail or placed elements.
+    let mut nodes = vec![pin];
+    let mut cone: Vec<usize> = Vec::new();
+    loop {
+        let before = cone.len();
+        for &i in edges {
+            if !placed(i) && !cone.contains(&i) && nodes.contains(&g.out_node[i]) {
+                cone.push(i);
+                if !nodes.contains(&g.in_node[i]) {
+                    nodes.push(g.in_node[i]);
+                }
+            }
+        }
+        if cone.len() == before {
+            break;
+        }
+    }
+    let v = usize::MAX - 1;
+    let mut node_pos: HashMap<usize, (usize, usize)> = HashMap::new();
+    for &i in edges.iter().filter(|&&i| placed(i)) {
+        let (r, c) = grid.pos[&i];
+        let here = (r, c + 1);
+        node_pos.entry(g.out_node[i]).and_modify(|p| *p = (*p).min(here)).or_insert(here);
+    }
+    let mut work: Vec<(usize, usize, Sp)> =
+        cone.iter().map(|&i| (g.in_node[i], g.out_node[i], Sp::Leaf(i))).collect();
+    for &u in &nodes {
+        if u == g.s || node_pos.contains_key(&u) {
+            work.push((v, u, Sp::Tap(u)));
+        }
+    }
+    let not_sp =
+        "the network wired to this block's input is not series-parallel, so it cannot be laid out";
+    let tree =
+        layout::reduce(work, v, pin, parts).map_err(|x| (x.unwrap_or(b), not_sp.to_string()))?;
+    let (rb, cb) = grid.pos[&b];
+    let mut pins: Vec<(usize, usize)> = done
+        .iter()
+        .filter_map(|&(bb, kk)| {
+            let (r, c) = grid.pos.get(&bb)?;
+            Some((r + wired_row(grid, bb, kk)?, *c))
+        })
+        .collect();
+    pins.sort_unstable();
+    let job = PinJob { node_pos: &node_pos, rail: g.s, pins };
+    let limit = grid.cells.len() + layout::tree_height(&tree, parts) + 1;
+    for top in rb + 1..=limit {
+        let mut trial = grid.clone();
+        if try_wire(&mut trial, &tree, (rb, cb), k, top, &job, parts).is_ok() {
+            *grid = trial;
+            return Ok(());
+        }
+    }
+    Err((b, "the network wired to this block's input does not fit below the block without crossing other connections".into()))
+}
+
+/// Places a wired input's tree with its top row on `top` and grows the block to that row.
+fn try_wire(
+    grid: &mut Grid,
+    tree: &Sp,
+    (rb, cb): (usize, usize),
+    k: usize,
+    top: usize,
+    job: &PinJob<'_>,
+    parts: &Parts<'_>,
+) -> Result<(), ()> {
+    let w = (top - rb) as u32;
+    let Element::Block(mut blk) = grid.cells[rb][cb].element.clone() else { return Err(()) };
+    let height = blk.height.max(1).max(w + 1);
+    grid.ensure_rows(top + layout::tree_height(tree, parts));
+    for r in rb + blk.height.max(1) as usize..rb + height as usize {
+        if r < grid.cells.len() && !matches!(grid.cells[r][cb].element, Element::Empty) {
+            return Err(());
+        }
+    }
+    grid.place_right(tree, top, cb, job, parts)?;
+    for r in rb + blk.height.max(1) as usize..rb + height as usize {
+        grid.cells[r][cb].element = Element::Covered;
+    }
+    blk.height = height;
+    if let Some(p) = blk.inputs.get_mut(k) {
+        p.wired_row = Some(w);
+    }
+    grid.cells[rb][cb].element = Element::Block(blk);
+    Ok(())
+}
