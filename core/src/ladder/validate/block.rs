@@ -69,6 +69,29 @@ fn undeclared(ctx: &Context<'_>, text: &str, what: &str, sink: &mut Sink<'_>) ->
     !known
 }
 
+/// The problem with the operand of a contact or coil, if any: not declared, or not a BOOL.
+pub(crate) fn check_bool_operand(
+    ctx: &Context<'_>,
+    operand: &str,
+    what: &str,
+) -> Option<(Code, String)> {
+    let name = root_name(operand)?;
+    let key = name.to_ascii_uppercase();
+    if !ctx.scope.contains_key(&key) && crate::semantic::SysVar::from_name(&key).is_none() {
+        return Some((
+            Code::LadderUndeclaredOperand,
+            format!("this {what}'s operand `{name}` is not declared"),
+        ));
+    }
+    match ctx.catalog.place_type(&ctx.scope, operand) {
+        Some(t) if !t.is_bool() => Some((
+            Code::LadderPinType,
+            format!("this {what} needs a BOOL, but `{}` is a {t}", operand.trim()),
+        )),
+        _ => None,
+    }
+}
+
 /// Checks one block at `at` (its anchor cell).
 pub(crate) fn validate_block(
     at: At,

@@ -167,6 +167,10 @@ fn validate_rung(
                                 "`{operand}` is not a variable, member, element or direct address"
                             ),
                         ));
+                    } else if let Some(ctx) = ctx {
+                        if let Some(d) = block::check_bool_operand(ctx, operand, what) {
+                            out.push(LadderDiagnostic::error(d.0, ri, r, c, d.1));
+                        }
                     }
                     if let Element::Coil { kind, operand } = e {
                         coil_count += 1;
