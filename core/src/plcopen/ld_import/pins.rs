@@ -365,11 +365,18 @@ fn bind_out_variables(
         if let Some(b) = pins.blocks.get_mut(&s) {
             let pin =
                 c.param.clone().or_else(|| outs.get(&s).cloned()).unwrap_or_else(|| "OUT".into());
-            if let Some(io) = b.block.in_outs.iter().find(|p| p.name.eq_ignore_ascii_case(&pin)) {
-                if !io.operand.eq_ignore_ascii_case(&expr) {
+            let in_out = match &els[s].kind {
+                Kind::Block(raw) => {
+                    raw.in_outs.iter().find(|(p, _)| p.eq_ignore_ascii_case(&pin)).cloned()
+                }
+                _ => None,
+            };
+            if let Some((_, conns)) = in_out {
+                // The in-out's output is the variable passed in; another one is not written.
+                let passed = conns.first().and_then(|c| index.get(&c.from)).map(|&v| &els[v].kind);
+                if !matches!(passed, Some(Kind::InVar(e)) if e.eq_ignore_ascii_case(&expr)) {
                     warnings.push(format!(
-                        "POU {pou}: outVariable localId {id} ({expr}) is wired to in-out {pin}, which passes {}; skipped",
-                        io.operand
+                        "POU {pou}: outVariable localId {id} ({expr}) is wired to in-out {pin}, which passes another variable; skipped"
                     ));
                 }
                 continue;

@@ -113,7 +113,8 @@ fn pin_list(
 pub(super) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError> {
     let mut els = Vec::new();
     let mut connectors: HashMap<String, Vec<Conn>> = HashMap::new();
-    let mut continuations: HashMap<String, String> = HashMap::new();
+    // Continuations by localId: (name in upper case, name as written).
+    let mut continuations: HashMap<String, (String, String)> = HashMap::new();
     for n in &ld.children {
         let id = n.attr("localId").unwrap_or("").trim().to_string();
         let err = |message: String| ImportError::Element {
@@ -178,18 +179,19 @@ pub(super) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError
             }
             "return" => Kind::Leaf(Element::Return),
             "connector" | "continuation" => {
-                let name = n.attr("name").unwrap_or("").trim().to_ascii_uppercase();
+                let spelled = n.attr("name").unwrap_or("").trim().to_string();
+                let name = spelled.to_ascii_uppercase();
                 if name.is_empty() {
                     return Err(err(format!("a <{}> without a name", n.name)));
                 }
                 if n.name == "connector" {
                     if connectors.insert(name.clone(), all_conns_in(n)).is_some() {
-                        return Err(err(format!("two connectors are named {name}")));
+                        return Err(err(format!("two connectors are named {spelled}")));
                     }
                 } else if id.is_empty() {
                     return Err(err("a <continuation> without localId".into()));
                 } else {
-                    continuations.insert(id.clone(), name);
+                    continuations.insert(id.clone(), (name, spelled));
                 }
                 continue;
             }
@@ -226,7 +228,7 @@ pub(super) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError
 fn resolve_continuations(
     list: &mut Vec<Conn>,
     connectors: &HashMap<String, Vec<Conn>>,
-    continuations: &HashMap<String, String>,
+    continuations: &HashMap<String, (String, String)>,
 ) -> Result<(), String> {
     for _ in 0..64 {
         if !list.iter().any(|c| continuations.contains_key(&c.from)) {
@@ -235,7 +237,7 @@ fn resolve_continuations(
         let mut next = Vec::new();
         for c in list.drain(..) {
             match continuations.get(&c.from) {
-                Some(name) => match connectors.get(name) {
+                Some((key, name)) => match connectors.get(key) {
                     Some(src) => next.extend(src.iter().cloned()),
                     None => {
                         return Err(format!(
