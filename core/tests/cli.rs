@@ -175,3 +175,62 @@ fn export_to_plcopen_and_run_the_xml() {
     let out = plc(&["run", bad.to_str().expect("utf-8 path"), "--json"]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// The five Done-when rungs of the ladder issue, each a PROGRAM of one example project and
+/// of its PLCopen XML export, run through `plc run` with the values worked out by hand.
+#[test]
+fn the_five_ladder_rungs_run_from_the_project_file_and_from_plcopen_xml() {
+    // (program, --set pairs, cycles, expected variables)
+    let cases: &[(&str, &[&str], &str, &[(&str, serde_json::Value)])] = &[
+        ("Latch", &["Start=TRUE"], "2", &[("Motor", true.into())]),
+        ("Latch", &["Start=TRUE", "Stop=TRUE"], "2", &[("Motor", false.into())]),
+        // Scan k (from 1) runs at 10(k - 1) ms: ET reaches PT = 2 s on scan 201.
+        (
+            "DelayedLamp",
+            &["Go=TRUE"],
+            "200",
+            &[("Lamp", false.into()), ("Elapsed", "T#1s990ms".into())],
+        ),
+        ("DelayedLamp", &["Go=TRUE"], "201", &[("Lamp", true.into()), ("Elapsed", "T#2s".into())]),
+        // A held sensor is one rising edge; Reset on R holds the count at 0.
+        ("PartCounter", &["Part=TRUE"], "3", &[("Count", 1.into()), ("BoxFull", false.into())]),
+        ("PartCounter", &["Part=TRUE", "Reset=TRUE"], "3", &[("Count", 0.into())]),
+        (
+            "LevelCopy",
+            &["Enable=TRUE", "Level=70"],
+            "1",
+            &[("High", true.into()), ("Shown", 70.into())],
+        ),
+        (
+            "LevelCopy",
+            &["Enable=TRUE", "Level=40"],
+            "1",
+            &[("High", false.into()), ("Shown", 0.into())],
+        ),
+        ("ThreeWay", &["C=TRUE", "Permit=TRUE"], "1", &[("Out", true.into())]),
+        ("ThreeWay", &["B=TRUE"], "1", &[("Out", false.into())]),
+    ];
+    for file in ["ladder-five-rungs.plcproj.json", "ladder-five-rungs.xml"] {
+        let path = example(file);
+        for (program, sets, cycles, want) in cases {
+            let mut args =
+                vec!["run", path.as_str(), "--program", program, "--cycles", cycles, "--json"];
+            for s in *sets {
+                args.extend(["--set", s]);
+            }
+            let out = plc(&args);
+            assert!(out.status.success(), "{file} {program}: {}", stdout(&out));
+            let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("JSON");
+            for (name, value) in *want {
+                assert_eq!(&v["vars"][name], value, "{file} {program} {sets:?}: {name}");
+            }
+        }
+    }
+    // The ST view of the counter shows its wired reset input.
+    let out = plc(&["st-view", &example("ladder-five-rungs.xml"), "--pou", "PartCounter"]);
+    assert!(
+        stdout(&out).contains("Parts(CU := LdEdge_0.Q, R := Reset, PV := 5);"),
+        "{}",
+        stdout(&out)
+    );
+}

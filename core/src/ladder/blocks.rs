@@ -222,13 +222,15 @@ pub(crate) fn block_code(b: &Block, power: &str, wired: &[Option<String>]) -> Bl
             format!("{}({})", b.type_name.trim(), list.join(", "))
         };
         let comparison = is_comparison(&b.type_name);
+        let eno = power_out.eq_ignore_ascii_case("ENO");
         match &result {
             Some(var) => statements.push(format!("{var} := {value};")),
-            None if !standard => statements.push(format!("{value};")),
+            // Called for its outputs and in-outs only when its result carries no power.
+            None if !standard && eno => statements.push(format!("{value};")),
             None => {}
         }
         let carried = result.clone().unwrap_or_else(|| value.clone());
-        if power_out.eq_ignore_ascii_case("ENO") {
+        if eno {
             PowerOut::Same
         } else if !enable {
             PowerOut::Value(carried)

@@ -91,12 +91,45 @@ fn atom(s: String) -> B {
     }
 }
 
+/// The leading name of a place (`T1` of `T1.ET`, `%QX0` of `%QX0.1`), upper case.
+fn root_of(place: &str) -> String {
+    place.trim().split(['.', '[']).next().unwrap_or("").trim().to_ascii_uppercase()
+}
+
+/// The variables a coil or block writes (their leading names).
+fn written_names(e: &Element) -> Vec<String> {
+    match e {
+        Element::Coil { operand, .. } => vec![root_of(operand)],
+        Element::Block(b) => b
+            .instance
+            .iter()
+            .map(|i| root_of(i))
+            .chain(b.outputs.iter().chain(&b.in_outs).map(|p| root_of(&p.operand)))
+            .filter(|n| !n.is_empty())
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// Whether an expression reads one of `names`.
+fn mentions(b: &B, names: &[String]) -> bool {
+    match b {
+        B::True | B::False => false,
+        B::Atom(s) => s
+            .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '%'))
+            .any(|t| names.iter().any(|n| n.eq_ignore_ascii_case(t))),
+        B::Not(x) => mentions(x, names),
+        B::And(xs) | B::Or(xs) => xs.iter().any(|x| mentions(x, names)),
+    }
+}
+
 /// The statements of the ST view with the rung each comes from, and the declarations of
-/// the edge-detection instances the view needs (`LdEdge_0 : R_TRIG;`).
+/// the helpers the view needs (`LdEdge_0 : R_TRIG;`, `LdTmp_0 : BOOL;`).
 fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
     let mut lines: Vec<(String, Option<usize>)> = Vec::new();
     let mut decls = String::new();
     let mut edge = 0usize;
+    let mut tmp = 0usize;
     let jumps = jumps(pou);
     for (id, ..) in &jumps {
         lines.push((format!("LdJmp_{id} := FALSE;"), None));
@@ -140,6 +173,33 @@ fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
                     .map(|(j, _)| outs.get(&j).cloned().unwrap_or(B::False))
                     .collect())
             };
+            // A statement that writes a variable an expression still waiting to be used has
+            // read: keep that expression's value in a temporary first, so the view computes
+            // what the rung computes (power is evaluated where the element stands).
+            let written = written_names(e.element);
+            if !written.is_empty() {
+                let mut pending: Vec<usize> = outs
+                    .keys()
+                    .copied()
+                    .filter(|&j| {
+                        let node = net.elements[j].output;
+                        net.elements.iter().skip(i + 1).any(|k| k.input == node)
+                            || net.pins.iter().any(|p| p.block > i && p.node == node)
+                    })
+                    .collect();
+                pending.sort_unstable();
+                for j in pending {
+                    let Some(value) = outs.get(&j) else { continue };
+                    if !mentions(value, &written) {
+                        continue;
+                    }
+                    let line = format!("LdTmp_{tmp} := {};", render(value));
+                    lines.push((format!("{indent}{line}"), Some(ri)));
+                    decls.push_str(&format!("    LdTmp_{tmp} : BOOL;\n"));
+                    outs.insert(j, B::Atom(format!("LdTmp_{tmp}")));
+                    tmp += 1;
+                }
+            }
             let mut emit = |s: String| lines.push((format!("{indent}{s}"), Some(ri)));
             let out = match e.element {
                 Element::Empty | Element::Covered | Element::Wire => input,
