@@ -181,7 +181,8 @@ fn export_to_plcopen_and_run_the_xml() {
 #[test]
 fn the_five_ladder_rungs_run_from_the_project_file_and_from_plcopen_xml() {
     // (program, --set pairs, cycles, expected variables)
-    let cases: &[(&str, &[&str], &str, &[(&str, serde_json::Value)])] = &[
+    type Case<'a> = (&'a str, &'a [&'a str], &'a str, &'a [(&'a str, serde_json::Value)]);
+    let cases: &[Case] = &[
         ("Latch", &["Start=TRUE"], "2", &[("Motor", true.into())]),
         ("Latch", &["Start=TRUE", "Stop=TRUE"], "2", &[("Motor", false.into())]),
         // Scan k (from 1) runs at 10(k - 1) ms: ET reaches PT = 2 s on scan 201.

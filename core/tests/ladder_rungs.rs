@@ -206,6 +206,15 @@ fn validation_rules_report_exact_locations() {
     );
     // after a coil
     assert_eq!(only(&pou(D, vec![rung(&["[A] (X) [B]"])]), Code::LadderAfterCoil), (0, 0, 2));
+    // rows of different lengths; a block taller than the rung
+    assert_eq!(only(&pou(D, vec![rung(&["[A] (X)", "[B]"])]), Code::LadderBadGrid), (0, 1, 0));
+    let mut tall = Block::new("TON", Some("T1"));
+    tall.height = 3;
+    tall.inputs = vec![Pin::operand("PT", "T#1s")];
+    let r = rung(&["[A] B (X)", ". # ."]);
+    let mut r = r;
+    r.cells[0][1].element = Element::Block(tall);
+    assert_eq!(only(&pou(D, vec![r]), Code::LadderBadGrid), (0, 0, 1));
     // covered without block
     assert_eq!(only(&pou(D, vec![rung(&["[A] (X)", "# ."])]), Code::LadderStrayCovered), (0, 1, 0));
     // backward jump

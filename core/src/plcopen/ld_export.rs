@@ -64,8 +64,14 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
     let mut y0: i64 = 20;
     let mut body = String::new();
     for rung in &lp.rungs {
+        // Rows of unequal length (a damaged file) are padded so every cell can be read.
+        let cols = rung.cells.iter().map(Vec::len).max().unwrap_or(0);
+        let mut padded = rung.clone();
+        for row in &mut padded.cells {
+            row.resize(cols, Default::default());
+        }
+        let rung = &padded;
         let rows = rung.rows();
-        let cols = rung.columns();
         if rows == 0 || cols == 0 {
             continue;
         }
@@ -240,7 +246,10 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
                     };
                     for (k, p) in b.inputs.iter().enumerate() {
                         let wires = match (p.wired_row, data_source(&p.operand, c)) {
-                            (Some(w), _) => sources_of(&mut uf, node(r + w as usize, c)),
+                            (Some(w), _) if r + (w as usize) < rows => {
+                                sources_of(&mut uf, node(r + w as usize, c))
+                            }
+                            (Some(_), _) => Vec::new(),
                             (None, Some((sid, pin))) => vec![(sid, Some(pin))],
                             (None, None) => {
                                 vec![(in_var(&mut extra, &mut next_id, k, &p.operand), None)]

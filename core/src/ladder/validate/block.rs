@@ -199,9 +199,11 @@ fn check_pins(
                 (None, Some((fixed, more))) => {
                     fixed.iter().any(|f| f.eq_ignore_ascii_case(pin))
                         || (more
-                            && pin.len() > 2
-                            && pin[..2].eq_ignore_ascii_case("IN")
-                            && pin[2..].parse::<u32>().is_ok_and(|n| n >= 1))
+                            && pin.get(..2).is_some_and(|p| p.eq_ignore_ascii_case("IN"))
+                            && pin
+                                .get(2..)
+                                .and_then(|n| n.parse::<u32>().ok())
+                                .is_some_and(|n| n >= 1))
                 }
                 (None, None) => true,
             };

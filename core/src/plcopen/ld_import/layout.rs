@@ -257,7 +257,7 @@ impl Grid {
                     .collect();
                 let last_top = tops.last().copied().unwrap_or(row);
                 self.ensure_rows(row + parts.size(sp).1);
-                if col + width > self.cols() {
+                if col + width > self.cols() || (!at_end && col + width >= self.cols()) {
                     return Err(());
                 }
                 let nodes = Nodes::new(self, &[]);
@@ -404,7 +404,9 @@ impl Grid {
     /// Links rows `a` and `b` at column `c` (either order).
     fn link(&mut self, a: usize, b: usize, c: usize) {
         for rr in a.min(b)..a.max(b) {
-            self.cells[rr][c].link_down = true;
+            if let Some(cell) = self.cells.get_mut(rr).and_then(|row| row.get_mut(c)) {
+                cell.link_down = true;
+            }
         }
     }
 

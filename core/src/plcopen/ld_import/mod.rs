@@ -370,13 +370,16 @@ fn order_by_data(networks: &mut Vec<(f64, Vec<usize>)>, data: &[(usize, usize)])
     *networks = out;
 }
 
+/// Grid `(row, column)` of each placed element.
+type Positions = HashMap<usize, (usize, usize)>;
+
 /// Lays out one network: the part reaching the coils, then each wired input's network.
 /// On failure: the element to blame and why.
 fn layout_network(
     g: &Graph,
     edges: &[usize],
     parts: &Parts<'_>,
-) -> Result<(Rung, HashMap<usize, (usize, usize)>), (usize, String)> {
+) -> Result<(Rung, Positions), (usize, String)> {
     let not_sp = "the network is not series-parallel, so it cannot be laid out on the rung grid";
     // The cone of the coils.
     let mut reach = vec![g.t];
