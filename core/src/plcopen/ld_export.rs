@@ -1,28 +1,11 @@
 //! Ladder POU → `<pou>` with an `<LD>` body: elements at grid positions, wired per the grid.
 
 use super::export::vars_xml;
+use super::union_find::UnionFind;
 use super::xml::esc;
 use crate::ladder::{CoilKind, ContactKind, Element, LadderPou, LadderPouKind};
 use crate::syntax::ast::{Item, VarSection};
 use std::fmt::Write;
-
-struct Uf(Vec<usize>);
-
-impl Uf {
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.0[x] != x {
-            self.0[x] = self.0[self.0[x]];
-            x = self.0[x];
-        }
-        x
-    }
-    fn union(&mut self, a: usize, b: usize) {
-        let (a, b) = (self.find(a), self.find(b));
-        if a != b {
-            self.0[b] = a;
-        }
-    }
-}
 
 fn section_tag(s: VarSection) -> &'static str {
     match s {
@@ -89,7 +72,7 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
         }
         // Nodes (row, col) for col in 0..=cols.
         let node = |r: usize, c: usize| r * (cols + 1) + c;
-        let mut uf = Uf((0..rows * (cols + 1)).collect());
+        let mut uf = UnionFind::new(rows * (cols + 1));
         for r in 0..rows {
             uf.union(node(0, 0), node(r, 0));
             for c in 0..cols {
@@ -121,7 +104,7 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
             }
         }
         let rail_root = uf.find(node(0, 0));
-        let sources_of = |uf: &mut Uf, n: usize| -> Vec<(usize, Option<String>)> {
+        let sources_of = |uf: &mut UnionFind, n: usize| -> Vec<(usize, Option<String>)> {
             let root = uf.find(n);
             let mut v = Vec::new();
             if root == rail_root {

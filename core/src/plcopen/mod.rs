@@ -16,6 +16,7 @@ mod export;
 mod import;
 mod ld_export;
 mod ld_import;
+mod union_find;
 mod xml;
 
 use crate::project::Project;

@@ -315,6 +315,37 @@ fn check_pins(
     }
 }
 
+/// The checks every pin operand gets: present, a value (or a variable when `place`), and
+/// declared. Returns the context when its type is worth checking.
+fn operand_declared<'c>(
+    p: &Pin,
+    what: &str,
+    name: &str,
+    place: bool,
+    ctx: Option<&'c Context<'c>>,
+    sink: &mut Sink<'_>,
+) -> Option<&'c Context<'c>> {
+    let pin = p.name.trim();
+    let operand = p.operand.trim();
+    if operand.is_empty() {
+        let msg = format!("{what} {pin} of this {name} has no operand");
+        sink.error(Code::LadderMissingOperand, msg);
+        return None;
+    }
+    let (ok, kind) =
+        if place { (is_operand(operand), "variable") } else { (is_value(operand), "value") };
+    if !ok {
+        let msg = format!("{what} {pin} of this {name}: `{operand}` is not a {kind}");
+        sink.error(Code::LadderBadOperand, msg);
+        return None;
+    }
+    let c = ctx?;
+    if undeclared(c, operand, &format!("{what} {pin} of this {name}"), sink) {
+        return None;
+    }
+    Some(c)
+}
+
 /// An input bound to a value.
 fn check_value(
     p: &Pin,
@@ -326,22 +357,7 @@ fn check_value(
 ) {
     let pin = p.name.trim();
     let operand = p.operand.trim();
-    if operand.is_empty() {
-        sink.error(
-            Code::LadderMissingOperand,
-            format!("{what} {pin} of this {name} has no operand"),
-        );
-        return;
-    }
-    if !is_value(operand) {
-        let msg = format!("{what} {pin} of this {name}: `{operand}` is not a value");
-        sink.error(Code::LadderBadOperand, msg);
-        return;
-    }
-    let Some(c) = ctx else { return };
-    if undeclared(c, operand, &format!("{what} {pin} of this {name}"), sink) {
-        return;
-    }
+    let Some(c) = operand_declared(p, what, name, false, ctx, sink) else { return };
     if let Some(t) = ty {
         if let Some((false, found)) = c.catalog.value_fits(&c.scope, operand, t) {
             let msg = format!(
@@ -365,22 +381,7 @@ fn check_place(
 ) {
     let pin = p.name.trim();
     let operand = p.operand.trim();
-    if operand.is_empty() {
-        sink.error(
-            Code::LadderMissingOperand,
-            format!("{what} {pin} of this {name} has no operand"),
-        );
-        return;
-    }
-    if !is_operand(operand) {
-        let msg = format!("{what} {pin} of this {name}: `{operand}` is not a variable");
-        sink.error(Code::LadderBadOperand, msg);
-        return;
-    }
-    let Some(c) = ctx else { return };
-    if undeclared(c, operand, &format!("{what} {pin} of this {name}"), sink) {
-        return;
-    }
+    let Some(c) = operand_declared(p, what, name, true, ctx, sink) else { return };
     let (Some(t), Some(v)) = (ty, c.catalog.place_type(&c.scope, operand)) else { return };
     let ok = if exact { t == v } else { crate::ladder::catalog::fits(&t, &v) };
     if !ok {

@@ -247,14 +247,7 @@ impl Grid {
             }
             Sp::Par(v) => {
                 let width = parts.size(sp).0;
-                let tops: Vec<usize> = v
-                    .iter()
-                    .scan(row, |r, b| {
-                        let top = *r;
-                        *r += parts.size(b).1;
-                        Some(top)
-                    })
-                    .collect();
+                let tops = stacked(row, v.iter().map(|b| parts.size(b).1));
                 let last_top = tops.last().copied().unwrap_or(row);
                 self.ensure_rows(row + parts.size(sp).1);
                 if col + width > self.cols() || (!at_end && col + width >= self.cols()) {
@@ -329,30 +322,8 @@ struct Nodes {
 impl Nodes {
     fn new(grid: &Grid, pins: &[(usize, usize)]) -> Self {
         let rows = grid.cells.len();
-        let cols = grid.cols() + 1;
+        let (cols, class) = super::verify::grid_classes(&grid.cells);
         let id = |r: usize, c: usize| r * cols + c;
-        let mut parent: Vec<usize> = (0..rows * cols).collect();
-        fn find(p: &mut [usize], mut x: usize) -> usize {
-            while p[x] != x {
-                p[x] = p[p[x]];
-                x = p[x];
-            }
-            x
-        }
-        let union = |p: &mut Vec<usize>, a: usize, b: usize| {
-            let (a, b) = (find(p, a), find(p, b));
-            if a != b {
-                p[b] = a;
-            }
-        };
-        for r in 0..rows {
-            union(&mut parent, id(0, 0), id(r, 0));
-            for c in 0..cols - 1 {
-                if grid.cells[r][c].link_down && r + 1 < rows {
-                    union(&mut parent, id(r, c), id(r + 1, c));
-                }
-            }
-        }
         let mut used = vec![false; rows * cols];
         for r in 0..rows {
             for c in 0..cols - 1 {
@@ -367,7 +338,6 @@ impl Nodes {
                 used[id(r, c)] = true;
             }
         }
-        let class: Vec<usize> = (0..rows * cols).map(|x| find(&mut parent, x)).collect();
         let mut class_used = vec![false; rows * cols];
         for x in 0..rows * cols {
             if used[x] {
@@ -375,7 +345,9 @@ impl Nodes {
             }
         }
         // The rail is always in use.
-        class_used[class[0]] = true;
+        if let Some(&k) = class.first() {
+            class_used[k] = true;
+        }
         Nodes { class, used: class_used, cols }
     }
 
@@ -446,14 +418,7 @@ impl Grid {
                 Ok(())
             }
             Sp::Par(branches) => {
-                let tops: Vec<usize> = branches
-                    .iter()
-                    .scan(row, |r, b| {
-                        let top = *r;
-                        *r += tree_height(b, parts);
-                        Some(top)
-                    })
-                    .collect();
+                let tops = stacked(row, branches.iter().map(|b| tree_height(b, parts)));
                 let last_top = tops.last().copied().unwrap_or(row);
                 self.ensure_rows(row + tree_height(sp, parts));
                 let nodes = Nodes::new(self, &job.pins);
@@ -500,6 +465,17 @@ impl Grid {
         }
         Ok(())
     }
+}
+
+/// The top rows of branches of these heights stacked from `row` down.
+fn stacked(row: usize, heights: impl Iterator<Item = usize>) -> Vec<usize> {
+    heights
+        .scan(row, |r, h| {
+            let top = *r;
+            *r += h;
+            Some(top)
+        })
+        .collect()
 }
 
 /// Rows a wired input's tree needs.

@@ -16,6 +16,7 @@ mod verify;
 
 use std::collections::{BTreeMap, HashMap};
 
+use super::union_find::UnionFind;
 use super::xml::Node;
 use super::ImportError;
 use crate::ladder::catalog::Catalog;
@@ -31,30 +32,6 @@ pub(crate) struct LdBody {
     /// Declarations (`    name : TYPE;`) of the variables created for data wires from
     /// function outputs.
     pub declarations: Vec<String>,
-}
-
-/// Union-find over small integer node ids.
-#[derive(Default)]
-struct Uf(Vec<usize>);
-
-impl Uf {
-    fn add(&mut self) -> usize {
-        self.0.push(self.0.len());
-        self.0.len() - 1
-    }
-    fn find(&mut self, mut x: usize) -> usize {
-        while self.0[x] != x {
-            self.0[x] = self.0[self.0[x]];
-            x = self.0[x];
-        }
-        x
-    }
-    fn union(&mut self, a: usize, b: usize) {
-        let (a, b) = (self.find(a), self.find(b));
-        if a != b {
-            self.0[b] = a;
-        }
-    }
 }
 
 /// The electrical graph: element `i` is an edge `in_node[i]` → `out_node[i]`; wired block
@@ -115,7 +92,7 @@ pub(crate) fn import_ld(
 
     // Networks: edges sharing an internal node (a wired input joins its block's network).
     let alive = &graph.alive;
-    let mut comp = Uf::default();
+    let mut comp = UnionFind::default();
     for _ in 0..alive.len() {
         comp.add();
     }
@@ -207,7 +184,7 @@ fn build_graph(
         local_id: id.to_string(),
         message,
     };
-    let mut uf = Uf::default();
+    let mut uf = UnionFind::default();
     let s_node = uf.add();
     let t_node = uf.add();
     let n = els.len();

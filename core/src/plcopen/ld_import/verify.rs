@@ -5,10 +5,29 @@
 
 use std::collections::{BTreeSet, HashMap};
 
-use crate::ladder::{Element, Rung};
+use super::super::union_find::UnionFind;
+use crate::ladder::{Cell, Element, Rung};
 
 /// Who feeds something: the rail (`None`) or element indices.
 pub(super) type Feeders = BTreeSet<Option<usize>>;
+
+/// The class of every grid node `(row, column boundary)` of `cells` (index
+/// `row * (columns + 1) + column`): nodes joined by vertical links, and the rail column, share
+/// one. Returns the row stride and the classes.
+pub(super) fn grid_classes(cells: &[Vec<Cell>]) -> (usize, Vec<usize>) {
+    let rows = cells.len();
+    let cols = cells.first().map_or(0, Vec::len) + 1;
+    let mut uf = UnionFind::new(rows * cols);
+    for r in 0..rows {
+        uf.union(0, r * cols);
+        for c in 0..cols - 1 {
+            if cells[r].get(c).is_some_and(|x| x.link_down) && r + 1 < rows {
+                uf.union(r * cols + c, (r + 1) * cols + c);
+            }
+        }
+    }
+    (cols, (0..rows * cols).map(|x| uf.find(x)).collect())
+}
 
 /// Grid nodes of a rung merged by vertical links and the rail.
 struct GridNet {
@@ -18,29 +37,7 @@ struct GridNet {
 
 impl GridNet {
     fn new(rung: &Rung) -> Self {
-        let rows = rung.rows();
-        let cols = rung.columns() + 1;
-        let mut parent: Vec<usize> = (0..rows * cols).collect();
-        fn find(p: &mut [usize], mut x: usize) -> usize {
-            while p[x] != x {
-                p[x] = p[p[x]];
-                x = p[x];
-            }
-            x
-        }
-        for r in 0..rows {
-            for (a, b) in [(0, r * cols)].into_iter().chain(
-                (0..cols - 1)
-                    .filter(|&c| rung.cells[r][c].link_down && r + 1 < rows)
-                    .map(|c| (r * cols + c, (r + 1) * cols + c)),
-            ) {
-                let (a, b) = (find(&mut parent, a), find(&mut parent, b));
-                if a != b {
-                    parent[b] = a;
-                }
-            }
-        }
-        let class = (0..rows * cols).map(|x| find(&mut parent, x)).collect();
+        let (cols, class) = grid_classes(&rung.cells);
         GridNet { cols, class }
     }
 
