@@ -86,7 +86,11 @@ pub(crate) fn check_bool_operand(
     match ctx.catalog.place_type(&ctx.scope, operand) {
         Some(t) if !t.is_bool() => Some((
             Code::LadderPinType,
-            format!("this {what} needs a BOOL, but `{}` is a {t}", operand.trim()),
+            format!(
+                "this {what} needs a BOOL, but `{}` is {}",
+                operand.trim(),
+                article(&t.to_string())
+            ),
         )),
         _ => None,
     }
@@ -239,8 +243,8 @@ fn check_pins(
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 } else if ty.as_ref().is_some_and(|t| !t.is_bool()) {
                     let msg = format!(
-                        "input {pin} of this {name} is a {}: only a BOOL input can be wired to contacts",
-                        ty.as_ref().map(ToString::to_string).unwrap_or_default()
+                        "input {pin} of this {name} is {}: only a BOOL input can be wired to contacts",
+                        article(&ty.as_ref().map(ToString::to_string).unwrap_or_default())
                     );
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 }
@@ -361,7 +365,8 @@ fn check_value(
     if let Some(t) = ty {
         if let Some((false, found)) = c.catalog.value_fits(&c.scope, operand, t) {
             let msg = format!(
-                "{what} {pin} of this {name} needs a {t}, but `{operand}` is {}",
+                "{what} {pin} of this {name} needs {}, but `{operand}` is {}",
+                article(&t.to_string()),
                 article(&found)
             );
             sink.error(Code::LadderPinType, msg);
@@ -385,15 +390,21 @@ fn check_place(
     let (Some(t), Some(v)) = (ty, c.catalog.place_type(&c.scope, operand)) else { return };
     let ok = if exact { t == v } else { crate::ladder::catalog::fits(&t, &v) };
     if !ok {
-        let msg = format!("{what} {pin} of this {name} is a {t}, but `{operand}` is a {v}");
+        let msg = format!(
+            "{what} {pin} of this {name} is {}, but `{operand}` is {}",
+            article(&t.to_string()),
+            article(&v.to_string())
+        );
         sink.error(Code::LadderPinType, msg);
     }
 }
 
-/// "a BOOL" or the description as it is ("an integer literal").
+/// "a BOOL", "an INT", or the description as it is ("an integer literal").
 fn article(found: &str) -> String {
     if found.starts_with("a ") || found.starts_with("an ") {
         found.to_string()
+    } else if found.starts_with(['A', 'E', 'I', 'O']) {
+        format!("an {found}")
     } else {
         format!("a {found}")
     }
