@@ -121,9 +121,12 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
             }
             v
         };
-        let conn_xml = |srcs: &[(usize, Option<String>)], indent: &str| -> String {
-            let mut s =
-                format!("{indent}<connectionPointIn>\n{indent}  <relPosition x=\"0\" y=\"10\"/>\n");
+        // `row`: the pin's row on its element (0 for the power input), for its position.
+        let conn_at = |srcs: &[(usize, Option<String>)], indent: &str, row: usize| -> String {
+            let rel_y = row * 20 + 10;
+            let mut s = format!(
+                "{indent}<connectionPointIn>\n{indent}  <relPosition x=\"0\" y=\"{rel_y}\"/>\n"
+            );
             for (sid, p) in srcs {
                 match p {
                     Some(p) => {
@@ -141,6 +144,7 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
             let _ = writeln!(s, "{indent}</connectionPointIn>");
             s
         };
+        let conn_xml = |srcs: &[(usize, Option<String>)], indent: &str| conn_at(srcs, indent, 0);
         // Data wires: an input reading `Inst.PIN` of a block placed in an earlier column of
         // this rung is wired to that block's output (unless PIN carries its power).
         let instances: Vec<(String, usize, usize, String)> = items
@@ -238,7 +242,7 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
                                 vec![(in_var(&mut extra, &mut next_id, k, &p.operand), None)]
                             }
                         };
-                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                </variable>\n", esc(&p.name), conn_xml(&wires, "                  "));
+                        let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                </variable>\n", esc(&p.name), conn_at(&wires, "                  ", k + 1));
                     }
                     body.push_str("              </inputVariables>\n");
                     if b.in_outs.is_empty() {
@@ -248,7 +252,7 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
                         for (k, p) in b.in_outs.iter().enumerate() {
                             let vid =
                                 in_var(&mut extra, &mut next_id, b.inputs.len() + k, &p.operand);
-                            let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"{}\"/>\n                  </connectionPointOut>\n                </variable>\n", esc(&p.name), conn_xml(&[(vid, None)], "                  "), (b.inputs.len() + k + 1) * 20 + 10);
+                            let _ = write!(body, "                <variable formalParameter=\"{}\">\n{}                  <connectionPointOut>\n                    <relPosition x=\"60\" y=\"{}\"/>\n                  </connectionPointOut>\n                </variable>\n", esc(&p.name), conn_at(&[(vid, None)], "                  ", b.inputs.len() + k + 1), (b.inputs.len() + k + 1) * 20 + 10);
                         }
                         body.push_str("              </inOutVariables>\n");
                     }
