@@ -91,7 +91,8 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             import_pou(pou, &mut source, &mut ladder, &mut warnings)?;
         }
     }
-    let project = Project { schema: SCHEMA_VERSION, name, source, settings, ladder };
+    let project =
+        Project { schema: SCHEMA_VERSION, name, source, settings, ladder, petri: Vec::new() };
     Ok(Import { project, warnings })
 }
 
