@@ -220,15 +220,6 @@ impl Place {
             comment: String::new(),
         }
     }
-
-    /// The name shown to the user: the name, or the id when the name is empty.
-    pub fn display_name(&self) -> &str {
-        if self.name.trim().is_empty() {
-            &self.id
-        } else {
-            self.name.trim()
-        }
-    }
 }
 
 impl Transition {
@@ -241,15 +232,6 @@ impl Transition {
             priority: 0,
             position: None,
             comment: String::new(),
-        }
-    }
-
-    /// The name shown to the user: the name, or the id when the name is empty.
-    pub fn display_name(&self) -> &str {
-        if self.name.trim().is_empty() {
-            &self.id
-        } else {
-            self.name.trim()
         }
     }
 }

@@ -70,25 +70,21 @@ fn load(path: &Path) -> Result<Project, String> {
     Project::from_file(&text).map_err(|e| format!("plc: {}: {e}", path.display()))
 }
 
-fn select<'p>(
-    project: &'p Project,
-    path: &Path,
-    pou: Option<&str>,
-) -> Result<&'p PetriPou, String> {
+/// The Petri net POU `pou` (or the first one) of the project or PNML file at `path`.
+fn load_pou(path: &Path, pou: Option<&str>) -> Result<PetriPou, String> {
+    let project = load(path)?;
+    let names: Vec<String> = project.petri.iter().map(|p| p.name.clone()).collect();
     let found = match pou {
-        Some(name) => project.petri.iter().find(|p| p.name.eq_ignore_ascii_case(name)),
-        None => project.petri.first(),
+        Some(name) => project.petri.into_iter().find(|p| p.name.eq_ignore_ascii_case(name)),
+        None => project.petri.into_iter().next(),
     };
-    found.ok_or_else(|| {
-        let names: Vec<&str> = project.petri.iter().map(|p| p.name.as_str()).collect();
-        match pou {
-            Some(name) => format!(
-                "plc: no Petri net POU `{name}` in {} (Petri net POUs: {})",
-                path.display(),
-                names.join(", ")
-            ),
-            None => format!("plc: {} holds no Petri net POU", path.display()),
-        }
+    found.ok_or_else(|| match pou {
+        Some(name) => format!(
+            "plc: no Petri net POU `{name}` in {} (Petri net POUs: {})",
+            path.display(),
+            names.join(", ")
+        ),
+        None => format!("plc: {} holds no Petri net POU", path.display()),
     })
 }
 
@@ -97,11 +93,18 @@ fn fail(message: String) -> ExitCode {
     ExitCode::from(2)
 }
 
-fn print_diagnostics(path: &Path, pou: &str, diags: &[petri::PetriDiagnostic]) {
+/// Prints diagnostics as `FILE: error[CODE]: POU P, place X (…): message`, on standard
+/// error when standard output carries a result (generated code).
+fn print_diagnostics(path: &Path, pou: &str, diags: &[petri::PetriDiagnostic], stderr: bool) {
     for d in diags {
         let severity = if d.is_error() { "error" } else { "warning" };
         let at = petri::describe(pou, &d.element, d.at.as_ref());
-        println!("{}: {severity}[{}]: {at}: {}", path.display(), d.code, d.message);
+        let line = format!("{}: {severity}[{}]: {at}: {}", path.display(), d.code, d.message);
+        if stderr {
+            eprintln!("{line}");
+        } else {
+            println!("{line}");
+        }
     }
 }
 
@@ -119,35 +122,25 @@ pub fn run(command: PetriCommand) -> ExitCode {
             }
             Err(e) => fail(e),
         },
-        PetriCommand::Export { project, pou } => {
-            let loaded = match load(&project) {
-                Ok(p) => p,
-                Err(e) => return fail(e),
-            };
-            match select(&loaded, &project, pou.as_deref()) {
-                Ok(p) => {
-                    print!("{}", pnml::export(p));
-                    ExitCode::SUCCESS
-                }
-                Err(e) => fail(e),
+        PetriCommand::Export { project, pou } => match load_pou(&project, pou.as_deref()) {
+            Ok(p) => {
+                print!("{}", pnml::export(&p));
+                ExitCode::SUCCESS
             }
-        }
+            Err(e) => fail(e),
+        },
     }
 }
 
 fn analyze(path: &Path, pou: Option<&str>, budget: usize, json: bool) -> ExitCode {
-    let project = match load(path) {
-        Ok(p) => p,
-        Err(e) => return fail(e),
-    };
-    let pou = match select(&project, path, pou) {
+    let pou = match load_pou(path, pou) {
         Ok(p) => p,
         Err(e) => return fail(e),
     };
     let net = match petri::build(&pou.net) {
         Ok(n) => n,
         Err(diags) => {
-            print_diagnostics(path, &pou.name, &diags);
+            print_diagnostics(path, &pou.name, &diags, false);
             return ExitCode::FAILURE;
         }
     };
@@ -161,17 +154,13 @@ fn analyze(path: &Path, pou: Option<&str>, budget: usize, json: bool) -> ExitCod
 }
 
 fn codegen(path: &Path, pou: Option<&str>, place_map: bool) -> ExitCode {
-    let project = match load(path) {
+    let pou = match load_pou(path, pou) {
         Ok(p) => p,
         Err(e) => return fail(e),
     };
-    let pou = match select(&project, path, pou) {
-        Ok(p) => p,
-        Err(e) => return fail(e),
-    };
-    match petri::compile(pou) {
+    match petri::compile(&pou) {
         Ok(compiled) => {
-            print_diagnostics(path, &pou.name, &compiled.warnings);
+            print_diagnostics(path, &pou.name, &compiled.warnings, true);
             if place_map {
                 println!(
                     "{}",
@@ -183,7 +172,7 @@ fn codegen(path: &Path, pou: Option<&str>, place_map: bool) -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(diags) => {
-            print_diagnostics(path, &pou.name, &diags);
+            print_diagnostics(path, &pou.name, &diags, false);
             ExitCode::FAILURE
         }
     }

@@ -76,15 +76,7 @@ fn producer_consumer_with_a_buffer_of_two() {
     // Every (producer, consumer, items 0..2) combination is reachable: 2·2·3 = 12
     // markings. Edges: produce in the 6 markings with P0, consume in the 6 with C1, put
     // with P1 and items < 2 (2·2 = 4), get with C0 and items > 0 (4): 20.
-    let n = net(
-        &[("P0", 1), ("P1", 0), ("C0", 1), ("C1", 0), ("items", 0), ("free", 2)],
-        &[
-            ("produce", &["P0"], &["P1"]),
-            ("put", &["P1", "free"], &["P0", "items"]),
-            ("get", &["C0", "items"], &["C1", "free"]),
-            ("consume", &["C1"], &["C0"]),
-        ],
-    );
+    let n = producer_consumer();
     let (_, a) = analysed(&n);
     assert_eq!((a.states, a.edges), (12, 20));
     assert_eq!((a.bounded, a.safe), (Some(true), Some(false)));

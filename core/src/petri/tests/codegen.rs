@@ -111,15 +111,7 @@ fn place_map_reads_the_marking() {
 fn a_net_no_process_covers_is_refused_naming_the_places() {
     // A bounded buffer of two: items + free is an invariant holding 2 tokens, so no
     // one-token state machine covers `items` and `free`.
-    let n = net(
-        &[("P0", 1), ("P1", 0), ("C0", 1), ("C1", 0), ("items", 0), ("free", 2)],
-        &[
-            ("produce", &["P0"], &["P1"]),
-            ("put", &["P1", "free"], &["P0", "items"]),
-            ("get", &["C0", "items"], &["C1", "free"]),
-            ("consume", &["C1"], &["C0"]),
-        ],
-    );
+    let n = producer_consumer();
     let err = compile(&pou(n, 0)).unwrap_err();
     assert_eq!(codes(&err), vec!["E0505"]);
     assert!(err[0].message.contains("items, free"), "{}", err[0].message);

@@ -51,3 +51,17 @@ pub(super) fn pou(net: Net, inputs: usize) -> PetriPou {
         options: GenerationOptions::default(),
     }
 }
+
+/// Producer P0 -produce-> P1 -put(takes a free slot, adds an item)-> P0; consumer
+/// C0 -get(takes an item, frees a slot)-> C1 -consume-> C0; a buffer of two free slots.
+pub(super) fn producer_consumer() -> Net {
+    net(
+        &[("P0", 1), ("P1", 0), ("C0", 1), ("C1", 0), ("items", 0), ("free", 2)],
+        &[
+            ("produce", &["P0"], &["P1"]),
+            ("put", &["P1", "free"], &["P0", "items"]),
+            ("get", &["C0", "items"], &["C1", "free"]),
+            ("consume", &["C1"], &["C0"]),
+        ],
+    )
+}
