@@ -71,9 +71,8 @@ END_PROGRAM
     );
 }
 
-#[test]
-fn retain_and_priority_order() {
-    // Two transitions leave P1; T2 has the lower priority number so it is tested first.
+/// A choice at P1: T1 to P2 (guard g1) or T2 to P3 (guard g2), both back to P1.
+fn choice() -> PetriPou {
     let mut p = pou(
         net(
             &[("P1", 1), ("P2", 0), ("P3", 0)],
@@ -86,10 +85,17 @@ fn retain_and_priority_order() {
         ),
         2,
     );
-    p.options.retain = true;
     p.net.transitions[0].guard = "g1".into();
-    p.net.transitions[0].priority = 2;
     p.net.transitions[1].guard = "g2".into();
+    p
+}
+
+#[test]
+fn retain_and_priority_order() {
+    // Two transitions leave P1; T2 has the lower priority number so it is tested first.
+    let mut p = choice();
+    p.options.retain = true;
+    p.net.transitions[0].priority = 2;
     p.net.transitions[1].priority = 1;
     let st = compile(&p).unwrap().generated.st;
     assert!(st.contains("VAR RETAIN (* step variables"), "{st}");
@@ -330,20 +336,7 @@ fn flags_cannot_tell_two_shared_transitions_apart_at_one_place() {
 
 #[test]
 fn equal_priorities_with_overlapping_guards_warn() {
-    let mut p = pou(
-        net(
-            &[("P1", 1), ("P2", 0), ("P3", 0)],
-            &[
-                ("T1", &["P1"], &["P2"]),
-                ("T2", &["P1"], &["P3"]),
-                ("T3", &["P2"], &["P1"]),
-                ("T4", &["P3"], &["P1"]),
-            ],
-        ),
-        2,
-    );
-    p.net.transitions[0].guard = "g1".into();
-    p.net.transitions[1].guard = "g2".into();
+    let mut p = choice();
     let w = compile(&p).unwrap().warnings;
     assert_eq!(codes(&w), vec!["W0010"]);
     assert_eq!(w[0].code, Code::PetriGuardConflict);
