@@ -323,3 +323,17 @@ fn traffic_light_alternates_and_never_shows_green_both_ways() {
         ]
     );
 }
+
+#[test]
+fn priorities_that_process_order_overrides_are_flagged() {
+    let mut project = example("traffic-light.plcproj.json");
+    let pou = &mut project.petri[0];
+    assert!(petri::compile(pou).unwrap().warnings.is_empty());
+    // With the crossing's process last, "NS go" and "EW go" are decided by their own
+    // directions: the priorities 0 and 1 no longer choose between them.
+    pou.net.processes.rotate_left(1);
+    let w = petri::compile(pou).unwrap().warnings;
+    assert_eq!(w.len(), 1);
+    assert_eq!(w[0].code.as_str(), "W0014");
+    assert!(w[0].message.contains("T1 and T4 both take the token of place Free"), "{}", w[0].message);
+}

@@ -159,6 +159,7 @@ problem_codes! {
     PetriDeadlock = "W0011": "a reachable marking of a Petri net where no transition can fire (guards ignored)",
     PetriDeadTransition = "W0012": "a Petri net transition that can never fire (guards ignored)",
     PetriAnalysisIncomplete = "W0013": "the Petri net has more reachable markings than the analysis budget",
+    PetriPriorityIgnored = "W0014": "transitions competing for one token but decided by different Petri net processes, where priorities cannot choose",
 }
 
 impl std::fmt::Display for Code {

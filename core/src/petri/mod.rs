@@ -61,25 +61,52 @@ pub fn compile(pou: &PetriPou) -> Result<Compiled, Vec<PetriDiagnostic>> {
     let processes = components::plan_processes(&pou.net, &net, &components)?;
     let generated = codegen::generate(pou, &net, &processes)?;
     let mut warnings = diags;
-    warnings.extend(warnings_of(pou, &net));
+    warnings.extend(warnings_of(pou, &net, &processes));
     Ok(Compiled { net, processes, generated, warnings })
 }
 
-/// The warnings of a net that compiles: conflicts decided only by declaration order, and
-/// what the analysis finds within [`COMPILE_BUDGET`] (deadlocks, dead transitions).
-fn warnings_of(pou: &PetriPou, net: &PtNet) -> Vec<PetriDiagnostic> {
+/// Where the generated code tests transition `t`: the deciding process (the first one
+/// containing an input place of `t`) and that input place.
+fn decided_at(net: &PtNet, processes: &[ProcessPlan], t: usize) -> Option<(usize, usize)> {
+    processes.iter().enumerate().find_map(|(c, plan)| {
+        net.pre[t].iter().map(|&(p, _)| p).find(|p| plan.places.contains(p)).map(|p| (c, p))
+    })
+}
+
+/// The warnings of a net that compiles: conflicts decided only by declaration order or
+/// by process order (where priorities cannot act), and what the analysis finds within
+/// [`COMPILE_BUDGET`] (deadlocks, dead transitions).
+fn warnings_of(pou: &PetriPou, net: &PtNet, processes: &[ProcessPlan]) -> Vec<PetriDiagnostic> {
     let mut out = Vec::new();
     for c in conflicts(pou, net) {
         let (a, b) = (&pou.net.transitions[c.first], &pou.net.transitions[c.second]);
-        if a.priority == b.priority && !c.exclusive {
+        let (da, db) = (decided_at(net, processes, c.first), decided_at(net, processes, c.second));
+        if da != db && !c.exclusive && a.priority != b.priority {
+            let first = match (da, db) {
+                (Some((x, _)), Some((y, _))) if y < x => b,
+                _ => a,
+            };
+            out.push(PetriDiagnostic::warning(
+                Code::PetriPriorityIgnored,
+                NetElement::Transition(b.id.clone()),
+                format!(
+                    "{} and {} both take the token of place {} but are decided by different \
+                     processes (or from different places), so their priorities cannot choose: \
+                     {} is tested first; list the process holding place {} first, or make the \
+                     guards exclusive",
+                    a.id, b.id, pou.net.places[c.place].id, first.id, pou.net.places[c.place].id
+                ),
+            ));
+        } else if a.priority == b.priority && !c.exclusive {
             out.push(PetriDiagnostic::warning(
                 Code::PetriGuardConflict,
                 NetElement::Transition(b.id.clone()),
                 format!(
-                    "{} and {} both leave place {} with priority {} and their guards may both \
-                     hold: {} is tested first because it comes first; give them different \
-                     priorities or exclusive guards",
-                    a.id, b.id, pou.net.places[c.place].id, a.priority, a.id
+                    "{} and {} both take the token of place {}, have priority {} and guards \
+                     that may both hold: the order of the transitions (or of the processes \
+                     deciding them) picks one; give them different priorities or exclusive \
+                     guards",
+                    a.id, b.id, pou.net.places[c.place].id, a.priority
                 ),
             ));
         }
