@@ -335,5 +335,9 @@ fn priorities_that_process_order_overrides_are_flagged() {
     let w = petri::compile(pou).unwrap().warnings;
     assert_eq!(w.len(), 1);
     assert_eq!(w[0].code.as_str(), "W0014");
-    assert!(w[0].message.contains("T1 and T4 both take the token of place Free"), "{}", w[0].message);
+    assert!(
+        w[0].message.contains("T1 and T4 both take the token of place Free"),
+        "{}",
+        w[0].message
+    );
 }

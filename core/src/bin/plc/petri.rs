@@ -146,6 +146,7 @@ fn analyze(path: &Path, pou: Option<&str>, budget: usize, json: bool) -> ExitCod
     };
     let analysis = petri::analyze(&net, budget);
     if json {
+        eprintln!("plc: guards are ignored: the analysis is an over-approximation of the program");
         println!("{}", analysis.to_json(&net));
     } else {
         print!("{}", petri::text_report(&pou.net, &net, &analysis));
