@@ -15,6 +15,7 @@ pub mod compile;
 pub mod diagnostics;
 pub mod export;
 pub mod ladder;
+pub mod petri;
 pub mod plcopen;
 pub mod project;
 pub mod run;

@@ -189,6 +189,17 @@ pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
     report
 }
 
+fn petri_report(pou: &str, d: &crate::petri::PetriDiagnostic) -> DiagnosticReport {
+    let place = crate::petri::describe(pou, &d.element, d.at.as_ref());
+    DiagnosticReport {
+        severity: d.severity,
+        code: d.code.as_str().to_string(),
+        message: format!("{place}: {}", d.message),
+        line: 0,
+        column: 0,
+    }
+}
+
 fn ladder_report(pou: &str, d: &crate::ladder::LadderDiagnostic) -> DiagnosticReport {
     DiagnosticReport {
         severity: d.severity,
@@ -199,10 +210,22 @@ fn ladder_report(pou: &str, d: &crate::ladder::LadderDiagnostic) -> DiagnosticRe
     }
 }
 
-/// Compiles and runs a project (its ST source and ladder POUs) as `plc run` does. Ladder
-/// problems are reported with line 0 and `POU Name, rung R, row r, column c:` in the
-/// message; the hidden variables of the ladder lowering are left out of `vars`.
+/// Compiles and runs a project (its ST source, ladder and Petri net POUs) as `plc run` does.
+/// Ladder problems are reported with line 0 and `POU Name, rung R, row r, column c:` in the
+/// message, Petri net problems with `POU Name, transition T (guard line l, column c):`;
+/// the hidden variables of the ladder lowering and the Petri net code are left out of
+/// `vars`.
 pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> RunReport {
+    let petri = crate::petri::project_diagnostics(project);
+    if petri.iter().any(|(_, d)| d.is_error()) {
+        return RunReport {
+            status: RunStatus::Error,
+            cycles: 0,
+            vars: serde_json::Map::new(),
+            fault: None,
+            diagnostics: petri.iter().map(|(p, d)| petri_report(p, d)).collect(),
+        };
+    }
     let src = match crate::ladder::project_source(project) {
         Ok(src) => src,
         Err(diags) => {
@@ -218,7 +241,7 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
     let mut report = run_source(&src.text, options);
     for d in &mut report.diagnostics {
         if d.line > 0 {
-            let (line, message) = src.map.locate_message(d.line, &d.message);
+            let (line, message) = src.map.locate_message_at(d.line, d.column, &d.message);
             d.message = message;
             if line.is_none() {
                 d.line = 0;
@@ -227,17 +250,20 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
         }
     }
     if let Some(f) = &mut report.fault {
-        let (line, message) = src.map.locate_message(f.line, &f.message);
+        let (line, message) = src.map.locate_message_at(f.line, f.column, &f.message);
         f.message = message;
         if line.is_none() {
             f.line = 0;
             f.column = 0;
         }
     }
-    let warnings: Vec<DiagnosticReport> =
+    let mut warnings: Vec<DiagnosticReport> =
         src.warnings.iter().map(|(p, d)| ladder_report(p, d)).collect();
+    warnings.extend(petri.iter().map(|(p, d)| petri_report(p, d)));
     report.diagnostics.splice(0..0, warnings);
-    report.vars.retain(|k, _| !crate::ladder::is_hidden_name(k));
+    report
+        .vars
+        .retain(|k, _| !crate::ladder::is_hidden_name(k) && !crate::petri::is_hidden_name(k));
     report
 }
 

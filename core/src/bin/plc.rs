@@ -1,6 +1,9 @@
 //! `plc`: the command line of the PLC trainer, for instructors, CI and benchmarks.
 //! It uses exactly the same core as the browser.
 
+#[path = "plc/petri.rs"]
+mod petri;
+
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -74,6 +77,11 @@ enum Command {
         /// The project file.
         project: PathBuf,
     },
+    /// Petri nets: analyse, generate CASE OF code, convert PNML.
+    Petri {
+        #[command(subcommand)]
+        command: petri::PetriCommand,
+    },
     /// Run the benchmark suite (B1–B6) and print each figure with its ratio.
     Bench {
         /// Print one JSON object.
@@ -99,6 +107,9 @@ fn load_input(path: &Path) -> Result<Input, String> {
         return Project::from_file(&text)
             .map(Input::Project)
             .map_err(|e| format!("plc: {}: {e}", path.display()));
+    }
+    if plc_core::petri::pnml::is_pnml(&text) {
+        return petri::project_from_pnml(path, &text).map(Input::Project);
     }
     if trimmed.starts_with("<?xml") || trimmed.starts_with("<project") {
         return import_xml(path, &text).map(Input::Project);
@@ -328,6 +339,7 @@ fn main() -> ExitCode {
         Command::Explain { code } => explain(&code),
         Command::StView { project, pou } => st_view(&project, &pou),
         Command::Bench { json, quick } => bench(json, quick),
+        Command::Petri { command } => petri::run(command),
         Command::Import { file } => import(&file),
         Command::Export { plcopen: _, project } => export(&project),
     }

@@ -4,7 +4,8 @@
 //!
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
 //! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder
-//! diagrams (W0005–W0009 are ladder warnings), W0001– warnings.
+//! diagrams (W0005–W0009 are ladder warnings), E0500–E0549 Petri nets (W0010–W0019 are Petri
+//! net warnings), W0001– warnings.
 
 use serde::Serialize;
 
@@ -134,6 +135,26 @@ problem_codes! {
     LadderInstanceType = "E0417": "a block instance declared with another type, or an instance given to a FUNCTION",
     LadderUndeclaredOperand = "E0418": "a ladder operand naming a variable that is not declared",
 
+    // ---- Petri nets: E0500–E0549 ----
+    PetriDuplicateId = "E0500": "two elements of a Petri net share one id",
+    PetriBadArc = "E0501": "an arc that does not join a place and a transition, or has weight 0",
+    PetriDuplicateArc = "E0502": "two arcs in the same direction between one place and one transition",
+    PetriBadGuard = "E0503": "a transition guard or emergency condition that is not one ST expression",
+    PetriBadActions = "E0504": "place actions, a prologue or an epilogue that are not ST statements",
+    PetriNotCovered = "E0505": "places that no state-machine component covers (CASE OF code needs them covered)",
+    PetriProcessTokens = "E0506": "a process (state-machine component) that does not hold exactly one token",
+    PetriDuplicateLabel = "E0507": "two places of one process with the same CASE label",
+    PetriBadProcess = "E0508": "a declared process that is not a state-machine component of the net",
+    PetriBadEmergency = "E0509": "an emergency place that is not a place of the net",
+    PetriBadMacroPlace = "E0510": "a macro-place naming an unknown place, or a place inside two macro-places",
+    PetriArcWeight = "E0511": "an arc of weight other than 1 touching a process's places",
+    PetriLabelRange = "E0512": "a CASE label outside the INT range",
+    PetriFlagsAmbiguous = "E0513": "a place where flag-style code cannot tell two shared transitions apart",
+    PetriSourceTransition = "E0514": "a transition without input places",
+    PetriBadName = "E0515": "a POU, process or step variable name that is not an identifier",
+    PnmlInvalid = "E0516": "a PNML file that cannot be read as a place/transition net",
+    PetriEmptyNet = "E0517": "a Petri net without places",
+
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",
     UnreachableCode = "W0002": "a statement that can never run",
@@ -142,6 +163,11 @@ problem_codes! {
     LadderEnableFromRail = "W0005": "a ladder block whose enable is tied straight to the rail",
     LadderDuplicateCoil = "W0006": "two coils writing the same variable in one ladder POU",
     LadderPinFromRail = "W0007": "a wired block input tied straight to the rail (always TRUE)",
+    PetriGuardConflict = "W0010": "transitions leaving one place, with the same priority, whose guards may both hold",
+    PetriDeadlock = "W0011": "a reachable marking of a Petri net where no transition can fire (guards ignored)",
+    PetriDeadTransition = "W0012": "a Petri net transition that can never fire (guards ignored)",
+    PetriAnalysisIncomplete = "W0013": "the Petri net has more reachable markings than the analysis budget",
+    PetriPriorityIgnored = "W0014": "transitions competing for one token but decided by different Petri net processes, where priorities cannot choose",
 }
 
 impl std::fmt::Display for Code {

@@ -1,6 +1,6 @@
 //! Ladder diagrams (LD): the rung grid model, validation with located diagnostics,
 //! lowering to ST (so ladder runs on the one ST compiler and VM), the readable ST view,
-//! and the glue that turns a project's ST and LD POUs into one source text.
+//! and the glue that turns a project's ST, LD and Petri net POUs into one source text.
 
 mod blocks;
 pub mod catalog;
@@ -36,6 +36,8 @@ pub struct SourceMap {
     pub st_lines: u32,
     /// The lowered ladder POUs, in order.
     pub segments: Vec<Segment>,
+    /// The generated Petri net POUs, in order (after the ladder ones).
+    pub petri: Vec<crate::petri::PetriSegment>,
 }
 
 /// Where a line of the combined source comes from.
@@ -46,13 +48,24 @@ pub enum Origin {
     /// A ladder POU: its name and the 0-based `(rung, row, column)` when the line comes
     /// from a cell (`None` for declarations and generated framing).
     Ladder(String, Option<(usize, usize, usize)>),
+    /// A Petri net POU: its name, and the net element (with the position inside its guard
+    /// or actions) when the line comes from one.
+    Petri(String, Option<(crate::petri::NetElement, Option<crate::petri::TextPosition>)>),
 }
 
 impl SourceMap {
     /// The origin of a 1-based line of the combined source.
     pub fn origin(&self, line: u32) -> Origin {
+        self.origin_at(line, 1)
+    }
+
+    /// The origin of a 1-based line and column of the combined source.
+    pub fn origin_at(&self, line: u32, column: u32) -> Origin {
         if line <= self.st_lines {
             return Origin::St(line);
+        }
+        if let Some(s) = self.petri.iter().rev().find(|s| s.first_line <= line) {
+            return Origin::Petri(s.pou.clone(), s.locate(line, column));
         }
         match self.segments.iter().rev().find(|s| s.first_line <= line) {
             Some(s) => {
@@ -65,7 +78,23 @@ impl SourceMap {
     /// Rewrites a message for a line of the combined source: ladder lines get
     /// `POU Name, rung R, row r, column c: ` (1-based) in front.
     pub fn locate_message(&self, line: u32, message: &str) -> (Option<u32>, String) {
-        match self.origin(line) {
+        self.locate_message_at(line, 1, message)
+    }
+
+    /// As [`SourceMap::locate_message`], for a line and column: Petri net lines get
+    /// `POU Name, transition T2 (guard line 1, column 5): ` in front.
+    pub fn locate_message_at(
+        &self,
+        line: u32,
+        column: u32,
+        message: &str,
+    ) -> (Option<u32>, String) {
+        match self.origin_at(line, column) {
+            Origin::Petri(pou, Some((element, at))) => (
+                None,
+                format!("{}: {message}", crate::petri::describe(&pou, &element, at.as_ref())),
+            ),
+            Origin::Petri(pou, None) => (None, format!("POU {pou}: {message}")),
             Origin::St(l) => (Some(l), message.to_string()),
             Origin::Ladder(pou, Some((r, row, c))) => (
                 None,
@@ -103,7 +132,7 @@ pub fn project_source(project: &Project) -> Result<ProjectSource, Vec<(String, L
         text.push('\n');
     }
     let st_lines = text.lines().count() as u32;
-    let mut map = SourceMap { st_lines, segments: Vec::new() };
+    let mut map = SourceMap { st_lines, segments: Vec::new(), petri: Vec::new() };
     let mut line = st_lines + 1;
     for pou in &project.ladder {
         let lowered = lower(pou);
@@ -112,6 +141,7 @@ pub fn project_source(project: &Project) -> Result<ProjectSource, Vec<(String, L
         map.segments.push(Segment { pou: pou.name.clone(), first_line: line, lowered });
         line += n;
     }
+    crate::petri::append_to_source(project, &mut text, &mut map.petri, line);
     Ok(ProjectSource { text, map, warnings: diags })
 }
 

@@ -31,6 +31,9 @@ pub struct Project {
     /// The ladder (LD) POUs of the project.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub ladder: Vec<crate::ladder::LadderPou>,
+    /// The Petri net POUs of the project (generated into ST by the CASE OF method).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub petri: Vec<crate::petri::PetriPou>,
 }
 
 /// Simulation settings kept with a project.
@@ -74,6 +77,7 @@ impl Project {
             source: NEW_PROJECT_SOURCE.to_string(),
             settings: Settings::default(),
             ladder: Vec::new(),
+            petri: Vec::new(),
         }
     }
 

@@ -1,0 +1,164 @@
+//! Checks of a Petri net POU that come before code generation: the ST texts held by its
+//! elements parse on their own (so a bad guard is reported at its transition, and no text
+//! can break the structure of the generated program), names are identifiers, CASE labels
+//! fit an INT, every transition has an input place, and the emergency place exists.
+//! Type errors in guards and actions are found later by the ST checker on the generated
+//! program and mapped back to the element by the line map (see `codegen`).
+
+use super::diagnostic::{NetElement, PetriDiagnostic, TextPart, TextPosition};
+use super::model::PetriPou;
+use super::net::PtNet;
+use crate::diagnostics::{Code, Diagnostic, LineIndex};
+use crate::syntax::{self, Item};
+
+/// Whether `name` is an IEC identifier (letters, digits, single underscores, not starting
+/// with a digit, not ending with an underscore).
+pub fn is_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    let Some(first) = chars.next() else { return false };
+    (first.is_ascii_alphabetic() || first == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && !name.contains("__")
+        && !name.ends_with('_')
+}
+
+fn position(text: &str, offset: u32, part: TextPart) -> TextPosition {
+    let loc = LineIndex::new(text).location(offset.min(text.len() as u32));
+    TextPosition { part, line: loc.line, column: loc.column }
+}
+
+fn located(
+    code: Code,
+    element: &NetElement,
+    text: &str,
+    part: TextPart,
+    d: &Diagnostic,
+    shift: u32,
+) -> PetriDiagnostic {
+    let offset = d.span.start.saturating_sub(shift);
+    PetriDiagnostic::error(code, element.clone(), d.message.clone())
+        .at(position(text, offset, part))
+}
+
+/// Checks that `text` is one ST expression; problems are located inside it.
+pub fn check_expression(text: &str, element: &NetElement, part: TextPart) -> Vec<PetriDiagnostic> {
+    if text.trim().is_empty() {
+        return Vec::new();
+    }
+    match syntax::parse_expression(text) {
+        Ok(_) => Vec::new(),
+        Err(diags) => diags
+            .iter()
+            .take(1)
+            .map(|d| located(Code::PetriBadGuard, element, text, part, d, 0))
+            .collect(),
+    }
+}
+
+/// Checks that `text` is a list of ST statements (no declarations, no END of the POU).
+pub fn check_statements(text: &str, element: &NetElement, part: TextPart) -> Vec<PetriDiagnostic> {
+    if text.trim().is_empty() {
+        return Vec::new();
+    }
+    const HEAD: &str = "PROGRAM PnCheck\n";
+    let wrapped = format!("{HEAD}{text}\nEND_PROGRAM\n");
+    let (file, diags) = syntax::parse(&wrapped);
+    let shift = HEAD.len() as u32;
+    if let Some(d) = diags.first() {
+        return vec![located(Code::PetriBadActions, element, text, part, d, shift)];
+    }
+    let pous: Vec<&syntax::Pou> = file
+        .items
+        .iter()
+        .filter_map(|i| if let Item::Pou(p) = i { Some(p) } else { None })
+        .collect();
+    let problem = if file.items.len() != 1 || pous.len() != 1 {
+        Some((text.len() as u32, "the text ends the POU early: write statements only".to_string()))
+    } else {
+        pous[0].var_blocks.first().map(|b| {
+            (
+                b.span.start.saturating_sub(shift),
+                "declare variables in the POU's declarations, not here".to_string(),
+            )
+        })
+    };
+    problem
+        .map(|(offset, message)| {
+            PetriDiagnostic::error(Code::PetriBadActions, element.clone(), message)
+                .at(position(text, offset, part))
+        })
+        .into_iter()
+        .collect()
+}
+
+/// Every check of this module on a POU whose net built.
+pub fn check_pou(pou: &PetriPou, net: &PtNet) -> Vec<PetriDiagnostic> {
+    let mut diags = Vec::new();
+    if !is_identifier(pou.name.trim()) {
+        diags.push(PetriDiagnostic::error(
+            Code::PetriBadName,
+            NetElement::Pou,
+            format!(
+                "`{}` is not a valid POU name (letters, digits and single underscores)",
+                pou.name
+            ),
+        ));
+    }
+    for proc in &pou.net.processes {
+        for (what, name) in [("process name", &proc.name), ("step variable", &proc.step_variable)] {
+            if !is_identifier(name.trim()) {
+                diags.push(PetriDiagnostic::error(
+                    Code::PetriBadName,
+                    NetElement::Process(proc.name.clone()),
+                    format!("`{name}` is not a valid {what}"),
+                ));
+            }
+        }
+    }
+    for place in &pou.net.places {
+        let here = NetElement::Place(place.id.clone());
+        if i64::from(i16::MIN) > place.label || place.label > i64::from(i16::MAX) {
+            diags.push(PetriDiagnostic::error(
+                Code::PetriLabelRange,
+                here.clone(),
+                format!(
+                    "CASE label {} does not fit an INT step variable (-32768..32767)",
+                    place.label
+                ),
+            ));
+        }
+        diags.extend(check_statements(&place.actions, &here, TextPart::Actions));
+    }
+    for (i, t) in pou.net.transitions.iter().enumerate() {
+        let here = NetElement::Transition(t.id.clone());
+        diags.extend(check_expression(&t.guard, &here, TextPart::Guard));
+        if net.pre[i].is_empty() {
+            diags.push(PetriDiagnostic::error(
+                Code::PetriSourceTransition,
+                here,
+                "the transition has no input place, so it would fire on every scan: \
+                 give it an input place",
+            ));
+        }
+    }
+    diags.extend(check_statements(&pou.prologue, &NetElement::Prologue, TextPart::Text));
+    diags.extend(check_statements(&pou.epilogue, &NetElement::Epilogue, TextPart::Text));
+    if let Some(e) = &pou.net.emergency {
+        if pou.net.place(&e.place).is_none() {
+            diags.push(PetriDiagnostic::error(
+                Code::PetriBadEmergency,
+                NetElement::Emergency,
+                format!("the emergency place `{}` is not a place of the net", e.place),
+            ));
+        }
+        if e.condition.trim().is_empty() {
+            diags.push(PetriDiagnostic::error(
+                Code::PetriBadGuard,
+                NetElement::Emergency,
+                "the emergency condition is empty",
+            ));
+        }
+        diags.extend(check_expression(&e.condition, &NetElement::Emergency, TextPart::Condition));
+    }
+    diags
+}

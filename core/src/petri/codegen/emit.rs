@@ -1,0 +1,342 @@
+//! Writing the generated PROGRAM line by line, each line tagged with the net element it
+//! comes from.
+
+use super::maps::{Generated, LineSource, MacroEntry, PlaceEntry, PlaceMap, ProcessEntry};
+use super::{comment, Ctx};
+use crate::petri::diagnostic::{NetElement, TextPart};
+
+struct Out {
+    lines: Vec<String>,
+    origin: Vec<Option<LineSource>>,
+}
+
+impl Out {
+    fn line(&mut self, indent: usize, text: impl Into<String>, element: Option<&NetElement>) {
+        let text = text.into();
+        for l in text.lines() {
+            self.lines.push(format!("{}{}", "    ".repeat(indent), l).trim_end().to_string());
+            self.origin.push(element.map(|e| LineSource {
+                element: e.clone(),
+                part: None,
+                text_line: 0,
+                column_shift: 0,
+            }));
+        }
+    }
+
+    fn blank(&mut self) {
+        self.lines.push(String::new());
+        self.origin.push(None);
+    }
+
+    /// User text, line by line, mapped back to `element`.
+    fn text(&mut self, indent: usize, text: &str, element: &NetElement, part: TextPart) {
+        let pad = "    ".repeat(indent);
+        for (i, l) in text.trim_end().lines().enumerate() {
+            if i == 0 && l.trim().is_empty() {
+                continue;
+            }
+            self.lines.push(format!("{pad}{l}").trim_end().to_string());
+            self.origin.push(Some(LineSource {
+                element: element.clone(),
+                part: Some(part),
+                text_line: i as u32 + 1,
+                column_shift: pad.len() as u32,
+            }));
+        }
+    }
+
+    /// `prefix guard suffix` on one line when the guard is one plain line, else the guard on
+    /// lines of its own between `prefix (` and `) suffix`.
+    fn condition(
+        &mut self,
+        indent: usize,
+        prefix: &str,
+        guard: &str,
+        suffix: &str,
+        element: &NetElement,
+        part: TextPart,
+    ) {
+        let plain = !guard.contains('\n') && !guard.contains("//");
+        if plain {
+            let pad = "    ".repeat(indent);
+            self.lines
+                .push(format!("{pad}{prefix}{}{suffix}", guard.trim_end()).trim_end().to_string());
+            self.origin.push(Some(LineSource {
+                element: element.clone(),
+                part: Some(part),
+                text_line: 1,
+                column_shift: (pad.len() + prefix.chars().count()) as u32,
+            }));
+        } else {
+            self.line(indent, format!("{prefix}("), Some(element));
+            self.text(indent + 1, guard, element, part);
+            self.line(indent, format!("){suffix}"), Some(element));
+        }
+    }
+}
+
+fn declarations(ctx: &Ctx<'_>, out: &mut Out) {
+    let pou = ctx.pou;
+    let initial = |c: usize| ctx.plans[c].places.iter().copied().find(|&p| ctx.net.initial[p] > 0);
+    let retain = if pou.options.retain { "VAR RETAIN" } else { "VAR" };
+    out.line(0, format!("{retain} (* step variables of the net's processes *)"), None);
+    for (c, plan) in ctx.plans.iter().enumerate() {
+        let start = initial(c).map_or(0, |p| ctx.label(p));
+        let places: Vec<String> = plan
+            .places
+            .iter()
+            .map(|&p| format!("{} = {}", ctx.label(p), ctx.net.place_names[p]))
+            .collect();
+        out.line(
+            1,
+            format!(
+                "{} : INT := {start}; (* process {}: {} *)",
+                plan.step_variable,
+                plan.name,
+                comment(&places.join(", "))
+            ),
+            None,
+        );
+        if let Some(w) = &ctx.waiting {
+            let mut seen = Vec::new();
+            for &(q, _) in &w[c] {
+                if !seen.contains(&q) {
+                    seen.push(q);
+                    let end = ctx.flags(c, q).1;
+                    let init = if initial(c) == Some(q) { "TRUE" } else { "FALSE" };
+                    out.line(
+                        1,
+                        format!(
+                            "{end} : BOOL := {init}; (* {} waits at {} *)",
+                            plan.name, ctx.net.place_names[q]
+                        ),
+                        None,
+                    );
+                }
+            }
+        }
+    }
+    out.line(0, "END_VAR", None);
+    let scans: Vec<usize> =
+        (0..ctx.plans.len()).filter(|&c| ctx.moved_by_others[c] && ctx.waiting.is_none()).collect();
+    let starts: Vec<(usize, usize)> = match &ctx.waiting {
+        Some(w) => {
+            let mut v: Vec<(usize, usize)> = w
+                .iter()
+                .enumerate()
+                .flat_map(|(c, l)| l.iter().map(move |&(q, _)| (c, q)))
+                .collect();
+            v.dedup();
+            v
+        }
+        None => Vec::new(),
+    };
+    if !scans.is_empty() || !starts.is_empty() {
+        out.line(0, "VAR (* generated by the Petri net compiler *)", None);
+        for c in scans {
+            out.line(
+                1,
+                format!("{} : INT; (* {} at the start of the scan *)", ctx.scan(c), ctx.var(c)),
+                None,
+            );
+        }
+        for (c, q) in starts {
+            out.line(
+                1,
+                format!(
+                    "{} : BOOL; (* move {} on from {} *)",
+                    ctx.flags(c, q).0,
+                    ctx.plans[c].name,
+                    ctx.net.place_names[q]
+                ),
+                None,
+            );
+        }
+        out.line(0, "END_VAR", None);
+    }
+}
+
+fn emergency(ctx: &Ctx<'_>, out: &mut Out) {
+    let Some(e) = &ctx.pou.net.emergency else { return };
+    let Some(target) = ctx.pou.net.places.iter().position(|p| p.id == e.place) else { return };
+    let here = NetElement::Emergency;
+    out.line(0, format!("(* emergency: while the condition holds, every process goes to its emergency place ({}) *)", comment(&ctx.net.place_names[target])), Some(&here));
+    out.condition(0, "IF ", &e.condition, " THEN", &here, TextPart::Condition);
+    for (c, plan) in ctx.plans.iter().enumerate() {
+        let dest = if plan.places.contains(&target) {
+            Some(target)
+        } else {
+            plan.places.iter().copied().find(|&p| ctx.net.initial[p] > 0)
+        };
+        let Some(dest) = dest else { continue };
+        out.line(1, format!("{} := {};", ctx.var(c), ctx.label(dest)), Some(&here));
+        if let Some(w) = &ctx.waiting {
+            let mut seen = Vec::new();
+            for &(q, _) in &w[c] {
+                if !seen.contains(&q) {
+                    seen.push(q);
+                    let value = if q == dest { "TRUE" } else { "FALSE" };
+                    out.line(1, format!("{} := {value};", ctx.flags(c, q).1), Some(&here));
+                }
+            }
+        }
+    }
+    out.line(0, "END_IF;", Some(&here));
+}
+
+fn branch(ctx: &Ctx<'_>, out: &mut Out, c: usize, p: usize) {
+    let place = &ctx.pou.net.places[p];
+    let pe = NetElement::Place(place.id.clone());
+    let in_macro = ctx
+        .pou
+        .net
+        .macro_places
+        .iter()
+        .find(|m| m.places.contains(&place.id))
+        .map(|m| {
+            format!(
+                " (in macro-place {})",
+                comment(if m.name.trim().is_empty() { &m.id } else { m.name.trim() })
+            )
+        })
+        .unwrap_or_default();
+    out.line(1, format!("{}: (* {}{in_macro} *)", place.label, ctx.place_text(p)), Some(&pe));
+    if ctx.owner[p] == c {
+        out.text(2, &place.actions, &pe, TextPart::Actions);
+    } else if !place.actions.trim().is_empty() {
+        out.line(
+            2,
+            format!("(* its actions run in process {} *)", ctx.plans[ctx.owner[p]].name),
+            Some(&pe),
+        );
+    }
+    let mut keyword = "IF ";
+    if ctx.is_waiting(c, p) {
+        let w = ctx.waiting.as_ref().map_or(&[][..], |w| &w[c][..]);
+        if let Some(&(_, t)) = w.iter().find(|&&(q, _)| q == p) {
+            let te = NetElement::Transition(ctx.pou.net.transitions[t].id.clone());
+            let start = ctx.flags(c, p).0;
+            let to = ctx.touch[t].iter().find(|&&(d, ..)| d == c).map_or(p, |&(.., o)| o);
+            out.line(
+                2,
+                format!(
+                    "IF {start} THEN (* {} decided by process {} *)",
+                    ctx.transition_text(t),
+                    ctx.leader(t).map_or("", |l| ctx.plans[l].name.as_str())
+                ),
+                Some(&te),
+            );
+            out.line(3, format!("{start} := FALSE;"), Some(&te));
+            for s in ctx.move_self(c, p, to) {
+                out.line(3, s, Some(&te));
+            }
+            keyword = "ELSIF ";
+        }
+    }
+    for t in ctx.decided(c, p) {
+        let tr = &ctx.pou.net.transitions[t];
+        let te = NetElement::Transition(tr.id.clone());
+        let (conds, stmts) = ctx.fire(t);
+        let note = format!(" (* {} *)", ctx.transition_text(t));
+        let extra = conds.join(" AND ");
+        let guard = tr.guard.trim();
+        if guard.is_empty() {
+            let cond = if extra.is_empty() { "TRUE".to_string() } else { extra };
+            out.line(2, format!("{keyword}{cond} THEN{note}"), Some(&te));
+        } else if extra.is_empty() {
+            out.condition(2, keyword, &tr.guard, &format!(" THEN{note}"), &te, TextPart::Guard);
+        } else {
+            out.condition(
+                2,
+                &format!("{keyword}("),
+                &tr.guard,
+                &format!(") AND {extra} THEN{note}"),
+                &te,
+                TextPart::Guard,
+            );
+        }
+        for s in stmts {
+            out.line(3, s, Some(&te));
+        }
+        keyword = "ELSIF ";
+    }
+    if keyword == "ELSIF " {
+        out.line(2, "END_IF;", Some(&pe));
+    }
+}
+
+pub(super) fn emit(ctx: &Ctx<'_>) -> Generated {
+    let pou = ctx.pou;
+    let mut out = Out { lines: Vec::new(), origin: Vec::new() };
+    out.line(0, format!("(* Generated from the Petri net {} by the CASE OF method: edit the net, not this text. *)", comment(&pou.name)), None);
+    out.line(0, format!("PROGRAM {}", pou.name.trim()), None);
+    let decl_start = out.lines.len() as u32 + 1;
+    out.text(0, &pou.declarations, &NetElement::Declarations, TextPart::Text);
+    let decl_end = out.lines.len() as u32 + 1;
+    declarations(ctx, &mut out);
+    out.blank();
+    if !pou.prologue.trim().is_empty() {
+        out.text(0, &pou.prologue, &NetElement::Prologue, TextPart::Text);
+    }
+    emergency(ctx, &mut out);
+    let scans: Vec<usize> =
+        (0..ctx.plans.len()).filter(|&c| ctx.moved_by_others[c] && ctx.waiting.is_none()).collect();
+    if !scans.is_empty() {
+        out.line(0, "(* the marking at the start of the scan: a process moved by another one runs its new place from the next scan *)", None);
+        for &c in &scans {
+            out.line(0, format!("{} := {};", ctx.scan(c), ctx.var(c)), None);
+        }
+    }
+    for (c, plan) in ctx.plans.iter().enumerate() {
+        out.line(
+            0,
+            format!(
+                "(* ---- process {} (step variable {}) ---- *)",
+                comment(&plan.name),
+                plan.step_variable
+            ),
+            None,
+        );
+        let selector = if scans.contains(&c) { ctx.scan(c) } else { plan.step_variable.clone() };
+        out.line(0, format!("CASE {selector} OF"), None);
+        for &p in &plan.places {
+            branch(ctx, &mut out, c, p);
+        }
+        out.line(0, "END_CASE;", None);
+    }
+    if !pou.epilogue.trim().is_empty() {
+        out.text(0, &pou.epilogue, &NetElement::Epilogue, TextPart::Text);
+    }
+    out.line(0, "END_PROGRAM", None);
+    let mut st = out.lines.join("\n");
+    st.push('\n');
+    let place_map = PlaceMap {
+        processes: ctx
+            .plans
+            .iter()
+            .map(|plan| ProcessEntry {
+                name: plan.name.clone(),
+                step_variable: plan.step_variable.clone(),
+                places: plan.places.iter().map(|&p| pou.net.places[p].id.clone()).collect(),
+            })
+            .collect(),
+        places: (0..ctx.net.places())
+            .map(|p| PlaceEntry {
+                id: pou.net.places[p].id.clone(),
+                step_variable: ctx
+                    .plans
+                    .get(ctx.owner[p])
+                    .map_or_else(String::new, |plan| plan.step_variable.clone()),
+                value: ctx.label(p),
+            })
+            .collect(),
+        macro_places: pou
+            .net
+            .macro_places
+            .iter()
+            .map(|m| MacroEntry { id: m.id.clone(), places: m.places.clone() })
+            .collect(),
+    };
+    Generated { st, lines: out.origin, declaration_lines: decl_start..decl_end, place_map }
+}

@@ -1,0 +1,214 @@
+//! Interpreted Petri nets: the model (part of the project file), the analysis of the
+//! underlying place/transition net, CASE OF code generation (seed 000) and PNML.
+//!
+//! A Petri net POU becomes an ST PROGRAM that goes the ST way (checker, compiler, VM), so a
+//! net runs on the one VM and its token game is read back from the step variables through
+//! the [`PlaceMap`]. Guards and actions are ST; their errors are reported at the place or
+//! transition they belong to. The firing rule and the generation scheme are documented in
+//! `codegen` and in `docs/petri.md`. Nothing here runs a net by itself.
+
+pub mod analysis;
+pub mod check;
+pub mod codegen;
+pub mod components;
+pub mod conflicts;
+mod diagnostic;
+pub mod model;
+pub mod net;
+pub mod pnml;
+pub mod reach;
+mod report;
+pub mod semiflows;
+
+pub use analysis::{analyze, Deadlock, NetAnalysis, DEFAULT_BUDGET};
+pub use codegen::{Generated, LineSource, PlaceMap, SCAN_PREFIX};
+pub use components::ProcessPlan;
+pub use diagnostic::{has_errors, NetElement, PetriDiagnostic, TextPart, TextPosition};
+pub use model::*;
+pub use net::{build, Marking, PtNet};
+pub use report::{conflicts, text_report, Conflict};
+
+use crate::diagnostics::Code;
+use crate::project::Project;
+
+/// The state budget of the analysis run when a net is compiled (for its warnings).
+pub const COMPILE_BUDGET: usize = 10_000;
+
+/// A Petri net POU ready to run: its net, processes and generated PROGRAM.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Compiled {
+    /// The indexed net.
+    pub net: PtNet,
+    /// The processes the code was generated for.
+    pub processes: Vec<ProcessPlan>,
+    /// The generated PROGRAM.
+    pub generated: Generated,
+    /// Warnings (guard conflicts, deadlocks, dead transitions).
+    pub warnings: Vec<PetriDiagnostic>,
+}
+
+/// Checks a Petri net POU and generates its PROGRAM, or returns every error found (with
+/// the warnings).
+pub fn compile(pou: &PetriPou) -> Result<Compiled, Vec<PetriDiagnostic>> {
+    let net = build(&pou.net)?;
+    let diags = check::check_pou(pou, &net);
+    if has_errors(&diags) {
+        return Err(diags);
+    }
+    let c = net.incidence();
+    let flows = semiflows::minimal_semiflows(&c, net.transitions());
+    let components = components::state_machine_components(&net, &flows.flows);
+    let processes = components::plan_processes(&pou.net, &net, &components)?;
+    let generated = codegen::generate(pou, &net, &processes)?;
+    let mut warnings = diags;
+    warnings.extend(warnings_of(pou, &net, &processes));
+    Ok(Compiled { net, processes, generated, warnings })
+}
+
+/// Where the generated code tests transition `t`: the deciding process (the first one
+/// containing an input place of `t`) and that input place.
+fn decided_at(net: &PtNet, processes: &[ProcessPlan], t: usize) -> Option<(usize, usize)> {
+    processes.iter().enumerate().find_map(|(c, plan)| {
+        net.pre[t].iter().map(|&(p, _)| p).find(|p| plan.places.contains(p)).map(|p| (c, p))
+    })
+}
+
+/// The warnings of a net that compiles: conflicts decided only by declaration order or
+/// by process order (where priorities cannot act), and what the analysis finds within
+/// [`COMPILE_BUDGET`] (deadlocks, dead transitions).
+fn warnings_of(pou: &PetriPou, net: &PtNet, processes: &[ProcessPlan]) -> Vec<PetriDiagnostic> {
+    let mut out = Vec::new();
+    for c in conflicts(pou, net) {
+        let (a, b) = (&pou.net.transitions[c.first], &pou.net.transitions[c.second]);
+        let (da, db) = (decided_at(net, processes, c.first), decided_at(net, processes, c.second));
+        if da != db && !c.exclusive && a.priority != b.priority {
+            let first = match (da, db) {
+                (Some((x, _)), Some((y, _))) if y < x => b,
+                _ => a,
+            };
+            out.push(PetriDiagnostic::warning(
+                Code::PetriPriorityIgnored,
+                NetElement::Transition(b.id.clone()),
+                format!(
+                    "{} and {} both take the token of place {} but are decided by different \
+                     processes (or from different places), so their priorities cannot choose: \
+                     {} is tested first; list the process holding place {} first, or make the \
+                     guards exclusive",
+                    a.id, b.id, pou.net.places[c.place].id, first.id, pou.net.places[c.place].id
+                ),
+            ));
+        } else if a.priority == b.priority && !c.exclusive {
+            out.push(PetriDiagnostic::warning(
+                Code::PetriGuardConflict,
+                NetElement::Transition(b.id.clone()),
+                format!(
+                    "{} and {} both take the token of place {}, have priority {} and guards \
+                     that may both hold: the order of the transitions (or of the processes \
+                     deciding them) picks one; give them different priorities or exclusive \
+                     guards",
+                    a.id, b.id, pou.net.places[c.place].id, a.priority
+                ),
+            ));
+        }
+    }
+    let a = analyze(net, COMPILE_BUDGET);
+    for d in &a.deadlocks {
+        let path: Vec<&str> = d.path.iter().map(|&t| pou.net.transitions[t].id.as_str()).collect();
+        out.push(PetriDiagnostic::warning(
+            Code::PetriDeadlock,
+            NetElement::Pou,
+            format!(
+                "the net can stop (guards ignored): after firing [{}] no transition is enabled",
+                path.join(", ")
+            ),
+        ));
+    }
+    for &t in a.dead_transitions.iter().flatten() {
+        out.push(PetriDiagnostic::warning(
+            Code::PetriDeadTransition,
+            NetElement::Transition(pou.net.transitions[t].id.clone()),
+            "this transition can never fire: no reachable marking enables it (guards ignored)",
+        ));
+    }
+    if !a.complete {
+        out.push(PetriDiagnostic::warning(
+            Code::PetriAnalysisIncomplete,
+            NetElement::Pou,
+            format!("the net has more than {COMPILE_BUDGET} reachable markings; run `plc petri analyze` with a larger budget"),
+        ));
+    }
+    out
+}
+
+/// Whether `name` is a hidden variable of the generated code (a scan-start copy).
+pub fn is_hidden_name(name: &str) -> bool {
+    name.len() >= SCAN_PREFIX.len() && name[..SCAN_PREFIX.len()].eq_ignore_ascii_case(SCAN_PREFIX)
+}
+
+/// Every diagnostic (errors and warnings) of a project's Petri net POUs, with the POU name.
+pub fn project_diagnostics(project: &Project) -> Vec<(String, PetriDiagnostic)> {
+    let mut out = Vec::new();
+    for pou in &project.petri {
+        let diags = match compile(pou) {
+            Ok(c) => c.warnings,
+            Err(d) => d,
+        };
+        out.extend(diags.into_iter().map(|d| (pou.name.clone(), d)));
+    }
+    out
+}
+
+/// One generated Petri net POU inside a combined project source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PetriSegment {
+    /// The POU's name.
+    pub pou: String,
+    /// 1-based line of the combined text where the generated POU starts.
+    pub first_line: u32,
+    /// The generated POU.
+    pub generated: Generated,
+}
+
+impl PetriSegment {
+    /// The element (and position in its text) behind a 1-based line and column of the
+    /// combined source.
+    pub fn locate(&self, line: u32, column: u32) -> Option<(NetElement, Option<TextPosition>)> {
+        self.generated.locate(line + 1 - self.first_line, column)
+    }
+}
+
+/// Appends the generated PROGRAM of every Petri net POU that compiles to `text`, whose next
+/// line is `first_line`; POUs with errors are left out (report them with
+/// [`project_diagnostics`]).
+pub fn append_to_source(
+    project: &Project,
+    text: &mut String,
+    segments: &mut Vec<PetriSegment>,
+    first_line: u32,
+) {
+    let mut line = first_line;
+    for pou in &project.petri {
+        if let Ok(c) = compile(pou) {
+            let n = c.generated.st.lines().count() as u32;
+            text.push_str(&c.generated.st);
+            segments.push(PetriSegment {
+                pou: pou.name.clone(),
+                first_line: line,
+                generated: c.generated,
+            });
+            line += n;
+        }
+    }
+}
+
+/// Describes a located Petri diagnostic for a message: `POU Name, transition T2 (guard line
+/// 1, column 5)`.
+pub fn describe(pou: &str, element: &NetElement, at: Option<&TextPosition>) -> String {
+    match at {
+        Some(at) => format!("POU {pou}, {element} ({at})"),
+        None => format!("POU {pou}, {element}"),
+    }
+}
+
+#[cfg(test)]
+mod tests;
