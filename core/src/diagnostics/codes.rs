@@ -127,6 +127,25 @@ problem_codes! {
     LadderBadJump = "E0410": "a jump to an unknown label or backwards",
     LadderBadGrid = "E0411": "a rung whose rows differ in length or whose block leaves the grid",
 
+    // ---- textual SFC (crate::sfc): E0550–E0599 ----
+    SfcUnknownStep = "E0550": "a transition names a step that is not declared",
+    SfcDuplicateName = "E0551": "a step, transition or action name declared twice, or also declared as a variable",
+    SfcSecondInitialStep = "E0552": "a second INITIAL_STEP in one SFC network",
+    SfcNoInitialStep = "E0553": "an SFC network (or SFC body) without an INITIAL_STEP",
+    SfcUnknownAction = "E0554": "an action association naming neither an ACTION nor a variable",
+    SfcMissingDuration = "E0555": "a timed qualifier (L, D, SD, DS, SL) without a duration",
+    SfcUnexpectedDuration = "E0556": "a duration given to a qualifier that takes none (N, R, S, P, P1, P0)",
+    SfcUnknownQualifier = "E0557": "an action qualifier that is not N, R, S, P, P1, P0, L, D, SD, DS or SL",
+    SfcConditionNotBool = "E0558": "a transition condition that is not BOOL",
+    SfcDurationNotTime = "E0559": "an action duration that is not a TIME",
+    SfcReadOnly = "E0560": "an assignment to a step flag (S.X, S.T) or to an action's Q or A",
+    SfcNotAllowedHere = "E0561": "an SFC body in a FUNCTION, or statements mixed with steps and transitions",
+    SfcReservedName = "E0562": "a type or POU named like the SFC runtime's step type (SFC_STEP)",
+    SfcUnnamedTransitionBody = "E0563": "a transition written with statements but without a name to assign",
+    SfcStepListedTwice = "E0564": "a step listed twice in one FROM or TO list",
+    SfcBooleanActionNotBool = "E0565": "a boolean action whose variable is not BOOL",
+    SfcReturnInAction = "E0566": "RETURN inside an ACTION or a transition body",
+
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",
     UnreachableCode = "W0002": "a statement that can never run",
@@ -134,6 +153,13 @@ problem_codes! {
     CaseWithoutMatch = "W0004": "a CASE label that can never match the selector's type",
     LadderEnableFromRail = "W0005": "a ladder block whose enable is tied straight to the rail",
     LadderDuplicateCoil = "W0006": "two coils writing the same variable in one ladder POU",
+    // textual SFC warnings: W0020–W0029
+    SfcUnreachableStep = "W0020": "an SFC step that can never become active",
+    SfcUnsafe = "W0021": "an SFC transition that can activate a step that is already active (unsafe SFC)",
+    SfcDeadTransition = "W0022": "an SFC transition whose source steps are never active together",
+    SfcUnusedAction = "W0023": "an ACTION that no step uses",
+    SfcTransitionNotAssigned = "W0024": "a transition body that never assigns the transition's name",
+    SfcSamePriority = "W0025": "transitions leaving the same step with the same PRIORITY (source order decides)",
 }
 
 impl std::fmt::Display for Code {
