@@ -139,16 +139,22 @@ pub(super) fn resolve<'a>(
     };
     let mut step_index = HashMap::new();
     let mut action_index = HashMap::new();
+    // Steps and actions whose name was refused: their uses are not reported again.
+    let mut rejected = Vec::new();
     for element in &body.elements {
         match element {
             SfcElement::Step(s) => {
-                if claim(&s.name, "step", diags) {
+                if !claim(&s.name, "step", diags) {
+                    rejected.push(s.name.key());
+                } else {
                     step_index.insert(s.name.key(), chart.steps.len());
                     chart.steps.push(s);
                 }
             }
             SfcElement::Action(a) => {
-                if claim(&a.name, "action", diags) {
+                if !claim(&a.name, "action", diags) {
+                    rejected.push(a.name.key());
+                } else {
                     action_index.insert(a.name.key(), chart.actions.len());
                     let kind = ActionKind::Declared(a);
                     chart.actions.push(Action { name: &a.name, kind, uses: Vec::new() });
@@ -163,8 +169,8 @@ pub(super) fn resolve<'a>(
     }
     for element in &body.elements {
         if let SfcElement::Transition(t) = element {
-            let from = step_list(&t.from, &step_index, "FROM", diags);
-            let to = step_list(&t.to, &step_index, "TO", diags);
+            let from = step_list(&t.from, &step_index, &rejected, "FROM", diags);
+            let to = step_list(&t.to, &step_index, &rejected, "TO", diags);
             let valid = from.is_some() && to.is_some() && !t.from.is_empty();
             let (from, to) = (from.unwrap_or_default(), to.unwrap_or_default());
             chart.transitions.push(Transition { ast: t, from, to, valid });
@@ -187,6 +193,7 @@ pub(super) fn resolve<'a>(
                     chart.actions.push(Action { name: &assoc.action, kind, uses: Vec::new() });
                     chart.actions.len() - 1
                 }
+                None if rejected.contains(&key) => continue,
                 None => {
                     let name = &assoc.action.name;
                     let msg = format!(
@@ -224,6 +231,7 @@ pub(super) fn resolve<'a>(
 fn step_list(
     ids: &[Ident],
     index: &HashMap<String, usize>,
+    rejected: &[String],
     which: &str,
     diags: &mut Vec<Diagnostic>,
 ) -> Option<Vec<usize>> {
@@ -237,6 +245,7 @@ fn step_list(
                 ok = false;
             }
             Some(&i) => out.push(i),
+            None if rejected.contains(&id.key()) => ok = false,
             None => {
                 let msg = format!(
                     "there is no step `{}` in this chart; declare it with `STEP {} : END_STEP`",

@@ -161,12 +161,12 @@ impl Parser<'_> {
                     qualifier_span = tok.span;
                 }
                 None => {
+                    // Reported, then read as N so the association still counts as a use.
                     self.error(
                         Code::SfcUnknownQualifier,
                         tok.span,
                         format!("`{text}` is not an action qualifier; write one of N, R, S, P, P1, P0, L, D, SD, DS, SL"),
                     );
-                    return Err(Fail);
                 }
             }
         }
@@ -186,7 +186,6 @@ impl Parser<'_> {
                     tok.span,
                     format!("qualifier `{name}` takes no duration; only L, D, SD, DS and SL do"),
                 );
-                return Err(Fail);
             } else {
                 return Err(self.expected("an indicator variable name"));
             }
