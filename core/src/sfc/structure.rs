@@ -6,7 +6,8 @@
 //! breadth first, firing one transition at a time, up to [`MAX_SITUATIONS`]. When the
 //! chart is safe this covers the simultaneous firings of the runtime too: transitions that
 //! fire together leave disjoint steps, and each one's effect does not depend on the others.
-//! Reported: a transition that can activate a step that is already active (unsafe, W0021),
+//! Reported: the first transition found (on a shortest firing sequence) that can activate a
+//! step that is already active (unsafe, W0021),
 //! steps that can never become active (W0020) and transitions whose steps are never active
 //! together (W0022). When the budget cuts the search, unreachable steps come from a
 //! structural fixpoint instead (always exact about "never") and dead transitions are not
@@ -54,7 +55,7 @@ pub(super) fn check(chart: &Chart, diags: &mut Vec<Diagnostic>) {
     seen.insert(initial, 0);
     let mut reached = vec![false; n];
     let mut enabled = vec![false; chart.transitions.len()];
-    let mut unsafe_reported: Vec<(usize, usize)> = Vec::new();
+    let mut unsafe_reported = false;
     let mut complete = true;
     let mut next_index = 0;
     while next_index < situations.len() {
@@ -75,8 +76,9 @@ pub(super) fn check(chart: &Chart, diags: &mut Vec<Diagnostic>) {
                 set(&mut after, s, false);
             }
             for &s in &tr.to {
-                if has(&m, s) && !tr.from.contains(&s) && !unsafe_reported.contains(&(t, s)) {
-                    unsafe_reported.push((t, s));
+                if has(&m, s) && !tr.from.contains(&s) && !unsafe_reported {
+                    // Only the first (shortest) one: the others usually follow from it.
+                    unsafe_reported = true;
                     let path = path_to(chart, &parent, here);
                     let msg = format!(
                         "{} can activate step `{}` while it is already active ({}; conditions ignored): the SFC is unsafe, and a step flag cannot count two activations",

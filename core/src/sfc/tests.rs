@@ -251,19 +251,13 @@ TRANSITION FROM C TO D := TRUE; END_TRANSITION
 STEP D : END_STEP";
     let src = program(chart);
     let f = found(&src);
-    assert_eq!(
-        f,
-        [
-            ("W0021", "TRANSITION FROM B TO D".to_string()),
-            ("W0021", "TRANSITION FROM C TO D".to_string()),
-        ]
-    );
+    assert_eq!(f, one("W0021", "TRANSITION FROM C TO D"), "only the first found is reported");
     let d = analyze(&src).diagnostics;
     assert!(
-        d[1].message
+        d[0].message
             .contains("after firing transition `FROM A TO (B, C)`, transition `FROM B TO D`"),
         "{}",
-        d[1].message
+        d[0].message
     );
 }
 
