@@ -20,6 +20,7 @@ pub mod plcopen;
 pub mod project;
 pub mod run;
 pub mod semantic;
+pub mod sfc;
 pub mod sim;
 pub mod syntax;
 pub mod vm;

@@ -5,7 +5,7 @@
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
 //! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder
 //! diagrams (W0005–W0009 are ladder warnings), E0500–E0549 Petri nets (W0010–W0019 are Petri
-//! net warnings), W0001– warnings.
+//! net warnings), E0550–E0599 textual SFC (W0020–W0029 are SFC warnings), W0001– warnings.
 
 use serde::Serialize;
 
@@ -155,6 +155,25 @@ problem_codes! {
     PnmlInvalid = "E0516": "a PNML file that cannot be read as a place/transition net",
     PetriEmptyNet = "E0517": "a Petri net without places",
 
+    // ---- textual SFC (crate::sfc): E0550–E0599 ----
+    SfcUnknownStep = "E0550": "a transition names a step that is not declared",
+    SfcDuplicateName = "E0551": "a step, transition or action name declared twice, or also declared as a variable",
+    SfcSecondInitialStep = "E0552": "a second INITIAL_STEP in one SFC network",
+    SfcNoInitialStep = "E0553": "an SFC network (or SFC body) without an INITIAL_STEP",
+    SfcUnknownAction = "E0554": "an action association naming neither an ACTION nor a variable",
+    SfcMissingDuration = "E0555": "a timed qualifier (L, D, SD, DS, SL) without a duration",
+    SfcUnexpectedDuration = "E0556": "a duration given to a qualifier that takes none (N, R, S, P, P1, P0)",
+    SfcUnknownQualifier = "E0557": "an action qualifier that is not N, R, S, P, P1, P0, L, D, SD, DS or SL",
+    SfcConditionNotBool = "E0558": "a transition condition that is not BOOL",
+    SfcDurationNotTime = "E0559": "an action duration that is not a TIME",
+    SfcReadOnly = "E0560": "an assignment to a step flag (S.X, S.T) or to an action's Q or A",
+    SfcNotAllowedHere = "E0561": "an SFC body in a FUNCTION, or statements mixed with steps and transitions",
+    SfcReservedName = "E0562": "a type or POU named like the SFC runtime's step type (SFC_STEP)",
+    SfcUnnamedTransitionBody = "E0563": "a transition written with statements but without a name to assign",
+    SfcStepListedTwice = "E0564": "a step listed twice in one FROM or TO list",
+    SfcBooleanActionNotBool = "E0565": "a boolean action whose variable is not BOOL",
+    SfcReturnInAction = "E0566": "RETURN inside an ACTION or a transition body",
+
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",
     UnreachableCode = "W0002": "a statement that can never run",
@@ -168,6 +187,13 @@ problem_codes! {
     PetriDeadTransition = "W0012": "a Petri net transition that can never fire (guards ignored)",
     PetriAnalysisIncomplete = "W0013": "the Petri net has more reachable markings than the analysis budget",
     PetriPriorityIgnored = "W0014": "transitions competing for one token but decided by different Petri net processes, where priorities cannot choose",
+    // textual SFC warnings: W0020–W0029
+    SfcUnreachableStep = "W0020": "an SFC step that can never become active",
+    SfcUnsafe = "W0021": "an SFC transition that can activate a step that is already active (unsafe SFC)",
+    SfcDeadTransition = "W0022": "an SFC transition whose source steps are never active together",
+    SfcUnusedAction = "W0023": "an ACTION that no step uses",
+    SfcTransitionNotAssigned = "W0024": "a transition body that never assigns the transition's name",
+    SfcSamePriority = "W0025": "transitions leaving the same step with the same PRIORITY (source order decides)",
 }
 
 impl std::fmt::Display for Code {

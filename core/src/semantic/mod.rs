@@ -36,11 +36,14 @@ pub struct Analysis {
     pub diagnostics: Vec<Diagnostic>,
 }
 
-/// Parses and checks `source` together with the standard library prelude.
+/// Parses and checks `source` together with the standard library prelude. Textual SFC
+/// bodies are lowered to statements first (`crate::sfc`).
 pub fn analyze(source: &str) -> Analysis {
-    let (file, mut diagnostics) = syntax::parse(source);
+    let (mut file, mut diagnostics) = syntax::parse(source);
+    let sfc = crate::sfc::desugar(&mut file);
+    diagnostics.extend(sfc.diagnostics.iter().cloned());
     let (program, more) = check::check_with_prelude(&file);
-    diagnostics.extend(more);
+    diagnostics.extend(sfc.reword(more));
     diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
     let program = if has_errors(&diagnostics) { None } else { program };
     Analysis { program, diagnostics }

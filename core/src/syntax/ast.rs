@@ -64,8 +64,10 @@ pub struct Pou {
     pub return_type: Option<TypeRef>,
     /// Declaration blocks in source order.
     pub var_blocks: Vec<VarBlock>,
-    /// The statements of the body.
+    /// The statements of the body (empty when the body is a sequential function chart).
     pub body: Vec<Stmt>,
+    /// The body written as a textual sequential function chart, if it is one.
+    pub sfc: Option<super::sfc_ast::SfcBody>,
     /// The whole POU, from its keyword to its END keyword.
     pub span: Span,
 }

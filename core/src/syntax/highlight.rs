@@ -140,15 +140,42 @@ fn class_of(kind: TokenKind, text: &str) -> Option<TokenClass> {
     })
 }
 
+/// True for the SFC words the parser recognises from context (`STEP S1`, `ACTION A`,
+/// `TRANSITION T1`/`TRANSITION (`/`TRANSITION FROM`, `FROM a`/`FROM (`, `(PRIORITY :=`),
+/// given the kinds of the tokens before and after; `Step := 1` stays a name.
+fn is_sfc_word(text: &str, before: Option<TokenKind>, after: Option<TokenKind>) -> bool {
+    use TokenKind as T;
+    let word = text.to_ascii_uppercase();
+    match word.as_str() {
+        "STEP" | "ACTION" => after == Some(T::Ident),
+        "TRANSITION" => matches!(after, Some(T::Ident | T::LParen)),
+        "FROM" => {
+            matches!(after, Some(T::Ident | T::LParen))
+                && matches!(before, Some(T::Ident | T::RParen))
+        }
+        "PRIORITY" => before == Some(T::LParen) && after == Some(T::Assign),
+        _ => false,
+    }
+}
+
 /// The classified spans of `source`, in source order and never overlapping. Spans lie on
 /// character boundaries of `source`; whitespace is left out.
 pub fn highlight_spans(source: &str) -> Vec<(Span, TokenClass)> {
     let lexed = lex(source);
     let mut spans: Vec<(Span, TokenClass)> =
         Vec::with_capacity(lexed.tokens.len() + lexed.comments.len());
-    for t in &lexed.tokens {
-        let text = source.get(t.span.start as usize..t.span.end as usize).unwrap_or("");
-        if let Some(class) = class_of(t.kind, text) {
+    let text_of = |t: &Token| source.get(t.span.start as usize..t.span.end as usize).unwrap_or("");
+    for (i, t) in lexed.tokens.iter().enumerate() {
+        let text = text_of(t);
+        let kind_at = |k: usize| lexed.tokens.get(k).map(|t| t.kind);
+        let class = if t.kind == TokenKind::Ident
+            && is_sfc_word(text, kind_at(i.wrapping_sub(1)), kind_at(i + 1))
+        {
+            Some(TokenClass::Keyword)
+        } else {
+            class_of(t.kind, text)
+        };
+        if let Some(class) = class {
             if !t.span.is_empty() {
                 spans.push((t.span, class));
             }
@@ -233,6 +260,18 @@ mod tests {
                 (";", C::Operator),
                 ("{pragma}", C::Comment),
             ]
+        );
+    }
+
+    #[test]
+    fn sfc_words_are_keywords_only_where_the_parser_reads_them_so() {
+        use TokenClass as C;
+        let src = "STEP S1 : END_STEP TRANSITION T1 (PRIORITY := 1) FROM S1 TO S2 := x; END_TRANSITION Step := 1;";
+        let kw: Vec<&str> =
+            classes(src).into_iter().filter(|(_, c)| *c == C::Keyword).map(|(t, _)| t).collect();
+        assert_eq!(
+            kw,
+            ["STEP", "END_STEP", "TRANSITION", "PRIORITY", "FROM", "TO", "END_TRANSITION"]
         );
     }
 

@@ -204,6 +204,15 @@ pub enum TokenKind {
     Resource,
     /// `END_RESOURCE`
     EndResource,
+    /// `INITIAL_STEP` (textual SFC; `STEP`, `TRANSITION`, `ACTION`, `FROM` and `PRIORITY`
+    /// are recognised by the parser from context, so they stay usable as names)
+    InitialStep,
+    /// `END_STEP`
+    EndStep,
+    /// `END_TRANSITION`
+    EndTransition,
+    /// `END_ACTION`
+    EndAction,
     /// A character that cannot start any token (already reported by the lexer).
     Error,
     /// The end of the text.
@@ -274,6 +283,10 @@ impl TokenKind {
             "END_CONFIGURATION" => EndConfiguration,
             "RESOURCE" => Resource,
             "END_RESOURCE" => EndResource,
+            "INITIAL_STEP" => InitialStep,
+            "END_STEP" => EndStep,
+            "END_TRANSITION" => EndTransition,
+            "END_ACTION" => EndAction,
             _ => return None,
         })
     }

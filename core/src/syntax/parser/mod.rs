@@ -11,10 +11,12 @@
 
 mod decl;
 mod expr;
+mod sfc;
 mod stmt;
 
 use super::ast::*;
 use super::lexer::{lex, Comment, Token, TokenKind};
+use super::sfc_ast::{SfcBody, SfcElement};
 use crate::diagnostics::{Code, Diagnostic, Span};
 
 /// Marks a failed parse whose diagnostic has already been reported.
@@ -310,9 +312,28 @@ impl<'a> Parser<'a> {
             }
         }
         let mut body = Vec::new();
+        let mut sfc: Option<SfcBody> = None;
+        let mut mixed_reported = false;
         loop {
             let before = self.pos;
-            body.extend(self.parse_stmts(false));
+            let stmts = self.parse_stmts(false);
+            if sfc.is_some() && !stmts.is_empty() {
+                self.report_mixed_body(&stmts, &mut mixed_reported);
+            } else {
+                body.extend(stmts);
+            }
+            if self.at_sfc_element() {
+                if sfc.is_none() && !body.is_empty() {
+                    let stray = std::mem::take(&mut body);
+                    self.report_mixed_body(&stray, &mut mixed_reported);
+                }
+                let element = self.parse_sfc_element();
+                let span = element_span(&element);
+                let chart = sfc.get_or_insert(SfcBody { elements: Vec::new(), span });
+                chart.span = chart.span.to(span);
+                chart.elements.push(element);
+                continue;
+            }
             let tok = self.tok();
             match tok.kind {
                 k if k == end => {
@@ -371,7 +392,20 @@ impl<'a> Parser<'a> {
             }
         }
         let span = opener.span.to(self.prev_span());
-        Pou { kind, name, return_type, var_blocks, body, span }
+        Pou { kind, name, return_type, var_blocks, body, sfc, span }
+    }
+
+    /// Reports statements that stand outside the steps, transitions and actions of an SFC
+    /// body (once per POU).
+    fn report_mixed_body(&mut self, stmts: &[Stmt], reported: &mut bool) {
+        if let (Some(first), false) = (stmts.first(), *reported) {
+            *reported = true;
+            self.error(
+                Code::SfcNotAllowedHere,
+                first.span,
+                "a body written as an SFC holds only steps, transitions and actions; put these statements inside an ACTION",
+            );
+        }
     }
 
     /// After a bad FUNCTION result type: skip to the declarations or the body.
@@ -382,6 +416,15 @@ impl<'a> Parser<'a> {
         {
             self.bump();
         }
+    }
+}
+
+/// The span of a step, transition or action.
+fn element_span(e: &SfcElement) -> Span {
+    match e {
+        SfcElement::Step(s) => s.span,
+        SfcElement::Transition(t) => t.span,
+        SfcElement::Action(a) => a.span,
     }
 }
 
@@ -418,6 +461,9 @@ pub(super) fn is_stray_end(k: TokenKind) -> bool {
             | EndStruct
             | EndConfiguration
             | EndResource
+            | EndStep
+            | EndTransition
+            | EndAction
     )
 }
 
@@ -439,6 +485,7 @@ pub(super) fn is_block_end(k: TokenKind) -> bool {
                 | Struct
                 | Configuration
                 | Resource
+                | InitialStep
         )
 }
 

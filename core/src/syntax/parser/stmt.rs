@@ -36,6 +36,9 @@ impl Parser<'_> {
             if is_block_end(k) || (in_case && self.looks_like_case_label()) {
                 return stmts;
             }
+            if self.open_ends.is_empty() && self.at_sfc_element() {
+                return stmts;
+            }
             let before = self.pos;
             match self.nested(|p| p.parse_stmt()) {
                 Ok(s) => stmts.push(s),
@@ -100,7 +103,7 @@ impl Parser<'_> {
 
     /// The `;` ending a simple statement. When missing, reports it at the statement's last
     /// token and goes on (nothing is skipped).
-    fn end_statement(&mut self, start: Span) -> Span {
+    pub(super) fn end_statement(&mut self, start: Span) -> Span {
         if let Some(semi) = self.eat(TokenKind::Semicolon) {
             return start.to(semi.span);
         }

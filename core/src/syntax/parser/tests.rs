@@ -755,3 +755,73 @@ fn never_panics_on_truncated_or_random_input() {
         let _ = parse_source(&glued);
     }
 }
+
+// ---- textual SFC ----
+
+use crate::syntax::sfc_ast::{Qualifier, TransitionCondition};
+
+fn chart_of(src: &str) -> SfcBody {
+    match parse_ok(src).items.into_iter().last() {
+        Some(Item::Pou(p)) => {
+            assert!(p.body.is_empty());
+            p.sfc.expect("an SFC body")
+        }
+        other => panic!("no POU: {other:?}"),
+    }
+}
+
+#[test]
+fn parses_steps_with_qualifiers_durations_and_indicators() {
+    let chart = chart_of(
+        "PROGRAM Main\ninitial_step S1 : A1(N); A2(L, T#5s); A3(D, T#1s, Lamp); A4(); END_STEP\nSTEP S2: A5(P1, Ind1, Ind2); END_STEP;\nEND_PROGRAM",
+    );
+    let SfcElement::Step(s1) = &chart.elements[0] else { panic!() };
+    assert!(s1.initial);
+    assert_eq!(s1.name.name, "S1");
+    let q: Vec<_> = s1.associations.iter().map(|a| (a.action.name.as_str(), a.qualifier)).collect();
+    assert_eq!(
+        q,
+        [("A1", Qualifier::N), ("A2", Qualifier::L), ("A3", Qualifier::D), ("A4", Qualifier::N)]
+    );
+    assert_eq!(sx(s1.associations[1].duration.as_ref().unwrap()), "time:5000000000");
+    assert_eq!(s1.associations[2].indicators[0].name, "Lamp");
+    let SfcElement::Step(s2) = &chart.elements[1] else { panic!() };
+    assert!(!s2.initial);
+    let inds: Vec<_> = s2.associations[0].indicators.iter().map(|i| i.name.as_str()).collect();
+    assert_eq!(inds, ["Ind1", "Ind2"]);
+}
+
+#[test]
+fn parses_transitions_in_both_forms_with_priorities_and_step_lists() {
+    let chart = chart_of(
+        "PROGRAM Main
+TRANSITION T1 (PRIORITY := 2) FROM (A, B) TO C := x > 1; END_TRANSITION
+TRANSITION FROM C TO (A, B) := TRUE; END_TRANSITION
+TRANSITION T3 FROM A TO B : T3 := x = 0; END_TRANSITION
+ACTION Act : x := x + 1; END_ACTION
+END_PROGRAM",
+    );
+    let SfcElement::Transition(t1) = &chart.elements[0] else { panic!() };
+    assert_eq!(t1.name.as_ref().unwrap().name, "T1");
+    assert_eq!(t1.priority.unwrap().0, 2);
+    let names = |ids: &[Ident]| ids.iter().map(|i| i.name.clone()).collect::<Vec<_>>();
+    assert_eq!((names(&t1.from), names(&t1.to)), (vec!["A".into(), "B".into()], vec!["C".into()]));
+    let TransitionCondition::Expr(c) = &t1.condition else { panic!() };
+    assert_eq!(sx(c), "(Gt x 1)");
+    let SfcElement::Transition(t2) = &chart.elements[1] else { panic!() };
+    assert!(t2.name.is_none() && t2.priority.is_none());
+    assert_eq!(names(&t2.to), ["A", "B"]);
+    let SfcElement::Transition(t3) = &chart.elements[2] else { panic!() };
+    assert!(matches!(&t3.condition, TransitionCondition::Body(b) if b.len() == 1));
+    let SfcElement::Action(a) = &chart.elements[3] else { panic!() };
+    assert_eq!((a.name.name.as_str(), a.body.len()), ("Act", 1));
+}
+
+#[test]
+fn sfc_syntax_errors_are_located() {
+    let errs = errors("PROGRAM Main\nSTEP S1 : A1(N) END_STEP\nTRANSITION FROM S1 S2 := TRUE; END_TRANSITION\nEND_PROGRAM");
+    let codes: Vec<_> = errs.iter().map(|(c, _)| *c).collect();
+    assert_eq!(codes, ["E0006", "E0006"], "{errs:?}");
+    assert!(errs[0].1.contains("expected `;`"), "{errs:?}");
+    assert!(errs[1].1.contains("`TO`"), "{errs:?}");
+}
