@@ -112,6 +112,22 @@ fn option_error(code: Code, message: String) -> DiagnosticReport {
     }
 }
 
+/// Whether `name` is a hidden variable that a front-end generated (ladder power flow and
+/// edge memories, Petri-net scan copies, SFC bookkeeping): kept out of reports and of the
+/// variable table, but readable by name for the views that need them.
+pub fn is_generated_variable(name: &str) -> bool {
+    crate::ladder::is_hidden_name(name)
+        || crate::petri::is_hidden_name(name)
+        || crate::sfc::is_hidden_name(name)
+}
+
+/// The program instance's variables as JSON, without the generated ones.
+fn visible_vars(sim: &Simulator) -> serde_json::Map<String, Json> {
+    let mut vars = sim.vars_json();
+    vars.retain(|k, _| !is_generated_variable(k));
+    vars
+}
+
 /// Compiles and runs `source` as `plc run` does.
 pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
     let index = LineIndex::new(source);
@@ -168,12 +184,12 @@ pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
         }
     }
     if report.diagnostics.iter().any(|d| d.severity == Severity::Error) {
-        report.vars = sim.vars_json();
+        report.vars = visible_vars(&sim);
         return report;
     }
     let outcome = sim.run_scans(options.cycles);
     report.cycles = sim.scan_count();
-    report.vars = sim.vars_json();
+    report.vars = visible_vars(&sim);
     match outcome {
         ScanOutcome::Fault(info) => {
             let loc = index.location(info.span.start);
@@ -261,9 +277,7 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
         src.warnings.iter().map(|(p, d)| ladder_report(p, d)).collect();
     warnings.extend(petri.iter().map(|(p, d)| petri_report(p, d)));
     report.diagnostics.splice(0..0, warnings);
-    report
-        .vars
-        .retain(|k, _| !crate::ladder::is_hidden_name(k) && !crate::petri::is_hidden_name(k));
+    report.vars.retain(|k, _| !is_generated_variable(k));
     report
 }
 

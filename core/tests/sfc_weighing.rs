@@ -111,3 +111,22 @@ fn a_cold_restart_returns_to_ready_and_clears_the_batch_count() {
     p.scan(&[]);
     assert_eq!((p.step(), p.run.int("Batches")), ("Ready".into(), 0));
 }
+
+/// `plc run --json` shows the steps (`Filling.X`) but none of the lowering's bookkeeping.
+#[test]
+fn the_run_report_hides_the_generated_variables() {
+    let options = plc_core::run::RunOptions {
+        cycles: 3,
+        set: vec![("Start".into(), "TRUE".into())],
+        ..Default::default()
+    };
+    let report = plc_core::run::run_source(EXAMPLE, &options);
+    assert_eq!(report.status, plc_core::run::RunStatus::Ok);
+    assert_eq!(report.vars["Filling"]["X"], serde_json::json!(true));
+    let hidden: Vec<&String> = report.vars.keys().filter(|k| k.starts_with("SFC__")).collect();
+    assert!(hidden.is_empty(), "generated variables in the report: {hidden:?}");
+    assert!(plc_core::run::is_generated_variable("sfc__dt"));
+    assert!(plc_core::run::is_generated_variable("LdPow_0_0_1"));
+    assert!(plc_core::run::is_generated_variable("PnScan_pA"));
+    assert!(!plc_core::run::is_generated_variable("Filling"));
+}
