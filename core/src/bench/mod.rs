@@ -4,7 +4,7 @@
 //! moment. Timing uses the wall clock, so this module exists only in native builds; the
 //! tests assert nothing about timings (they only run a quick pass).
 
-mod programs;
+pub mod programs;
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -171,20 +171,36 @@ pub fn b6(effort: Effort) -> Result<f64, BenchError> {
     }))
 }
 
+/// The figures `plc bench` measures, in the order it prints them.
+pub const FIGURES: [&str; 5] = ["B1", "B2", "B3", "B5", "B6"];
+
 /// Runs every benchmark and returns the `plc bench --json` object.
 pub fn run_all(effort: Effort) -> Result<Json, BenchError> {
-    let b1 = b1(effort)?;
-    let b2 = b2(effort)?;
-    let b3 = b3(effort)?;
-    let b5 = b5(effort)?;
-    let b6 = b6(effort)?;
-    Ok(json!({
-        "B1": b1,
-        "B2": b2,
-        "B3": b3,
-        "B5": { "native_ms": b5 },
-        "B6": { "native_ms": b6 },
-    }))
+    run_selected(effort, &[])
+}
+
+/// Runs the figures named in `only` (case-insensitive; every figure when empty) and
+/// returns their part of the `plc bench --json` object.
+pub fn run_selected(effort: Effort, only: &[String]) -> Result<Json, BenchError> {
+    if let Some(bad) = only.iter().find(|o| !FIGURES.iter().any(|f| f.eq_ignore_ascii_case(o))) {
+        return Err(BenchError(format!(
+            "unknown figure `{bad}` (figures: {})",
+            FIGURES.join(", ")
+        )));
+    }
+    let wanted = |f: &str| only.is_empty() || only.iter().any(|o| o.eq_ignore_ascii_case(f));
+    let mut out = serde_json::Map::new();
+    for f in FIGURES.into_iter().filter(|f| wanted(f)) {
+        let v = match f {
+            "B1" => json!(b1(effort)?),
+            "B2" => json!(b2(effort)?),
+            "B3" => b3(effort)?,
+            "B5" => json!({ "native_ms": b5(effort)? }),
+            _ => json!({ "native_ms": b6(effort)? }),
+        };
+        out.insert(f.to_string(), v);
+    }
+    Ok(Json::Object(out))
 }
 
 #[cfg(test)]

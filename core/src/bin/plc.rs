@@ -82,6 +82,9 @@ enum Command {
         /// A short smoke pass with tiny sizes (for CI).
         #[arg(long)]
         quick: bool,
+        /// Run only these figures (`--only B2 --only B4`), e.g. under a profiler.
+        #[arg(long, value_name = "FIGURE")]
+        only: Vec<String>,
     },
 }
 
@@ -223,9 +226,9 @@ fn st_view(path: &Path, pou: &str) -> ExitCode {
     }
 }
 
-fn bench(json: bool, quick: bool) -> ExitCode {
+fn bench(json: bool, quick: bool, only: &[String]) -> ExitCode {
     let effort = if quick { plc_core::bench::Effort::Quick } else { plc_core::bench::Effort::Full };
-    match plc_core::bench::run_all(effort) {
+    match plc_core::bench::run_selected(effort, only) {
         Ok(report) if json => {
             println!("{report}");
             ExitCode::SUCCESS
@@ -327,7 +330,7 @@ fn main() -> ExitCode {
         }
         Command::Explain { code } => explain(&code),
         Command::StView { project, pou } => st_view(&project, &pou),
-        Command::Bench { json, quick } => bench(json, quick),
+        Command::Bench { json, quick, only } => bench(json, quick, &only),
         Command::Import { file } => import(&file),
         Command::Export { plcopen: _, project } => export(&project),
     }

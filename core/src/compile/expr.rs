@@ -525,7 +525,7 @@ impl Emitter<'_> {
 /// True when converting `from` to `to` leaves a cell's bits unchanged (see the cell
 /// encoding in `vm::arith`): signed values are kept sign-extended and unsigned values and
 /// bit strings zero-extended, so widening within those families is free.
-fn identity_widening(from: Elem, to: Elem) -> bool {
+pub(crate) fn identity_widening(from: Elem, to: Elem) -> bool {
     if from == to {
         return true;
     }

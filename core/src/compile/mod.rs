@@ -14,6 +14,7 @@
 
 mod emit;
 mod expr;
+mod fuse;
 mod layout;
 pub(crate) mod locate;
 mod stmt;
@@ -27,7 +28,7 @@ use std::fmt;
 use crate::diagnostics::Span;
 use crate::semantic::ir::{Expr, Program, Var};
 use crate::semantic::types::{Elem, PouId, Type, TypeTable};
-use crate::vm::op::{CaseTable, DimInfo, Op};
+use crate::vm::op::{CaseTable, DimInfo, ElemSite, Op};
 
 use layout::Layouts;
 pub use layout::MAX_CELLS;
@@ -134,6 +135,10 @@ pub(crate) struct Code {
     pub code: Vec<Op>,
     /// Array dimensions for `Op::Index`.
     pub dims: Vec<DimInfo>,
+    /// Element-access sites for `Op::LoadElem` and its kin.
+    pub sites: Vec<ElemSite>,
+    /// Where each site is in `sites` (equal accesses share one entry).
+    pub site_index: std::collections::HashMap<ElemSite, u32>,
     /// CASE tables.
     pub cases: Vec<CaseTable>,
     /// Types for `Op::ToStr`.

@@ -9,13 +9,14 @@
 
 use super::arith;
 use super::builtins;
+use super::fast;
 use super::fault::Fault;
 use super::memory::{copy_cells, copy_str, Memory};
-use super::op::{Op, R3};
+use super::op::Op;
 use crate::compile::{ConditionId, Executable};
 use crate::diagnostics::Span;
 use crate::semantic::ir::SysVar;
-use crate::semantic::types::{Elem, PouId};
+use crate::semantic::types::PouId;
 
 /// The deepest nesting of calls the VM allows.
 pub const MAX_CALL_DEPTH: usize = 64;
@@ -204,19 +205,9 @@ impl Machine {
                 *cells.get_mut(base.wrapping_add($x) as usize).ok_or(BAD)? = v;
             }};
         }
-        macro_rules! at {
-            ($a:expr) => {
-                *cells.get_mut(($a) as usize).ok_or(BAD)?
-            };
-        }
-        macro_rules! bin {
-            ($o:expr, |$x:ident, $y:ident| $e:expr) => {{
-                let R3 { dst, a, b } = $o;
-                let ($x, $y) = (r!(a), r!(b));
-                w!(dst, $e)
-            }};
-        }
+        let tables = fast::Tables { code, sites: &exe.out.sites, dims: &exe.out.dims };
         loop {
+            fast::run(tables, cells, base, pc, &mut fuel)?;
             let op = code.get(*pc).ok_or(Fault::Internal("jump outside the code"))?;
             *pc += 1;
             if fuel == 0 {
@@ -224,48 +215,6 @@ impl Machine {
             }
             fuel -= 1;
             match *op {
-                Op::Const { dst, bits } => w!(dst, bits),
-                Op::Move { dst, a } => w!(dst, r!(a)),
-                Op::LoadAbs { dst, addr } => w!(dst, at!(addr)),
-                Op::StoreAbs { addr, a } => at!(addr) = r!(a),
-                Op::LoadInd { dst, ptr, off } => w!(dst, at!(r!(ptr).wrapping_add(u64::from(off)))),
-                Op::StoreInd { ptr, off, a } => at!(r!(ptr).wrapping_add(u64::from(off))) = r!(a),
-                Op::AddrOf { dst, off } => w!(dst, u64::from(base.wrapping_add(off))),
-                Op::PtrAdd { dst, ptr, off } => w!(dst, r!(ptr).wrapping_add(u64::from(off))),
-                Op::Index { ptr, idx, dim } => {
-                    let d = exe.out.dims.get(dim as usize).ok_or(BAD)?;
-                    let i = r!(idx) as i64;
-                    if i < d.low || i > d.high {
-                        return Err(Fault::IndexOutOfRange { index: i, low: d.low, high: d.high });
-                    }
-                    let step = (i as i128 - d.low as i128) as u64 * u64::from(d.stride);
-                    w!(ptr, r!(ptr).wrapping_add(step));
-                }
-                Op::AddI64(o) => bin!(o, |x, y| (x as i64).wrapping_add(y as i64) as u64),
-                Op::SubI64(o) => bin!(o, |x, y| (x as i64).wrapping_sub(y as i64) as u64),
-                Op::MulI64(o) => bin!(o, |x, y| (x as i64).wrapping_mul(y as i64) as u64),
-                Op::AddI32(o) => bin!(o, |x, y| (x as i32).wrapping_add(y as i32) as i64 as u64),
-                Op::SubI32(o) => bin!(o, |x, y| (x as i32).wrapping_sub(y as i32) as i64 as u64),
-                Op::MulI32(o) => bin!(o, |x, y| (x as i32).wrapping_mul(y as i32) as i64 as u64),
-                Op::AddI16(o) => bin!(o, |x, y| (x as i16).wrapping_add(y as i16) as i64 as u64),
-                Op::SubI16(o) => bin!(o, |x, y| (x as i16).wrapping_sub(y as i16) as i64 as u64),
-                Op::AddF64(o) => bin!(o, |x, y| (f64::from_bits(x) + f64::from_bits(y)).to_bits()),
-                Op::SubF64(o) => bin!(o, |x, y| (f64::from_bits(x) - f64::from_bits(y)).to_bits()),
-                Op::MulF64(o) => bin!(o, |x, y| (f64::from_bits(x) * f64::from_bits(y)).to_bits()),
-                Op::DivF64(o) => bin!(o, |x, y| (f64::from_bits(x) / f64::from_bits(y)).to_bits()),
-                Op::AddF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) + f64::from_bits(y))),
-                Op::SubF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) - f64::from_bits(y))),
-                Op::MulF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) * f64::from_bits(y))),
-                Op::DivF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) / f64::from_bits(y))),
-                Op::EqCell(o) => bin!(o, |x, y| u64::from(x == y)),
-                Op::NeCell(o) => bin!(o, |x, y| u64::from(x != y)),
-                Op::LtI64(o) => bin!(o, |x, y| u64::from((x as i64) < (y as i64))),
-                Op::LeI64(o) => bin!(o, |x, y| u64::from((x as i64) <= (y as i64))),
-                Op::GtI64(o) => bin!(o, |x, y| u64::from((x as i64) > (y as i64))),
-                Op::GeI64(o) => bin!(o, |x, y| u64::from((x as i64) >= (y as i64))),
-                Op::And(o) => bin!(o, |x, y| x & y),
-                Op::Or(o) => bin!(o, |x, y| x | y),
-                Op::Xor(o) => bin!(o, |x, y| x ^ y),
                 Op::Bin { op, elem, dst, a, b } => w!(dst, arith::binary(op, elem, r!(a), r!(b))?),
                 Op::Cmp { op, elem, dst, a, b } => {
                     w!(dst, u64::from(arith::compare(op, elem, r!(a), r!(b))))
@@ -276,29 +225,11 @@ impl Machine {
                 Op::Neg { elem, dst, a } => w!(dst, arith::negate(elem, r!(a))),
                 Op::Not { elem, dst, a } => w!(dst, arith::complement(elem, r!(a))),
                 Op::Conv { from, to, dst, a } => w!(dst, arith::convert(from, to, r!(a))),
-                Op::RealToDint { dst, a } => w!(dst, real_to_dint(r!(a))),
-                Op::MulRealToDint(o) => {
-                    bin!(o, |x, y| real_to_dint(f32r(f64::from_bits(x) * f64::from_bits(y))))
-                }
                 Op::Trunc { from, to, dst, a } => w!(dst, arith::trunc(from, to, r!(a))),
-                Op::GetBit { dst, a, n } => w!(dst, arith::get_bit(r!(a), n)),
                 Op::SetBit { elem, n, dst, v } => {
                     w!(dst, arith::set_bit(elem, r!(dst), u32::from(n), r!(v) != 0))
                 }
                 Op::Sys { var, dst } => w!(dst, sys_var(var, sys)),
-                Op::Jump { target } => *pc = target as usize,
-                Op::JumpIf { c, target } => {
-                    if r!(c) != 0 {
-                        loop_done();
-                        *pc = target as usize;
-                    }
-                }
-                Op::JumpIfNot { c, target } => {
-                    if r!(c) == 0 {
-                        loop_done();
-                        *pc = target as usize;
-                    }
-                }
                 Op::ForStart { lim } => {
                     if r!(lim.wrapping_add(1)) == 0 {
                         return Err(Fault::ForStepZero);
@@ -310,24 +241,6 @@ impl Machine {
                     let step = arith::to_i128(elem, r!(lim.wrapping_add(1)));
                     if !(if step > 0 { x <= end } else { x >= end }) {
                         *pc = target as usize;
-                    }
-                }
-                Op::ForNext32 { bits, signed, v, lim, target } => {
-                    // Values of at most 32 bits: the sum cannot overflow i64.
-                    let (x, end, step) =
-                        (r!(v) as i64, r!(lim) as i64, r!(lim.wrapping_add(1)) as i64);
-                    let next = x + step;
-                    let sh = 64 - u32::from(bits);
-                    let wrapped = if signed {
-                        (next << sh) >> sh
-                    } else {
-                        ((next as u64) << sh >> sh) as i64
-                    };
-                    w!(v, wrapped as u64);
-                    if if step > 0 { next <= end } else { next >= end } {
-                        *pc = target as usize;
-                    } else {
-                        loop_done();
                     }
                 }
                 Op::ForNext { elem, v, lim, target } => {
@@ -403,7 +316,18 @@ impl Machine {
                     copy_cells(cells, r!(dst) as usize, r!(src) as usize, n as usize)?
                 }
                 Op::StrCopy { dst, src } => copy_str(cells, r!(dst) as usize, r!(src) as usize)?,
-                _ => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
+                Op::StrCmp { .. }
+                | Op::Str { .. }
+                | Op::Math { .. }
+                | Op::Select { .. }
+                | Op::MinMax { .. }
+                | Op::Limit { .. }
+                | Op::Mux { .. }
+                | Op::ToStr { .. }
+                | Op::FromStr { .. }
+                | Op::Bcd { .. } => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
+                // The inner loop's instructions never get here.
+                _ => return Err(Fault::Internal("instruction left by the inner loop")),
             }
         }
     }
@@ -421,32 +345,4 @@ fn sys_var(var: SysVar, sys: SysState) -> u64 {
             u64::from(sys.time_ns.rem_euclid(period) < period / 2)
         }
     }
-}
-
-/// `arith::convert(Real, DInt, x)`, inlined: round half to even, wrap to 32 bits.
-/// Below 2^51, adding 1.5 * 2^52 rounds to an integer half to even (the default IEEE
-/// rounding, exactly as `round_ties_even`) and leaves that integer in the low mantissa
-/// bits, so no libm call and no saturating float-to-int conversion is needed.
-#[inline]
-fn real_to_dint(x: u64) -> u64 {
-    const MAGIC: f64 = 6_755_399_441_055_744.0;
-    let f = f64::from_bits(x);
-    if f.abs() < 2_251_799_813_685_248.0 {
-        let k = (f + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits()) as i64;
-        k as i32 as i64 as u64
-    } else {
-        arith::convert(Elem::Real, Elem::DInt, x)
-    }
-}
-
-/// Marks the rare path of a branch, so that the compiler keeps a predictable jump there
-/// instead of a conditional move (which would chain the next dispatch on the data).
-#[cold]
-#[inline(never)]
-fn loop_done() {}
-
-/// Rounds an f64 result to REAL precision, as `arith::from_f64(Elem::Real, _)` does.
-#[inline]
-fn f32r(v: f64) -> u64 {
-    (v as f32 as f64).to_bits()
 }
