@@ -223,7 +223,8 @@ fn bubble_sort_inner_loop_is_seven_instructions() {
 /// `IF a <op> b THEN r := 1; ELSE r := 2; END_IF` for every comparison and both outcomes.
 #[test]
 fn compare_and_branch_takes_both_ways_for_every_relation() {
-    let cases: [(&str, fn(i64, i64) -> bool); 6] = [
+    type Relation = fn(i64, i64) -> bool;
+    let cases: [(&str, Relation); 6] = [
         ("<", |a, b| a < b),
         ("<=", |a, b| a <= b),
         (">", |a, b| a > b),
