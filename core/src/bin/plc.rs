@@ -234,7 +234,7 @@ fn bench(json: bool, quick: bool, only: &[String]) -> ExitCode {
             ExitCode::SUCCESS
         }
         Ok(report) => {
-            println!("{}", serde_json::to_string_pretty(&report).unwrap_or_default());
+            print!("{}", plc_core::bench::report_text(&report));
             ExitCode::SUCCESS
         }
         Err(e) => {

@@ -1,0 +1,241 @@
+//! The timed side of the benchmarks (native builds only: it reads the wall clock): each
+//! figure with its repetitions, the `plc bench --json` object and its text rendering.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use serde::Serialize;
+use serde_json::{json, Value as Json};
+
+use super::workload::{check_and_compile, load, run_weighing, scan, weighing, BenchError};
+use super::{ladder, programs};
+
+/// How much work each benchmark does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Effort {
+    /// The sizes the issue names (B5 runs a full virtual hour).
+    Full,
+    /// A smoke pass for CI: tiny sizes, a few repetitions.
+    Quick,
+}
+
+/// A VM figure with its native baseline.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Paired {
+    /// Best wall time of the VM, ms.
+    pub vm_ms: f64,
+    /// Best wall time of the hand-written Rust, ms.
+    pub native_ms: f64,
+    /// vm_ms / native_ms.
+    pub ratio: f64,
+}
+
+fn ms(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1000.0
+}
+
+/// The best of `reps` timings of `f`, in ms.
+fn best_of(reps: usize, mut f: impl FnMut()) -> f64 {
+    (0..reps.max(1))
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            ms(t)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn paired(vm_ms: f64, native_ms: f64) -> Paired {
+    Paired { vm_ms, native_ms, ratio: vm_ms / native_ms.max(1e-9) }
+}
+
+/// B1: `d := REAL_TO_DINT(a * b)` with changing a and b, `n` iterations in one scan.
+pub fn b1(effort: Effort) -> Result<Paired, BenchError> {
+    let n = if effort == Effort::Full { 100_000 } else { 1_000 };
+    let reps = if effort == Effort::Full { 20 } else { 2 };
+    let mut sim = load(&programs::b1(n))?;
+    let vm = best_of(reps, || {
+        let _ = scan(&mut sim);
+    });
+    scan(&mut sim)?;
+    let native = best_of(reps, || {
+        black_box(programs::b1_native(black_box(n)));
+    });
+    Ok(paired(vm, native))
+}
+
+/// B2: worst-case bubble sort of a `n`-element INT array in one scan.
+pub fn b2(effort: Effort) -> Result<Paired, BenchError> {
+    let n = if effort == Effort::Full { 1_000 } else { 50 };
+    let reps = if effort == Effort::Full { 5 } else { 2 };
+    let mut sim = load(&programs::b2(n))?;
+    scan(&mut sim)?;
+    let vm = best_of(reps, || {
+        let _ = scan(&mut sim);
+    });
+    let native = best_of(reps, || {
+        black_box(programs::b2_native(black_box(n)));
+    });
+    Ok(paired(vm, native))
+}
+
+/// B3: scan time of CASE OF code for sequences of 10 … 10,000 places (ns per scan), and
+/// the ratio largest/smallest.
+pub fn b3(effort: Effort) -> Result<Json, BenchError> {
+    let sizes: &[usize] =
+        if effort == Effort::Full { &[10, 100, 1_000, 10_000] } else { &[10, 100] };
+    let scans = if effort == Effort::Full { 200_000 } else { 1_000 };
+    let mut per_size = serde_json::Map::new();
+    let mut first = None;
+    let mut last = 0.0;
+    for &places in sizes {
+        let mut sim = load(&programs::b3(places))?;
+        sim.hold("Go", "TRUE").map_err(|e| BenchError(e.to_string()))?;
+        let t = best_of(3, || {
+            for _ in 0..scans {
+                let _ = scan(&mut sim);
+            }
+        });
+        let ns = t * 1e6 / scans as f64;
+        first.get_or_insert(ns);
+        last = ns;
+        per_size.insert(places.to_string(), json!(ns));
+    }
+    let ratio = last / first.unwrap_or(1.0).max(1e-9);
+    Ok(json!({ "scan_ns": per_size, "ratio": ratio }))
+}
+
+/// B4: a ladder POU of 1,000 rungs × 10 elements, lowered and compiled as the product does;
+/// ns per element per scan (best of 3 runs of 1,000 scans), with the scan time.
+pub fn b4(effort: Effort) -> Result<Json, BenchError> {
+    let (rungs, scans) = if effort == Effort::Full { (1_000, 1_000) } else { (20, 20) };
+    let project = ladder::project(rungs);
+    let mut sim = crate::run::project_simulator(&project, None).map_err(|d| {
+        BenchError(
+            d.first().map_or("the ladder POU does not compile".into(), |d| d.message.clone()),
+        )
+    })?;
+    sim.set_watchdog(u64::MAX / 2);
+    for i in (1..ladder::INPUTS).step_by(3) {
+        sim.hold(&format!("I{i}"), "TRUE").map_err(|e| BenchError(e.to_string()))?;
+    }
+    scan(&mut sim)?;
+    let t = best_of(3, || {
+        for _ in 0..scans {
+            let _ = scan(&mut sim);
+        }
+    });
+    let scan_ns = t * 1e6 / scans as f64;
+    let elements = rungs * ladder::ELEMENTS_PER_RUNG;
+    Ok(json!({
+        "ns_per_element": scan_ns / elements as f64,
+        "scan_us": scan_ns / 1000.0,
+        "elements": elements,
+    }))
+}
+
+/// B5: the weighing example against its plant, fast-forwarded through one hour of virtual
+/// time at 10 ms (360,000 scans); wall time in ms.
+pub fn b5(effort: Effort) -> Result<Json, BenchError> {
+    let scans = if effort == Effort::Full { 360_000 } else { 3_600 };
+    let mut sim = weighing()?;
+    let t = Instant::now();
+    let batches = run_weighing(&mut sim, scans)?;
+    let native_ms = ms(t);
+    Ok(json!({ "native_ms": native_ms, "scans": scans, "batches": batches }))
+}
+
+/// B6: check + compile of a generated 5,000-line ST program (best of 5), in ms.
+pub fn b6(effort: Effort) -> Result<Json, BenchError> {
+    let lines = if effort == Effort::Full { 5_000 } else { 200 };
+    let source = programs::b6(lines);
+    let instructions = check_and_compile(&source)?;
+    let native_ms = best_of(5, || {
+        let _ = black_box(check_and_compile(black_box(&source)));
+    });
+    Ok(
+        json!({ "native_ms": native_ms, "lines": source.lines().count(), "instructions": instructions }),
+    )
+}
+
+/// The figures `plc bench` measures, in the order it prints them.
+pub const FIGURES: [&str; 6] = ["B1", "B2", "B3", "B4", "B5", "B6"];
+
+/// Runs every benchmark and returns the `plc bench --json` object.
+pub fn run_all(effort: Effort) -> Result<Json, BenchError> {
+    run_selected(effort, &[])
+}
+
+/// Runs the figures named in `only` (case-insensitive; every figure when empty) and
+/// returns their part of the `plc bench --json` object.
+pub fn run_selected(effort: Effort, only: &[String]) -> Result<Json, BenchError> {
+    if let Some(bad) = only.iter().find(|o| !FIGURES.iter().any(|f| f.eq_ignore_ascii_case(o))) {
+        return Err(BenchError(format!(
+            "unknown figure `{bad}` (figures: {})",
+            FIGURES.join(", ")
+        )));
+    }
+    let wanted = |f: &str| only.is_empty() || only.iter().any(|o| o.eq_ignore_ascii_case(f));
+    let mut out = serde_json::Map::new();
+    for f in FIGURES.into_iter().filter(|f| wanted(f)) {
+        let v = match f {
+            "B1" => json!(b1(effort)?),
+            "B2" => json!(b2(effort)?),
+            "B3" => b3(effort)?,
+            "B4" => b4(effort)?,
+            "B5" => b5(effort)?,
+            _ => b6(effort)?,
+        };
+        out.insert(f.to_string(), v);
+    }
+    Ok(Json::Object(out))
+}
+
+/// One line of the text report: the figure, its result, its goal and whether it holds.
+fn line(name: &str, result: String, goal: &str, met: bool) -> String {
+    format!("{name:<4} {result:<52} goal {goal:<22} {}\n", if met { "met" } else { "NOT MET" })
+}
+
+/// The `plc bench` object as a table a person reads (figures absent from it are skipped).
+pub fn report_text(report: &Json) -> String {
+    let num = |f: &str, k: &str| report[f][k].as_f64().unwrap_or(f64::NAN);
+    let mut out = String::new();
+    for f in ["B1", "B2"] {
+        if report.get(f).is_some() {
+            let r = num(f, "ratio");
+            let text = format!(
+                "VM {:.2} ms / native {:.2} ms = {r:.1}x",
+                num(f, "vm_ms"),
+                num(f, "native_ms")
+            );
+            out += &line(f, text, "ratio <= 8", r <= 8.0);
+        }
+    }
+    if let Some(b3) = report.get("B3") {
+        let sizes: Vec<String> = b3["scan_ns"]
+            .as_object()
+            .map(|m| {
+                m.iter().map(|(k, v)| format!("{k}: {:.0}", v.as_f64().unwrap_or(0.0))).collect()
+            })
+            .unwrap_or_default();
+        let r = num("B3", "ratio");
+        let text = format!("ns/scan {}; ratio {r:.2}", sizes.join(", "));
+        out += &line("B3", text, "ratio <= 1.1", r <= 1.1);
+    }
+    if report.get("B4").is_some() {
+        let n = num("B4", "ns_per_element");
+        let text = format!("{n:.2} ns per element ({:.1} us per scan)", num("B4", "scan_us"));
+        out += &line("B4", text, "<= 5 ns per element", n <= 5.0);
+    }
+    if report.get("B5").is_some() {
+        let t = num("B5", "native_ms");
+        let text = format!("{t:.0} ms for {} scans (native)", report["B5"]["scans"]);
+        out += &line("B5", text, "<= 1000 ms (Chromium)", t <= 1000.0);
+    }
+    if report.get("B6").is_some() {
+        let t = num("B6", "native_ms");
+        let text = format!("{t:.1} ms for {} lines (native)", report["B6"]["lines"]);
+        out += &line("B6", text, "<= 50 ms native", t <= 50.0);
+    }
+    out
+}
