@@ -146,6 +146,9 @@ pub(super) fn run(
             Op::And(o) => bin!(o, |x, y| x & y),
             Op::Or(o) => bin!(o, |x, y| x | y),
             Op::Xor(o) => bin!(o, |x, y| x ^ y),
+            Op::AndNot(o) => bin!(o, |x, y| x & !y),
+            Op::Not { elem, dst, a } => w!(dst, arith::complement(elem, r!(a))),
+            Op::Neg { elem, dst, a } => w!(dst, arith::negate(elem, r!(a))),
             Op::RealToDint { dst, a } => w!(dst, real_to_dint(r!(a))),
             Op::MulRealToDint(o) => {
                 bin!(o, |x, y| real_to_dint(f32r(f64::from_bits(x) * f64::from_bits(y))))

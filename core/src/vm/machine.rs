@@ -222,8 +222,6 @@ impl Machine {
                 Op::ScaleTime { op, elem, real, dst, a, b } => {
                     w!(dst, arith::scale_time(op, elem, r!(a), r!(b), real)?)
                 }
-                Op::Neg { elem, dst, a } => w!(dst, arith::negate(elem, r!(a))),
-                Op::Not { elem, dst, a } => w!(dst, arith::complement(elem, r!(a))),
                 Op::Conv { from, to, dst, a } => w!(dst, arith::convert(from, to, r!(a))),
                 Op::Trunc { from, to, dst, a } => w!(dst, arith::trunc(from, to, r!(a))),
                 Op::SetBit { elem, n, dst, v } => {

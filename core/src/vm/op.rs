@@ -206,6 +206,9 @@ pub enum Op {
     Or(R3),
     /// XOR.
     Xor(R3),
+    /// `a AND NOT b` on any non-real cell (a ladder's normally closed contact): `a & !b`,
+    /// which is `a AND NOT b` in every integral type since cells are normalised.
+    AndNot(R3),
     /// TIME (TOD, DT) scaled by a LINT (`real` false) or LREAL factor.
     ScaleTime {
         /// Mul or Div.

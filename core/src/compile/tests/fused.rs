@@ -302,3 +302,40 @@ END_PROGRAM
 ";
     assert_eq!(count(&code_of(src), |op| matches!(op, Op::Jump { .. })), 0);
 }
+
+#[test]
+fn and_not_is_one_instruction_in_every_integral_type() {
+    let src = "PROGRAM Main
+VAR a : BOOL; b : BOOL; x : BOOL; w : WORD := 16#F0F0; m : WORD := 16#FF00; y : WORD;
+    r : DINT; END_VAR
+x := a AND NOT b;
+y := w AND NOT m;
+r := BOOL_TO_DINT(x) * 100000 + WORD_TO_DINT(y);
+END_PROGRAM
+";
+    assert_eq!(count(&code_of(src), |op| matches!(op, Op::AndNot(_))), 2);
+    assert_eq!(count(&code_of(src), |op| matches!(op, Op::Not { .. })), 0);
+    // 16#F0F0 AND NOT 16#FF00 = 16#00F0 = 240.
+    for (a, b, want) in [("TRUE", "FALSE", 1), ("TRUE", "TRUE", 0), ("FALSE", "FALSE", 0)] {
+        assert_eq!(run1(src, &[("a", a), ("b", b)], "r"), Ok(want * 100000 + 240), "{a} {b}");
+    }
+}
+
+#[test]
+fn true_and_x_is_x_but_x_is_still_evaluated() {
+    let src = "FUNCTION Bump : BOOL
+VAR_IN_OUT n : DINT; END_VAR
+n := n + 1;
+Bump := n > 1;
+END_FUNCTION
+PROGRAM Main
+VAR n : DINT; x : BOOL; y : BOOL; r : DINT; END_VAR
+x := TRUE AND Bump(n);
+y := Bump(n) OR FALSE;
+r := n * 100 + BOOL_TO_DINT(x) * 10 + BOOL_TO_DINT(y);
+END_PROGRAM
+";
+    let code = code_of(src);
+    assert_eq!(count(&code, |op| matches!(op, Op::And(_) | Op::Or(_))), 0, "{code:?}");
+    assert_eq!(run1(src, &[], "r"), Ok(201));
+}
