@@ -165,7 +165,8 @@ impl<'a> Emitter<'a> {
             | Op::JumpNe(crate::vm::op::Branch { target, .. })
             | Op::ForTest { target, .. }
             | Op::ForNext { target, .. }
-            | Op::ForNext32 { target, .. },
+            | Op::ForNext32 { target, .. }
+            | Op::ForInc32 { target, .. },
         ) = self.out.code.get_mut(at as usize)
         {
             *target = to;
@@ -327,7 +328,8 @@ impl<'a> Emitter<'a> {
         let span = u32::try_from(high.wrapping_sub(low)).ok().filter(|_| low <= high);
         if let (Addr::Frame(start), [e], Some(span)) = (ba, idx, span) {
             let (r, add, shift, signed) = self.index_operand(e, (low, high))?;
-            let site = ElemSite { add, low, span, start, stride: strides[0], shift, signed };
+            let site =
+                ElemSite { shift, signed, ..ElemSite::new(add, low, span, start, strides[0]) };
             return Ok(Addr::Elem { idx: r, site });
         }
         let t = self.pointer(ba)?;

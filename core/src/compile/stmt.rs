@@ -290,7 +290,11 @@ impl Emitter<'_> {
         match direct {
             Some(o) if elem.is_int() && elem.bits() <= 32 => {
                 let (bits, signed) = (elem.bits() as u8, elem.is_signed_int());
-                self.emit(Op::ForNext32 { bits, signed, v: o, lim, target: body_pc });
+                if matches!(by.kind, ExprKind::Const(1)) {
+                    self.emit(Op::ForInc32 { bits, signed, v: o, lim, target: body_pc });
+                } else {
+                    self.emit(Op::ForNext32 { bits, signed, v: o, lim, target: body_pc });
+                }
             }
             Some(o) => {
                 self.emit(Op::ForNext { elem, v: o, lim, target: body_pc });

@@ -5,8 +5,11 @@
 //! generic operators, …) or when the watchdog budget is spent; the outer loop in
 //! `machine` handles that instruction and comes back.
 //!
-//! Like the outer loop it never allocates, never panics (every index is checked; a bad one
-//! is `Fault::Internal`) and counts every instruction it runs against the budget.
+//! Like the outer loop it never allocates and never panics (every index is checked; a bad
+//! one is `Fault::Internal`). It charges the watchdog budget per loop iteration rather than
+//! per instruction: a jump back costs the number of instructions it jumps back over (the
+//! instructions of one pass of the loop on its straight path), so straight code costs
+//! nothing here and an endless loop still exhausts any budget.
 
 use super::arith;
 use super::fault::Fault;
@@ -27,8 +30,9 @@ pub(super) struct Tables<'a> {
 }
 
 /// Runs simple instructions from `*pc` in the frame at `base` until an instruction it does
-/// not handle (left at `*pc`, not counted) or until `*fuel` is 0. On a fault, `*pc` is one
-/// past the faulting instruction, as the outer loop leaves it.
+/// not handle (left at `*pc`) or until a jump back finds `*fuel` too low (the jump is left
+/// at `*pc` and `*fuel` is 0). On a fault, `*pc` is one past the faulting instruction, as
+/// the outer loop leaves it.
 #[inline(never)]
 pub(super) fn run(
     t: Tables<'_>,
@@ -71,13 +75,30 @@ pub(super) fn run(
             u64::from(base.wrapping_add(s.start)) + ok!(s.offset(r!($idx)))
         }};
     }
+    // A jump: a backward one (a loop) costs the instructions it jumps back over; when the
+    // budget cannot pay, the jump is left undone for the outer loop to report.
+    macro_rules! goto {
+        ($t:expr) => {{
+            let t = $t as usize;
+            if t < p {
+                let cost = (p - t) as u64;
+                if f < cost {
+                    p -= 1;
+                    f = 0;
+                    break Ok(());
+                }
+                f -= cost;
+            }
+            p = t;
+        }};
+    }
     macro_rules! branch {
         ($o:expr, |$x:ident, $y:ident| $e:expr) => {{
             let Branch { a, b, target } = $o;
             let ($x, $y) = (r!(a), r!(b));
             if $e {
                 taken();
-                p = target as usize;
+                goto!(target);
             }
         }};
     }
@@ -90,11 +111,7 @@ pub(super) fn run(
     }
     let result = loop {
         let op = ok!(code.get(p).ok_or(Fault::Internal("jump outside the code")));
-        if f == 0 {
-            break Ok(());
-        }
         p += 1;
-        f -= 1;
         match *op {
             Op::Const { dst, bits } => w!(dst, bits),
             Op::Move { dst, a } => w!(dst, r!(a)),
@@ -154,17 +171,17 @@ pub(super) fn run(
                 bin!(o, |x, y| real_to_dint(f32r(f64::from_bits(x) * f64::from_bits(y))))
             }
             Op::GetBit { dst, a, n } => w!(dst, arith::get_bit(r!(a), n)),
-            Op::Jump { target } => p = target as usize,
+            Op::Jump { target } => goto!(target),
             Op::JumpIf { c, target } => {
                 if r!(c) != 0 {
                     taken();
-                    p = target as usize;
+                    goto!(target);
                 }
             }
             Op::JumpIfNot { c, target } => {
                 if r!(c) == 0 {
                     taken();
-                    p = target as usize;
+                    goto!(target);
                 }
             }
             Op::JumpLt(o) => branch!(o, |x, y| (x as i64) < (y as i64)),
@@ -182,15 +199,56 @@ pub(super) fn run(
                     if signed { (next << sh) >> sh } else { ((next as u64) << sh >> sh) as i64 };
                 w!(v, wrapped as u64);
                 if if step > 0 { next <= end } else { next >= end } {
-                    p = target as usize;
+                    goto!(target);
                 } else {
                     taken();
                 }
             }
-            _ => {
-                // Not ours: give it back to the outer loop.
+            Op::ForInc32 { bits, signed, v, lim, target } => {
+                let (x, end) = (r!(v) as i64, r!(lim) as i64);
+                let next = x + 1;
+                let sh = 64 - u32::from(bits);
+                let wrapped =
+                    if signed { (next << sh) >> sh } else { ((next as u64) << sh >> sh) as i64 };
+                w!(v, wrapped as u64);
+                if next <= end {
+                    goto!(target);
+                } else {
+                    taken();
+                }
+            }
+            // Not ours: give it back to the outer loop.
+            Op::Bin { .. }
+            | Op::Cmp { .. }
+            | Op::ScaleTime { .. }
+            | Op::Conv { .. }
+            | Op::Trunc { .. }
+            | Op::SetBit { .. }
+            | Op::Sys { .. }
+            | Op::ForStart { .. }
+            | Op::ForTest { .. }
+            | Op::ForNext { .. }
+            | Op::ForStep { .. }
+            | Op::Case { .. }
+            | Op::CallFb { .. }
+            | Op::CallFn { .. }
+            | Op::InitFrame { .. }
+            | Op::InitTemps { .. }
+            | Op::Ret
+            | Op::Halt { .. }
+            | Op::Copy { .. }
+            | Op::StrCopy { .. }
+            | Op::StrCmp { .. }
+            | Op::Str { .. }
+            | Op::Math { .. }
+            | Op::Select { .. }
+            | Op::MinMax { .. }
+            | Op::Limit { .. }
+            | Op::Mux { .. }
+            | Op::ToStr { .. }
+            | Op::FromStr { .. }
+            | Op::Bcd { .. } => {
                 p -= 1;
-                f += 1;
                 break Ok(());
             }
         }

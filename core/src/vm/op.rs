@@ -374,6 +374,19 @@ pub enum Op {
         /// Body target.
         target: u32,
     },
+    /// `ForNext32` for a loop whose step is the constant 1 (the step is not read).
+    ForInc32 {
+        /// Width of the control variable's type.
+        bits: u8,
+        /// Signed type.
+        signed: bool,
+        /// Control variable, updated in place.
+        v: Reg,
+        /// End at `lim`.
+        lim: Reg,
+        /// Body target.
+        target: u32,
+    },
     /// FOR increment without the jump: as `ForNext`, writing the BOOL "go on" to
     /// `lim + 2` (used when the variable is not a register).
     ForStep {

@@ -113,8 +113,9 @@ pub struct Branch {
 /// path, which decides between the wrapped index and the fault.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct ElemSite {
-    /// Constant added to the index register.
-    pub add: i64,
+    /// The constant added to the index register minus the lowest index (wrapping): the
+    /// element's position is `x + bias`.
+    pub bias: i64,
     /// Lowest index.
     pub low: i64,
     /// Highest index minus lowest index (an array has fewer than 2^32 cells).
@@ -130,6 +131,16 @@ pub struct ElemSite {
 }
 
 impl ElemSite {
+    /// A site for index `x + add` into `low..=low + span` from frame cell `start`.
+    pub fn new(add: i64, low: i64, span: u32, start: u32, stride: u32) -> ElemSite {
+        ElemSite { bias: add.wrapping_sub(low), low, span, start, stride, shift: 0, signed: true }
+    }
+
+    /// The constant added to the index register.
+    pub fn add(&self) -> i64 {
+        self.bias.wrapping_add(self.low)
+    }
+
     /// The highest index.
     pub fn high(&self) -> i64 {
         self.low.wrapping_add(i64::from(self.span))
@@ -139,7 +150,7 @@ impl ElemSite {
     /// value `x` selects, or the out-of-range fault.
     #[inline(always)]
     pub fn offset(&self, x: u64) -> Result<u64, Fault> {
-        let d = (x as i64).wrapping_add(self.add).wrapping_sub(self.low) as u64;
+        let d = (x as i64).wrapping_add(self.bias) as u64;
         if d > u64::from(self.span) {
             return self.wrapped_offset(x);
         }
@@ -151,7 +162,7 @@ impl ElemSite {
     #[cold]
     #[inline(never)]
     fn wrapped_offset(&self, x: u64) -> Result<u64, Fault> {
-        let sum = (x as i64).wrapping_add(self.add);
+        let sum = (x as i64).wrapping_add(self.add());
         let sh = u32::from(self.shift);
         let i = if self.signed {
             sum.wrapping_shl(sh).wrapping_shr(sh)

@@ -206,7 +206,7 @@ fn bubble_sort_inner_loop_is_seven_instructions() {
     let cmp = code.iter().position(|op| matches!(op, Op::JumpLe(_))).expect("the compare");
     let start = cmp - 2;
     let end =
-        cmp + code[cmp..].iter().position(|op| matches!(op, Op::ForNext32 { .. })).expect("step");
+        cmp + code[cmp..].iter().position(|op| matches!(op, Op::ForInc32 { .. })).expect("step");
     let body: Vec<_> = code[start..=end].iter().map(std::mem::discriminant).collect();
     let want = [
         Op::LoadElem { dst: 0, idx: 0, site: 0 },
@@ -215,7 +215,7 @@ fn bubble_sort_inner_loop_is_seven_instructions() {
         Op::LoadElem { dst: 0, idx: 0, site: 0 },
         Op::MoveElem { didx: 0, sidx: 0, site: 0 },
         Op::StoreElem { idx: 0, site: 0, a: 0 },
-        Op::ForNext32 { bits: 32, signed: true, v: 0, lim: 0, target: 0 },
+        Op::ForInc32 { bits: 32, signed: true, v: 0, lim: 0, target: 0 },
     ];
     assert_eq!(body, want.iter().map(std::mem::discriminant).collect::<Vec<_>>(), "{code:?}");
 }
@@ -338,4 +338,56 @@ END_PROGRAM
     let code = code_of(src);
     assert_eq!(count(&code, |op| matches!(op, Op::And(_) | Op::Or(_))), 0, "{code:?}");
     assert_eq!(run1(src, &[], "r"), Ok(201));
+}
+
+#[test]
+fn for_inc_wraps_the_control_variable_after_the_last_pass() {
+    // FOR i := 125 TO 127 on a SINT: three passes, then i holds 127 + 1 wrapped (-128),
+    // the first value that failed the test.
+    let src = "PROGRAM Main
+VAR i : SINT; u : USINT; n : DINT; r : DINT; END_VAR
+FOR i := 125 TO 127 DO n := n + 1; END_FOR;
+FOR u := 254 TO 255 DO n := n + 10; END_FOR;
+r := n * 10000 + SINT_TO_DINT(i) * 10 + USINT_TO_DINT(u);
+END_PROGRAM
+";
+    assert_eq!(count(&code_of(src), |op| matches!(op, Op::ForInc32 { .. })), 2);
+    assert_eq!(run1(src, &[], "r"), Ok(23 * 10000 - 1280));
+}
+
+/// Runs one scan of `src` with a watchdog budget of `budget`.
+fn scan_with_budget(src: &str, budget: u64) -> Result<(), crate::vm::Fault> {
+    let analysis = semantic::analyze(src);
+    let p = analysis.program.expect("checks");
+    let main = p.programs().find(|&q| !p.pou(q).library).expect("a PROGRAM");
+    let exe = compile(&p, main).expect("compiles");
+    let mut m = crate::vm::Machine::new(&exe);
+    m.run_scan(&exe, crate::vm::SysState::default(), budget).map_err(|e| e.fault)
+}
+
+#[test]
+fn the_watchdog_charges_each_pass_of_a_loop() {
+    // Each pass costs the instructions from the top of the body to the FOR step that jumps
+    // back (the constant 1, the addition, the step: 3), so 1,000 passes cost 3,000: within
+    // 100,000, over 1,000. An endless loop exceeds any budget.
+    let counted = "PROGRAM Main
+VAR i : DINT; n : DINT; END_VAR
+FOR i := 1 TO 1000 DO n := n + 1; END_FOR;
+END_PROGRAM
+";
+    assert_eq!(scan_with_budget(counted, 100_000), Ok(()));
+    assert_eq!(
+        scan_with_budget(counted, 1_000),
+        Err(crate::vm::Fault::Watchdog { budget: 1_000 }),
+        "1,000 passes cost at least 1,000"
+    );
+    let endless = "PROGRAM Main
+VAR n : DINT; END_VAR
+WHILE TRUE DO n := n + 1; END_WHILE;
+END_PROGRAM
+";
+    assert_eq!(
+        scan_with_budget(endless, 1_000_000),
+        Err(crate::vm::Fault::Watchdog { budget: 1_000_000 })
+    );
 }
