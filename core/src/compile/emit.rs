@@ -126,6 +126,9 @@ pub(crate) struct Emitter<'a> {
     pub max: u32,
     /// Enclosing loops, innermost last.
     pub loops: Vec<LoopCtx>,
+    /// Array elements the last compare-and-branch loaded, with the registers holding them
+    /// (see `fuse.rs`); empty except at the start of an IF branch.
+    pub compared: Vec<(Place, Reg)>,
 }
 
 impl<'a> Emitter<'a> {
@@ -137,7 +140,17 @@ impl<'a> Emitter<'a> {
         base: Option<u32>,
         temp_base: u32,
     ) -> Self {
-        Emitter { lay, p, out, pou, base, top: temp_base, max: temp_base, loops: Vec::new() }
+        Emitter {
+            lay,
+            p,
+            out,
+            pou,
+            base,
+            top: temp_base,
+            max: temp_base,
+            loops: Vec::new(),
+            compared: Vec::new(),
+        }
     }
 
     /// The index the next instruction gets.

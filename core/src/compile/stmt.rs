@@ -18,6 +18,8 @@ const MAX_DENSE: i128 = 65536;
 impl Emitter<'_> {
     /// Compiles one statement.
     pub fn stmt(&mut self, s: &Stmt) -> Result<(), CompileError> {
+        // Loaded elements are reused only by an IF branch's leading statements.
+        self.compared.clear();
         self.mark(s.span);
         let mark = self.top;
         match &s.kind {
@@ -31,8 +33,12 @@ impl Emitter<'_> {
                 for (k, (cond, body)) in branches.iter().enumerate() {
                     self.mark(s.span);
                     let j = self.jump_unless(cond)?;
+                    // The comparison's registers stay allocated while its loaded elements
+                    // are reused (see `reuse_compared`).
+                    let reused = self.reuse_compared(body)?;
+                    self.compared.clear();
                     self.top = mark;
-                    self.stmts(body)?;
+                    self.stmts(&body[reused..])?;
                     // Every branch but the last (without ELSE) jumps over what follows,
                     // even an empty one.
                     if k + 1 < branches.len() || !else_body.is_empty() {

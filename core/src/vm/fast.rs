@@ -29,10 +29,18 @@ pub(super) struct Tables<'a> {
     pub dims: &'a [DimInfo],
 }
 
-/// Runs simple instructions from `*pc` in the frame at `base` until an instruction it does
-/// not handle (left at `*pc`) or until a jump back finds `*fuel` too low (the jump is left
-/// at `*pc` and `*fuel` is 0). On a fault, `*pc` is one past the faulting instruction, as
-/// the outer loop leaves it.
+/// Why [`run`] stopped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Exit {
+    /// At an instruction it does not handle, or at a jump back the budget cannot pay (then
+    /// the fuel is 0).
+    Slow,
+    /// At an instruction that faults: [`diagnose`] tells which fault.
+    Fault,
+}
+
+/// Runs simple instructions from `*pc` in the frame at `base`. Whatever makes it stop, the
+/// instruction at `*pc` has not run (a faulting one has written nothing).
 #[inline(never)]
 pub(super) fn run(
     t: Tables<'_>,
@@ -40,39 +48,43 @@ pub(super) fn run(
     base: u32,
     pc: &mut usize,
     fuel: &mut u64,
-) -> Result<(), Fault> {
+) -> Exit {
     let Tables { code, sites, dims } = t;
     // The program counter and the fuel live in locals (registers) while the loop runs and
-    // are written back on every way out.
+    // are written back on the way out. Every failed check leaves through the one `Fault`
+    // exit, which keeps the loop small.
     let (mut p, mut f) = (*pc, *fuel);
     macro_rules! ok {
         ($e:expr) => {
             match $e {
-                Ok(v) => v,
-                Err(e) => break Err(e),
+                Some(v) => v,
+                None => {
+                    p -= 1;
+                    break Exit::Fault;
+                }
             }
         };
     }
     macro_rules! r {
         ($x:expr) => {
-            *ok!(cells.get(base.wrapping_add($x) as usize).ok_or(BAD))
+            *ok!(cells.get(base.wrapping_add($x) as usize))
         };
     }
     macro_rules! w {
         ($x:expr, $v:expr) => {{
             let v = $v;
-            *ok!(cells.get_mut(base.wrapping_add($x) as usize).ok_or(BAD)) = v;
+            *ok!(cells.get_mut(base.wrapping_add($x) as usize)) = v;
         }};
     }
     macro_rules! at {
         ($a:expr) => {
-            *ok!(cells.get_mut(($a) as usize).ok_or(BAD))
+            *ok!(cells.get_mut(($a) as usize))
         };
     }
     macro_rules! elem {
         ($k:expr, $idx:expr) => {{
-            let s = ok!(sites.get($k as usize).ok_or(BAD));
-            u64::from(base.wrapping_add(s.start)) + ok!(s.offset(r!($idx)))
+            let s = ok!(sites.get($k as usize));
+            u64::from(base.wrapping_add(s.start)) + ok!(s.offset(r!($idx)).ok())
         }};
     }
     // A jump: a backward one (a loop) costs the instructions it jumps back over; when the
@@ -85,7 +97,7 @@ pub(super) fn run(
                 if f < cost {
                     p -= 1;
                     f = 0;
-                    break Ok(());
+                    break Exit::Slow;
                 }
                 f -= cost;
             }
@@ -109,8 +121,8 @@ pub(super) fn run(
             w!(dst, $e)
         }};
     }
-    let result = loop {
-        let op = ok!(code.get(p).ok_or(Fault::Internal("jump outside the code")));
+    let exit = loop {
+        let Some(op) = code.get(p) else { break Exit::Slow };
         p += 1;
         match *op {
             Op::Const { dst, bits } => w!(dst, bits),
@@ -130,11 +142,9 @@ pub(super) fn run(
             }
             Op::ElemAddr { dst, idx, site } => w!(dst, elem!(site, idx)),
             Op::Index { ptr, idx, dim } => {
-                let d = ok!(dims.get(dim as usize).ok_or(BAD));
+                let d = ok!(dims.get(dim as usize));
                 let i = r!(idx) as i64;
-                if i < d.low || i > d.high {
-                    break Err(Fault::IndexOutOfRange { index: i, low: d.low, high: d.high });
-                }
+                ok!((d.low <= i && i <= d.high).then_some(()));
                 let step = (i as i128 - d.low as i128) as u64 * u64::from(d.stride);
                 w!(ptr, r!(ptr).wrapping_add(step));
             }
@@ -249,13 +259,45 @@ pub(super) fn run(
             | Op::FromStr { .. }
             | Op::Bcd { .. } => {
                 p -= 1;
-                break Ok(());
+                break Exit::Slow;
             }
         }
     };
     *pc = p;
     *fuel = f;
-    result
+    exit
+}
+
+/// The fault of an instruction [`run`] stopped at with [`Exit::Fault`], found by checking
+/// its operands in the order `run` does.
+pub(super) fn diagnose(op: &Op, t: Tables<'_>, cells: &[u64], base: u32) -> Fault {
+    let reg = |x: u32| cells.get(base.wrapping_add(x) as usize).copied().ok_or(BAD);
+    let site = |k: u32, idx: u32| -> Result<u64, Fault> {
+        let s = t.sites.get(k as usize).ok_or(BAD)?;
+        let off = s.offset(reg(idx)?)?;
+        let addr = u64::from(base.wrapping_add(s.start)) + off;
+        cells.get(addr as usize).ok_or(BAD)?;
+        Ok(addr)
+    };
+    let found = match *op {
+        Op::LoadElem { idx, site: k, .. }
+        | Op::StoreElem { idx, site: k, .. }
+        | Op::ElemAddr { idx, site: k, .. } => site(k, idx).map(|_| ()),
+        Op::MoveElem { didx, sidx, site: k } => {
+            site(k, didx).and_then(|_| site(k.wrapping_add(1), sidx)).map(|_| ())
+        }
+        Op::Index { idx, dim, .. } => (|| {
+            let d = t.dims.get(dim as usize).ok_or(BAD)?;
+            let i = reg(idx)? as i64;
+            if i < d.low || i > d.high {
+                return Err(Fault::IndexOutOfRange { index: i, low: d.low, high: d.high });
+            }
+            Ok(())
+        })(),
+        _ => Ok(()),
+    };
+    // Anything else that stops the inner loop is an address outside memory: a compiler bug.
+    found.err().unwrap_or(BAD)
 }
 
 /// `arith::convert(Real, DInt, x)`, inlined: round half to even, wrap to 32 bits.

@@ -207,7 +207,11 @@ impl Machine {
         }
         let tables = fast::Tables { code, sites: &exe.out.sites, dims: &exe.out.dims };
         loop {
-            fast::run(tables, cells, base, pc, &mut fuel)?;
+            if fast::run(tables, cells, base, pc, &mut fuel) == fast::Exit::Fault {
+                let op = code.get(*pc).ok_or(BAD)?;
+                *pc += 1;
+                return Err(fast::diagnose(op, tables, cells, base));
+            }
             let op = code.get(*pc).ok_or(Fault::Internal("jump outside the code"))?;
             *pc += 1;
             if fuel == 0 {

@@ -199,8 +199,8 @@ END_PROGRAM
 
 #[test]
 fn bubble_sort_inner_loop_is_seven_instructions() {
-    // The B2 benchmark's inner loop: two loads, one compare-and-branch, the swap as load,
-    // move and store, and the FOR step.
+    // The B2 benchmark's inner loop: two loads, one compare-and-branch, the swap from the
+    // registers the comparison loaded (a move and two stores), and the FOR step.
     let src = crate::bench::programs::b2(10);
     let code = code_of(&src);
     let cmp = code.iter().position(|op| matches!(op, Op::JumpLe(_))).expect("the compare");
@@ -212,8 +212,8 @@ fn bubble_sort_inner_loop_is_seven_instructions() {
         Op::LoadElem { dst: 0, idx: 0, site: 0 },
         Op::LoadElem { dst: 0, idx: 0, site: 0 },
         Op::JumpLe(crate::vm::op::Branch { a: 0, b: 0, target: 0 }),
-        Op::LoadElem { dst: 0, idx: 0, site: 0 },
-        Op::MoveElem { didx: 0, sidx: 0, site: 0 },
+        Op::Move { dst: 0, a: 0 },
+        Op::StoreElem { idx: 0, site: 0, a: 0 },
         Op::StoreElem { idx: 0, site: 0, a: 0 },
         Op::ForInc32 { bits: 32, signed: true, v: 0, lim: 0, target: 0 },
     ];
@@ -390,4 +390,31 @@ END_PROGRAM
         scan_with_budget(endless, 1_000_000),
         Err(crate::vm::Fault::Watchdog { budget: 1_000_000 })
     );
+}
+
+#[test]
+fn compared_elements_are_reused_only_while_they_are_what_they_were() {
+    // a[i] was loaded by the comparison; i := a[i] reuses it, then a[i] names another
+    // element and is read again.
+    let index = "PROGRAM Main
+VAR a : ARRAY[1..3] OF DINT := [2, 5, 7]; i : DINT := 1; r : DINT; END_VAR
+IF a[i] > 0 THEN i := a[i]; r := a[i]; END_IF;
+END_PROGRAM
+";
+    assert_eq!(count(&code_of(index), |op| matches!(op, Op::LoadElem { .. })), 2);
+    assert_eq!(run1(index, &[], "r"), Ok(5));
+    // Writing an element drops every reused value: r reads the new a[i].
+    let element = "PROGRAM Main
+VAR a : ARRAY[1..2] OF DINT := [1, 5]; i : DINT := 1; r : DINT; END_VAR
+IF a[i + 1] > a[i] THEN a[i] := a[i + 1]; r := a[i]; END_IF;
+END_PROGRAM
+";
+    assert_eq!(run1(element, &[], "r"), Ok(5));
+    // Only the branch the comparison guards: the ELSE branch loads again.
+    let other = "PROGRAM Main
+VAR a : ARRAY[1..2] OF DINT := [1, 5]; i : DINT := 1; r : DINT; END_VAR
+IF a[i] > 3 THEN r := a[i]; ELSE i := 2; r := a[i]; END_IF;
+END_PROGRAM
+";
+    assert_eq!(run1(other, &[], "r"), Ok(5));
 }
