@@ -22,6 +22,7 @@ mod stmt;
 pub(crate) mod testkit;
 #[cfg(test)]
 mod tests;
+mod trust;
 
 use std::fmt;
 
@@ -126,6 +127,8 @@ pub(crate) struct PouCode {
     pub vars: Vec<Var>,
     /// Their offsets in the frame.
     pub offsets: Vec<u32>,
+    /// The inner loop may run this POU's code without operand checks (`trust.rs`).
+    pub trusted: bool,
 }
 
 /// The code and tables that the emitter appends to.
@@ -156,6 +159,8 @@ pub struct Executable {
     pub(crate) pous: Vec<PouCode>,
     pub(crate) retained: Vec<(u32, u32)>,
     pub(crate) conditions: Vec<u32>,
+    /// Per condition: the inner loop may run its code without operand checks.
+    pub(crate) condition_trusted: Vec<bool>,
     pub(crate) main: PouId,
     pub(crate) main_base: u32,
     pub(crate) type_table: TypeTable,

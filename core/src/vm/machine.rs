@@ -53,6 +53,8 @@ impl std::error::Error for RuntimeError {}
 struct CallFrame {
     ret: u32,
     base: u32,
+    /// The caller's code may run in the inner loop without operand checks.
+    trusted: bool,
 }
 
 /// Reusable buffers for string work.
@@ -129,8 +131,10 @@ impl Machine {
         sys: SysState,
         budget: u64,
     ) -> Result<(), RuntimeError> {
-        let entry = exe.pous.get(exe.main as usize).map_or(u32::MAX, |p| p.entry);
-        self.run(exe, entry, exe.main_base, sys, budget).map(|_| ())
+        let main = exe.pous.get(exe.main as usize);
+        let entry = main.map_or(u32::MAX, |p| p.entry);
+        let trusted = main.is_some_and(|p| p.trusted);
+        self.run(exe, (entry, trusted), exe.main_base, sys, budget).map(|_| ())
     }
 
     /// Evaluates a breakpoint condition (in the main program's scope) with at most
@@ -143,13 +147,14 @@ impl Machine {
         budget: u64,
     ) -> Result<bool, RuntimeError> {
         let entry = exe.conditions.get(id.0 as usize).copied().unwrap_or(u32::MAX);
-        self.run(exe, entry, exe.main_base, sys, budget).map(|v| v != 0)
+        let trusted = exe.condition_trusted.get(id.0 as usize).copied().unwrap_or(false);
+        self.run(exe, (entry, trusted), exe.main_base, sys, budget).map(|v| v != 0)
     }
 
     fn run(
         &mut self,
         exe: &Executable,
-        entry: u32,
+        (entry, trusted): (u32, bool),
         base: u32,
         sys: SysState,
         budget: u64,
@@ -161,7 +166,7 @@ impl Machine {
         }
         self.stack.clear();
         let mut pc = entry as usize;
-        match self.exec(exe, &mut pc, base, sys, budget) {
+        match self.exec(exe, &mut pc, (base, trusted), sys, budget) {
             Ok(v) => Ok(v),
             Err(fault) => Err(self.locate_fault(exe, fault, pc)),
         }
@@ -187,12 +192,14 @@ impl Machine {
         &mut self,
         exe: &Executable,
         pc: &mut usize,
-        mut base: u32,
+        (mut base, mut trusted): (u32, bool),
         sys: SysState,
         budget: u64,
     ) -> Result<u64, Fault> {
         let code = &exe.out.code[..];
         let cells: &mut [u64] = &mut self.mem.cells;
+        // Trusted regions of static frames rely on memory being at least the image.
+        trusted &= cells.len() >= exe.out.init.len();
         let mut fuel = budget;
         macro_rules! r {
             ($x:expr) => {
@@ -207,7 +214,12 @@ impl Machine {
         }
         let tables = fast::Tables { code, sites: &exe.out.sites, dims: &exe.out.dims };
         loop {
-            if fast::run(tables, cells, base, pc, &mut fuel) == fast::Exit::Fault {
+            let exit = if trusted {
+                fast::run::<true>(tables, cells, base, pc, &mut fuel)
+            } else {
+                fast::run::<false>(tables, cells, base, pc, &mut fuel)
+            };
+            if exit == fast::Exit::Fault {
                 let op = code.get(*pc).ok_or(BAD)?;
                 *pc += 1;
                 return Err(fast::diagnose(op, tables, cells, base));
@@ -277,8 +289,11 @@ impl Machine {
                     if self.stack.len() >= MAX_CALL_DEPTH {
                         return Err(Fault::CallDepth);
                     }
-                    self.stack.push(CallFrame { ret: *pc as u32, base });
+                    self.stack.push(CallFrame { ret: *pc as u32, base, trusted });
                     base = u32::try_from(r!(ptr)).map_err(|_| BAD)?;
+                    // The instance must lie inside memory for its code to run unchecked.
+                    let end = base as usize + callee.size as usize;
+                    trusted = callee.trusted && end <= cells.len();
                     *pc = callee.entry as usize;
                 }
                 Op::CallFn { pou } => {
@@ -286,8 +301,9 @@ impl Machine {
                     if self.stack.len() >= MAX_CALL_DEPTH {
                         return Err(Fault::CallDepth);
                     }
-                    self.stack.push(CallFrame { ret: *pc as u32, base });
+                    self.stack.push(CallFrame { ret: *pc as u32, base, trusted });
                     base = callee.frame.ok_or(BAD)?;
+                    trusted = callee.trusted && cells.len() >= exe.out.init.len();
                     *pc = callee.entry as usize;
                 }
                 Op::InitFrame { pou } => {
@@ -310,6 +326,7 @@ impl Machine {
                     Some(f) => {
                         *pc = f.ret as usize;
                         base = f.base;
+                        trusted = f.trusted;
                     }
                     None => return Ok(0),
                 },

@@ -13,7 +13,7 @@
 
 pub mod arith;
 mod builtins;
-mod fast;
+pub(crate) mod fast;
 pub mod fault;
 mod json;
 mod machine;

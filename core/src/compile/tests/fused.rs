@@ -418,3 +418,52 @@ END_PROGRAM
 ";
     assert_eq!(run1(other, &[], "r"), Ok(5));
 }
+
+#[test]
+fn compiled_code_is_trusted_and_bad_code_is_not() {
+    use crate::vm::fast::{verify, FrameKind};
+    use crate::vm::op::{Branch, R3};
+    // Every POU the compiler produced (the program, an FB, a function) passes.
+    let src = "FUNCTION Twice : DINT
+VAR_INPUT x : DINT; END_VAR
+Twice := x * 2;
+END_FUNCTION
+FUNCTION_BLOCK Acc
+VAR_INPUT x : DINT; END_VAR VAR_OUTPUT y : DINT; END_VAR
+VAR buf : ARRAY[0..3] OF DINT; k : DINT; END_VAR
+buf[k MOD 4] := x; k := k + 1; y := buf[0] + buf[1] + buf[2] + buf[3];
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR a : Acc; i : DINT; r : DINT; END_VAR
+FOR i := 1 TO 5 DO a(x := Twice(i)); END_FOR;
+r := a.y;
+END_PROGRAM
+";
+    let analysis = semantic::analyze(src);
+    let p = analysis.program.expect("checks");
+    let main = p.programs().find(|&q| !p.pou(q).library).expect("a PROGRAM");
+    let exe = compile(&p, main).expect("compiles");
+    let user: Vec<_> = exe.pous.iter().filter(|c| c.entry != u32::MAX && !c.library).collect();
+    assert_eq!(user.len(), 3);
+    assert!(user.iter().all(|c| c.trusted));
+    assert_eq!(run1(src, &[], "r"), Ok(2 * (3 + 4 + 5 + 2)));
+    // Hand-made regions: a register outside an 8-cell instance, a site past the table, a
+    // jump out of the region, a region that does not end in Ret.
+    let frame = FrameKind::Instance { size: 8 };
+    let ok = [Op::Move { dst: 7, a: 0 }, Op::Ret];
+    assert!(verify(&ok, (0, 2), 0, &[], frame));
+    let bad_reg = [Op::AddI32(R3 { dst: 8, a: 0, b: 1 }), Op::Ret];
+    assert!(!verify(&bad_reg, (0, 2), 0, &[], frame));
+    let bad_site = [Op::LoadElem { dst: 0, idx: 1, site: 0 }, Op::Ret];
+    assert!(!verify(&bad_site, (0, 2), 0, &[], frame));
+    let bad_jump = [Op::JumpLe(Branch { a: 0, b: 1, target: 5 }), Op::Ret];
+    assert!(!verify(&bad_jump, (0, 2), 0, &[], frame));
+    let no_ret = [Op::Move { dst: 1, a: 0 }];
+    assert!(!verify(&no_ret, (0, 1), 0, &[], frame));
+    // A static frame reaches below its base (globals) but not past the image.
+    let image = FrameKind::Static { base: 10, image: 20 };
+    let below = [Op::Move { dst: u32::MAX, a: 9 }, Op::Ret]; // cells 9 and 19
+    assert!(verify(&below, (0, 2), 0, &[], image));
+    let past = [Op::Move { dst: 10, a: 0 }, Op::Ret]; // cell 20
+    assert!(!verify(&past, (0, 2), 0, &[], image));
+}
