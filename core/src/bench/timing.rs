@@ -94,19 +94,19 @@ pub fn b2(effort: Effort) -> Result<Paired, BenchError> {
     ))
 }
 
-/// B3: scan time of CASE OF code for sequences of 10 … 10,000 places (ns per scan), and
-/// the ratio largest/smallest.
+/// B3: scan time of CASE OF code for sequences of 10 … 10,000 places (ns per scan, best
+/// of 15 runs of 20,000 scans), and the ratio largest/smallest.
 pub fn b3(effort: Effort) -> Result<Json, BenchError> {
     let sizes: &[usize] =
         if effort == Effort::Full { &[10, 100, 1_000, 10_000] } else { &[10, 100] };
-    let scans = if effort == Effort::Full { 200_000 } else { 1_000 };
+    let (scans, reps) = if effort == Effort::Full { (20_000, 15) } else { (1_000, 2) };
     let mut per_size = serde_json::Map::new();
     let mut first = None;
     let mut last = 0.0;
     for &places in sizes {
         let mut sim = load(&programs::b3(places))?;
         sim.hold("Go", "TRUE").map_err(|e| BenchError(e.to_string()))?;
-        let t = best_of(3, || {
+        let t = best_of(reps, || {
             for _ in 0..scans {
                 let _ = scan(&mut sim);
             }
@@ -121,9 +121,9 @@ pub fn b3(effort: Effort) -> Result<Json, BenchError> {
 }
 
 /// B4: a ladder POU of 1,000 rungs × 10 elements, lowered and compiled as the product does;
-/// ns per element per scan (best of 3 runs of 1,000 scans), with the scan time.
+/// ns per element per scan (best of 20 runs of 100 scans), with the scan time.
 pub fn b4(effort: Effort) -> Result<Json, BenchError> {
-    let (rungs, scans) = if effort == Effort::Full { (1_000, 1_000) } else { (20, 20) };
+    let (rungs, scans, reps) = if effort == Effort::Full { (1_000, 100, 20) } else { (20, 20, 2) };
     let project = ladder::project(rungs);
     let mut sim = crate::run::project_simulator(&project, None).map_err(|d| {
         BenchError(
@@ -135,7 +135,7 @@ pub fn b4(effort: Effort) -> Result<Json, BenchError> {
         sim.hold(&format!("I{i}"), "TRUE").map_err(|e| BenchError(e.to_string()))?;
     }
     scan(&mut sim)?;
-    let t = best_of(3, || {
+    let t = best_of(reps, || {
         for _ in 0..scans {
             let _ = scan(&mut sim);
         }
