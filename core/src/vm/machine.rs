@@ -1,11 +1,14 @@
 //! The machine: memory plus the dispatch loop that runs one scan of the main program (or a
 //! breakpoint condition).
 //!
-//! The loop is one `match` over the 16-byte [`Op`]s; registers are cells addressed
-//! relative to the current frame base. It never allocates during a scan except for
-//! string temporaries (reused scratch buffers), never panics (every memory and code
-//! index is checked; a bad one is `Fault::Internal`), and counts every instruction
-//! against the watchdog budget.
+//! The loop hands the simple instructions to the inner loop (`fast`) and runs the rest
+//! itself, one `match` over the 16-byte [`Op`]s; registers are cells addressed relative to
+//! the current frame base. It never allocates during a scan except for string temporaries
+//! (reused scratch buffers) and never panics (every memory and code index is checked, a bad
+//! one is `Fault::Internal`, except in code `fast::verify` accepted, whose register
+//! operands were checked once). The watchdog budget counts every instruction run here and,
+//! in the inner loop, every pass of a loop at the number of instructions it jumps back
+//! over.
 
 use super::arith;
 use super::builtins;
