@@ -234,7 +234,7 @@ fn bench(json: bool, quick: bool, only: &[String]) -> ExitCode {
             ExitCode::SUCCESS
         }
         Ok(report) => {
-            print!("{}", plc_core::bench::report_text(&report));
+            print!("{}", plc_core::bench::report_text(&report, effort));
             ExitCode::SUCCESS
         }
         Err(e) => {
