@@ -9,7 +9,6 @@
 #![deny(missing_docs)]
 #![deny(clippy::unwrap_used)]
 
-#[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
 pub mod compile;
 pub mod diagnostics;

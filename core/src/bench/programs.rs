@@ -80,7 +80,9 @@ pub fn b2_native(n: u32) -> i32 {
 }
 
 /// B3: the CASE OF code of a sequence of `places` places (one step variable, one branch
-/// per place, one transition each), as the Petri-net generator writes it.
+/// per place, one transition each), as the Petri-net generator writes it. The one place
+/// B3 gets its code from: when the generator lands, this function returns its output for
+/// a cycle of `places` places (input `Go` on every transition) and nothing else changes.
 pub fn b3(places: usize) -> String {
     let mut s = String::from("PROGRAM B3\nVAR_INPUT Go : BOOL; END_VAR\nVAR p : INT := 1; n : DINT; END_VAR\nCASE p OF\n");
     for k in 1..=places {

@@ -90,6 +90,9 @@ enum Command {
         /// A short smoke pass with tiny sizes (for CI).
         #[arg(long)]
         quick: bool,
+        /// Run only these figures (`--only B2 --only B4`), e.g. under a profiler.
+        #[arg(long, value_name = "FIGURE")]
+        only: Vec<String>,
     },
 }
 
@@ -234,15 +237,15 @@ fn st_view(path: &Path, pou: &str) -> ExitCode {
     }
 }
 
-fn bench(json: bool, quick: bool) -> ExitCode {
+fn bench(json: bool, quick: bool, only: &[String]) -> ExitCode {
     let effort = if quick { plc_core::bench::Effort::Quick } else { plc_core::bench::Effort::Full };
-    match plc_core::bench::run_all(effort) {
+    match plc_core::bench::run_selected(effort, only) {
         Ok(report) if json => {
             println!("{report}");
             ExitCode::SUCCESS
         }
         Ok(report) => {
-            println!("{}", serde_json::to_string_pretty(&report).unwrap_or_default());
+            print!("{}", plc_core::bench::report_text(&report, effort));
             ExitCode::SUCCESS
         }
         Err(e) => {
@@ -338,7 +341,7 @@ fn main() -> ExitCode {
         }
         Command::Explain { code } => explain(&code),
         Command::StView { project, pou } => st_view(&project, &pou),
-        Command::Bench { json, quick } => bench(json, quick),
+        Command::Bench { json, quick, only } => bench(json, quick, &only),
         Command::Petri { command } => petri::run(command),
         Command::Import { file } => import(&file),
         Command::Export { plcopen: _, project } => export(&project),

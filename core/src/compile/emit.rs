@@ -1,13 +1,14 @@
 //! The emitter: code buffer, temporaries, the debug map and the addressing of places.
 //! Expressions are in `expr.rs`, statements in `stmt.rs`.
 
+use super::expr::identity_widening;
 use super::layout::{add, bad, Layouts};
 use super::{Code, CompileError, DebugEntry};
 use crate::diagnostics::Span;
-use crate::semantic::ir::{Expr, ExprKind, Place, Program, Stmt};
+use crate::semantic::ir::{BinOp, Expr, ExprKind, Place, Program, Stmt};
 use crate::semantic::types::{Elem, PouId, Type};
 use crate::syntax::{PouKind, VarSection};
-use crate::vm::op::{DimInfo, Op, Reg};
+use crate::vm::op::{DimInfo, ElemSite, Op, Reg};
 
 /// How a POU's frame is addressed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -27,6 +28,15 @@ pub(crate) enum Addr {
     Abs(u32),
     /// The address in pointer register `.0` plus `.1`.
     Ptr(Reg, u32),
+    /// An element of a one-dimensional array in the frame, selected by the value in
+    /// register `idx` at the time of the access (`Op::LoadElem` and its kin check the bounds
+    /// there); `site.start` already includes any offset into the element.
+    Elem {
+        /// The index register.
+        idx: Reg,
+        /// The access (not yet interned).
+        site: ElemSite,
+    },
 }
 
 impl Addr {
@@ -36,8 +46,19 @@ impl Addr {
             Addr::Frame(o) => Addr::Frame(o.wrapping_add(k)),
             Addr::Abs(a) => Addr::Abs(a.wrapping_add(k)),
             Addr::Ptr(r, o) => Addr::Ptr(r, o.wrapping_add(k)),
+            Addr::Elem { idx, site } => {
+                Addr::Elem { idx, site: ElemSite { start: site.start.wrapping_add(k), ..site } }
+            }
         }
     }
+}
+
+/// A point in the emitted code to go back to (see [`Emitter::checkpoint`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Checkpoint {
+    code: usize,
+    debug: usize,
+    top: u32,
 }
 
 /// Targets to patch when a loop ends.
@@ -105,6 +126,9 @@ pub(crate) struct Emitter<'a> {
     pub max: u32,
     /// Enclosing loops, innermost last.
     pub loops: Vec<LoopCtx>,
+    /// Array elements the last compare-and-branch loaded, with the registers holding them
+    /// (see `fuse.rs`); empty except at the start of an IF branch.
+    pub compared: Vec<(Place, Reg)>,
 }
 
 impl<'a> Emitter<'a> {
@@ -116,7 +140,17 @@ impl<'a> Emitter<'a> {
         base: Option<u32>,
         temp_base: u32,
     ) -> Self {
-        Emitter { lay, p, out, pou, base, top: temp_base, max: temp_base, loops: Vec::new() }
+        Emitter {
+            lay,
+            p,
+            out,
+            pou,
+            base,
+            top: temp_base,
+            max: temp_base,
+            loops: Vec::new(),
+            compared: Vec::new(),
+        }
     }
 
     /// The index the next instruction gets.
@@ -136,13 +170,33 @@ impl<'a> Emitter<'a> {
             Op::Jump { target }
             | Op::JumpIf { target, .. }
             | Op::JumpIfNot { target, .. }
+            | Op::JumpLt(crate::vm::op::Branch { target, .. })
+            | Op::JumpLe(crate::vm::op::Branch { target, .. })
+            | Op::JumpGt(crate::vm::op::Branch { target, .. })
+            | Op::JumpGe(crate::vm::op::Branch { target, .. })
+            | Op::JumpEq(crate::vm::op::Branch { target, .. })
+            | Op::JumpNe(crate::vm::op::Branch { target, .. })
             | Op::ForTest { target, .. }
             | Op::ForNext { target, .. }
-            | Op::ForNext32 { target, .. },
+            | Op::ForNext32 { target, .. }
+            | Op::ForInc32 { target, .. },
         ) = self.out.code.get_mut(at as usize)
         {
             *target = to;
         }
+    }
+
+    /// The state to return to with [`Emitter::rollback`].
+    pub fn checkpoint(&self) -> Checkpoint {
+        Checkpoint { code: self.out.code.len(), debug: self.out.debug.len(), top: self.top }
+    }
+
+    /// Drops the code emitted since `cp` (tables keep any entries added meanwhile; unused
+    /// entries are harmless).
+    pub fn rollback(&mut self, cp: Checkpoint) {
+        self.out.code.truncate(cp.code);
+        self.out.debug.truncate(cp.debug);
+        self.top = cp.top;
     }
 
     /// Code from here on belongs to the statement at `span`.
@@ -283,6 +337,14 @@ impl<'a> Emitter<'a> {
                 return Ok(ba.plus(add(0, off)?));
             }
         }
+        let (low, high) = def.dims[0];
+        let span = u32::try_from(high.wrapping_sub(low)).ok().filter(|_| low <= high);
+        if let (Addr::Frame(start), [e], Some(span)) = (ba, idx, span) {
+            let (r, add, shift, signed) = self.index_operand(e, (low, high))?;
+            let site =
+                ElemSite { shift, signed, ..ElemSite::new(add, low, span, start, strides[0]) };
+            return Ok(Addr::Elem { idx: r, site });
+        }
         let t = self.pointer(ba)?;
         for (k, e) in idx.iter().enumerate() {
             let r = self.expr_lint(e)?;
@@ -299,14 +361,73 @@ impl<'a> Emitter<'a> {
         Ok(Addr::Ptr(t, 0))
     }
 
+    /// Compiles an array index (a LINT expression) for an element site: the register to
+    /// read and the constant added to it, with the wrapping of that sum. `j + 1` (and
+    /// `j - 1`, `1 + j`) on an integer `j` keeps the addition in the site, wrapping in `j`'s
+    /// type exactly as the separate addition and the (identity) widening to LINT would.
+    /// Only when `bounds` lie inside `j`'s type (see [`ElemSite`]).
+    fn index_operand(
+        &mut self,
+        e: &Expr,
+        bounds: (i64, i64),
+    ) -> Result<(Reg, i64, u8, bool), CompileError> {
+        let mut inner = e;
+        if let ExprKind::Convert(a) = &e.kind {
+            if let (Some(from), Some(to)) = (a.ty.elem(), e.ty.elem()) {
+                if identity_widening(from, to) {
+                    inner = a;
+                }
+            }
+        }
+        if let (ExprKind::Binary(op, x, y), Some(elem)) = (&inner.kind, inner.ty.elem()) {
+            let operand: Option<(&Expr, i64)> = match (op, &x.kind, &y.kind) {
+                (BinOp::Add, _, ExprKind::Const(k)) => Some((x, *k as i64)),
+                (BinOp::Add, ExprKind::Const(k), _) => Some((y, *k as i64)),
+                (BinOp::Sub, _, ExprKind::Const(k)) => Some((x, (*k as i64).wrapping_neg())),
+                _ => None,
+            };
+            let (lo, hi) = elem.int_range();
+            let inside = lo <= i128::from(bounds.0) && i128::from(bounds.1) <= hi;
+            let fits = |(x, _): &(&Expr, i64)| elem.is_int() && x.ty == inner.ty && inside;
+            if let Some((x, add)) = operand.filter(fits) {
+                let r = self.expr(x, None)?;
+                let shift = (64 - elem.bits()) as u8;
+                return Ok((r, add, shift, elem.is_signed_int()));
+            }
+        }
+        Ok((self.expr_lint(e)?, 0, 0, true))
+    }
+
+    /// The index of `site` in the executable's site table (shared by equal accesses).
+    pub fn intern_site(&mut self, site: ElemSite) -> u32 {
+        if let Some(&k) = self.out.site_index.get(&site) {
+            return k;
+        }
+        let k = self.out.sites.len() as u32;
+        self.out.sites.push(site);
+        self.out.site_index.insert(site, k);
+        k
+    }
+
+    /// Turns an element address into a pointer now (bounds check included), so that the
+    /// check happens before code emitted later; other addresses are returned unchanged.
+    pub fn settle(&mut self, a: Addr) -> Result<Addr, CompileError> {
+        match a {
+            Addr::Elem { .. } => Ok(Addr::Ptr(self.pointer(a)?, 0)),
+            other => Ok(other),
+        }
+    }
+
     /// Puts the absolute address `a` in a new pointer register.
     pub fn pointer(&mut self, a: Addr) -> Result<Reg, CompileError> {
         let t = self.alloc(1)?;
-        self.emit(match a {
+        let op = match a {
             Addr::Frame(off) => Op::AddrOf { dst: t, off },
             Addr::Abs(addr) => Op::Const { dst: t, bits: u64::from(addr) },
             Addr::Ptr(ptr, off) => Op::PtrAdd { dst: t, ptr, off },
-        });
+            Addr::Elem { idx, site } => Op::ElemAddr { dst: t, idx, site: self.intern_site(site) },
+        };
+        self.emit(op);
         Ok(t)
     }
 
@@ -331,6 +452,12 @@ impl<'a> Emitter<'a> {
                 self.emit(Op::LoadInd { dst, ptr, off });
                 Ok(dst)
             }
+            (Addr::Elem { idx, site }, h) => {
+                let dst = self.dst(h)?;
+                let site = self.intern_site(site);
+                self.emit(Op::LoadElem { dst, idx, site });
+                Ok(dst)
+            }
         }
     }
 
@@ -347,6 +474,10 @@ impl<'a> Emitter<'a> {
             }
             Addr::Ptr(ptr, off) => {
                 self.emit(Op::StoreInd { ptr, off, a: v });
+            }
+            Addr::Elem { idx, site } => {
+                let site = self.intern_site(site);
+                self.emit(Op::StoreElem { idx, site, a: v });
             }
         }
     }
@@ -376,6 +507,7 @@ impl<'a> Emitter<'a> {
     pub fn store_place(&mut self, place: &Place, v: Reg) -> Result<(), CompileError> {
         if let Place::Bit(b, n, elem) = place {
             let a = self.place_addr(b)?;
+            let a = self.settle(a)?;
             let n = u8::try_from(*n).map_err(|_| bad("bit number"))?;
             if let Addr::Frame(o) = a {
                 self.emit(Op::SetBit { elem: *elem, n, dst: o, v });

@@ -185,6 +185,9 @@ impl Emitter<'_> {
             return Ok(dst);
         }
         let elem = self.elem_of(a.ty)?;
+        if let Some(r) = self.logic_shortcut(op, elem, a, b, hint)? {
+            return Ok(r);
+        }
         let ra = self.expr(a, None)?;
         let rb = self.expr(b, None)?;
         let dst = self.dst(hint)?;
@@ -199,6 +202,43 @@ impl Emitter<'_> {
             self.emit(Op::Bin { op, elem, dst, a: ra, b: rb });
         }
         Ok(dst)
+    }
+
+    /// The shapes ladder lowering writes on every contact: `TRUE AND x` and `FALSE OR x`
+    /// are `x` (x is still evaluated: both sides of AND/OR always are), and `a AND NOT b`
+    /// is one `AndNot`. `None` when `op` is none of them.
+    fn logic_shortcut(
+        &mut self,
+        op: BinOp,
+        elem: Elem,
+        a: &Expr,
+        b: &Expr,
+        hint: Option<Reg>,
+    ) -> Result<Option<Reg>, CompileError> {
+        let neutral = match op {
+            BinOp::And => 1,
+            BinOp::Or => 0,
+            _ => return Ok(None),
+        };
+        if elem == Elem::Bool {
+            let is_neutral = |e: &Expr| matches!(e.kind, ExprKind::Const(k) if k == neutral);
+            if is_neutral(a) {
+                return self.expr(b, hint).map(Some);
+            }
+            if is_neutral(b) {
+                return self.expr(a, hint).map(Some);
+            }
+        }
+        if let (BinOp::And, ExprKind::Unary(UnOp::Not, nb)) = (op, &b.kind) {
+            if nb.ty == a.ty && !elem.is_real() {
+                let ra = self.expr(a, None)?;
+                let rb = self.expr(nb, None)?;
+                let dst = self.dst(hint)?;
+                self.emit(Op::AndNot(R3 { dst, a: ra, b: rb }));
+                return Ok(Some(dst));
+            }
+        }
+        Ok(None)
     }
 
     fn convert(&mut self, a: &Expr, to_ty: Type, hint: Option<Reg>) -> Result<Reg, CompileError> {
@@ -525,7 +565,7 @@ impl Emitter<'_> {
 /// True when converting `from` to `to` leaves a cell's bits unchanged (see the cell
 /// encoding in `vm::arith`): signed values are kept sign-extended and unsigned values and
 /// bit strings zero-extended, so widening within those families is free.
-fn identity_widening(from: Elem, to: Elem) -> bool {
+pub(crate) fn identity_widening(from: Elem, to: Elem) -> bool {
     if from == to {
         return true;
     }

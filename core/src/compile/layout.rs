@@ -210,11 +210,13 @@ pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError
                 template: Vec::new(),
                 vars: Vec::new(),
                 offsets: Vec::new(),
+                trusted: false,
             };
             p.pous.len()
         ],
         retained: Vec::new(),
         conditions: Vec::new(),
+        condition_trusted: Vec::new(),
         main,
         main_base: lay.main_base,
         type_table: p.types.clone(),
@@ -261,6 +263,8 @@ pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError
         }
     }
     exe.retained = merged;
+    let kinds: Vec<PouKind> = p.pous.iter().map(|q| q.kind).collect();
+    super::trust::mark_trusted(&mut exe, &kinds);
     Ok(exe)
 }
 
@@ -496,5 +500,7 @@ pub(crate) fn compile_condition(
     exe.lay = lay;
     r?;
     exe.conditions.push(entry);
+    let kinds: Vec<PouKind> = p.pous.iter().map(|q| q.kind).collect();
+    super::trust::mark_trusted(exe, &kinds);
     Ok(ConditionId(exe.conditions.len() as u32 - 1))
 }

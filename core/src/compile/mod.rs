@@ -14,6 +14,7 @@
 
 mod emit;
 mod expr;
+mod fuse;
 mod layout;
 pub(crate) mod locate;
 mod stmt;
@@ -21,13 +22,14 @@ mod stmt;
 pub(crate) mod testkit;
 #[cfg(test)]
 mod tests;
+mod trust;
 
 use std::fmt;
 
 use crate::diagnostics::Span;
 use crate::semantic::ir::{Expr, Program, Var};
 use crate::semantic::types::{Elem, PouId, Type, TypeTable};
-use crate::vm::op::{CaseTable, DimInfo, Op};
+use crate::vm::op::{CaseTable, DimInfo, ElemSite, Op};
 
 use layout::Layouts;
 pub use layout::MAX_CELLS;
@@ -125,6 +127,8 @@ pub(crate) struct PouCode {
     pub vars: Vec<Var>,
     /// Their offsets in the frame.
     pub offsets: Vec<u32>,
+    /// The inner loop may run this POU's code without operand checks (`trust.rs`).
+    pub trusted: bool,
 }
 
 /// The code and tables that the emitter appends to.
@@ -134,6 +138,10 @@ pub(crate) struct Code {
     pub code: Vec<Op>,
     /// Array dimensions for `Op::Index`.
     pub dims: Vec<DimInfo>,
+    /// Element-access sites for `Op::LoadElem` and its kin.
+    pub sites: Vec<ElemSite>,
+    /// Where each site is in `sites` (equal accesses share one entry).
+    pub site_index: std::collections::HashMap<ElemSite, u32>,
     /// CASE tables.
     pub cases: Vec<CaseTable>,
     /// Types for `Op::ToStr`.
@@ -151,6 +159,8 @@ pub struct Executable {
     pub(crate) pous: Vec<PouCode>,
     pub(crate) retained: Vec<(u32, u32)>,
     pub(crate) conditions: Vec<u32>,
+    /// Per condition: the inner loop may run its code without operand checks.
+    pub(crate) condition_trusted: Vec<bool>,
     pub(crate) main: PouId,
     pub(crate) main_base: u32,
     pub(crate) type_table: TypeTable,

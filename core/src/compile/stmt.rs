@@ -4,7 +4,7 @@
 use super::emit::{Addr, Emitter, LoopCtx};
 use super::layout::bad;
 use super::CompileError;
-use crate::semantic::ir::{CallArg, Expr, Place, Stmt, StmtKind};
+use crate::semantic::ir::{CallArg, Expr, ExprKind, Place, Stmt, StmtKind};
 use crate::semantic::types::{Elem, PouId};
 use crate::syntax::VarSection;
 use crate::vm::op::{CaseTable, Op};
@@ -18,6 +18,8 @@ const MAX_DENSE: i128 = 65536;
 impl Emitter<'_> {
     /// Compiles one statement.
     pub fn stmt(&mut self, s: &Stmt) -> Result<(), CompileError> {
+        // Loaded elements are reused only by an IF branch's leading statements.
+        self.compared.clear();
         self.mark(s.span);
         let mark = self.top;
         match &s.kind {
@@ -28,13 +30,18 @@ impl Emitter<'_> {
             }
             StmtKind::If { branches, else_body } => {
                 let mut ends = Vec::new();
-                for (cond, body) in branches {
+                for (k, (cond, body)) in branches.iter().enumerate() {
                     self.mark(s.span);
-                    let c = self.expr(cond, None)?;
-                    let j = self.emit(Op::JumpIfNot { c, target: 0 });
+                    let j = self.jump_unless(cond)?;
+                    // The comparison's registers stay allocated while its loaded elements
+                    // are reused (see `reuse_compared`).
+                    let reused = self.reuse_compared(body)?;
+                    self.compared.clear();
                     self.top = mark;
-                    self.stmts(body)?;
-                    if !body.is_empty() || !else_body.is_empty() {
+                    self.stmts(&body[reused..])?;
+                    // Every branch but the last (without ELSE) jumps over what follows,
+                    // even an empty one.
+                    if k + 1 < branches.len() || !else_body.is_empty() {
                         self.mark(s.span);
                         ends.push(self.emit(Op::Jump { target: 0 }));
                     }
@@ -55,8 +62,7 @@ impl Emitter<'_> {
             }
             StmtKind::While { cond, body } => {
                 let top = self.pc();
-                let c = self.expr(cond, None)?;
-                let j = self.emit(Op::JumpIfNot { c, target: 0 });
+                let j = self.jump_unless(cond)?;
                 self.top = mark;
                 self.loops.push(LoopCtx::default());
                 self.stmts(body)?;
@@ -72,8 +78,8 @@ impl Emitter<'_> {
                 self.stmts(body)?;
                 self.mark(s.span);
                 let cont = self.pc();
-                let c = self.expr(until, None)?;
-                self.emit(Op::JumpIfNot { c, target: top });
+                let j = self.jump_unless(until)?;
+                self.patch(j, top);
                 let end = self.pc();
                 self.close_loop(cont, end);
             }
@@ -116,6 +122,7 @@ impl Emitter<'_> {
                 Addr::Frame(o) => {
                     self.expr_to(e, o)?;
                 }
+                a @ Addr::Elem { .. } => self.assign_element(a, e)?,
                 a => {
                     let v = self.expr(e, None)?;
                     self.store(a, v);
@@ -129,6 +136,39 @@ impl Emitter<'_> {
         self.copy_value(ty, d, v)
     }
 
+    /// `arr[i] := e` with the element not yet bounds-checked. The check of the destination
+    /// must come before anything in `e` that can fault or have an effect, as it always
+    /// has: a value that cannot is computed first and stored with `StoreElem`; an element
+    /// of another (or the same) frame array whose index cannot fault is copied with one
+    /// `MoveElem` (destination checked first); anything else settles the address first.
+    fn assign_element(&mut self, a: Addr, e: &Expr) -> Result<(), CompileError> {
+        if self.is_pure(e) {
+            let v = self.expr(e, None)?;
+            self.store(a, v);
+            return Ok(());
+        }
+        if let (ExprKind::Load(src @ Place::Element(_, _, idx)), true) = (&e.kind, e.ty.is_scalar())
+        {
+            if idx.iter().all(|i| self.is_pure(i)) {
+                let saved = self.checkpoint();
+                if let (Addr::Elem { idx: didx, site: ds }, Addr::Elem { idx: sidx, site: ss }) =
+                    (a, self.place_addr(src)?)
+                {
+                    let site = self.out.sites.len() as u32;
+                    self.out.sites.extend([ds, ss]);
+                    self.emit(Op::MoveElem { didx, sidx, site });
+                    return Ok(());
+                }
+                // The source is addressed another way: start again in the safe order.
+                self.rollback(saved);
+            }
+        }
+        let a = self.settle(a)?;
+        let v = self.expr(e, None)?;
+        self.store(a, v);
+        Ok(())
+    }
+
     fn call_fb(
         &mut self,
         instance: &Place,
@@ -138,6 +178,7 @@ impl Emitter<'_> {
         let p = self.p;
         let pou = p.pous.get(fb as usize).ok_or_else(|| bad("FB"))?;
         let inst = self.place_addr(instance)?;
+        let inst = self.settle(inst)?;
         for arg in args {
             match arg {
                 CallArg::In(i, e) => {
@@ -255,7 +296,11 @@ impl Emitter<'_> {
         match direct {
             Some(o) if elem.is_int() && elem.bits() <= 32 => {
                 let (bits, signed) = (elem.bits() as u8, elem.is_signed_int());
-                self.emit(Op::ForNext32 { bits, signed, v: o, lim, target: body_pc });
+                if matches!(by.kind, ExprKind::Const(1)) {
+                    self.emit(Op::ForInc32 { bits, signed, v: o, lim, target: body_pc });
+                } else {
+                    self.emit(Op::ForNext32 { bits, signed, v: o, lim, target: body_pc });
+                }
             }
             Some(o) => {
                 self.emit(Op::ForNext { elem, v: o, lim, target: body_pc });

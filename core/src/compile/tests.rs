@@ -7,6 +7,7 @@ use crate::semantic::types::*;
 use crate::vm::{Fault, Machine, SysState, Value};
 
 mod calls;
+mod fused;
 
 fn inc(i: u32, ty: Type, by: i128) -> Expr {
     bin(BinOp::Add, local(i, ty), int(ty, by))

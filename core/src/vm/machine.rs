@@ -1,21 +1,25 @@
 //! The machine: memory plus the dispatch loop that runs one scan of the main program (or a
 //! breakpoint condition).
 //!
-//! The loop is one `match` over the 16-byte [`Op`]s; registers are cells addressed
-//! relative to the current frame base. It never allocates during a scan except for
-//! string temporaries (reused scratch buffers), never panics (every memory and code
-//! index is checked; a bad one is `Fault::Internal`), and counts every instruction
-//! against the watchdog budget.
+//! The loop hands the simple instructions to the inner loop (`fast`) and runs the rest
+//! itself, one `match` over the 16-byte [`Op`]s; registers are cells addressed relative to
+//! the current frame base. It never allocates during a scan except for string temporaries
+//! (reused scratch buffers) and never panics (every memory and code index is checked, a bad
+//! one is `Fault::Internal`, except in code `fast::verify` accepted, whose register
+//! operands were checked once). The watchdog budget counts every instruction run here and,
+//! in the inner loop, every pass of a loop at the number of instructions it jumps back
+//! over.
 
 use super::arith;
 use super::builtins;
+use super::fast;
 use super::fault::Fault;
 use super::memory::{copy_cells, copy_str, Memory};
-use super::op::{Op, R3};
+use super::op::Op;
 use crate::compile::{ConditionId, Executable};
 use crate::diagnostics::Span;
 use crate::semantic::ir::SysVar;
-use crate::semantic::types::{Elem, PouId};
+use crate::semantic::types::PouId;
 
 /// The deepest nesting of calls the VM allows.
 pub const MAX_CALL_DEPTH: usize = 64;
@@ -52,6 +56,8 @@ impl std::error::Error for RuntimeError {}
 struct CallFrame {
     ret: u32,
     base: u32,
+    /// The caller's code may run in the inner loop without operand checks.
+    trusted: bool,
 }
 
 /// Reusable buffers for string work.
@@ -128,8 +134,10 @@ impl Machine {
         sys: SysState,
         budget: u64,
     ) -> Result<(), RuntimeError> {
-        let entry = exe.pous.get(exe.main as usize).map_or(u32::MAX, |p| p.entry);
-        self.run(exe, entry, exe.main_base, sys, budget).map(|_| ())
+        let main = exe.pous.get(exe.main as usize);
+        let entry = main.map_or(u32::MAX, |p| p.entry);
+        let trusted = main.is_some_and(|p| p.trusted);
+        self.run(exe, (entry, trusted), exe.main_base, sys, budget).map(|_| ())
     }
 
     /// Evaluates a breakpoint condition (in the main program's scope) with at most
@@ -142,13 +150,14 @@ impl Machine {
         budget: u64,
     ) -> Result<bool, RuntimeError> {
         let entry = exe.conditions.get(id.0 as usize).copied().unwrap_or(u32::MAX);
-        self.run(exe, entry, exe.main_base, sys, budget).map(|v| v != 0)
+        let trusted = exe.condition_trusted.get(id.0 as usize).copied().unwrap_or(false);
+        self.run(exe, (entry, trusted), exe.main_base, sys, budget).map(|v| v != 0)
     }
 
     fn run(
         &mut self,
         exe: &Executable,
-        entry: u32,
+        (entry, trusted): (u32, bool),
         base: u32,
         sys: SysState,
         budget: u64,
@@ -160,7 +169,7 @@ impl Machine {
         }
         self.stack.clear();
         let mut pc = entry as usize;
-        match self.exec(exe, &mut pc, base, sys, budget) {
+        match self.exec(exe, &mut pc, (base, trusted), sys, budget) {
             Ok(v) => Ok(v),
             Err(fault) => Err(self.locate_fault(exe, fault, pc)),
         }
@@ -186,12 +195,14 @@ impl Machine {
         &mut self,
         exe: &Executable,
         pc: &mut usize,
-        mut base: u32,
+        (mut base, mut trusted): (u32, bool),
         sys: SysState,
         budget: u64,
     ) -> Result<u64, Fault> {
         let code = &exe.out.code[..];
         let cells: &mut [u64] = &mut self.mem.cells;
+        // Trusted regions of static frames rely on memory being at least the image.
+        trusted &= cells.len() >= exe.out.init.len();
         let mut fuel = budget;
         macro_rules! r {
             ($x:expr) => {
@@ -204,19 +215,18 @@ impl Machine {
                 *cells.get_mut(base.wrapping_add($x) as usize).ok_or(BAD)? = v;
             }};
         }
-        macro_rules! at {
-            ($a:expr) => {
-                *cells.get_mut(($a) as usize).ok_or(BAD)?
-            };
-        }
-        macro_rules! bin {
-            ($o:expr, |$x:ident, $y:ident| $e:expr) => {{
-                let R3 { dst, a, b } = $o;
-                let ($x, $y) = (r!(a), r!(b));
-                w!(dst, $e)
-            }};
-        }
+        let tables = fast::Tables { code, sites: &exe.out.sites, dims: &exe.out.dims };
         loop {
+            let exit = if trusted {
+                fast::run::<true>(tables, cells, base, pc, &mut fuel)
+            } else {
+                fast::run::<false>(tables, cells, base, pc, &mut fuel)
+            };
+            if exit == fast::Exit::Fault {
+                let op = code.get(*pc).ok_or(BAD)?;
+                *pc += 1;
+                return Err(fast::diagnose(op, tables, cells, base));
+            }
             let op = code.get(*pc).ok_or(Fault::Internal("jump outside the code"))?;
             *pc += 1;
             if fuel == 0 {
@@ -224,48 +234,6 @@ impl Machine {
             }
             fuel -= 1;
             match *op {
-                Op::Const { dst, bits } => w!(dst, bits),
-                Op::Move { dst, a } => w!(dst, r!(a)),
-                Op::LoadAbs { dst, addr } => w!(dst, at!(addr)),
-                Op::StoreAbs { addr, a } => at!(addr) = r!(a),
-                Op::LoadInd { dst, ptr, off } => w!(dst, at!(r!(ptr).wrapping_add(u64::from(off)))),
-                Op::StoreInd { ptr, off, a } => at!(r!(ptr).wrapping_add(u64::from(off))) = r!(a),
-                Op::AddrOf { dst, off } => w!(dst, u64::from(base.wrapping_add(off))),
-                Op::PtrAdd { dst, ptr, off } => w!(dst, r!(ptr).wrapping_add(u64::from(off))),
-                Op::Index { ptr, idx, dim } => {
-                    let d = exe.out.dims.get(dim as usize).ok_or(BAD)?;
-                    let i = r!(idx) as i64;
-                    if i < d.low || i > d.high {
-                        return Err(Fault::IndexOutOfRange { index: i, low: d.low, high: d.high });
-                    }
-                    let step = (i as i128 - d.low as i128) as u64 * u64::from(d.stride);
-                    w!(ptr, r!(ptr).wrapping_add(step));
-                }
-                Op::AddI64(o) => bin!(o, |x, y| (x as i64).wrapping_add(y as i64) as u64),
-                Op::SubI64(o) => bin!(o, |x, y| (x as i64).wrapping_sub(y as i64) as u64),
-                Op::MulI64(o) => bin!(o, |x, y| (x as i64).wrapping_mul(y as i64) as u64),
-                Op::AddI32(o) => bin!(o, |x, y| (x as i32).wrapping_add(y as i32) as i64 as u64),
-                Op::SubI32(o) => bin!(o, |x, y| (x as i32).wrapping_sub(y as i32) as i64 as u64),
-                Op::MulI32(o) => bin!(o, |x, y| (x as i32).wrapping_mul(y as i32) as i64 as u64),
-                Op::AddI16(o) => bin!(o, |x, y| (x as i16).wrapping_add(y as i16) as i64 as u64),
-                Op::SubI16(o) => bin!(o, |x, y| (x as i16).wrapping_sub(y as i16) as i64 as u64),
-                Op::AddF64(o) => bin!(o, |x, y| (f64::from_bits(x) + f64::from_bits(y)).to_bits()),
-                Op::SubF64(o) => bin!(o, |x, y| (f64::from_bits(x) - f64::from_bits(y)).to_bits()),
-                Op::MulF64(o) => bin!(o, |x, y| (f64::from_bits(x) * f64::from_bits(y)).to_bits()),
-                Op::DivF64(o) => bin!(o, |x, y| (f64::from_bits(x) / f64::from_bits(y)).to_bits()),
-                Op::AddF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) + f64::from_bits(y))),
-                Op::SubF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) - f64::from_bits(y))),
-                Op::MulF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) * f64::from_bits(y))),
-                Op::DivF32(o) => bin!(o, |x, y| f32r(f64::from_bits(x) / f64::from_bits(y))),
-                Op::EqCell(o) => bin!(o, |x, y| u64::from(x == y)),
-                Op::NeCell(o) => bin!(o, |x, y| u64::from(x != y)),
-                Op::LtI64(o) => bin!(o, |x, y| u64::from((x as i64) < (y as i64))),
-                Op::LeI64(o) => bin!(o, |x, y| u64::from((x as i64) <= (y as i64))),
-                Op::GtI64(o) => bin!(o, |x, y| u64::from((x as i64) > (y as i64))),
-                Op::GeI64(o) => bin!(o, |x, y| u64::from((x as i64) >= (y as i64))),
-                Op::And(o) => bin!(o, |x, y| x & y),
-                Op::Or(o) => bin!(o, |x, y| x | y),
-                Op::Xor(o) => bin!(o, |x, y| x ^ y),
                 Op::Bin { op, elem, dst, a, b } => w!(dst, arith::binary(op, elem, r!(a), r!(b))?),
                 Op::Cmp { op, elem, dst, a, b } => {
                     w!(dst, u64::from(arith::compare(op, elem, r!(a), r!(b))))
@@ -273,32 +241,12 @@ impl Machine {
                 Op::ScaleTime { op, elem, real, dst, a, b } => {
                     w!(dst, arith::scale_time(op, elem, r!(a), r!(b), real)?)
                 }
-                Op::Neg { elem, dst, a } => w!(dst, arith::negate(elem, r!(a))),
-                Op::Not { elem, dst, a } => w!(dst, arith::complement(elem, r!(a))),
                 Op::Conv { from, to, dst, a } => w!(dst, arith::convert(from, to, r!(a))),
-                Op::RealToDint { dst, a } => w!(dst, real_to_dint(r!(a))),
-                Op::MulRealToDint(o) => {
-                    bin!(o, |x, y| real_to_dint(f32r(f64::from_bits(x) * f64::from_bits(y))))
-                }
                 Op::Trunc { from, to, dst, a } => w!(dst, arith::trunc(from, to, r!(a))),
-                Op::GetBit { dst, a, n } => w!(dst, arith::get_bit(r!(a), n)),
                 Op::SetBit { elem, n, dst, v } => {
                     w!(dst, arith::set_bit(elem, r!(dst), u32::from(n), r!(v) != 0))
                 }
                 Op::Sys { var, dst } => w!(dst, sys_var(var, sys)),
-                Op::Jump { target } => *pc = target as usize,
-                Op::JumpIf { c, target } => {
-                    if r!(c) != 0 {
-                        loop_done();
-                        *pc = target as usize;
-                    }
-                }
-                Op::JumpIfNot { c, target } => {
-                    if r!(c) == 0 {
-                        loop_done();
-                        *pc = target as usize;
-                    }
-                }
                 Op::ForStart { lim } => {
                     if r!(lim.wrapping_add(1)) == 0 {
                         return Err(Fault::ForStepZero);
@@ -310,24 +258,6 @@ impl Machine {
                     let step = arith::to_i128(elem, r!(lim.wrapping_add(1)));
                     if !(if step > 0 { x <= end } else { x >= end }) {
                         *pc = target as usize;
-                    }
-                }
-                Op::ForNext32 { bits, signed, v, lim, target } => {
-                    // Values of at most 32 bits: the sum cannot overflow i64.
-                    let (x, end, step) =
-                        (r!(v) as i64, r!(lim) as i64, r!(lim.wrapping_add(1)) as i64);
-                    let next = x + step;
-                    let sh = 64 - u32::from(bits);
-                    let wrapped = if signed {
-                        (next << sh) >> sh
-                    } else {
-                        ((next as u64) << sh >> sh) as i64
-                    };
-                    w!(v, wrapped as u64);
-                    if if step > 0 { next <= end } else { next >= end } {
-                        *pc = target as usize;
-                    } else {
-                        loop_done();
                     }
                 }
                 Op::ForNext { elem, v, lim, target } => {
@@ -362,8 +292,11 @@ impl Machine {
                     if self.stack.len() >= MAX_CALL_DEPTH {
                         return Err(Fault::CallDepth);
                     }
-                    self.stack.push(CallFrame { ret: *pc as u32, base });
+                    self.stack.push(CallFrame { ret: *pc as u32, base, trusted });
                     base = u32::try_from(r!(ptr)).map_err(|_| BAD)?;
+                    // The instance must lie inside memory for its code to run unchecked.
+                    let end = base as usize + callee.size as usize;
+                    trusted = callee.trusted && end <= cells.len();
                     *pc = callee.entry as usize;
                 }
                 Op::CallFn { pou } => {
@@ -371,8 +304,9 @@ impl Machine {
                     if self.stack.len() >= MAX_CALL_DEPTH {
                         return Err(Fault::CallDepth);
                     }
-                    self.stack.push(CallFrame { ret: *pc as u32, base });
+                    self.stack.push(CallFrame { ret: *pc as u32, base, trusted });
                     base = callee.frame.ok_or(BAD)?;
+                    trusted = callee.trusted && cells.len() >= exe.out.init.len();
                     *pc = callee.entry as usize;
                 }
                 Op::InitFrame { pou } => {
@@ -395,6 +329,7 @@ impl Machine {
                     Some(f) => {
                         *pc = f.ret as usize;
                         base = f.base;
+                        trusted = f.trusted;
                     }
                     None => return Ok(0),
                 },
@@ -403,7 +338,18 @@ impl Machine {
                     copy_cells(cells, r!(dst) as usize, r!(src) as usize, n as usize)?
                 }
                 Op::StrCopy { dst, src } => copy_str(cells, r!(dst) as usize, r!(src) as usize)?,
-                _ => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
+                Op::StrCmp { .. }
+                | Op::Str { .. }
+                | Op::Math { .. }
+                | Op::Select { .. }
+                | Op::MinMax { .. }
+                | Op::Limit { .. }
+                | Op::Mux { .. }
+                | Op::ToStr { .. }
+                | Op::FromStr { .. }
+                | Op::Bcd { .. } => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
+                // The inner loop's instructions never get here.
+                _ => return Err(Fault::Internal("instruction left by the inner loop")),
             }
         }
     }
@@ -421,32 +367,4 @@ fn sys_var(var: SysVar, sys: SysState) -> u64 {
             u64::from(sys.time_ns.rem_euclid(period) < period / 2)
         }
     }
-}
-
-/// `arith::convert(Real, DInt, x)`, inlined: round half to even, wrap to 32 bits.
-/// Below 2^51, adding 1.5 * 2^52 rounds to an integer half to even (the default IEEE
-/// rounding, exactly as `round_ties_even`) and leaves that integer in the low mantissa
-/// bits, so no libm call and no saturating float-to-int conversion is needed.
-#[inline]
-fn real_to_dint(x: u64) -> u64 {
-    const MAGIC: f64 = 6_755_399_441_055_744.0;
-    let f = f64::from_bits(x);
-    if f.abs() < 2_251_799_813_685_248.0 {
-        let k = (f + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits()) as i64;
-        k as i32 as i64 as u64
-    } else {
-        arith::convert(Elem::Real, Elem::DInt, x)
-    }
-}
-
-/// Marks the rare path of a branch, so that the compiler keeps a predictable jump there
-/// instead of a conditional move (which would chain the next dispatch on the data).
-#[cold]
-#[inline(never)]
-fn loop_done() {}
-
-/// Rounds an f64 result to REAL precision, as `arith::from_f64(Elem::Real, _)` does.
-#[inline]
-fn f32r(v: f64) -> u64 {
-    (v as f32 as f64).to_bits()
 }

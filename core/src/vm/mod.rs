@@ -2,7 +2,8 @@
 //! values at its boundary (reading/writing variables, JSON rendering).
 //!
 //! Map: `op` (instruction set) · `memory` (cells, strings in cells) · `machine` (the
-//! dispatch loop, calls, faults, watchdog) · `builtins` and `strings` (less frequent
+//! outer dispatch loop, calls, faults, watchdog) · `fast` (the inner loop of the simple
+//! instructions, and the verification that lets checked-once code skip operand checks) · `builtins` and `strings` (less frequent
 //! instructions) · `text` (values as IEC text) · `value` (the boundary `Value`) · `json`
 //! (rendering) · `arith` (the one definition of cell arithmetic) · `fault` (runtime
 //! faults).
@@ -13,6 +14,7 @@
 
 pub mod arith;
 mod builtins;
+pub(crate) mod fast;
 pub mod fault;
 mod json;
 mod machine;

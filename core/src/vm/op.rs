@@ -13,7 +13,7 @@
 use crate::semantic::ir::{BinOp, SysVar};
 use crate::semantic::types::{Elem, PouId};
 
-pub use super::tables::{CaseTable, DimInfo, MathFn, StrFunc, R3};
+pub use super::tables::{Branch, CaseTable, DimInfo, ElemSite, MathFn, StrFunc, R3};
 
 /// A frame-relative cell offset.
 pub type Reg = u32;
@@ -93,6 +93,43 @@ pub enum Op {
         /// Entry in `Executable::dims`.
         dim: u32,
     },
+    /// `dst := element of a frame array` (address, bounds check and load in one step).
+    LoadElem {
+        /// Destination.
+        dst: Reg,
+        /// The index register (a LINT, or the operand of `add` in its own type).
+        idx: Reg,
+        /// Entry in `Executable::sites`.
+        site: u32,
+    },
+    /// `element of a frame array := a`.
+    StoreElem {
+        /// The index register.
+        idx: Reg,
+        /// Entry in `Executable::sites`.
+        site: u32,
+        /// Source.
+        a: Reg,
+    },
+    /// `arr1[i] := arr2[k]` on scalar elements: the destination is bounds-checked first
+    /// (site `site`), then the source (site `site + 1`).
+    MoveElem {
+        /// Index register of the destination.
+        didx: Reg,
+        /// Index register of the source.
+        sidx: Reg,
+        /// Entry in `Executable::sites` of the destination; the source's follows.
+        site: u32,
+    },
+    /// `dst := absolute address of an element of a frame array` (bounds-checked).
+    ElemAddr {
+        /// Destination pointer register.
+        dst: Reg,
+        /// The index register.
+        idx: Reg,
+        /// Entry in `Executable::sites`.
+        site: u32,
+    },
     /// Any arithmetic or bitwise operator through `arith::binary`.
     Bin {
         /// Operator.
@@ -169,6 +206,9 @@ pub enum Op {
     Or(R3),
     /// XOR.
     Xor(R3),
+    /// `a AND NOT b` on any non-real cell (a ladder's normally closed contact): `a & !b`,
+    /// which is `a AND NOT b` in every integral type since cells are normalised.
+    AndNot(R3),
     /// TIME (TOD, DT) scaled by a LINT (`real` false) or LREAL factor.
     ScaleTime {
         /// Mul or Div.
@@ -266,6 +306,18 @@ pub enum Op {
         /// Target instruction.
         target: u32,
     },
+    /// Jumps when `a < b` (cells that order as i64, as [`Op::LtI64`]).
+    JumpLt(Branch),
+    /// Jumps when `a <= b`.
+    JumpLe(Branch),
+    /// Jumps when `a > b`.
+    JumpGt(Branch),
+    /// Jumps when `a >= b`.
+    JumpGe(Branch),
+    /// Jumps when `a = b` (any non-real cell, as [`Op::EqCell`]).
+    JumpEq(Branch),
+    /// Jumps when `a <> b`.
+    JumpNe(Branch),
     /// Jumps when the BOOL in `c` is TRUE.
     JumpIf {
         /// Condition.
@@ -318,6 +370,19 @@ pub enum Op {
         /// Control variable, updated in place.
         v: Reg,
         /// End at `lim`, step at `lim + 1`.
+        lim: Reg,
+        /// Body target.
+        target: u32,
+    },
+    /// `ForNext32` for a loop whose step is the constant 1 (the step is not read).
+    ForInc32 {
+        /// Width of the control variable's type.
+        bits: u8,
+        /// Signed type.
+        signed: bool,
+        /// Control variable, updated in place.
+        v: Reg,
+        /// End at `lim`.
         lim: Reg,
         /// Body target.
         target: u32,

@@ -1,0 +1,46 @@
+//! The browser side of B5 and B6: the same work `plc bench` times natively
+//! (`plc_core::bench::workload`), exported to JavaScript so that a page in headless
+//! Chromium can time it with `performance.now()` (the core never reads a clock).
+//! Built and driven by `scripts/bench-browser.sh`; see BENCHMARKS.md.
+#![cfg(target_arch = "wasm32")]
+
+use plc_core::bench::{programs, workload};
+use plc_core::sim::Simulator;
+use wasm_bindgen::prelude::*;
+
+fn js(e: workload::BenchError) -> JsValue {
+    JsValue::from_str(&e.to_string())
+}
+
+/// B5: the weighing program, loaded and ready, with its plant.
+#[wasm_bindgen]
+pub struct Weighing {
+    sim: Simulator,
+}
+
+#[wasm_bindgen]
+impl Weighing {
+    /// Checks and compiles `examples/weighing.st` with Start held and the setpoint at 500.
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> Result<Weighing, JsValue> {
+        Ok(Weighing { sim: workload::weighing().map_err(js)? })
+    }
+
+    /// Runs `scans` scans of 10 ms against the plant; returns the batches discharged.
+    pub fn run(&mut self, scans: u32) -> Result<u32, JsValue> {
+        let batches = workload::run_weighing(&mut self.sim, u64::from(scans)).map_err(js)?;
+        Ok(batches as u32)
+    }
+}
+
+/// B6's program: generated ST of about `lines` lines.
+#[wasm_bindgen]
+pub fn b6_source(lines: u32) -> String {
+    programs::b6(lines as usize)
+}
+
+/// B6's work: check and compile `source`; returns the number of instructions.
+#[wasm_bindgen]
+pub fn check_and_compile(source: &str) -> Result<u32, JsValue> {
+    Ok(workload::check_and_compile(source).map_err(js)? as u32)
+}

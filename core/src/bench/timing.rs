@@ -1,0 +1,265 @@
+//! The timed side of the benchmarks (native builds only: it reads the wall clock): each
+//! figure with its repetitions, the `plc bench --json` object and its text rendering.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use serde::Serialize;
+use serde_json::{json, Value as Json};
+
+use super::workload::{check_and_compile, load, run_weighing, scan, weighing, BenchError};
+use super::{ladder, programs};
+
+/// How much work each benchmark does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Effort {
+    /// The sizes the issue names (B5 runs a full virtual hour).
+    Full,
+    /// A smoke pass for CI: tiny sizes, a few repetitions.
+    Quick,
+}
+
+/// A VM figure with its native baseline.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Paired {
+    /// Best wall time of the VM, ms.
+    pub vm_ms: f64,
+    /// Best wall time of the hand-written Rust, ms.
+    pub native_ms: f64,
+    /// vm_ms / native_ms.
+    pub ratio: f64,
+}
+
+fn ms(start: Instant) -> f64 {
+    start.elapsed().as_secs_f64() * 1000.0
+}
+
+/// The best of `reps` timings of `f`, in ms.
+fn best_of(reps: usize, mut f: impl FnMut()) -> f64 {
+    (0..reps.max(1))
+        .map(|_| {
+            let t = Instant::now();
+            f();
+            ms(t)
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn paired(vm_ms: f64, native_ms: f64) -> Paired {
+    Paired { vm_ms, native_ms, ratio: vm_ms / native_ms.max(1e-9) }
+}
+
+/// The best of `reps` timings of `vm` and of `native`, taken alternately, so that both
+/// sides see the same moments of a busy machine.
+fn best_pair(reps: usize, mut vm: impl FnMut(), mut native: impl FnMut()) -> Paired {
+    let (mut best_vm, mut best_native) = (f64::INFINITY, f64::INFINITY);
+    for _ in 0..reps.max(1) {
+        best_vm = best_vm.min(best_of(1, &mut vm));
+        best_native = best_native.min(best_of(1, &mut native));
+    }
+    paired(best_vm, best_native)
+}
+
+/// B1: `d := REAL_TO_DINT(a * b)` with changing a and b, `n` iterations in one scan.
+pub fn b1(effort: Effort) -> Result<Paired, BenchError> {
+    let n = if effort == Effort::Full { 100_000 } else { 1_000 };
+    let reps = if effort == Effort::Full { 30 } else { 2 };
+    let mut sim = load(&programs::b1(n))?;
+    scan(&mut sim)?;
+    Ok(best_pair(
+        reps,
+        || {
+            let _ = scan(&mut sim);
+        },
+        || {
+            black_box(programs::b1_native(black_box(n)));
+        },
+    ))
+}
+
+/// B2: worst-case bubble sort of a `n`-element INT array in one scan.
+pub fn b2(effort: Effort) -> Result<Paired, BenchError> {
+    let n = if effort == Effort::Full { 1_000 } else { 50 };
+    let reps = if effort == Effort::Full { 15 } else { 2 };
+    let mut sim = load(&programs::b2(n))?;
+    scan(&mut sim)?;
+    Ok(best_pair(
+        reps,
+        || {
+            let _ = scan(&mut sim);
+        },
+        || {
+            black_box(programs::b2_native(black_box(n)));
+        },
+    ))
+}
+
+/// B3: scan time of CASE OF code for sequences of 10 … 10,000 places (ns per scan, best
+/// of 15 runs of 20,000 scans, the sizes taken in turn so that all see the same moments of
+/// a busy machine), and the ratio largest/smallest.
+pub fn b3(effort: Effort) -> Result<Json, BenchError> {
+    let sizes: &[usize] =
+        if effort == Effort::Full { &[10, 100, 1_000, 10_000] } else { &[10, 100] };
+    let (scans, reps) = if effort == Effort::Full { (20_000, 15) } else { (1_000, 2) };
+    let mut sims = Vec::with_capacity(sizes.len());
+    for &places in sizes {
+        let mut sim = load(&programs::b3(places))?;
+        sim.hold("Go", "TRUE").map_err(|e| BenchError(e.to_string()))?;
+        sims.push(sim);
+    }
+    let mut best = vec![f64::INFINITY; sizes.len()];
+    for _ in 0..reps {
+        for (sim, best) in sims.iter_mut().zip(&mut best) {
+            let t = best_of(1, || {
+                for _ in 0..scans {
+                    let _ = scan(sim);
+                }
+            });
+            *best = best.min(t);
+        }
+    }
+    let ns: Vec<f64> = best.iter().map(|t| t * 1e6 / scans as f64).collect();
+    let per_size: serde_json::Map<String, Json> =
+        sizes.iter().zip(&ns).map(|(p, v)| (p.to_string(), json!(v))).collect();
+    let ratio = ns.last().copied().unwrap_or(0.0) / ns.first().copied().unwrap_or(1.0).max(1e-9);
+    Ok(json!({ "scan_ns": per_size, "ratio": ratio }))
+}
+
+/// B4: a ladder POU of 1,000 rungs × 10 elements, lowered and compiled as the product does;
+/// ns per element per scan (best of 20 runs of 100 scans), with the scan time.
+pub fn b4(effort: Effort) -> Result<Json, BenchError> {
+    let (rungs, scans, reps) = if effort == Effort::Full { (1_000, 100, 20) } else { (20, 20, 2) };
+    let project = ladder::project(rungs);
+    let mut sim = crate::run::project_simulator(&project, None).map_err(|d| {
+        BenchError(
+            d.first().map_or("the ladder POU does not compile".into(), |d| d.message.clone()),
+        )
+    })?;
+    sim.set_watchdog(u64::MAX / 2);
+    for i in (1..ladder::INPUTS).step_by(3) {
+        sim.hold(&format!("I{i}"), "TRUE").map_err(|e| BenchError(e.to_string()))?;
+    }
+    scan(&mut sim)?;
+    let t = best_of(reps, || {
+        for _ in 0..scans {
+            let _ = scan(&mut sim);
+        }
+    });
+    let scan_ns = t * 1e6 / scans as f64;
+    let elements = rungs * ladder::ELEMENTS_PER_RUNG;
+    Ok(json!({
+        "ns_per_element": scan_ns / elements as f64,
+        "scan_us": scan_ns / 1000.0,
+        "elements": elements,
+    }))
+}
+
+/// B5: the weighing example against its plant, fast-forwarded through one hour of virtual
+/// time at 10 ms (360,000 scans); wall time in ms.
+pub fn b5(effort: Effort) -> Result<Json, BenchError> {
+    let scans = if effort == Effort::Full { 360_000 } else { 3_600 };
+    let mut sim = weighing()?;
+    let t = Instant::now();
+    let batches = run_weighing(&mut sim, scans)?;
+    let native_ms = ms(t);
+    Ok(json!({ "native_ms": native_ms, "scans": scans, "batches": batches }))
+}
+
+/// B6: check + compile of a generated 5,000-line ST program (best of 5), in ms.
+pub fn b6(effort: Effort) -> Result<Json, BenchError> {
+    let lines = if effort == Effort::Full { 5_000 } else { 200 };
+    let source = programs::b6(lines);
+    let instructions = check_and_compile(&source)?;
+    let native_ms = best_of(5, || {
+        let _ = black_box(check_and_compile(black_box(&source)));
+    });
+    Ok(
+        json!({ "native_ms": native_ms, "lines": source.lines().count(), "instructions": instructions }),
+    )
+}
+
+/// The figures `plc bench` measures, in the order it prints them.
+pub const FIGURES: [&str; 6] = ["B1", "B2", "B3", "B4", "B5", "B6"];
+
+/// Runs every benchmark and returns the `plc bench --json` object.
+pub fn run_all(effort: Effort) -> Result<Json, BenchError> {
+    run_selected(effort, &[])
+}
+
+/// Runs the figures named in `only` (case-insensitive; every figure when empty) and
+/// returns their part of the `plc bench --json` object.
+pub fn run_selected(effort: Effort, only: &[String]) -> Result<Json, BenchError> {
+    if let Some(bad) = only.iter().find(|o| !FIGURES.iter().any(|f| f.eq_ignore_ascii_case(o))) {
+        return Err(BenchError(format!(
+            "unknown figure `{bad}` (figures: {})",
+            FIGURES.join(", ")
+        )));
+    }
+    let wanted = |f: &str| only.is_empty() || only.iter().any(|o| o.eq_ignore_ascii_case(f));
+    let mut out = serde_json::Map::new();
+    for f in FIGURES.into_iter().filter(|f| wanted(f)) {
+        let v = match f {
+            "B1" => json!(b1(effort)?),
+            "B2" => json!(b2(effort)?),
+            "B3" => b3(effort)?,
+            "B4" => b4(effort)?,
+            "B5" => b5(effort)?,
+            _ => b6(effort)?,
+        };
+        out.insert(f.to_string(), v);
+    }
+    Ok(Json::Object(out))
+}
+
+/// The `plc bench` object as a table a person reads (figures absent from it are skipped).
+/// After a quick pass the goals are not judged: the sizes are too small to mean anything.
+pub fn report_text(report: &Json, effort: Effort) -> String {
+    let line = |name: &str, result: String, goal: &str, met: bool| {
+        let status = match (effort, met) {
+            (Effort::Quick, _) => "(quick pass: not judged)",
+            (Effort::Full, true) => "met",
+            (Effort::Full, false) => "NOT MET",
+        };
+        format!("{name:<4} {result:<52} goal {goal:<22} {status}\n")
+    };
+    let num = |f: &str, k: &str| report[f][k].as_f64().unwrap_or(f64::NAN);
+    let mut out = String::new();
+    for f in ["B1", "B2"] {
+        if report.get(f).is_some() {
+            let r = num(f, "ratio");
+            let text = format!(
+                "VM {:.2} ms / native {:.2} ms = {r:.1}x",
+                num(f, "vm_ms"),
+                num(f, "native_ms")
+            );
+            out += &line(f, text, "ratio <= 8", r <= 8.0);
+        }
+    }
+    if let Some(b3) = report.get("B3") {
+        let sizes: Vec<String> = b3["scan_ns"]
+            .as_object()
+            .map(|m| {
+                m.iter().map(|(k, v)| format!("{k}: {:.0}", v.as_f64().unwrap_or(0.0))).collect()
+            })
+            .unwrap_or_default();
+        let r = num("B3", "ratio");
+        let text = format!("ns/scan {}; ratio {r:.2}", sizes.join(", "));
+        out += &line("B3", text, "ratio <= 1.1", r <= 1.1);
+    }
+    if report.get("B4").is_some() {
+        let n = num("B4", "ns_per_element");
+        let text = format!("{n:.2} ns per element ({:.1} us per scan)", num("B4", "scan_us"));
+        out += &line("B4", text, "<= 5 ns per element", n <= 5.0);
+    }
+    if report.get("B5").is_some() {
+        let t = num("B5", "native_ms");
+        let text = format!("{t:.0} ms for {} scans (native)", report["B5"]["scans"]);
+        out += &line("B5", text, "<= 1000 ms (Chromium)", t <= 1000.0);
+    }
+    if report.get("B6").is_some() {
+        let t = num("B6", "native_ms");
+        let text = format!("{t:.1} ms for {} lines (native)", report["B6"]["lines"]);
+        out += &line("B6", text, "<= 50 ms native", t <= 50.0);
+    }
+    out
+}

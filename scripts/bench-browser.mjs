@@ -1,0 +1,50 @@
+// Times B5 (the weighing example fast-forwarded 360,000 scans of 10 ms against its plant)
+// and B6 (check + compile of the generated 5,000-line program) in headless Chromium, with
+// performance.now() in the page. Usage: node scripts/bench-browser.mjs DIR [--quick], where
+// DIR holds bench_wasm.js and bench_wasm_bg.wasm (scripts/bench-browser.sh builds them).
+import { writeFile } from 'node:fs/promises';
+import path from 'node:path';
+import { launch } from '../tests/e2e/browser.mjs';
+import { startServer } from '../tests/e2e/server.mjs';
+
+const dir = path.resolve(process.argv[2] ?? 'target/bench-browser');
+const quick = process.argv.includes('--quick');
+await writeFile(path.join(dir, 'index.html'),
+  '<!DOCTYPE html><html><head><meta charset="utf-8"><title>plc bench</title></head><body></body></html>\n');
+
+const server = await startServer(dir, '/bench/');
+const browser = await launch();
+try {
+  const page = await browser.newPage();
+  page.on('pageerror', (e) => console.error(`page error: ${e.message}`));
+  await page.goto(server.url);
+  const result = await page.evaluate(async ({ scans, lines }) => {
+    const m = await import('./bench_wasm.js');
+    await m.default();
+    // B5: one run of a whole virtual hour, as the native figure (compile not timed).
+    const w = new m.Weighing();
+    let t = performance.now();
+    const batches = w.run(scans);
+    const b5 = performance.now() - t;
+    w.free();
+    // B6: best of 5 (after one warm-up), as natively.
+    const source = m.b6_source(lines);
+    m.check_and_compile(source);
+    let b6 = Infinity;
+    let instructions = 0;
+    for (let k = 0; k < 5; k++) {
+      t = performance.now();
+      instructions = m.check_and_compile(source);
+      b6 = Math.min(b6, performance.now() - t);
+    }
+    return {
+      B5: { chromium_ms: b5, scans, batches },
+      B6: { wasm_ms: b6, lines: source.split('\n').length - 1, instructions },
+      userAgent: navigator.userAgent,
+    };
+  }, quick ? { scans: 3600, lines: 200 } : { scans: 360000, lines: 5000 });
+  console.log(JSON.stringify(result));
+} finally {
+  await browser.close();
+  await server.close();
+}
