@@ -11,6 +11,7 @@
 
 #[cfg(not(target_arch = "wasm32"))]
 pub mod bench;
+pub mod build;
 pub mod compile;
 pub mod diagnostics;
 pub mod export;
