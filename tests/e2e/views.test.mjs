@@ -129,6 +129,9 @@ test('a ladder problem is listed at its rung, row and column, and clicking it sh
   assert.equal(await view.locator('.ld-diag.err').count(), 1);
   assert.equal(await page.getByRole('button', { name: 'Ladder diagram Latch' }).getAttribute('aria-pressed'), 'true');
   await page.screenshot({ path: path.join(shots, 'ladder-problem.png'), fullPage: true });
+  // Nothing of the previous project runs: its inputs and outputs are gone.
+  assert.equal(await page.getByRole('img', { name: 'Motor: OFF', exact: true }).count(), 0);
+  await page.getByRole('status', { name: 'PLC state: No program' }).waitFor();
   // The broken project is open and kept, as imported.
   assert.equal(await page.locator('.project-name').textContent(), 'Broken latch');
   assert.deepEqual(errors, []);

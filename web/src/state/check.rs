@@ -60,6 +60,13 @@ fn line_of(text: &str, offset: usize) -> u32 {
     text.as_bytes()[..end].iter().filter(|&&b| b == b'\n').count() as u32 + 1
 }
 
+/// Records `paths` on the timeline (those the program does not have are left out).
+pub(super) fn trace_paths(sim: &mut Simulator, paths: &[String]) {
+    let valid: Vec<&str> =
+        paths.iter().map(String::as_str).filter(|p| sim.executable().locate(p).is_some()).collect();
+    let _ = sim.set_trace(&valid, TRACE_CAPACITY);
+}
+
 impl AppState {
     /// Builds the project; when it is clean, powers a fresh simulator on for the chosen
     /// PROGRAM (held inputs are re-applied; a running PLC keeps running with the new
@@ -156,12 +163,7 @@ impl AppState {
             })
             .collect();
         self.breakpoints.set(list);
-        let paths: Vec<&str> = traced
-            .iter()
-            .map(String::as_str)
-            .filter(|p| sim.executable().locate(p).is_some())
-            .collect();
-        let _ = sim.set_trace(&paths, TRACE_CAPACITY);
+        trace_paths(sim, &traced);
     }
 
     /// Tells the panels the simulator changed, and finds the lines of the CASE branches

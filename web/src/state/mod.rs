@@ -209,9 +209,13 @@ impl AppState {
         self.run_mode.set(RunMode::Stopped);
         self.sim.set_value(None);
         self.sim_build.set_value(None);
+        self.running_places.set_value(None);
+        self.running.set(None);
+        self.programs.set(Vec::new());
         self.marked_line.set(None);
         self.fault_site.set(None);
         self.focus.set(None);
+        self.bump();
     }
 
     /// Stores `project` as a new project and opens it.
@@ -361,14 +365,7 @@ impl AppState {
     pub fn set_traced(&self, paths: Vec<String>) {
         self.project.update(|p| p.settings.traced = paths.clone());
         self.save();
-        self.with_sim_mut(|s| {
-            let valid: Vec<&str> = paths
-                .iter()
-                .map(String::as_str)
-                .filter(|p| s.executable().locate(p).is_some())
-                .collect();
-            let _ = s.set_trace(&valid, TRACE_CAPACITY);
-        });
+        self.with_sim_mut(|s| check::trace_paths(s, &paths));
     }
 
     /// Reads from the simulator (tracks `sim_version`, so views update).

@@ -57,6 +57,17 @@ fn hline(
     view! { <line class="ld-wire" class:powered=powered x1=x1 y1=y x2=x2 y2=y/> }
 }
 
+/// The operand as a stored key, and its live BOOL value.
+fn operand_state(
+    ctx: RungCtx,
+    operand: &str,
+) -> (StoredValue<String>, impl Fn() -> Option<bool> + Copy + Send + Sync + 'static) {
+    let key = StoredValue::new(operand.to_string());
+    let value =
+        move || ctx.live.with(|l| l.as_ref().and_then(|l| key.with_value(|k| l.bool_of(k))));
+    (key, value)
+}
+
 fn contact_letter(kind: ContactKind) -> Option<&'static str> {
     match kind {
         ContactKind::Rising => Some("P"),
@@ -95,9 +106,7 @@ fn contact(
     let (x0, x1) = geo.col_span(col);
     let (cx, y) = ((x0 + x1) / 2.0, geo.wire_y(row));
     let op = operand.trim().to_string();
-    let key = StoredValue::new(op.clone());
-    let value =
-        move || ctx.live.with(|l| l.as_ref().and_then(|l| key.with_value(|k| l.bool_of(k))));
+    let (key, value) = operand_state(ctx, &op);
     let toggles =
         move || ctx.live.with(|l| l.as_ref().is_some_and(|l| key.with_value(|k| l.is_input(k))));
     let toggle = move || {
@@ -156,9 +165,7 @@ fn coil(
     let (x0, x1) = geo.col_span(col);
     let (cx, y) = ((x0 + x1) / 2.0, geo.wire_y(row));
     let op = operand.trim().to_string();
-    let key = StoredValue::new(op.clone());
-    let value =
-        move || ctx.live.with(|l| l.as_ref().and_then(|l| key.with_value(|k| l.bool_of(k))));
+    let (_, value) = operand_state(ctx, &op);
     let name = op.clone();
     let label = move || match value() {
         Some(v) => format!("Coil {name}: {}", if v { "ON" } else { "OFF" }),
@@ -257,8 +264,8 @@ fn block(ctx: RungCtx, geo: &RungGeometry, (row, col): (usize, usize), b: &Block
             <title>{title.clone()}</title>
             {hline(x0, left, y, ctx.node_power(row, col))}
             {hline(right, x1, y, ctx.out_power(row, col))}
-            {wired}
             <rect class="ld-box" x=left y=top width=right - left height=bottom - top rx="3"/>
+            {wired}
             <text class="ld-block-type" x=cx y=top + 13.0>{clip(&b.type_name, BLOCK_CHARS)}</text>
             {b.instance.clone().map(|i| view! {
                 <text class="ld-operand" x=cx y=top - 5.0>{clip(&i, BLOCK_CHARS)}</text>

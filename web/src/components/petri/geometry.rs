@@ -136,7 +136,7 @@ pub fn view_box(points: &[Point], extra: &[(f64, f64, f64, f64)]) -> (f64, f64, 
     let mut x1 = f64::NEG_INFINITY;
     let mut y1 = f64::NEG_INFINITY;
     for p in points {
-        x0 = x0.min(p.x - PLACE_R - 10.0);
+        x0 = x0.min(p.x - PLACE_R - 32.0);
         y0 = y0.min(p.y - PLACE_R - 22.0);
         // Names and guards are written right of transitions.
         x1 = x1.max(p.x + PLACE_R + 120.0);
