@@ -10,6 +10,7 @@
 #![deny(clippy::unwrap_used)]
 
 pub mod bench;
+pub mod build;
 pub mod compile;
 pub mod diagnostics;
 pub mod export;

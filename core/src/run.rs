@@ -5,10 +5,10 @@
 use serde::Serialize;
 use serde_json::Value as Json;
 
+use crate::build::{build_project, ProjectDiagnostic, Site};
 use crate::diagnostics::{Code, Diagnostic, LineIndex, Severity};
 use crate::semantic;
 use crate::sim::{ScanOutcome, SimError, Simulator};
-use crate::syntax::PouKind;
 
 /// What to run and how.
 #[derive(Debug, Clone)]
@@ -112,19 +112,10 @@ fn option_error(code: Code, message: String) -> DiagnosticReport {
     }
 }
 
-/// Whether `name` is a hidden variable that a front-end generated (ladder power flow and
-/// edge memories, Petri-net scan copies, SFC bookkeeping): kept out of reports and of the
-/// variable table, but readable by name for the views that need them.
-pub fn is_generated_variable(name: &str) -> bool {
-    crate::ladder::is_hidden_name(name)
-        || crate::petri::is_hidden_name(name)
-        || crate::sfc::is_hidden_name(name)
-}
-
 /// The program instance's variables as JSON, without the generated ones.
 fn visible_vars(sim: &Simulator) -> serde_json::Map<String, Json> {
     let mut vars = sim.vars_json();
-    vars.retain(|k, _| !is_generated_variable(k));
+    vars.retain(|k, _| !crate::build::is_hidden_variable(k));
     vars
 }
 
@@ -132,33 +123,35 @@ fn visible_vars(sim: &Simulator) -> serde_json::Map<String, Json> {
 pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
     let index = LineIndex::new(source);
     let analysis = semantic::analyze(source);
+    let diagnostics = analysis.diagnostics.iter().map(|d| diagnostic_report(&index, d)).collect();
+    run_checked(analysis.program, options, diagnostics, |info| {
+        let loc = index.location(info.span.start);
+        FaultReport { message: info.fault.to_string(), line: loc.line, column: loc.column }
+    })
+}
+
+/// Runs a checked program (`None`: it did not check, and `diagnostics` say why) as `plc run`
+/// does; `fault_report` locates a runtime fault.
+fn run_checked(
+    program: Option<semantic::Program>,
+    options: &RunOptions,
+    diagnostics: Vec<DiagnosticReport>,
+    fault_report: impl FnOnce(&crate::sim::FaultInfo) -> FaultReport,
+) -> RunReport {
     let mut report = RunReport {
         status: RunStatus::Error,
         cycles: 0,
         vars: serde_json::Map::new(),
         fault: None,
-        diagnostics: analysis.diagnostics.iter().map(|d| diagnostic_report(&index, d)).collect(),
+        diagnostics,
     };
-    let Some(program) = analysis.program else { return report };
-    let main = match &options.program {
-        Some(name) => {
-            match program.find_pou(name).filter(|&p| program.pou(p).kind == PouKind::Program) {
-                Some(p) => p,
-                None => {
-                    let msg = format!("there is no PROGRAM `{name}` in the source");
-                    report.diagnostics.push(option_error(Code::UnknownProgram, msg));
-                    return report;
-                }
-            }
+    let Some(program) = program else { return report };
+    let main = match crate::build::find_program(&program, options.program.as_deref()) {
+        Ok(p) => p,
+        Err((code, message)) => {
+            report.diagnostics.push(option_error(code, message));
+            return report;
         }
-        None => match program.programs().find(|&p| !program.pou(p).library) {
-            Some(p) => p,
-            None => {
-                let msg = "the source holds no PROGRAM to run".to_string();
-                report.diagnostics.push(option_error(Code::NoProgram, msg));
-                return report;
-            }
-        },
     };
     let mut sim = match Simulator::new(program, main) {
         Ok(sim) => sim,
@@ -192,37 +185,32 @@ pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
     report.vars = visible_vars(&sim);
     match outcome {
         ScanOutcome::Fault(info) => {
-            let loc = index.location(info.span.start);
             report.status = RunStatus::Fault;
-            report.fault = Some(FaultReport {
-                message: info.fault.to_string(),
-                line: loc.line,
-                column: loc.column,
-            });
+            report.fault = Some(fault_report(&info));
         }
         ScanOutcome::Completed | ScanOutcome::Breakpoint(_) => report.status = RunStatus::Ok,
     }
     report
 }
 
-fn petri_report(pou: &str, d: &crate::petri::PetriDiagnostic) -> DiagnosticReport {
-    let place = crate::petri::describe(pou, &d.element, d.at.as_ref());
-    DiagnosticReport {
-        severity: d.severity,
-        code: d.code.as_str().to_string(),
-        message: format!("{place}: {}", d.message),
-        line: 0,
-        column: 0,
+/// A message about `site` as reports give it: ST problems keep their line and column,
+/// ladder and Petri net problems get line 0 and their site in front of the message.
+fn located(site: &Site, message: &str) -> (String, u32, u32) {
+    match (site, site.describe()) {
+        (Site::St { line, column, .. }, _) => (message.to_string(), *line, *column),
+        (_, Some(place)) => (format!("{place}: {message}"), 0, 0),
+        (_, None) => (message.to_string(), 0, 0),
     }
 }
 
-fn ladder_report(pou: &str, d: &crate::ladder::LadderDiagnostic) -> DiagnosticReport {
+fn project_report(d: &ProjectDiagnostic) -> DiagnosticReport {
+    let (message, line, column) = located(&d.site, &d.message);
     DiagnosticReport {
         severity: d.severity,
         code: d.code.as_str().to_string(),
-        message: format!("POU {pou}, {d}"),
-        line: 0,
-        column: 0,
+        message,
+        line,
+        column,
     }
 }
 
@@ -232,53 +220,13 @@ fn ladder_report(pou: &str, d: &crate::ladder::LadderDiagnostic) -> DiagnosticRe
 /// the hidden variables of the ladder lowering and the Petri net code are left out of
 /// `vars`.
 pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> RunReport {
-    let petri = crate::petri::project_diagnostics(project);
-    if petri.iter().any(|(_, d)| d.is_error()) {
-        return RunReport {
-            status: RunStatus::Error,
-            cycles: 0,
-            vars: serde_json::Map::new(),
-            fault: None,
-            diagnostics: petri.iter().map(|(p, d)| petri_report(p, d)).collect(),
-        };
-    }
-    let src = match crate::ladder::project_source(project) {
-        Ok(src) => src,
-        Err(diags) => {
-            return RunReport {
-                status: RunStatus::Error,
-                cycles: 0,
-                vars: serde_json::Map::new(),
-                fault: None,
-                diagnostics: diags.iter().map(|(p, d)| ladder_report(p, d)).collect(),
-            }
-        }
-    };
-    let mut report = run_source(&src.text, options);
-    for d in &mut report.diagnostics {
-        if d.line > 0 {
-            let (line, message) = src.map.locate_message_at(d.line, d.column, &d.message);
-            d.message = message;
-            if line.is_none() {
-                d.line = 0;
-                d.column = 0;
-            }
-        }
-    }
-    if let Some(f) = &mut report.fault {
-        let (line, message) = src.map.locate_message_at(f.line, f.column, &f.message);
-        f.message = message;
-        if line.is_none() {
-            f.line = 0;
-            f.column = 0;
-        }
-    }
-    let mut warnings: Vec<DiagnosticReport> =
-        src.warnings.iter().map(|(p, d)| ladder_report(p, d)).collect();
-    warnings.extend(petri.iter().map(|(p, d)| petri_report(p, d)));
-    report.diagnostics.splice(0..0, warnings);
-    report.vars.retain(|k, _| !is_generated_variable(k));
-    report
+    let build = build_project(project);
+    let diagnostics = build.diagnostics.iter().map(project_report).collect();
+    let program = if build.has_errors() { None } else { build.program.clone() };
+    run_checked(program, options, diagnostics, |info| {
+        let (message, line, column) = located(&build.site_of(info.span), &info.fault.to_string());
+        FaultReport { message, line, column }
+    })
 }
 
 /// Compiles a project and powers a simulator on for PROGRAM `program` (or the first one),
@@ -287,20 +235,14 @@ pub fn project_simulator(
     project: &crate::project::Project,
     program: Option<&str>,
 ) -> Result<Simulator, Vec<DiagnosticReport>> {
-    let options =
-        RunOptions { program: program.map(str::to_string), cycles: 0, ..RunOptions::default() };
-    let report = run_project(project, &options);
-    if report.status == RunStatus::Error {
-        return Err(report.diagnostics);
+    let build = build_project(project);
+    if build.has_errors() {
+        return Err(build.diagnostics.iter().map(project_report).collect());
     }
-    let src = crate::ladder::project_source(project)
-        .map_err(|d| d.iter().map(|(p, d)| ladder_report(p, d)).collect::<Vec<_>>())?;
-    let analysis = semantic::analyze(&src.text);
-    let Some(prog) = analysis.program else { return Err(report.diagnostics) };
-    let main = match program {
-        Some(name) => prog.find_pou(name),
-        None => prog.programs().find(|&p| !prog.pou(p).library),
-    };
-    let Some(main) = main else { return Err(report.diagnostics) };
-    Simulator::new(prog, main).map_err(|e| vec![option_error(Code::ProgramTooLarge, e.to_string())])
+    build.simulator(program).map_err(|d| {
+        let mut reports: Vec<DiagnosticReport> =
+            build.diagnostics.iter().map(project_report).collect();
+        reports.push(option_error(d.code, d.message));
+        reports
+    })
 }

@@ -125,8 +125,8 @@ fn the_run_report_hides_the_generated_variables() {
     assert_eq!(report.vars["Filling"]["X"], serde_json::json!(true));
     let hidden: Vec<&String> = report.vars.keys().filter(|k| k.starts_with("SFC__")).collect();
     assert!(hidden.is_empty(), "generated variables in the report: {hidden:?}");
-    assert!(plc_core::run::is_generated_variable("sfc__dt"));
-    assert!(plc_core::run::is_generated_variable("LdPow_0_0_1"));
-    assert!(plc_core::run::is_generated_variable("PnScan_pA"));
-    assert!(!plc_core::run::is_generated_variable("Filling"));
+    assert!(plc_core::build::is_hidden_variable("sfc__dt"));
+    assert!(plc_core::build::is_hidden_variable("LdPow_0_0_1"));
+    assert!(plc_core::build::is_hidden_variable("PnScan_pA"));
+    assert!(!plc_core::build::is_hidden_variable("Filling"));
 }

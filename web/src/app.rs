@@ -1,12 +1,14 @@
-//! The page layout: header with the project menu, the editor, and the simulation panels.
+//! The page layout: header with the project menu, the editor pane (POU navigator, the
+//! selected POU's view, the problem list) and the simulation panels.
 
 use leptos::prelude::*;
 
 use crate::components::{
-    controls::Controls, editor::Editor, header::Header, io::IoPanel, timeline::Timeline,
+    controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, timeline::Timeline,
     variables::Variables,
 };
 use crate::state::AppState;
+use plc_core::build::Site;
 
 /// The whole app.
 #[component]
@@ -18,7 +20,7 @@ pub fn App() -> impl IntoView {
         <Banner/>
         <main class="workspace">
             <section class="editor-pane" aria-label="Program">
-                <Editor/>
+                <PouPane/>
             </section>
             <section class="sim-pane" aria-label="Simulation">
                 <Controls/>
@@ -37,14 +39,18 @@ fn Banner() -> impl IntoView {
     move || {
         state.notice.get().map(|n| {
             let class = if n.error { "banner banner-error" } else { "banner banner-info" };
-            let line = n.line;
+            let site = n.site.clone().filter(|s| *s != Site::Project);
             view! {
                 <div class=class role="alert">
                     <span>{n.text.clone()}</span>
-                    {line.map(|l| view! {
-                        <button class="link" on:click=move |_| state.jump_to.set(Some((l, 1)))>
-                            {format!("Go to line {l}")}
-                        </button>
+                    {site.map(|site| {
+                        let label = match &site {
+                            Site::St { line, .. } => format!("Go to line {line}"),
+                            _ => "Show".to_string(),
+                        };
+                        view! {
+                            <button class="link" on:click=move |_| state.reveal(&site)>{label}</button>
+                        }
                     })}
                     <button class="close" aria-label="Dismiss" on:click=move |_| state.notice.set(None)>"×"</button>
                 </div>

@@ -2,6 +2,7 @@
 
 mod app;
 mod components;
+mod examples;
 mod state;
 mod storage;
 

@@ -102,22 +102,19 @@ enum Input {
     Project(Project),
 }
 
-/// Reads FILE as ST text, a project file (JSON) or a PLCopen XML file.
+/// Reads FILE as ST text, a project file (JSON), a PLCopen XML file or a PNML net (import
+/// warnings go to stderr).
 fn load_input(path: &Path) -> Result<Input, String> {
     let text = read_source(path)?;
-    let trimmed = text.trim_start();
-    if trimmed.starts_with('{') {
-        return Project::from_file(&text)
-            .map(Input::Project)
-            .map_err(|e| format!("plc: {}: {e}", path.display()));
+    if plc_core::project::file_kind(&text) == plc_core::project::FileKind::St {
+        return Ok(Input::Source(text));
     }
-    if plc_core::petri::pnml::is_pnml(&text) {
-        return petri::project_from_pnml(path, &text).map(Input::Project);
+    let opened = plc_core::project::open_text("project", &text)
+        .map_err(|e| format!("plc: {}: {e}", path.display()))?;
+    for w in &opened.warnings {
+        eprintln!("plc: {}: warning: {w}", path.display());
     }
-    if trimmed.starts_with("<?xml") || trimmed.starts_with("<project") {
-        return import_xml(path, &text).map(Input::Project);
-    }
-    Ok(Input::Source(text))
+    Ok(Input::Project(opened.project))
 }
 
 /// Loads a project file (JSON) or a PLCopen XML file as a project.
@@ -346,16 +343,6 @@ fn main() -> ExitCode {
         Command::Import { file } => import(&file),
         Command::Export { plcopen: _, project } => export(&project),
     }
-}
-
-/// Imports a PLCopen XML file as a project (warnings go to stderr).
-fn import_xml(path: &Path, text: &str) -> Result<Project, String> {
-    let import =
-        plc_core::plcopen::import(text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
-    for w in &import.warnings {
-        eprintln!("plc: {}: warning: {w}", path.display());
-    }
-    Ok(import.project)
 }
 
 /// `plc import FILE.xml`: prints the project file converted from PLCopen XML.

@@ -5,9 +5,11 @@
 //! in-memory implementation for tests, as Ruffle's `StorageBackend` does.
 
 mod codec;
+mod open;
 mod store;
 
 pub use codec::{decode_share, encode_share, ShareError, SHARE_PREFIX};
+pub use open::{file_kind, open_text, FileKind, OpenError, Opened};
 pub use store::{MemoryBackend, ProjectStore, ProjectSummary, StorageBackend, StoreError};
 
 use serde::{Deserialize, Serialize};
@@ -46,11 +48,14 @@ pub struct Settings {
     pub traced: Vec<String>,
     /// Breakpoint conditions.
     pub breakpoints: Vec<String>,
+    /// The PROGRAM the web app runs when the project has several (`None`: the first one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub program: Option<String>,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { cycle_ms: 10, traced: Vec::new(), breakpoints: Vec::new() }
+        Settings { cycle_ms: 10, traced: Vec::new(), breakpoints: Vec::new(), program: None }
     }
 }
 

@@ -70,3 +70,55 @@ fn adding_never_overwrites_and_a_full_quota_loses_nothing() {
     assert_eq!(store.save(&a, &big, 6), Err(StoreError::QuotaExceeded));
     assert_eq!(store.load(&a).unwrap().name, "A", "the old version is still there");
 }
+
+#[test]
+fn the_chosen_program_is_kept_and_old_settings_still_load() {
+    let old = r#"{"schema":1,"name":"p","source":"","settings":{"cycle_ms":20,"traced":[],"breakpoints":[]}}"#;
+    let p = Project::from_file(old).unwrap();
+    assert_eq!((p.settings.cycle_ms, p.settings.program.as_deref()), (20, None));
+    assert!(!p.to_file().contains("\"program\""), "no field written while unset");
+    let mut chosen = p.clone();
+    chosen.settings.program = Some("PartCounter".into());
+    let back = Project::from_file(&chosen.to_file()).unwrap();
+    assert_eq!(back.settings.program.as_deref(), Some("PartCounter"));
+}
+
+#[test]
+fn any_file_opens_as_the_kind_it_is() {
+    let ladder = include_str!("../../../examples/ladder-five-rungs.plcproj.json");
+    let opened = open_text("x", ladder).unwrap();
+    assert_eq!(opened.kind, FileKind::Project);
+    assert_eq!(opened.project.ladder.len(), 5);
+
+    let xml = include_str!("../../../examples/ladder-five-rungs.xml");
+    let opened = open_text("x", xml).unwrap();
+    assert_eq!(opened.kind, FileKind::Plcopen);
+    let names: Vec<&str> = opened.project.ladder.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["Latch", "DelayedLamp", "PartCounter", "LevelCopy", "ThreeWay"]);
+
+    let net =
+        Project::from_file(include_str!("../../../examples/weighing-sequential.plcproj.json"))
+            .unwrap()
+            .petri
+            .remove(0);
+    let pnml = crate::petri::pnml::export(&net);
+    let opened = open_text("x", &pnml).unwrap();
+    assert_eq!(opened.kind, FileKind::Pnml);
+    assert_eq!((opened.project.name.as_str(), opened.project.source.as_str()), ("Weighing", ""));
+    assert_eq!(opened.project.petri, vec![net]);
+
+    let opened = open_text("Mine", "\u{feff}PROGRAM P END_PROGRAM").unwrap();
+    assert_eq!((opened.kind, opened.project.name.as_str()), (FileKind::St, "Mine"));
+    assert!(opened.project.ladder.is_empty() && opened.project.petri.is_empty());
+}
+
+#[test]
+fn a_damaged_file_says_what_it_was_read_as() {
+    let e = open_text("x", "{ not json").unwrap_err();
+    assert!(matches!(e, OpenError::Project(ProjectError::NotJson(_))), "{e:?}");
+    let e = open_text("x", "<pnml><net></pnml>").unwrap_err();
+    assert!(matches!(e, OpenError::Pnml(_)), "{e:?}");
+    assert!(e.to_string().contains("E0516"), "{e}");
+    let e = open_text("x", "<?xml version=\"1.0\"?><other/>").unwrap_err();
+    assert!(matches!(e, OpenError::Plcopen(_)), "{e:?}");
+}

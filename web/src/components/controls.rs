@@ -1,4 +1,5 @@
-//! The simulation controls: run, pause, single scan, N scans, restarts, cycle time,
+//! The simulation controls: the PROGRAM to run (when the project has several), run,
+//! pause, single scan, N scans, restarts, cycle time,
 //! speed, and read-outs of the run state, scan count and virtual time.
 
 use leptos::prelude::*;
@@ -54,6 +55,26 @@ pub fn Controls() -> impl IntoView {
                     "Warm restart"
                 </button>
             </div>
+            {move || {
+                let names = state.programs.get();
+                (names.len() > 1).then(|| {
+                    let running = state.running.get().unwrap_or_default();
+                    view! {
+                        <div class="control-row">
+                            <label class="field">
+                                <span>"Program"</span>
+                                <select aria-label="Program to run" title="The PROGRAM the simulator runs (kept in the project)"
+                                    on:change=move |ev| state.set_program(&event_target_value(&ev))>
+                                    {names.into_iter().map(|n| {
+                                        let selected = n.eq_ignore_ascii_case(&running);
+                                        view! { <option value=n.clone() selected=selected>{n.clone()}</option> }
+                                    }).collect_view()}
+                                </select>
+                            </label>
+                        </div>
+                    }
+                })
+            }}
             <div class="control-row">
                 <label class="field">
                     <span>"Scans per step"</span>

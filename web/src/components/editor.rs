@@ -1,6 +1,7 @@
 //! The Structured Text editor: a transparent `<textarea>` over a `<pre>` that shows the
 //! lexer's highlighting, diagnostic squiggles and the marked (fault) line, beside a
-//! line-number gutter; the problem list and a status line below.
+//! line-number gutter; a status line below. (The problem list of the whole project is its
+//! own panel, `problems.rs`.)
 //!
 //! The text area stays the only editable surface (so selection, IME, paste and screen
 //! readers keep working); the layers behind it only mirror its text and scroll. Edits the
@@ -8,7 +9,7 @@
 //! the browser's own undo, so the editor keeps its own history of (text, selection)
 //! snapshots.
 
-mod text;
+pub(crate) mod text;
 
 use std::collections::BTreeMap;
 use std::time::Duration;
@@ -18,7 +19,7 @@ use leptos::html;
 use leptos::prelude::*;
 use web_sys::HtmlTextAreaElement;
 
-use crate::state::AppState;
+use crate::state::{AppState, PouView};
 use text::{byte_to_utf16, line_col, offset_of, utf16_to_byte, Edit, LineInfo, Mark};
 
 /// Row height of the editor in pixels (must match `--ed-line` in editor.css).
@@ -338,9 +339,10 @@ pub fn Editor() -> impl IntoView {
         state.project_id.track();
         ed.history.set(History::default());
     });
-    // Jump requests (the fault banner's "Go to line").
+    // Jump requests (the fault banner's "Go to line", a clicked problem), once the editor
+    // is mounted and shown.
     Effect::new(move |_| {
-        let mounted = ed.ta.get().is_some();
+        let mounted = ed.ta.get().is_some() && state.view.get() == PouView::St;
         if let Some((line, column)) = state.jump_to.get() {
             if mounted {
                 ed.jump(line, column);
@@ -354,7 +356,10 @@ pub fn Editor() -> impl IntoView {
     let highlighted = Memo::new(move |_| {
         let marks: Vec<Mark> = state.diagnostics.with(|ds| {
             ds.iter()
-                .map(|d| Mark { start: d.start as usize, end: d.end as usize, error: d.error })
+                .filter_map(|d| {
+                    let (_, _, start, end) = d.st()?;
+                    Some(Mark { start: start as usize, end: end as usize, error: d.error })
+                })
                 .collect()
         });
         state.project.with(|p| text::highlight_html(&p.source, &marks))
@@ -364,7 +369,8 @@ pub fn Editor() -> impl IntoView {
         let mut info: BTreeMap<usize, LineInfo> = BTreeMap::new();
         state.diagnostics.with(|ds| {
             for d in ds {
-                let li = info.entry(d.line as usize).or_default();
+                let Some((line, ..)) = d.st() else { continue };
+                let li = info.entry(line as usize).or_default();
                 li.diag = Some(li.diag.unwrap_or(false) || d.error);
                 li.messages.push(format!("{}  {}", d.code, d.message));
             }
@@ -390,40 +396,6 @@ pub fn Editor() -> impl IntoView {
                 view! { <div class="ed-active" style=format!("top: {top}px")></div> }
             })
             .collect_view()
-    };
-
-    let problems = move || {
-        let ds = state.diagnostics.get();
-        if ds.is_empty() {
-            return view! { <p class="ed-ok">"No problems found."</p> }.into_any();
-        }
-        view! {
-            <ul class="ed-problems" aria-label="Problems">
-                {ds.into_iter().map(|d| {
-                    let (line, column) = (d.line, d.column);
-                    let class = if d.error { "ed-problem ed-problem-err" } else { "ed-problem ed-problem-warn" };
-                    let label = format!("{}:{}  {}  {}", d.line, d.column, d.code, d.message);
-                    view! {
-                        <li>
-                            <button class=class title=if d.error { "Error" } else { "Warning" }
-                                on:click=move |_| ed.jump(line, column)>
-                                {label}
-                            </button>
-                        </li>
-                    }
-                }).collect_view()}
-            </ul>
-        }
-        .into_any()
-    };
-    let summary = move || {
-        state.diagnostics.with(|ds| {
-            let errors = ds.iter().filter(|d| d.error).count();
-            let warnings = ds.len() - errors;
-            let plural =
-                |n: usize, w: &str| if n == 1 { format!("1 {w}") } else { format!("{n} {w}s") };
-            format!("{}, {}", plural(errors, "error"), plural(warnings, "warning"))
-        })
     };
 
     view! {
@@ -465,9 +437,7 @@ pub fn Editor() -> impl IntoView {
             </div>
             <div class="ed-status">
                 <span>{move || { let (l, c) = ed.cursor.get(); format!("Ln {l}, Col {c}") }}</span>
-                <span class="ed-summary">{summary}</span>
             </div>
-            {problems}
         </div>
     }
 }

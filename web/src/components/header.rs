@@ -1,13 +1,14 @@
 //! The page header: the app title, the open project's name, and the project menu (open,
-//! new, rename, duplicate, delete, export, import, share).
+//! new, open an example, rename, duplicate, delete, export, import, share).
 
 use leptos::ev;
 use leptos::html;
 use leptos::prelude::*;
-use plc_core::project::Project;
+use plc_core::project::{open_text, FileKind, Project};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
+use crate::examples;
 use crate::state::AppState;
 
 /// The first free "Untitled N" name.
@@ -54,7 +55,8 @@ fn download(name: &str, text: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// Reads the chosen file and imports it as a new project.
+/// Reads the chosen file (a project file, PLCopen XML, PNML or ST) and imports it as a new
+/// project.
 async fn import_file(state: AppState, file: web_sys::File) {
     let name = file.name();
     let text = match JsFuture::from(file.text()).await {
@@ -64,11 +66,22 @@ async fn import_file(state: AppState, file: web_sys::File) {
             return;
         }
     };
-    match Project::from_file(&text) {
-        Ok(project) => {
-            let pname = project.name.clone();
-            state.add_and_open(project);
-            state.info(format!("Imported “{pname}” from {name}."));
+    let stem = name.split('.').next().filter(|s| !s.is_empty()).unwrap_or("Imported");
+    match open_text(stem, &text) {
+        Ok(opened) => {
+            let pname = opened.project.name.clone();
+            state.add_and_open(opened.project);
+            let kind = match opened.kind {
+                FileKind::Project => "the project file",
+                FileKind::Plcopen => "PLCopen XML",
+                FileKind::Pnml => "PNML",
+                FileKind::St => "Structured Text",
+            };
+            let mut text = format!("Imported “{pname}” from {name} ({kind}).");
+            if !opened.warnings.is_empty() {
+                text.push_str(&format!(" Notes: {}", opened.warnings.join("; ")));
+            }
+            state.info(text);
         }
         Err(e) => state.error(format!("Could not import “{name}”: {e}. Nothing was changed.")),
     }
@@ -203,13 +216,39 @@ pub fn Header() -> impl IntoView {
                 </label>
                 <button on:click=new_project>"New project"</button>
                 <button on:click=move |_| renaming.set(true) disabled=move || renaming.get()>"Rename"</button>
+                <label class="project-select">
+                    <span class="visually-hidden">"Open example"</span>
+                    <select aria-label="Open example" title="Open a shipped example as a new project"
+                        on:change=move |ev: ev::Event| {
+                            let file = event_target_value(&ev);
+                            if let Some(sel) = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlSelectElement>().ok()) {
+                                sel.set_value("");
+                            }
+                            if file.is_empty() {
+                                return;
+                            }
+                            match examples::open(&file) {
+                                Ok(p) => {
+                                    let title = p.name.clone();
+                                    state.add_and_open(p);
+                                    state.info(format!("Opened the example “{title}” as a new project."));
+                                }
+                                Err(e) => state.error(format!("Could not open the example: {e}")),
+                            }
+                        }>
+                        <option value="" selected=true>"Open example…"</option>
+                        {examples::examples().into_iter().map(|e| view! {
+                            <option value=e.file>{e.title}</option>
+                        }).collect_view()}
+                    </select>
+                </label>
                 <button on:click=move |_| state.duplicate()>"Duplicate"</button>
                 <button on:click=delete>"Delete"</button>
                 <button on:click=export title="Download the project file">"Export"</button>
                 <button on:click=move |_| { if let Some(i) = file_input.get_untracked() { i.click(); } }
-                    title="Open a project file as a new project">"Import"</button>
+                    title="Open a project file, PLCopen XML, PNML or ST file as a new project">"Import"</button>
                 <input type="file" class="visually-hidden" tabindex="-1" node_ref=file_input
-                    accept=".json,.plcproj.json,application/json" aria-label="Import project file"
+                    accept=".json,.plcproj.json,.xml,.pnml,.st,application/json,text/xml" aria-label="Import project file"
                     on:change=on_file/>
                 <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
             </nav>

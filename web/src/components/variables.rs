@@ -4,6 +4,7 @@
 use std::collections::HashSet;
 
 use leptos::prelude::*;
+use plc_core::build::is_hidden_variable;
 use plc_core::compile::Executable;
 use plc_core::export::{children, is_expandable, snapshot, value_text, variables_csv};
 use plc_core::semantic::Type;
@@ -59,7 +60,10 @@ fn rows(exe: &Executable, open: &HashSet<String>) -> Vec<Row> {
     let mut seen = HashSet::new();
     for e in exe.main_vars() {
         let v = &e.var;
-        if v.section == VarSection::InOut || !seen.insert(v.name.to_ascii_lowercase()) {
+        if v.section == VarSection::InOut
+            || is_hidden_variable(&v.name)
+            || !seen.insert(v.name.to_ascii_lowercase())
+        {
             continue;
         }
         let row = Row {

@@ -51,21 +51,14 @@ pub enum PetriCommand {
     },
 }
 
-/// A project holding the one net of a PNML file.
-pub fn project_from_pnml(path: &Path, text: &str) -> Result<Project, String> {
-    let pou = pnml::import(text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
-    let mut project = Project::new(pou.name.clone());
-    project.source.clear();
-    project.petri.push(pou);
-    Ok(project)
-}
-
 fn load(path: &Path) -> Result<Project, String> {
     let bytes =
         std::fs::read(path).map_err(|e| format!("plc: cannot read {}: {e}", path.display()))?;
     let text = String::from_utf8_lossy(&bytes);
     if pnml::is_pnml(&text) {
-        return project_from_pnml(path, &text);
+        return plc_core::project::open_text("net", &text)
+            .map(|opened| opened.project)
+            .map_err(|e| format!("plc: {}: {e}", path.display()));
     }
     Project::from_file(&text).map_err(|e| format!("plc: {}: {e}", path.display()))
 }

@@ -67,6 +67,7 @@ fn candidates(state: AppState) -> Vec<String> {
             s.executable()
                 .main_vars()
                 .iter()
+                .filter(|e| !plc_core::build::is_hidden_variable(&e.var.name))
                 .filter(|e| match e.var.ty {
                     Type::Elem(el) => {
                         el.is_integral()

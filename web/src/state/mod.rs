@@ -1,38 +1,22 @@
 //! The app's shared state (provided as context) and the operations every panel uses:
-//! checking the source, the simulator and its run loop, projects and notices.
-//!
-//! The run loop is sliced per animation frame: each frame runs as many scans as the speed
-//! asks for (real time, ×10) or as fit in a small wall-time budget (as fast as possible),
-//! so the page stays responsive at any speed. The core keeps the virtual clock.
+//! projects and notices here, building the project in `check.rs`, the simulator's run loop
+//! in `run.rs`.
+
+mod check;
+mod run;
 
 use std::collections::BTreeMap;
 
 use leptos::prelude::*;
-use plc_core::diagnostics::{LineIndex, Severity};
+use plc_core::build::{ProjectBuild, Site};
+use plc_core::petri::PlaceMap;
 use plc_core::project::{decode_share, encode_share, Project, ProjectStore, ProjectSummary};
-use plc_core::semantic;
-use plc_core::sim::{BreakpointId, ScanOutcome, SimState, Simulator};
+use plc_core::sim::{BreakpointId, Simulator};
 
 use crate::storage::LocalStorage;
 
-/// One diagnostic, located for the editor.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DiagView {
-    /// Error or warning.
-    pub error: bool,
-    /// Stable code (`E0100`).
-    pub code: String,
-    /// The message.
-    pub message: String,
-    /// 1-based line.
-    pub line: u32,
-    /// 1-based column.
-    pub column: u32,
-    /// Byte span in the source.
-    pub start: u32,
-    /// End of the byte span.
-    pub end: u32,
-}
+pub use check::DiagView;
+pub use run::marking_of;
 
 /// How many samples the timeline keeps (the oldest are dropped).
 pub const TRACE_CAPACITY: usize = 20_000;
@@ -59,6 +43,17 @@ pub enum Speed {
     Max,
 }
 
+/// Which POU the editor pane shows.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum PouView {
+    /// The project's ST source in the text editor.
+    St,
+    /// A ladder POU, by name.
+    Ladder(String),
+    /// A Petri net POU, by name.
+    Petri(String),
+}
+
 /// A message for the user in the banner.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Notice {
@@ -66,8 +61,8 @@ pub struct Notice {
     pub error: bool,
     /// The text.
     pub text: String,
-    /// A source line the message is about (the banner links to it).
-    pub line: Option<u32>,
+    /// The place the message is about (the banner links to it).
+    pub site: Option<Site>,
 }
 
 /// The state shared by every component.
@@ -79,10 +74,17 @@ pub struct AppState {
     pub project_id: RwSignal<Option<String>>,
     /// Every stored project.
     pub projects: RwSignal<Vec<ProjectSummary>>,
-    /// The diagnostics of the last check.
+    /// The diagnostics of the last build.
     pub diagnostics: RwSignal<Vec<DiagView>>,
-    /// The simulator of the last program that checked clean.
+    /// The PROGRAMs of the last build that succeeded.
+    pub programs: RwSignal<Vec<String>>,
+    /// The PROGRAM the simulator runs.
+    pub running: RwSignal<Option<String>>,
+    /// The simulator of the last project that built clean.
     pub sim: StoredValue<Option<Simulator>>,
+    /// The build the simulator comes from (to map its code back to ST lines, ladder cells
+    /// and Petri net elements).
+    pub sim_build: StoredValue<Option<ProjectBuild>>,
     /// Bumped whenever the simulator's state changes; panels re-read on it.
     pub sim_version: RwSignal<u64>,
     /// Scanning or not.
@@ -93,25 +95,33 @@ pub struct AppState {
     pub held: RwSignal<BTreeMap<String, String>>,
     /// The banner message.
     pub notice: RwSignal<Option<Notice>>,
-    /// A request to move the editor's cursor to (line, column).
+    /// The POU shown in the editor pane.
+    pub view: RwSignal<PouView>,
+    /// A request to move the ST editor's cursor to (line, column).
     pub jump_to: RwSignal<Option<(u32, u32)>>,
-    /// The line of the active statement to mark in the editor (a fault, the last CASE branch).
+    /// A ladder cell or net element to point out in its view (a clicked problem).
+    pub focus: RwSignal<Option<Site>>,
+    /// The ST line of a runtime fault (marked in the editor).
     pub marked_line: RwSignal<Option<u32>>,
+    /// Where a runtime fault happened (marked in the ladder and Petri net views).
+    pub fault_site: RwSignal<Option<Site>>,
     /// The breakpoints (condition text, and its id when it compiled against the current
     /// program); the texts are kept in the project's settings.
     pub breakpoints: RwSignal<Vec<(String, Option<BreakpointId>)>>,
-    /// Lines of the active CASE branches of the last scan (marked in the editor).
+    /// ST lines of the active CASE branches of the last scan (marked in the editor).
     pub active_lines: RwSignal<Vec<u32>>,
+    /// Active CASE branches in generated Petri net code: (POU, 1-based line of its code).
+    pub active_generated: RwSignal<Vec<(String, u32)>>,
+    /// The place map of the running PROGRAM when it is a Petri net POU.
+    running_places: StoredValue<Option<PlaceMap>>,
+    /// The scan count before the last scan and the marking then (Petri net POUs).
+    pub marking_before_last: StoredValue<Option<(u64, Vec<u32>)>>,
     /// Virtual nanoseconds owed to the run loop but not yet scanned (less than one cycle).
     pending_ns: StoredValue<f64>,
 }
 
 fn now_ms() -> u64 {
     js_sys::Date::now() as u64
-}
-
-fn perf_now() -> f64 {
-    web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
 }
 
 impl AppState {
@@ -123,20 +133,28 @@ impl AppState {
             project_id: RwSignal::new(None),
             projects: RwSignal::new(Vec::new()),
             diagnostics: RwSignal::new(Vec::new()),
+            programs: RwSignal::new(Vec::new()),
+            running: RwSignal::new(None),
             sim: StoredValue::new(None),
+            sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),
             run_mode: RwSignal::new(RunMode::Stopped),
             speed: RwSignal::new(Speed::RealTime),
             held: RwSignal::new(BTreeMap::new()),
             notice: RwSignal::new(None),
+            view: RwSignal::new(PouView::St),
             jump_to: RwSignal::new(None),
+            focus: RwSignal::new(None),
             marked_line: RwSignal::new(None),
+            fault_site: RwSignal::new(None),
             breakpoints: RwSignal::new(Vec::new()),
             active_lines: RwSignal::new(Vec::new()),
+            active_generated: RwSignal::new(Vec::new()),
+            running_places: StoredValue::new(None),
+            marking_before_last: StoredValue::new(None),
             pending_ns: StoredValue::new(0.0),
         };
         state.open_initial_project();
-        state.check_now();
         state
     }
 
@@ -146,12 +164,12 @@ impl AppState {
 
     /// Shows an error in the banner.
     pub fn error(&self, text: impl Into<String>) {
-        self.notice.set(Some(Notice { error: true, text: text.into(), line: None }));
+        self.notice.set(Some(Notice { error: true, text: text.into(), site: None }));
     }
 
     /// Shows information in the banner.
     pub fn info(&self, text: impl Into<String>) {
-        self.notice.set(Some(Notice { error: false, text: text.into(), line: None }));
+        self.notice.set(Some(Notice { error: false, text: text.into(), site: None }));
     }
 
     fn refresh_list(&self) {
@@ -185,6 +203,21 @@ impl AppState {
         }
     }
 
+    /// Everything that belongs to the previous project is forgotten.
+    fn forget_run(&self) {
+        self.held.set(BTreeMap::new());
+        self.run_mode.set(RunMode::Stopped);
+        self.sim.set_value(None);
+        self.sim_build.set_value(None);
+        self.running_places.set_value(None);
+        self.running.set(None);
+        self.programs.set(Vec::new());
+        self.marked_line.set(None);
+        self.fault_site.set(None);
+        self.focus.set(None);
+        self.bump();
+    }
+
     /// Stores `project` as a new project and opens it.
     pub fn add_and_open(&self, project: Project) {
         let result = self.store().add(&project, now_ms());
@@ -194,8 +227,9 @@ impl AppState {
         }
         self.project.set(project);
         self.refresh_list();
-        self.held.set(BTreeMap::new());
+        self.forget_run();
         self.check_now();
+        self.show_main_view();
     }
 
     /// Opens a stored project.
@@ -204,9 +238,9 @@ impl AppState {
             Ok(project) => {
                 self.project.set(project);
                 self.project_id.set(Some(id.to_string()));
-                self.held.set(BTreeMap::new());
-                self.run_mode.set(RunMode::Stopped);
+                self.forget_run();
                 self.check_now();
+                self.show_main_view();
             }
             Err(e) => self.error(e.to_string()),
         }
@@ -270,71 +304,24 @@ impl AppState {
         self.project.update(|p| p.source = text);
     }
 
-    /// Checks the source; when it is clean, builds a fresh simulator (held inputs are
-    /// re-applied; a running PLC keeps running with the new program).
-    pub fn check_now(&self) {
-        let source = self.project.with_untracked(|p| p.source.clone());
-        let analysis = semantic::analyze(&source);
-        let index = LineIndex::new(&source);
-        let views = analysis
-            .diagnostics
-            .iter()
-            .map(|d| {
-                let loc = index.location(d.span.start);
-                DiagView {
-                    error: d.severity == Severity::Error,
-                    code: d.code.as_str().to_string(),
-                    message: d.message.clone(),
-                    line: loc.line,
-                    column: loc.column,
-                    start: d.span.start,
-                    end: d.span.end,
-                }
-            })
-            .collect();
-        self.diagnostics.set(views);
-        let Some(program) = analysis.program else { return };
-        let Some(main) = program.programs().find(|&p| !program.pou(p).library) else {
-            self.sim.set_value(None);
-            self.bump();
-            return;
-        };
-        match Simulator::new(program, main) {
-            Ok(mut sim) => {
-                let cycle = self.project.with_untracked(|p| p.settings.cycle_ms).max(1);
-                sim.set_cycle_ns(cycle as i64 * 1_000_000);
-                for (name, value) in self.held.get_untracked() {
-                    let _ = sim.hold(&name, &value);
-                }
-                self.restore_sim_settings(&mut sim);
-                self.sim.set_value(Some(sim));
-                self.marked_line.set(None);
+    /// Shows the place a diagnostic, fault or notice is about: the ST line in the editor,
+    /// the ladder cell or the net element in its view.
+    pub fn reveal(&self, site: &Site) {
+        match site {
+            Site::Project => {}
+            Site::St { line, column, .. } => {
+                self.view.set(PouView::St);
+                self.jump_to.set(Some((*line, *column)));
             }
-            Err(e) => self.error(e.to_string()),
+            Site::Ladder { pou, .. } => {
+                self.view.set(PouView::Ladder(pou.clone()));
+                self.focus.set(Some(site.clone()));
+            }
+            Site::Petri { pou, .. } => {
+                self.view.set(PouView::Petri(pou.clone()));
+                self.focus.set(Some(site.clone()));
+            }
         }
-        self.bump();
-    }
-
-    /// Re-adds the project's breakpoints and timeline variables to a fresh simulator
-    /// (conditions or paths that no longer fit the program are kept but inactive).
-    fn restore_sim_settings(&self, sim: &mut Simulator) {
-        let (conditions, traced) = self
-            .project
-            .with_untracked(|p| (p.settings.breakpoints.clone(), p.settings.traced.clone()));
-        let list = conditions
-            .into_iter()
-            .map(|c| {
-                let id = sim.add_breakpoint(&c).ok();
-                (c, id)
-            })
-            .collect();
-        self.breakpoints.set(list);
-        let paths: Vec<&str> = traced
-            .iter()
-            .map(String::as_str)
-            .filter(|p| sim.executable().locate(p).is_some())
-            .collect();
-        let _ = sim.set_trace(&paths, TRACE_CAPACITY);
     }
 
     /// Adds a breakpoint on an ST condition (kept in the project).
@@ -378,34 +365,7 @@ impl AppState {
     pub fn set_traced(&self, paths: Vec<String>) {
         self.project.update(|p| p.settings.traced = paths.clone());
         self.save();
-        self.with_sim_mut(|s| {
-            let valid: Vec<&str> = paths
-                .iter()
-                .map(String::as_str)
-                .filter(|p| s.executable().locate(p).is_some())
-                .collect();
-            let _ = s.set_trace(&valid, TRACE_CAPACITY);
-        });
-    }
-
-    /// Tells the panels the simulator changed.
-    pub fn bump(&self) {
-        self.sim_version.update(|v| *v += 1);
-        let spans = self
-            .sim
-            .with_value(|s| s.as_ref().map(Simulator::active_case_branches))
-            .unwrap_or_default();
-        let lines: Vec<u32> = if spans.is_empty() {
-            Vec::new()
-        } else {
-            self.project.with_untracked(|p| {
-                let index = LineIndex::new(&p.source);
-                spans.iter().map(|s| index.location(s.start).line).collect()
-            })
-        };
-        if self.active_lines.with_untracked(|l| *l != lines) {
-            self.active_lines.set(lines);
-        }
+        self.with_sim_mut(|s| check::trace_paths(s, &paths));
     }
 
     /// Reads from the simulator (tracks `sim_version`, so views update).
@@ -431,149 +391,12 @@ impl AppState {
         }
     }
 
-    fn after_outcome(&self, outcome: ScanOutcome) {
-        match outcome {
-            ScanOutcome::Completed => {}
-            ScanOutcome::Breakpoint(id) => {
-                self.run_mode.set(RunMode::Paused);
-                let cond =
-                    self.with_sim(|s| s.breakpoint_condition(id).map(str::to_string)).flatten();
-                self.info(format!("Paused at breakpoint: {}", cond.unwrap_or_default()));
-            }
-            ScanOutcome::Fault(info) => {
-                self.run_mode.set(RunMode::Stopped);
-                let source = self.project.with_untracked(|p| p.source.clone());
-                let loc = LineIndex::new(&source).location(info.span.start);
-                self.marked_line.set(Some(loc.line));
-                self.notice.set(Some(Notice {
-                    error: true,
-                    text: format!(
-                        "FAULT on scan {}: {} (line {})",
-                        info.scan, info.fault, loc.line
-                    ),
-                    line: Some(loc.line),
-                }));
-            }
-        }
-    }
-
-    /// Runs `n` scans now (Step, Step N).
-    pub fn step(&self, n: u64) {
-        if self.run_mode.get_untracked() == RunMode::Running {
-            self.run_mode.set(RunMode::Paused);
-        }
-        if let Some(outcome) = self.with_sim_mut(|s| s.run_scans(n)) {
-            if self.run_mode.get_untracked() == RunMode::Stopped
-                && !matches!(outcome, ScanOutcome::Fault(_))
-            {
-                self.run_mode.set(RunMode::Paused);
-            }
-            self.after_outcome(outcome);
-        }
-    }
-
-    /// Starts scanning every animation frame.
-    pub fn run(&self) {
-        if self.sim.with_value(|s| s.is_none()) {
-            self.error("The program has errors: fix them to run it.");
-            return;
-        }
-        let faulted = self.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);
-        if faulted {
-            self.error("The PLC is in FAULT: press Reset to restart it.");
-            return;
-        }
-        if self.run_mode.get_untracked() == RunMode::Running {
-            return;
-        }
-        self.run_mode.set(RunMode::Running);
-        let state = *self;
-        let start = perf_now();
-        request_animation_frame(move || state.frame(start));
-    }
-
-    /// Stops scanning (the state is kept).
-    pub fn pause(&self) {
-        if self.run_mode.get_untracked() == RunMode::Running {
-            self.run_mode.set(RunMode::Paused);
-        }
-    }
-
-    /// Cold restart.
-    pub fn reset(&self) {
-        self.run_mode.set(RunMode::Stopped);
-        self.with_sim_mut(Simulator::cold_restart);
-        self.marked_line.set(None);
-        self.notice.set(None);
-    }
-
-    /// Warm restart (RETAIN kept).
-    pub fn warm_restart(&self) {
-        self.run_mode.set(RunMode::Stopped);
-        self.with_sim_mut(Simulator::warm_restart);
-        self.marked_line.set(None);
-        self.notice.set(None);
-    }
-
     /// Sets the cycle time in milliseconds (kept in the project).
     pub fn set_cycle_ms(&self, ms: u64) {
         let ms = ms.clamp(1, 60_000);
         self.project.update(|p| p.settings.cycle_ms = ms);
         self.with_sim_mut(|s| s.set_cycle_ns(ms as i64 * 1_000_000));
         self.save();
-    }
-
-    /// One animation frame of the run loop.
-    fn frame(self, last: f64) {
-        if self.run_mode.try_get_untracked() != Some(RunMode::Running) {
-            return;
-        }
-        let now = perf_now();
-        let wall_ms = (now - last).clamp(0.0, 100.0);
-        let speed = self.speed.get_untracked();
-        let outcome = self.sim.try_update_value(|sim| {
-            let sim = sim.as_mut()?;
-            Some(match speed {
-                Speed::RealTime | Speed::Times10 => {
-                    let factor = if speed == Speed::Times10 { 10.0 } else { 1.0 };
-                    let owed = self.pending_ns.get_value() + wall_ms * factor * 1e6;
-                    let cycle = sim.cycle_ns().max(1) as f64;
-                    let scans = (owed / cycle).floor();
-                    self.pending_ns.set_value(owed - scans * cycle);
-                    let mut outcome = ScanOutcome::Completed;
-                    let mut left = scans as u64;
-                    // Never more than a frame's worth of work, even after a long pause.
-                    let budget_end = perf_now() + 12.0;
-                    while left > 0 && perf_now() < budget_end {
-                        let n = left.min(64);
-                        outcome = sim.run_scans(n);
-                        left -= n;
-                        if outcome != ScanOutcome::Completed {
-                            break;
-                        }
-                    }
-                    outcome
-                }
-                Speed::Max => {
-                    let budget_end = perf_now() + 12.0;
-                    let mut outcome = ScanOutcome::Completed;
-                    while perf_now() < budget_end {
-                        outcome = sim.run_scans(256);
-                        if outcome != ScanOutcome::Completed {
-                            break;
-                        }
-                    }
-                    outcome
-                }
-            })
-        });
-        self.bump();
-        if let Some(Some(outcome)) = outcome {
-            self.after_outcome(outcome);
-        }
-        if self.run_mode.get_untracked() == RunMode::Running {
-            request_animation_frame(move || self.frame(now));
-        }
     }
 }
 

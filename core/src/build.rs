@@ -1,0 +1,242 @@
+//! Building a whole project — its ST source, ladder POUs and Petri net POUs — into one
+//! checked program, with every diagnostic located where the user wrote the problem: an ST
+//! line and column, a ladder cell, or a Petri net element.
+//!
+//! This is the one pipeline behind `plc check`, `plc run` ([`crate::run::run_project`]),
+//! [`crate::run::project_simulator`] and the web app: Petri net errors stop the build first,
+//! then ladder errors (from [`crate::ladder::project_source`]), then the ST checker runs on
+//! the combined text. Nothing here runs a scan.
+
+use crate::diagnostics::{Code, LineIndex, Severity, Span};
+use crate::ladder::{Origin, ProjectSource};
+use crate::petri::{NetElement, TextPosition};
+use crate::project::Project;
+use crate::semantic::{self, PouId, Program};
+use crate::sim::Simulator;
+use crate::syntax::PouKind;
+
+/// Where a problem (or a runtime fault, or a running statement) is in a project.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Site {
+    /// The project as a whole (no place to show).
+    Project,
+    /// The project's ST source.
+    St {
+        /// 1-based line.
+        line: u32,
+        /// 1-based column (characters).
+        column: u32,
+        /// Byte span in [`Project::source`].
+        span: Span,
+    },
+    /// A ladder POU, and the 0-based `(rung, row, column)` of the cell when known.
+    Ladder {
+        /// The POU's name.
+        pou: String,
+        /// The cell.
+        cell: Option<(usize, usize, usize)>,
+    },
+    /// A Petri net POU, and the element (with the position inside its text) when known.
+    Petri {
+        /// The POU's name.
+        pou: String,
+        /// The place, transition, arc… the problem belongs to.
+        element: Option<NetElement>,
+        /// Where inside the element's guard or actions.
+        at: Option<TextPosition>,
+    },
+}
+
+impl Site {
+    /// The words a message gets in front when it is not about the ST source:
+    /// `POU Latch, rung 1, row 2, column 3` or `POU Weighing, transition T5 (guard line 1,
+    /// column 4)`; `None` for the ST source and the project as a whole.
+    pub fn describe(&self) -> Option<String> {
+        match self {
+            Site::Project | Site::St { .. } => None,
+            Site::Ladder { pou, cell: Some((r, row, c)) } => {
+                Some(format!("POU {pou}, rung {}, row {}, column {}", r + 1, row + 1, c + 1))
+            }
+            Site::Ladder { pou, cell: None } | Site::Petri { pou, element: None, .. } => {
+                Some(format!("POU {pou}"))
+            }
+            Site::Petri { pou, element: Some(e), at } => {
+                Some(crate::petri::describe(pou, e, at.as_ref()))
+            }
+        }
+    }
+
+    /// The POU a site belongs to (ladder and Petri net sites).
+    pub fn pou(&self) -> Option<&str> {
+        match self {
+            Site::Ladder { pou, .. } | Site::Petri { pou, .. } => Some(pou),
+            Site::Project | Site::St { .. } => None,
+        }
+    }
+}
+
+/// One problem of a project, located at its [`Site`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ProjectDiagnostic {
+    /// Error or warning.
+    pub severity: Severity,
+    /// The stable problem code.
+    pub code: Code,
+    /// The message, without its location.
+    pub message: String,
+    /// Where the problem is.
+    pub site: Site,
+}
+
+impl ProjectDiagnostic {
+    /// Whether this is an error.
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+
+    /// The message with the site in front when the site is not in the ST source, as
+    /// `plc check` prints it (`POU Latch, rung 1, row 1, column 2: …`).
+    pub fn located_message(&self) -> String {
+        match self.site.describe() {
+            Some(place) => format!("{place}: {}", self.message),
+            None => self.message.clone(),
+        }
+    }
+}
+
+/// The result of building a project: its diagnostics and, when it has no errors, the
+/// checked program.
+#[derive(Debug, Clone)]
+pub struct ProjectBuild {
+    /// Every diagnostic, errors and warnings: ladder warnings and Petri net diagnostics
+    /// first, then those of the ST checker.
+    pub diagnostics: Vec<ProjectDiagnostic>,
+    /// The combined source and where its lines come from (`None` when a ladder or Petri
+    /// net POU has errors, so the ST checker did not run).
+    pub source: Option<ProjectSource>,
+    /// The checked program (`None` when anything has errors).
+    pub program: Option<Program>,
+}
+
+/// Finds PROGRAM `name` (or, without a name, the first PROGRAM of the user) in a checked
+/// program; the error is the code and message `plc run` reports.
+pub fn find_program(program: &Program, name: Option<&str>) -> Result<PouId, (Code, String)> {
+    match name {
+        Some(name) => {
+            program.find_pou(name).filter(|&p| program.pou(p).kind == PouKind::Program).ok_or_else(
+                || (Code::UnknownProgram, format!("there is no PROGRAM `{name}` in the source")),
+            )
+        }
+        None => program
+            .programs()
+            .find(|&p| !program.pou(p).library)
+            .ok_or_else(|| (Code::NoProgram, "the source holds no PROGRAM to run".to_string())),
+    }
+}
+
+impl ProjectBuild {
+    /// Whether any diagnostic is an error.
+    pub fn has_errors(&self) -> bool {
+        self.diagnostics.iter().any(ProjectDiagnostic::is_error)
+    }
+
+    /// The names of the user's PROGRAMs, in source order (ST first, then ladder, then
+    /// Petri net POUs); empty when the project did not build.
+    pub fn program_names(&self) -> Vec<String> {
+        let Some(program) = &self.program else { return Vec::new() };
+        program
+            .programs()
+            .filter(|&p| !program.pou(p).library)
+            .map(|p| program.pou(p).name.clone())
+            .collect()
+    }
+
+    /// Powers a simulator on for PROGRAM `name` (or the first one).
+    pub fn simulator(&self, name: Option<&str>) -> Result<Simulator, ProjectDiagnostic> {
+        let error = |code, message| ProjectDiagnostic {
+            severity: Severity::Error,
+            code,
+            message,
+            site: Site::Project,
+        };
+        let Some(program) = &self.program else {
+            return Err(error(Code::NoProgram, "the project has errors".to_string()));
+        };
+        let main = find_program(program, name).map_err(|(code, message)| error(code, message))?;
+        Simulator::new(program.clone(), main)
+            .map_err(|e| error(Code::ProgramTooLarge, e.to_string()))
+    }
+
+    /// The site of a byte span of the combined source (a fault, a running statement).
+    pub fn site_of(&self, span: Span) -> Site {
+        match &self.source {
+            Some(source) => site_in(source, &LineIndex::new(&source.text), span),
+            None => Site::Project,
+        }
+    }
+}
+
+/// The site of `span` in a combined project source indexed by `index`.
+fn site_in(source: &ProjectSource, index: &LineIndex<'_>, span: Span) -> Site {
+    let loc = index.location(span.start);
+    match source.map.origin_at(loc.line, loc.column) {
+        Origin::St(line) => Site::St { line, column: loc.column, span },
+        Origin::Ladder(pou, cell) => Site::Ladder { pou, cell },
+        Origin::Petri(pou, None) => Site::Petri { pou, element: None, at: None },
+        Origin::Petri(pou, Some((element, at))) => Site::Petri { pou, element: Some(element), at },
+    }
+}
+
+/// Builds a project as `plc check` and `plc run` do (see the module comment).
+pub fn build_project(project: &Project) -> ProjectBuild {
+    let petri = crate::petri::project_diagnostics(project);
+    let petri_diags: Vec<ProjectDiagnostic> = petri
+        .into_iter()
+        .map(|(pou, d)| ProjectDiagnostic {
+            severity: d.severity,
+            code: d.code,
+            message: d.message,
+            site: Site::Petri { pou, element: Some(d.element), at: d.at },
+        })
+        .collect();
+    if petri_diags.iter().any(ProjectDiagnostic::is_error) {
+        return ProjectBuild { diagnostics: petri_diags, source: None, program: None };
+    }
+    let ladder_diag = |(pou, d): (String, crate::ladder::LadderDiagnostic)| ProjectDiagnostic {
+        severity: d.severity,
+        code: d.code,
+        message: d.message,
+        site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
+    };
+    let source = match crate::ladder::project_source(project) {
+        Ok(source) => source,
+        Err(diags) => {
+            let diagnostics = diags.into_iter().map(ladder_diag).collect();
+            return ProjectBuild { diagnostics, source: None, program: None };
+        }
+    };
+    let mut diagnostics: Vec<ProjectDiagnostic> =
+        source.warnings.iter().cloned().map(ladder_diag).collect();
+    diagnostics.extend(petri_diags);
+    let analysis = semantic::analyze(&source.text);
+    let index = LineIndex::new(&source.text);
+    diagnostics.extend(analysis.diagnostics.into_iter().map(|d| ProjectDiagnostic {
+        severity: d.severity,
+        code: d.code,
+        message: d.message,
+        site: site_in(&source, &index, d.span),
+    }));
+    ProjectBuild { diagnostics, source: Some(source), program: analysis.program }
+}
+
+/// Whether `name` is a hidden variable that a front-end generated (ladder power flow and
+/// edge memories `LdPow_…`, Petri-net scan copies `PnScan_…`, SFC bookkeeping `SFC__…`):
+/// reports and variable lists leave these out, the views still read them by name.
+pub fn is_hidden_variable(name: &str) -> bool {
+    crate::ladder::is_hidden_name(name)
+        || crate::petri::is_hidden_name(name)
+        || crate::sfc::is_hidden_name(name)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,145 @@
+#![allow(clippy::unwrap_used)]
+
+use super::*;
+use crate::ladder::{Cell, CoilKind, ContactKind, Element, LadderPou, LadderPouKind, Rung};
+use crate::petri::{Arc, Net, PetriPou, Place, Transition};
+use crate::sim::ScanOutcome;
+
+/// `Start` (NO contact) → coil `Motor` in one rung of PROGRAM `name`.
+fn ladder(name: &str, coil_operand: &str, decls: &str) -> LadderPou {
+    let cell = |element| Cell { element, link_down: false };
+    LadderPou {
+        name: name.into(),
+        kind: LadderPouKind::Program,
+        declarations: decls.into(),
+        rungs: vec![Rung {
+            comment: "latch".into(),
+            label: None,
+            cells: vec![vec![
+                cell(Element::Contact { kind: ContactKind::NormallyOpen, operand: "Start".into() }),
+                cell(Element::Coil { kind: CoilKind::Normal, operand: coil_operand.into() }),
+            ]],
+        }],
+    }
+}
+
+const DECLS: &str = "VAR_INPUT Start : BOOL; END_VAR VAR_OUTPUT Motor : BOOL; END_VAR";
+
+/// A two-place loop `A -go-> B -back-> A` in PROGRAM `Loop`.
+fn looping(guard: &str, actions_a: &str) -> PetriPou {
+    let mut net = Net::default();
+    net.places.push(Place { actions: actions_a.into(), ..Place::new("A", 1, 1) });
+    net.places.push(Place::new("B", 2, 0));
+    net.transitions.push(Transition::new("go", guard));
+    net.transitions.push(Transition::new("back", ""));
+    for (a, b) in [("A", "go"), ("go", "B"), ("B", "back"), ("back", "A")] {
+        net.arcs.push(Arc::new(a, b));
+    }
+    PetriPou {
+        name: "Loop".into(),
+        declarations: "VAR n : INT; d : INT; END_VAR".into(),
+        prologue: String::new(),
+        epilogue: String::new(),
+        net,
+        options: Default::default(),
+    }
+}
+
+fn project(source: &str) -> Project {
+    let mut p = Project::new("t");
+    p.source = source.into();
+    p
+}
+
+#[test]
+fn st_problems_keep_their_line_column_and_span_in_the_st_source() {
+    let p = project("PROGRAM Main\nVAR x : INT; END_VAR\nx := y;\nEND_PROGRAM\n");
+    let b = build_project(&p);
+    assert!(b.has_errors());
+    let d = b.diagnostics.iter().find(|d| d.code == Code::UndeclaredName).unwrap();
+    // `y` is the 6th character of line 3, bytes 39..40 of the source.
+    let start = p.source.find("y;").unwrap() as u32;
+    assert_eq!(
+        d.site,
+        Site::St { line: 3, column: 6, span: Span { start, end: start + 1 } },
+        "{d:?}"
+    );
+    assert_eq!(d.located_message(), d.message, "ST messages carry no prefix");
+    assert!(b.program.is_none());
+}
+
+#[test]
+fn ladder_errors_are_located_at_their_cell_and_stop_the_build() {
+    let mut p = project("");
+    p.ladder.push(ladder("Latch", "", DECLS));
+    let b = build_project(&p);
+    assert!(b.source.is_none() && b.program.is_none());
+    let d = b.diagnostics.iter().find(|d| d.code == Code::LadderMissingOperand).unwrap();
+    assert_eq!(d.site, Site::Ladder { pou: "Latch".into(), cell: Some((0, 0, 1)) });
+    assert!(d.located_message().starts_with("POU Latch, rung 1, row 1, column 2: "));
+}
+
+#[test]
+fn st_errors_inside_a_ladder_pou_point_at_the_cell() {
+    // `Motr` is not declared: the ladder validator lets the ST checker find it, and the
+    // checker's line of generated text maps back to the coil's cell.
+    let mut p = project("");
+    p.ladder.push(ladder("Latch", "Motr", DECLS));
+    let b = build_project(&p);
+    let d = b.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    assert_eq!(d.site.pou(), Some("Latch"));
+    assert!(matches!(d.site, Site::Ladder { cell: Some((0, 0, 1)), .. }), "{:?}", b.diagnostics);
+}
+
+#[test]
+fn petri_errors_are_located_at_the_element() {
+    let mut p = project("");
+    p.petri.push(looping("n + 1", ""));
+    let b = build_project(&p);
+    let d = b.diagnostics.iter().find(|d| d.code == Code::ConditionNotBool).unwrap();
+    match &d.site {
+        Site::Petri { pou, element: Some(NetElement::Transition(t)), at: Some(at) } => {
+            assert_eq!((pou.as_str(), t.as_str()), ("Loop", "go"));
+            assert_eq!((at.line, at.column), (1, 1));
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn several_programs_are_listed_and_each_can_run() {
+    let mut p = project("PROGRAM First\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n");
+    p.ladder.push(ladder("Latch", "Motor", DECLS));
+    p.petri.push(looping("TRUE", ""));
+    let b = build_project(&p);
+    assert!(!b.has_errors(), "{:?}", b.diagnostics);
+    assert_eq!(b.program_names(), ["First", "Latch", "Loop"]);
+    let mut sim = b.simulator(Some("latch")).unwrap();
+    sim.hold("Start", "TRUE").unwrap();
+    assert_eq!(sim.run_scans(1), ScanOutcome::Completed);
+    assert_eq!(sim.read("Motor").unwrap(), crate::vm::Value::Bool(true));
+    let first = b.simulator(None).unwrap();
+    assert_eq!(first.program().pou(first.main_pou()).name, "First");
+    let missing = b.simulator(Some("Nope")).unwrap_err();
+    assert_eq!(missing.code, Code::UnknownProgram);
+}
+
+#[test]
+fn a_fault_span_maps_back_to_the_petri_place() {
+    let mut p = project("");
+    p.petri.push(looping("TRUE", "n := 1 / d;"));
+    let b = build_project(&p);
+    let mut sim = b.simulator(None).unwrap();
+    let ScanOutcome::Fault(info) = sim.run_scans(1) else { panic!("no fault") };
+    match b.site_of(info.span) {
+        Site::Petri { element: Some(NetElement::Place(id)), .. } => assert_eq!(id, "A"),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn hidden_variables_are_recognised() {
+    assert!(is_hidden_variable("LdPow_0_0_1"));
+    assert!(is_hidden_variable("pnscan_p"));
+    assert!(!is_hidden_variable("Motor"));
+}

@@ -1,0 +1,96 @@
+//! Opening any file a user may hand the trainer as a project: a project file (JSON), a
+//! PLCopen XML project, a PNML net, or plain ST text. The `plc` command line and the web
+//! app's Import both go through [`open_text`], so they recognise files the same way.
+
+use std::fmt;
+
+use super::{Project, ProjectError};
+
+/// What kind of file a text was read as.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum FileKind {
+    /// A project file (`*.plcproj.json`).
+    Project,
+    /// A PLCopen XML (TC6 0201) project.
+    Plcopen,
+    /// A PNML place/transition net.
+    Pnml,
+    /// Structured Text.
+    St,
+}
+
+/// A file opened as a project.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Opened {
+    /// The project.
+    pub project: Project,
+    /// What the file was read as.
+    pub kind: FileKind,
+    /// Notes on what an import skipped or changed (PLCopen FBD/SFC bodies, …).
+    pub warnings: Vec<String>,
+}
+
+/// Why a file could not be opened as a project.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum OpenError {
+    /// A project file that could not be read.
+    Project(ProjectError),
+    /// A PLCopen XML file that could not be imported.
+    Plcopen(crate::plcopen::ImportError),
+    /// A PNML file that could not be imported.
+    Pnml(crate::petri::pnml::PnmlError),
+}
+
+impl fmt::Display for OpenError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            OpenError::Project(e) => e.fmt(f),
+            OpenError::Plcopen(e) => e.fmt(f),
+            OpenError::Pnml(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for OpenError {}
+
+/// What `text` looks like: JSON → a project file, `<pnml>` → PNML, other XML → PLCopen,
+/// anything else → ST.
+pub fn file_kind(text: &str) -> FileKind {
+    let trimmed = text.trim_start_matches('\u{feff}').trim_start();
+    if trimmed.starts_with('{') {
+        FileKind::Project
+    } else if crate::petri::pnml::is_pnml(text) {
+        FileKind::Pnml
+    } else if trimmed.starts_with("<?xml") || trimmed.starts_with("<project") {
+        FileKind::Plcopen
+    } else {
+        FileKind::St
+    }
+}
+
+/// Opens `text` as a project. `name` names the project when the file has no name of its
+/// own (ST text: usually the file name without its extension).
+pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
+    let kind = file_kind(text);
+    let (project, warnings) = match kind {
+        FileKind::Project => (Project::from_file(text).map_err(OpenError::Project)?, Vec::new()),
+        FileKind::Pnml => {
+            let pou = crate::petri::pnml::import(text).map_err(OpenError::Pnml)?;
+            let mut project = Project::new(pou.name.clone());
+            project.source.clear();
+            project.petri.push(pou);
+            (project, Vec::new())
+        }
+        FileKind::Plcopen => {
+            let import = crate::plcopen::import(text).map_err(OpenError::Plcopen)?;
+            (import.project, import.warnings)
+        }
+        FileKind::St => {
+            let mut project = Project::new(name);
+            project.source = text.to_string();
+            (project, Vec::new())
+        }
+    };
+    Ok(Opened { project, kind, warnings })
+}

@@ -1,0 +1,76 @@
+//! The text behind the selected net element (a place's actions, a transition's guard, the
+//! prologue …) with its problems, so a located problem shows the ST it is about.
+
+use leptos::prelude::*;
+use plc_core::build::Site;
+use plc_core::petri::{NetElement, PetriPou};
+
+use crate::components::editor::text::{highlight_html, offset_of, Mark};
+use crate::state::AppState;
+
+/// The title and ST text of an element.
+fn element_text(pou: &PetriPou, element: &NetElement) -> (String, String) {
+    let net = &pou.net;
+    match element {
+        NetElement::Place(id) => match net.place(id) {
+            Some(p) => (format!("Place {id}: actions (CASE label {})", p.label), p.actions.clone()),
+            None => (format!("Place {id}"), String::new()),
+        },
+        NetElement::Transition(id) => match net.transition(id) {
+            Some(t) => {
+                (format!("Transition {id}: guard (priority {})", t.priority), t.guard.clone())
+            }
+            None => (format!("Transition {id}"), String::new()),
+        },
+        NetElement::Prologue => ("Prologue".into(), pou.prologue.clone()),
+        NetElement::Epilogue => ("Epilogue".into(), pou.epilogue.clone()),
+        NetElement::Declarations => ("Declarations".into(), pou.declarations.clone()),
+        NetElement::Emergency => match &net.emergency {
+            Some(e) => (format!("Emergency: place {}, condition", e.place), e.condition.clone()),
+            None => ("Emergency".into(), String::new()),
+        },
+        other => (other.to_string(), String::new()),
+    }
+}
+
+/// The details of the element a clicked problem or a click on the net selected.
+#[component]
+pub fn ElementDetails(pou: Memo<Option<PetriPou>>, name: StoredValue<String>) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    move || {
+        let Some(Site::Petri { pou: p, element: Some(element), at }) = state.focus.get() else {
+            return None;
+        };
+        if !name.with_value(|n| p.eq_ignore_ascii_case(n)) {
+            return None;
+        }
+        let (title, text) = pou.with(|pou| pou.as_ref().map(|pou| element_text(pou, &element)))?;
+        let marks: Vec<Mark> = at
+            .map(|at| {
+                let start = offset_of(&text, at.line, at.column);
+                vec![Mark { start, end: start + 1, error: true }]
+            })
+            .unwrap_or_default();
+        let problems: Vec<String> = state.diagnostics.with(|ds| {
+            ds.iter()
+                .filter(|d| matches!(&d.site, Site::Petri { pou: q, element: Some(e), .. } if q.eq_ignore_ascii_case(&p) && *e == element))
+                .map(|d| format!("{}  {}", d.code, d.message))
+                .collect()
+        });
+        let shown = if text.trim().is_empty() { "(empty)".to_string() } else { text.clone() };
+        Some(view! {
+            <div class="pn-details" aria-label="Selected element">
+                <div class="panel-head">
+                    <h3>{title}</h3>
+                    <button class="close" aria-label="Close the details" on:click=move |_| state.focus.set(None)>"×"</button>
+                </div>
+                <pre class="code-view"><code inner_html=highlight_html(&shown, &marks)></code></pre>
+                {(!problems.is_empty()).then(|| view! {
+                    <ul class="pn-details-problems">
+                        {problems.into_iter().map(|m| view! { <li>{m}</li> }).collect_view()}
+                    </ul>
+                })}
+            </div>
+        })
+    }
+}

@@ -1,0 +1,408 @@
+//! The Petri net view: a net POU drawn in SVG by hand (read-only until the net editor
+//! exists) at its stored positions or laid out automatically; while its PROGRAM runs,
+//! tokens come from the step variables through the place map and the transitions that
+//! fired on the last scan (and the enabled ones) are lit. Beside it the generated CASE OF
+//! code with the active branches lit; below, the analysis summary.
+
+mod analysis;
+mod code;
+mod details;
+pub mod geometry;
+pub mod layout;
+pub mod live;
+
+use leptos::prelude::*;
+use plc_core::build::Site;
+use plc_core::petri::{compile, Compiled, NetElement, PetriPou};
+
+use crate::components::ladder::{geometry::clip, scroll_to};
+use crate::state::{marking_of, AppState, RunMode};
+use analysis::AnalysisPanel;
+use code::CodePanel;
+use details::ElementDetails;
+use geometry::{arc_line, bar_of, macro_box, view_box, Bar, PLACE_R};
+use layout::{layout, NetLayout, Point};
+
+/// Characters of a guard shown beside its transition.
+const GUARD_CHARS: usize = 26;
+
+/// The element id used in the page for a net element.
+fn dom_id(kind: &str, id: &str) -> String {
+    format!("pn-{kind}-{id}")
+}
+
+/// Everything the drawing's reactive parts share.
+#[derive(Clone, Copy)]
+struct NetCtx {
+    state: AppState,
+    name: StoredValue<String>,
+    /// Tokens per place: live, or the initial marking when not running.
+    tokens: Memo<Vec<u32>>,
+    fired: Memo<Vec<bool>>,
+    enabled: Memo<Vec<bool>>,
+}
+
+impl NetCtx {
+    /// Whether `site` is element `element` of this POU.
+    fn is(&self, site: Option<Site>, element: &NetElement) -> bool {
+        match site {
+            Some(Site::Petri { pou, element: Some(e), .. }) => {
+                self.name.with_value(|n| pou.eq_ignore_ascii_case(n)) && e == *element
+            }
+            _ => false,
+        }
+    }
+
+    /// The worst diagnostic on an element: Some(true) error, Some(false) warning.
+    fn problem(&self, element: &NetElement) -> Option<bool> {
+        self.state.diagnostics.with(|ds| {
+            ds.iter()
+                .filter(|d| self.is(Some(d.site.clone()), element))
+                .map(|d| d.error)
+                .reduce(|a, b| a || b)
+        })
+    }
+
+    fn select(&self, element: NetElement) {
+        let pou = self.name.get_value();
+        self.state.focus.set(Some(Site::Petri { pou, element: Some(element), at: None }));
+    }
+}
+
+fn token_dots(n: u32, c: Point) -> AnyView {
+    let offsets: &[(f64, f64)] = match n {
+        0 => &[],
+        1 => &[(0.0, 0.0)],
+        2 => &[(-5.5, 0.0), (5.5, 0.0)],
+        3 => &[(-5.5, 4.0), (5.5, 4.0), (0.0, -5.5)],
+        4 => &[(-5.0, -5.0), (5.0, -5.0), (-5.0, 5.0), (5.0, 5.0)],
+        _ => return view! { <text class="pn-token-count" x=c.x y=c.y + 5.0>{n}</text> }.into_any(),
+    };
+    let r = if n == 1 { 6.0 } else { 4.0 };
+    offsets
+        .iter()
+        .map(|(dx, dy)| view! { <circle class="pn-token" cx=c.x + dx cy=c.y + dy r=r/> })
+        .collect_view()
+        .into_any()
+}
+
+fn place_view(
+    ctx: NetCtx,
+    pou: &PetriPou,
+    compiled: Option<&Compiled>,
+    i: usize,
+    c: Point,
+) -> AnyView {
+    let place = &pou.net.places[i];
+    let element = NetElement::Place(place.id.clone());
+    let shown = if place.name.trim().is_empty() { place.id.clone() } else { place.name.clone() };
+    let case = match compiled.and_then(|c| c.generated.place_map.places.get(i)) {
+        Some(e) => format!("{} = {}", e.step_variable, e.value),
+        None => place.label.to_string(),
+    };
+    let id = place.id.clone();
+    let tokens = move || ctx.tokens.with(|t| t.get(i).copied().unwrap_or(0));
+    let el = StoredValue::new(element);
+    let title = format!(
+        "{shown} (CASE label {}){}",
+        place.label,
+        if place.actions.trim().is_empty() {
+            String::new()
+        } else {
+            format!("\n{}", place.actions.trim())
+        }
+    );
+    view! {
+        <g class="pn-place" class:marked=move || { tokens() > 0 }
+            class:has-err=move || el.with_value(|e| ctx.problem(e)) == Some(true)
+            class:has-warn=move || el.with_value(|e| ctx.problem(e)) == Some(false)
+            class:focused=move || el.with_value(|e| ctx.is(ctx.state.focus.get(), e))
+            class:faulted=move || el.with_value(|e| ctx.is(ctx.state.fault_site.get(), e))
+            id=dom_id("place", &id) data-id=id.clone() role="img"
+            aria-label=move || {
+                let n = tokens();
+                format!("Place {id}: {n} token{}", if n == 1 { "" } else { "s" })
+            }
+            on:click=move |_| ctx.select(el.get_value())>
+            <title>{title}</title>
+            <circle class="pn-circle" cx=c.x cy=c.y r=PLACE_R/>
+            {move || token_dots(tokens(), c)}
+            <text class="pn-name" x=c.x y=c.y - PLACE_R - 6.0>{clip(&shown, 16)}</text>
+            <text class="pn-case" x=c.x y=c.y + PLACE_R + 14.0>{case}</text>
+        </g>
+    }
+    .into_any()
+}
+
+fn transition_view(ctx: NetCtx, pou: &PetriPou, j: usize, c: Point, bar: Bar) -> AnyView {
+    let t = &pou.net.transitions[j];
+    let element = NetElement::Transition(t.id.clone());
+    let shown = if t.name.trim().is_empty() { t.id.clone() } else { t.name.clone() };
+    let guard =
+        if t.guard.trim().is_empty() { "TRUE".to_string() } else { t.guard.trim().to_string() };
+    let (hw, hh) = bar.half();
+    let el = StoredValue::new(element);
+    let fired = move || ctx.fired.with(|f| f.get(j).copied().unwrap_or(false));
+    let enabled = move || ctx.enabled.with(|f| f.get(j).copied().unwrap_or(false));
+    let title = format!("{shown}: {guard} (priority {})", t.priority);
+    let label_x = c.x + hw + 6.0;
+    let id = t.id.clone();
+    view! {
+        <g class="pn-transition" class:fired=fired class:enabled=enabled
+            class:has-err=move || el.with_value(|e| ctx.problem(e)) == Some(true)
+            class:has-warn=move || el.with_value(|e| ctx.problem(e)) == Some(false)
+            class:focused=move || el.with_value(|e| ctx.is(ctx.state.focus.get(), e))
+            class:faulted=move || el.with_value(|e| ctx.is(ctx.state.fault_site.get(), e))
+            id=dom_id("transition", &id) data-id=id.clone() role="img"
+            aria-label=move || format!(
+                "Transition {id}{}", if fired() { ": fired" } else if enabled() { ": enabled" } else { "" }
+            )
+            on:click=move |_| ctx.select(el.get_value())>
+            <title>{title}</title>
+            <rect class="pn-hit" x=c.x - hw - 4.0 y=c.y - hh - 4.0 width=2.0 * hw + 8.0 height=2.0 * hh + 8.0/>
+            <rect class="pn-bar" x=c.x - hw y=c.y - hh width=2.0 * hw height=2.0 * hh rx="1.5"/>
+            <text class="pn-tname" x=label_x y=c.y - 2.0>{clip(&shown, 18)}</text>
+            <text class="pn-guard" x=label_x y=c.y + 11.0>{clip(&guard, GUARD_CHARS)}</text>
+        </g>
+    }
+    .into_any()
+}
+
+/// The SVG of the net.
+fn net_svg(
+    ctx: NetCtx,
+    pou: &PetriPou,
+    compiled: Option<&Compiled>,
+    lay: &NetLayout,
+) -> impl IntoView {
+    let net = &pou.net;
+    let place_at = |id: &str| net.places.iter().position(|p| p.id == id);
+    let trans_at = |id: &str| net.transitions.iter().position(|t| t.id == id);
+    // Bars across the flow.
+    let bars: Vec<Bar> = (0..net.transitions.len())
+        .map(|j| {
+            let tid = &net.transitions[j].id;
+            let ins: Vec<Point> = net
+                .arcs
+                .iter()
+                .filter(|a| &a.to == tid)
+                .filter_map(|a| place_at(&a.from).map(|i| lay.places[i]))
+                .collect();
+            let outs: Vec<Point> = net
+                .arcs
+                .iter()
+                .filter(|a| &a.from == tid)
+                .filter_map(|a| place_at(&a.to).map(|i| lay.places[i]))
+                .collect();
+            bar_of(lay.transitions[j], &ins, &outs)
+        })
+        .collect();
+    let arcs = net
+        .arcs
+        .iter()
+        .filter_map(|a| {
+            let (p, t, place_first) = match (place_at(&a.from), trans_at(&a.to)) {
+                (Some(p), Some(t)) => (p, t, true),
+                _ => (place_at(&a.to)?, trans_at(&a.from)?, false),
+            };
+            let twin = net.arcs.iter().any(|b| b.from == a.to && b.to == a.from);
+            let (s, e) = arc_line(lay.places[p], lay.transitions[t], bars[t], place_first, twin);
+            let weight = (a.weight != 1).then(|| {
+                let (mx, my) = ((s.x + e.x) / 2.0, (s.y + e.y) / 2.0);
+                view! { <text class="pn-weight" x=mx + 5.0 y=my - 4.0>{a.weight}</text> }
+            });
+            Some(view! {
+                <line class="pn-arc" x1=s.x y1=s.y x2=e.x y2=e.y marker-end="url(#pn-arrow)"/>
+                {weight}
+            })
+        })
+        .collect_view();
+    let boxes: Vec<(usize, (f64, f64, f64, f64))> = net
+        .macro_places
+        .iter()
+        .enumerate()
+        .filter_map(|(k, m)| {
+            let pts: Vec<Point> =
+                m.places.iter().filter_map(|id| place_at(id)).map(|i| lay.places[i]).collect();
+            macro_box(&pts).map(|b| (k, b))
+        })
+        .collect();
+    let macros = boxes
+        .iter()
+        .map(|&(k, (x, y, w, h))| {
+            let m = &net.macro_places[k];
+            let members: Vec<usize> = m.places.iter().filter_map(|id| place_at(id)).collect();
+            let marked = move || {
+                ctx.tokens.with(|t| members.iter().any(|&i| t.get(i).copied().unwrap_or(0) > 0))
+            };
+            let label = if m.name.trim().is_empty() { m.id.clone() } else { m.name.clone() };
+            let label = if m.comment.trim().is_empty() {
+                label
+            } else {
+                format!("{label}: {}", m.comment.trim())
+            };
+            view! {
+                <g class="pn-macro" class:marked=marked data-id=m.id.clone()>
+                    <rect x=x y=y width=w height=h rx="10"/>
+                    <text class="pn-macro-name" x=x + 4.0 y=y - 5.0>{clip(&label, 40)}</text>
+                </g>
+            }
+        })
+        .collect_view();
+    let places = (0..net.places.len())
+        .map(|i| place_view(ctx, pou, compiled, i, lay.places[i]))
+        .collect_view();
+    let transitions = (0..net.transitions.len())
+        .map(|j| transition_view(ctx, pou, j, lay.transitions[j], bars[j]))
+        .collect_view();
+    let points: Vec<Point> = lay.places.iter().chain(&lay.transitions).copied().collect();
+    let extra: Vec<(f64, f64, f64, f64)> = boxes.iter().map(|&(_, b)| b).collect();
+    let (vx, vy, vw, vh) = view_box(&points, &extra);
+    view! {
+        <svg class="pn-svg" viewBox=format!("{vx} {vy} {vw} {vh}") width=vw height=vh
+            role="group" aria-label=format!("Petri net {}", pou.name)>
+            <defs>
+                <marker id="pn-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7"
+                    markerHeight="7" orient="auto-start-reverse">
+                    <path d="M0 0 L10 5 L0 10 z" class="pn-arrowhead"/>
+                </marker>
+            </defs>
+            {macros}
+            {arcs}
+            {places}
+            {transitions}
+        </svg>
+    }
+}
+
+/// The view of Petri net POU `name`.
+#[component]
+pub fn PetriView(name: String) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let key = name.clone();
+    let pou =
+        Memo::new(move |_| state.project.with(|p| p.petri.iter().find(|n| n.name == key).cloned()));
+    let compiled = Memo::new(move |_| pou.with(|p| p.as_ref().and_then(|p| compile(p).ok())));
+    let key = name.clone();
+    let runs =
+        Memo::new(move |_| state.running.get().is_some_and(|r| r.eq_ignore_ascii_case(&key)));
+    let live_marking = Memo::new(move |_| {
+        if !runs.get() {
+            return None;
+        }
+        compiled.with(|c| {
+            let map = &c.as_ref()?.generated.place_map;
+            state.with_sim(|s| marking_of(s, map))
+        })
+    });
+    let tokens = Memo::new(move |_| match live_marking.get() {
+        Some(m) => m,
+        None => pou.with(|p| {
+            p.as_ref().map(|p| p.net.places.iter().map(|q| q.tokens).collect()).unwrap_or_default()
+        }),
+    });
+    let enabled = Memo::new(move |_| {
+        compiled.with(|c| {
+            c.as_ref().map(|c| tokens.with(|m| live::enabled(&c.net.pre, m))).unwrap_or_default()
+        })
+    });
+    // While running, a firing stays lit until the marking changes again (a scan lasts a
+    // few milliseconds); when stepping, exactly the last scan's firings are lit.
+    let held_fired: StoredValue<Option<(Vec<u32>, Vec<bool>)>> = StoredValue::new(None);
+    let fired = Memo::new(move |_| {
+        let Some(now) = live_marking.get() else { return Vec::new() };
+        let scans = state.with_sim(|s| s.scan_count()).unwrap_or(0);
+        let before = state.marking_before_last.get_value();
+        let last = compiled.with(|c| match (c, before) {
+            (Some(c), Some((at, before))) if at + 1 == scans => {
+                live::fired(&c.net.pre, &c.net.post, &before, &now)
+            }
+            _ => Vec::new(),
+        });
+        if last.iter().any(|&f| f) {
+            held_fired.set_value(Some((now, last.clone())));
+            return last;
+        }
+        let running = state.run_mode.get() == RunMode::Running;
+        match held_fired.get_value() {
+            Some((at, f)) if running && at == now => f,
+            _ => last,
+        }
+    });
+    let ctx = NetCtx { state, name: StoredValue::new(name.clone()), tokens, fired, enabled };
+    let net_layout =
+        Memo::new(move |_| pou.with(|p| p.as_ref().map(|p| layout(&p.net)).unwrap_or_default()));
+
+    // A clicked problem or a fault: bring the element into view.
+    let this = name.clone();
+    Effect::new(move |_| {
+        for site in [state.focus.get(), state.fault_site.get()].into_iter().flatten() {
+            if let Site::Petri { pou, element: Some(e), .. } = site {
+                if pou.eq_ignore_ascii_case(&this) {
+                    match e {
+                        NetElement::Place(id) => scroll_to(&dom_id("place", &id)),
+                        NetElement::Transition(id) => scroll_to(&dom_id("transition", &id)),
+                        _ => {}
+                    }
+                }
+            }
+        }
+    });
+
+    let drawing = move || {
+        state.diagnostics.track();
+        let Some(p) = pou.get() else {
+            return view! { <p class="muted">"This Petri net POU is no longer in the project."</p> }.into_any();
+        };
+        compiled.with(|c| net_layout.with(|l| net_svg(ctx, &p, c.as_ref(), l).into_any()))
+    };
+    let status = move || {
+        if runs.get() {
+            return None;
+        }
+        Some(match (state.running.get(), compiled.with(Option::is_some)) {
+            (_, false) => "The net has errors (see Problems): showing the initial marking.".to_string(),
+            (Some(r), true) => format!("The simulator runs PROGRAM {r}: choose {} under Simulation to see its tokens move. Showing the initial marking.", ctx.name.get_value()),
+            (None, true) => "Not running: showing the initial marking.".to_string(),
+        })
+    };
+    let layout_note = move || {
+        net_layout.with(|l| l.automatic).then(|| view! {
+        <span class="muted small-text" title="The net has no stored positions">"laid out automatically"</span>
+    })
+    };
+    let code = Signal::derive(move || {
+        compiled.with(|c| c.as_ref().map(|c| c.generated.st.clone()).unwrap_or_default())
+    });
+    let key = name.clone();
+    let active = Signal::derive(move || {
+        state.active_generated.with(|l| {
+            l.iter().filter(|(p, _)| p.eq_ignore_ascii_case(&key)).map(|(_, line)| *line).collect()
+        })
+    });
+    view! {
+        <section class="panel petri-view" aria-label=format!("Petri net {name}")>
+            <div class="ed-toolbar">
+                <h2>"Petri net"</h2>
+                <span class="pou-title">{name.clone()}</span>
+                {layout_note}
+                <span class="ed-spacer"></span>
+                <span class="pn-legend small-text" aria-hidden="true">
+                    <span class="lg lg-token"></span>"token "
+                    <span class="lg lg-fired"></span>"fired on the last scan "
+                    <span class="lg lg-enabled"></span>"enabled"
+                </span>
+            </div>
+            {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
+            <div class="pn-body">
+                <div class="pn-net">{drawing}</div>
+                <div class="pn-code">
+                    <h3>"Generated CASE OF code"</h3>
+                    <CodePanel code=code active=active/>
+                </div>
+            </div>
+            <ElementDetails pou=pou name=ctx.name/>
+            <AnalysisPanel pou=pou/>
+        </section>
+    }
+}

@@ -1,0 +1,120 @@
+//! The editor pane: the POU navigator (the ST source, then each ladder POU, then each
+//! Petri net POU), the selected POU's view, and the project's problem list.
+//!
+//! The ST editor stays mounted while another POU is shown (hidden), so its undo history
+//! and caret survive switching; ladder and net views are built when selected.
+
+use leptos::prelude::*;
+
+use crate::components::editor::Editor;
+use crate::components::ladder::LadderView;
+use crate::components::petri::PetriView;
+use crate::components::problems::Problems;
+use crate::state::{AppState, PouView};
+
+/// One entry of the navigator.
+#[derive(Debug, Clone, PartialEq)]
+struct NavItem {
+    view: PouView,
+    /// Short language badge: ST, LD, PN.
+    badge: &'static str,
+    /// What the entry is called.
+    name: String,
+    /// Its accessible name ("Ladder diagram Latch").
+    label: String,
+    /// Errors reported in it.
+    errors: usize,
+}
+
+fn nav_items(state: AppState) -> Vec<NavItem> {
+    let errors_in = |pou: Option<&str>| {
+        state.diagnostics.with(|ds| {
+            ds.iter()
+                .filter(|d| d.error)
+                .filter(|d| match pou {
+                    Some(p) => d.site.pou().is_some_and(|s| s.eq_ignore_ascii_case(p)),
+                    None => d.st().is_some(),
+                })
+                .count()
+        })
+    };
+    state.project.with(|p| {
+        let mut items = vec![NavItem {
+            view: PouView::St,
+            badge: "ST",
+            name: "ST source".into(),
+            label: "Structured Text source".into(),
+            errors: errors_in(None),
+        }];
+        items.extend(p.ladder.iter().map(|l| NavItem {
+            view: PouView::Ladder(l.name.clone()),
+            badge: "LD",
+            name: l.name.clone(),
+            label: format!("Ladder diagram {}", l.name),
+            errors: errors_in(Some(&l.name)),
+        }));
+        items.extend(p.petri.iter().map(|n| NavItem {
+            view: PouView::Petri(n.name.clone()),
+            badge: "PN",
+            name: n.name.clone(),
+            label: format!("Petri net {}", n.name),
+            errors: errors_in(Some(&n.name)),
+        }));
+        items
+    })
+}
+
+/// The POU navigator.
+#[component]
+fn Navigator() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let items = Memo::new(move |_| nav_items(state));
+    move || {
+        let running = state.running.get();
+        view! {
+            <nav class="pou-nav" aria-label="POUs">
+                {items.get().into_iter().map(|item| {
+                    let target = item.view.clone();
+                    let selected = {
+                        let v = item.view.clone();
+                        move || state.view.get() == v
+                    };
+                    let runs = running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&item.name))
+                        && item.view != PouView::St;
+                    let title = if runs { "This PROGRAM runs in the simulator" } else { "" };
+                    view! {
+                        <button class="pou-tab" aria-label=item.label.clone() title=title
+                            aria-pressed=move || if selected() { "true" } else { "false" }
+                            on:click=move |_| state.view.set(target.clone())>
+                            <span class=format!("pou-badge pou-badge-{}", item.badge.to_ascii_lowercase())>{item.badge}</span>
+                            <span>{item.name.clone()}</span>
+                            {runs.then(|| view! { <span class="pou-running" aria-hidden="true">"▶"</span> })}
+                            {(item.errors > 0).then(|| view! {
+                                <span class="pou-errors" aria-hidden="true">{item.errors}</span>
+                            })}
+                        </button>
+                    }
+                }).collect_view()}
+            </nav>
+        }
+    }
+}
+
+/// The editor pane.
+#[component]
+pub fn PouPane() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let view = Memo::new(move |_| state.view.get());
+    view! {
+        <Navigator/>
+        <div class="pou-st" style:display=move || if view.get() == PouView::St { "" } else { "none" }>
+            <Editor/>
+        </div>
+        {move || match view.get() {
+            PouView::St => ().into_any(),
+            PouView::Ladder(name) => view! { <LadderView name=name/> }.into_any(),
+            PouView::Petri(name) => view! { <PetriView name=name/> }.into_any(),
+        }}
+        <Problems/>
+    }
+}

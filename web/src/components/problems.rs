@@ -1,0 +1,61 @@
+//! The problem list of the whole project: ST, ladder and Petri net diagnostics, each
+//! with its place; clicking one shows that place (the ST line, the ladder cell, the net
+//! element).
+
+use leptos::prelude::*;
+
+use crate::state::AppState;
+
+/// "1 error" / "2 errors".
+fn count(n: usize, word: &str) -> String {
+    if n == 1 {
+        format!("1 {word}")
+    } else {
+        format!("{n} {word}s")
+    }
+}
+
+/// The problem list with its summary.
+#[component]
+pub fn Problems() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let summary = move || {
+        state.diagnostics.with(|ds| {
+            let errors = ds.iter().filter(|d| d.error).count();
+            format!("{}, {}", count(errors, "error"), count(ds.len() - errors, "warning"))
+        })
+    };
+    let list = move || {
+        let ds = state.diagnostics.get();
+        if ds.is_empty() {
+            return view! { <p class="ed-ok">"No problems found."</p> }.into_any();
+        }
+        view! {
+            <ul class="ed-problems" aria-label="Problems">
+                {ds.into_iter().map(|d| {
+                    let class = if d.error { "ed-problem ed-problem-err" } else { "ed-problem ed-problem-warn" };
+                    let label = format!("{}  {}  {}", d.place_label(), d.code, d.message);
+                    let site = d.site.clone();
+                    view! {
+                        <li>
+                            <button class=class title=if d.error { "Error" } else { "Warning" }
+                                on:click=move |_| state.reveal(&site)>
+                                {label}
+                            </button>
+                        </li>
+                    }
+                }).collect_view()}
+            </ul>
+        }
+        .into_any()
+    };
+    view! {
+        <section class="panel problems" aria-label="Problems of the project">
+            <div class="panel-head">
+                <h2>"Problems"</h2>
+                <span class="muted small-text">{summary}</span>
+            </div>
+            {list}
+        </section>
+    }
+}

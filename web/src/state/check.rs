@@ -1,0 +1,203 @@
+//! Building the open project with the core's one pipeline (`build::build_project`, as
+//! `plc check` and `plc run` do), turning its diagnostics into what the panels show, and
+//! mapping the running program's active CASE branches back to ST lines and Petri net code.
+
+use leptos::prelude::*;
+use plc_core::build::{build_project, ProjectBuild, ProjectDiagnostic, Site};
+use plc_core::diagnostics::Severity;
+use plc_core::sim::Simulator;
+
+use super::{AppState, PouView, TRACE_CAPACITY};
+
+/// One diagnostic, located for the problem list, the ST editor and the POU views.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DiagView {
+    /// Error or warning.
+    pub error: bool,
+    /// Stable code (`E0100`).
+    pub code: String,
+    /// The message (without its location).
+    pub message: String,
+    /// Where the problem is.
+    pub site: Site,
+}
+
+impl DiagView {
+    fn new(d: &ProjectDiagnostic) -> Self {
+        DiagView {
+            error: d.severity == Severity::Error,
+            code: d.code.as_str().to_string(),
+            message: d.message.clone(),
+            site: d.site.clone(),
+        }
+    }
+
+    /// `(line, column, start, end)` when the problem is in the ST source.
+    pub fn st(&self) -> Option<(u32, u32, u32, u32)> {
+        match self.site {
+            Site::St { line, column, span } => Some((line, column, span.start, span.end)),
+            _ => None,
+        }
+    }
+
+    /// Where the problem is, as the problem list shows it (`12:5`, `Latch, rung 1, row 1,
+    /// column 2`, `Weighing, transition T5 (guard line 1, column 3)`).
+    pub fn place_label(&self) -> String {
+        match &self.site {
+            Site::Project => "project".to_string(),
+            Site::St { line, column, .. } => format!("{line}:{column}"),
+            site => site
+                .describe()
+                .map(|d| d.strip_prefix("POU ").unwrap_or(&d).to_string())
+                .unwrap_or_default(),
+        }
+    }
+}
+
+/// The 1-based line of byte `offset` in `text`.
+fn line_of(text: &str, offset: usize) -> u32 {
+    let end = offset.min(text.len());
+    text.as_bytes()[..end].iter().filter(|&&b| b == b'\n').count() as u32 + 1
+}
+
+/// Records `paths` on the timeline (those the program does not have are left out).
+pub(super) fn trace_paths(sim: &mut Simulator, paths: &[String]) {
+    let valid: Vec<&str> =
+        paths.iter().map(String::as_str).filter(|p| sim.executable().locate(p).is_some()).collect();
+    let _ = sim.set_trace(&valid, TRACE_CAPACITY);
+}
+
+impl AppState {
+    /// Builds the project; when it is clean, powers a fresh simulator on for the chosen
+    /// PROGRAM (held inputs are re-applied; a running PLC keeps running with the new
+    /// program). With errors the previous program keeps running.
+    pub fn check_now(&self) {
+        let project = self.project.get_untracked();
+        let build = build_project(&project);
+        self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
+        if build.has_errors() {
+            return;
+        }
+        let names = build.program_names();
+        let chosen = project
+            .settings
+            .program
+            .as_deref()
+            .and_then(|p| names.iter().find(|n| n.eq_ignore_ascii_case(p)))
+            .or(names.first())
+            .cloned();
+        self.programs.set(names);
+        let Some(chosen) = chosen else {
+            self.sim.set_value(None);
+            self.sim_build.set_value(None);
+            self.running.set(None);
+            self.bump();
+            return;
+        };
+        match build.simulator(Some(&chosen)) {
+            Ok(mut sim) => {
+                sim.set_cycle_ns(project.settings.cycle_ms.max(1) as i64 * 1_000_000);
+                for (name, value) in self.held.get_untracked() {
+                    let _ = sim.hold(&name, &value);
+                }
+                self.restore_sim_settings(&mut sim);
+                let places = build.source.as_ref().and_then(|s| {
+                    s.map.petri.iter().find(|seg| seg.pou.eq_ignore_ascii_case(&chosen))
+                });
+                self.running_places.set_value(places.map(|seg| seg.generated.place_map.clone()));
+                self.marking_before_last.set_value(None);
+                self.sim.set_value(Some(sim));
+                self.sim_build.set_value(Some(build));
+                self.running.set(Some(chosen));
+                self.marked_line.set(None);
+                self.fault_site.set(None);
+            }
+            Err(e) => self.error(e.located_message()),
+        }
+        self.bump();
+    }
+
+    /// Chooses the PROGRAM to run (kept in the project's settings) and restarts on it.
+    pub fn set_program(&self, name: &str) {
+        self.project.update(|p| p.settings.program = Some(name.to_string()));
+        self.save();
+        self.check_now();
+    }
+
+    /// Shows the running PROGRAM's POU (or the first ladder or Petri net POU of a project
+    /// without ST text), else the ST editor.
+    pub fn show_main_view(&self) {
+        let running = self.running.get_untracked();
+        let view = self.project.with_untracked(|p| {
+            let is = |name: &str| running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(name));
+            if let Some(l) = p.ladder.iter().find(|l| is(&l.name)) {
+                return PouView::Ladder(l.name.clone());
+            }
+            if let Some(n) = p.petri.iter().find(|n| is(&n.name)) {
+                return PouView::Petri(n.name.clone());
+            }
+            if p.source.trim().is_empty() {
+                if let Some(l) = p.ladder.first() {
+                    return PouView::Ladder(l.name.clone());
+                }
+                if let Some(n) = p.petri.first() {
+                    return PouView::Petri(n.name.clone());
+                }
+            }
+            PouView::St
+        });
+        self.view.set(view);
+    }
+
+    /// Re-adds the project's breakpoints and timeline variables to a fresh simulator
+    /// (conditions or paths that no longer fit the program are kept but inactive).
+    fn restore_sim_settings(&self, sim: &mut Simulator) {
+        let (conditions, traced) = self
+            .project
+            .with_untracked(|p| (p.settings.breakpoints.clone(), p.settings.traced.clone()));
+        let list = conditions
+            .into_iter()
+            .map(|c| {
+                let id = sim.add_breakpoint(&c).ok();
+                (c, id)
+            })
+            .collect();
+        self.breakpoints.set(list);
+        trace_paths(sim, &traced);
+    }
+
+    /// Tells the panels the simulator changed, and finds the lines of the CASE branches
+    /// taken on the last scan: ST lines for the editor, generated lines for Petri nets.
+    pub fn bump(&self) {
+        self.sim_version.update(|v| *v += 1);
+        let spans = self
+            .sim
+            .with_value(|s| s.as_ref().map(Simulator::active_case_branches))
+            .unwrap_or_default();
+        let mut st_lines = Vec::new();
+        let mut generated = Vec::new();
+        if !spans.is_empty() {
+            self.sim_build.with_value(|b| {
+                let Some(source) = b.as_ref().and_then(|b: &ProjectBuild| b.source.as_ref()) else {
+                    return;
+                };
+                for span in &spans {
+                    let line = line_of(&source.text, span.start as usize);
+                    if line <= source.map.st_lines {
+                        st_lines.push(line);
+                    } else if let Some(seg) =
+                        source.map.petri.iter().rev().find(|s| s.first_line <= line)
+                    {
+                        generated.push((seg.pou.clone(), line + 1 - seg.first_line));
+                    }
+                }
+            });
+        }
+        if self.active_lines.with_untracked(|l| *l != st_lines) {
+            self.active_lines.set(st_lines);
+        }
+        if self.active_generated.with_untracked(|l| *l != generated) {
+            self.active_generated.set(generated);
+        }
+    }
+}

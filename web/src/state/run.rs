@@ -1,0 +1,187 @@
+//! The simulator's run loop and controls: run, pause, step, restarts.
+//!
+//! The run loop is sliced per animation frame: each frame runs as many scans as the speed
+//! asks for (real time, ×10) or as fit in a small wall-time budget (as fast as possible),
+//! so the page stays responsive at any speed. The core keeps the virtual clock. Before the
+//! last scan of every batch the marking of a running Petri net is noted, so the net view
+//! can show which transitions fired on the last scan.
+
+use leptos::prelude::*;
+use plc_core::export::value_number;
+use plc_core::petri::PlaceMap;
+use plc_core::sim::{ScanOutcome, SimState, Simulator};
+
+use super::{AppState, Notice, RunMode, Speed};
+
+fn perf_now() -> f64 {
+    web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
+}
+
+/// The marking of a net read from the simulator's step variables.
+pub fn marking_of(sim: &Simulator, places: &PlaceMap) -> Vec<u32> {
+    places.marking(|var| sim.read(var).ok().as_ref().and_then(value_number).map(|x| x as i64))
+}
+
+impl AppState {
+    /// Runs `n` scans, noting the marking before the last one.
+    fn scan_batch(&self, sim: &mut Simulator, n: u64) -> ScanOutcome {
+        if n == 0 {
+            return ScanOutcome::Completed;
+        }
+        let outcome = sim.run_scans(n - 1);
+        if outcome != ScanOutcome::Completed {
+            return outcome;
+        }
+        let before = self
+            .running_places
+            .with_value(|p| p.as_ref().map(|p| (sim.scan_count(), marking_of(sim, p))));
+        self.marking_before_last.set_value(before);
+        sim.run_scans(1)
+    }
+
+    fn after_outcome(&self, outcome: ScanOutcome) {
+        match outcome {
+            ScanOutcome::Completed => {}
+            ScanOutcome::Breakpoint(id) => {
+                self.run_mode.set(RunMode::Paused);
+                let cond =
+                    self.with_sim(|s| s.breakpoint_condition(id).map(str::to_string)).flatten();
+                self.info(format!("Paused at breakpoint: {}", cond.unwrap_or_default()));
+            }
+            ScanOutcome::Fault(info) => {
+                self.run_mode.set(RunMode::Stopped);
+                let site = self
+                    .sim_build
+                    .with_value(|b| b.as_ref().map(|b| b.site_of(info.span)))
+                    .unwrap_or(plc_core::build::Site::Project);
+                let place = match &site {
+                    plc_core::build::Site::St { line, .. } => {
+                        self.marked_line.set(Some(*line));
+                        format!("line {line}")
+                    }
+                    other => other.describe().unwrap_or_default(),
+                };
+                self.fault_site.set(Some(site.clone()));
+                self.notice.set(Some(Notice {
+                    error: true,
+                    text: format!("FAULT on scan {}: {} ({place})", info.scan, info.fault),
+                    site: Some(site),
+                }));
+            }
+        }
+    }
+
+    /// Runs `n` scans now (Step, Step N).
+    pub fn step(&self, n: u64) {
+        if self.run_mode.get_untracked() == RunMode::Running {
+            self.run_mode.set(RunMode::Paused);
+        }
+        let state = *self;
+        if let Some(outcome) = self.with_sim_mut(|s| state.scan_batch(s, n)) {
+            if self.run_mode.get_untracked() == RunMode::Stopped
+                && !matches!(outcome, ScanOutcome::Fault(_))
+            {
+                self.run_mode.set(RunMode::Paused);
+            }
+            self.after_outcome(outcome);
+        }
+    }
+
+    /// Starts scanning every animation frame.
+    pub fn run(&self) {
+        if self.sim.with_value(|s| s.is_none()) {
+            self.error("The program has errors: fix them to run it.");
+            return;
+        }
+        let faulted = self.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);
+        if faulted {
+            self.error("The PLC is in FAULT: press Reset to restart it.");
+            return;
+        }
+        if self.run_mode.get_untracked() == RunMode::Running {
+            return;
+        }
+        self.run_mode.set(RunMode::Running);
+        let state = *self;
+        let start = perf_now();
+        request_animation_frame(move || state.frame(start));
+    }
+
+    /// Stops scanning (the state is kept).
+    pub fn pause(&self) {
+        if self.run_mode.get_untracked() == RunMode::Running {
+            self.run_mode.set(RunMode::Paused);
+        }
+    }
+
+    fn after_restart(&self) {
+        self.marked_line.set(None);
+        self.fault_site.set(None);
+        self.marking_before_last.set_value(None);
+        self.notice.set(None);
+    }
+
+    /// Cold restart.
+    pub fn reset(&self) {
+        self.run_mode.set(RunMode::Stopped);
+        self.with_sim_mut(Simulator::cold_restart);
+        self.after_restart();
+    }
+
+    /// Warm restart (RETAIN kept).
+    pub fn warm_restart(&self) {
+        self.run_mode.set(RunMode::Stopped);
+        self.with_sim_mut(Simulator::warm_restart);
+        self.after_restart();
+    }
+
+    /// One animation frame of the run loop.
+    fn frame(self, last: f64) {
+        if self.run_mode.try_get_untracked() != Some(RunMode::Running) {
+            return;
+        }
+        let now = perf_now();
+        let wall_ms = (now - last).clamp(0.0, 100.0);
+        let speed = self.speed.get_untracked();
+        let outcome = self.sim.try_update_value(|sim| {
+            let sim = sim.as_mut()?;
+            // Never more than a frame's worth of work, even after a long pause.
+            let budget_end = perf_now() + 12.0;
+            let mut outcome = ScanOutcome::Completed;
+            match speed {
+                Speed::RealTime | Speed::Times10 => {
+                    let factor = if speed == Speed::Times10 { 10.0 } else { 1.0 };
+                    let owed = self.pending_ns.get_value() + wall_ms * factor * 1e6;
+                    let cycle = sim.cycle_ns().max(1) as f64;
+                    let scans = (owed / cycle).floor();
+                    self.pending_ns.set_value(owed - scans * cycle);
+                    let mut left = scans as u64;
+                    while left > 0 && perf_now() < budget_end {
+                        let n = left.min(64);
+                        outcome = self.scan_batch(sim, n);
+                        left -= n;
+                        if outcome != ScanOutcome::Completed {
+                            break;
+                        }
+                    }
+                }
+                Speed::Max => {
+                    while perf_now() < budget_end {
+                        outcome = self.scan_batch(sim, 256);
+                        if outcome != ScanOutcome::Completed {
+                            break;
+                        }
+                    }
+                }
+            }
+            Some(outcome)
+        });
+        self.bump();
+        if let Some(Some(outcome)) = outcome {
+            self.after_outcome(outcome);
+        }
+        if self.run_mode.get_untracked() == RunMode::Running {
+            request_animation_frame(move || self.frame(now));
+        }
+    }
+}
