@@ -34,11 +34,12 @@ fn paired(c: &mut Criterion) {
     g.finish();
 }
 
-/// B3: one scan of the CASE OF code of 10 … 10,000 places.
+/// B3: one scan of the CASE OF code generated from Petri net cycles of 10 … 10,000 places.
 fn case_of(c: &mut Criterion) {
     let mut g = c.benchmark_group("B3");
     for places in [10, 100, 1_000, 10_000] {
-        let mut sim = loaded(&programs::b3(places));
+        let source = programs::b3(places).unwrap_or_else(|e| panic!("{e}"));
+        let mut sim = loaded(&source);
         sim.hold("Go", "TRUE").unwrap_or_else(|e| panic!("{e}"));
         g.bench_with_input(BenchmarkId::from_parameter(places), &places, |b, _| {
             b.iter(|| one_scan(&mut sim))

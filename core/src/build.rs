@@ -189,9 +189,11 @@ fn site_in(source: &ProjectSource, index: &LineIndex<'_>, span: Span) -> Site {
 
 /// Builds a project as `plc check` and `plc run` do (see the module comment).
 pub fn build_project(project: &Project) -> ProjectBuild {
-    let petri = crate::petri::project_diagnostics(project);
-    let petri_diags: Vec<ProjectDiagnostic> = petri
-        .into_iter()
+    let nets = crate::petri::compile_project(project);
+    let petri_diags: Vec<ProjectDiagnostic> = nets
+        .diagnostics
+        .iter()
+        .cloned()
         .map(|(pou, d)| ProjectDiagnostic {
             severity: d.severity,
             code: d.code,
@@ -208,7 +210,7 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         message: d.message,
         site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
     };
-    let source = match crate::ladder::project_source(project) {
+    let source = match crate::ladder::project_source_with(project, &nets) {
         Ok(source) => source,
         Err(diags) => {
             let diagnostics = diags.into_iter().map(ladder_diag).collect();

@@ -3,8 +3,11 @@
 
 use std::fmt::Write;
 
-/// The weighing example (seed 000), shipped in `examples/`.
-pub const WEIGHING: &str = include_str!("../../../examples/weighing.st");
+use crate::petri::{Arc, Net, PetriPou, Place, Transition};
+
+/// The weighing example of the Petri net issue (seed 000's sequential weighing process as a
+/// Petri net POU), shipped in `examples/`.
+pub const WEIGHING: &str = include_str!("../../../examples/weighing-sequential.plcproj.json");
 
 /// B1 in ST: `n` iterations of `d := REAL_TO_DINT(a * b)` with a and b changing.
 pub fn b1(n: u32) -> String {
@@ -79,21 +82,36 @@ pub fn b2_native(n: u32) -> i32 {
         .fold(0i32, |acc, (i, &v)| acc.wrapping_add((v as i32).wrapping_mul(i as i32 + 1)))
 }
 
-/// B3: the CASE OF code of a sequence of `places` places (one step variable, one branch
-/// per place, one transition each), as the Petri-net generator writes it. The one place
-/// B3 gets its code from: when the generator lands, this function returns its output for
-/// a cycle of `places` places (input `Go` on every transition) and nothing else changes.
-pub fn b3(places: usize) -> String {
-    let mut s = String::from("PROGRAM B3\nVAR_INPUT Go : BOOL; END_VAR\nVAR p : INT := 1; n : DINT; END_VAR\nCASE p OF\n");
+/// B3's net: one cycle of `places` places P1 → T1 → P2 → … → P1, a token in P1, the
+/// action `n := n + 1;` in every place and the guard `Go` on every transition.
+pub fn b3_net(places: usize) -> PetriPou {
+    let places = places.max(1);
+    let mut net = Net::default();
     for k in 1..=places {
-        let next = if k == places { 1 } else { k + 1 };
-        let _ = writeln!(
-            s,
-            "    {k}: (* P{k} *)\n        n := n + 1;\n        IF Go THEN p := {next}; END_IF;"
-        );
+        let mut place = Place::new(format!("P{k}"), k as i64, u32::from(k == 1));
+        place.actions = "n := n + 1;".into();
+        net.places.push(place);
+        net.transitions.push(Transition::new(format!("T{k}"), "Go"));
+        net.arcs.push(Arc::new(format!("P{k}"), format!("T{k}")));
+        net.arcs.push(Arc::new(format!("T{k}"), format!("P{}", k % places + 1)));
     }
-    s.push_str("END_CASE;\nEND_PROGRAM\n");
-    s
+    PetriPou {
+        name: "B3".into(),
+        declarations: "VAR_INPUT Go : BOOL; END_VAR\nVAR n : DINT; END_VAR\n".into(),
+        prologue: String::new(),
+        epilogue: String::new(),
+        net,
+        options: Default::default(),
+    }
+}
+
+/// B3: the CASE OF code the Petri net generator writes for [`b3_net`] (one step variable,
+/// one branch per place, one transition each), or the generator's first error.
+pub fn b3(places: usize) -> Result<String, String> {
+    match crate::petri::compile(&b3_net(places)) {
+        Ok(compiled) => Ok(compiled.generated.st),
+        Err(diags) => Err(diags.first().map_or_else(String::new, |d| d.message.clone())),
+    }
 }
 
 /// B6: a generated program of about `lines` lines (declarations, assignments, IFs, a

@@ -83,3 +83,24 @@ fn b6_source_has_the_asked_size_and_compiles() {
     assert!(src.lines().count() >= 5_000);
     assert!(check_and_compile(&src).expect("compiles") > 5_000);
 }
+
+#[test]
+fn b3_runs_the_code_the_petri_net_generator_writes_for_a_cycle() {
+    let places = 1_000;
+    let source = programs::b3(places).expect("the cycle generates");
+    assert_eq!(
+        source,
+        crate::petri::compile(&programs::b3_net(places)).expect("compiles").generated.st
+    );
+    let branches =
+        source.lines().filter(|l| l.trim_end().ends_with(" *)") && l.contains(": (*")).count();
+    assert_eq!(branches, places, "one CASE branch per place:\n{}", &source[..400]);
+    let mut sim = load(&source).expect("B3 loads");
+    sim.hold("Go", "TRUE").expect("Go");
+    for _ in 0..places + 3 {
+        scan(&mut sim).expect("scan");
+    }
+    // One place's action and one firing per scan: round the cycle once and three more.
+    assert_eq!(sim.read("n").expect("n"), Value::Int(1_003, Elem::DInt));
+    assert_eq!(sim.read("p").expect("p"), Value::Int(4, Elem::Int));
+}

@@ -94,7 +94,7 @@ pub fn b2(effort: Effort) -> Result<Paired, BenchError> {
     ))
 }
 
-/// B3: scan time of CASE OF code for sequences of 10 … 10,000 places (ns per scan, best
+/// B3: scan time of the CASE OF code generated from Petri net cycles of 10 … 10,000 places (ns per scan, best
 /// of 15 runs of 20,000 scans, the sizes taken in turn so that all see the same moments of
 /// a busy machine), and the ratio largest/smallest.
 pub fn b3(effort: Effort) -> Result<Json, BenchError> {
@@ -103,7 +103,9 @@ pub fn b3(effort: Effort) -> Result<Json, BenchError> {
     let (scans, reps) = if effort == Effort::Full { (20_000, 15) } else { (1_000, 2) };
     let mut sims = Vec::with_capacity(sizes.len());
     for &places in sizes {
-        let mut sim = load(&programs::b3(places))?;
+        let source = programs::b3(places)
+            .map_err(|e| BenchError(format!("the {places}-place B3 net does not generate: {e}")))?;
+        let mut sim = load(&source)?;
         sim.hold("Go", "TRUE").map_err(|e| BenchError(e.to_string()))?;
         sims.push(sim);
     }

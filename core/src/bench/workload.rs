@@ -89,9 +89,17 @@ impl WeighingPlant {
     }
 }
 
-/// B5's simulator: `examples/weighing.st` with Start held and the setpoint at 500.
+/// B5's simulator: the Petri net POU of `examples/weighing-sequential.plcproj.json`, built
+/// as the product builds a project (net → CASE OF code → checker → VM), with Start held
+/// and the setpoint at 500.
 pub fn weighing() -> Result<Simulator, BenchError> {
-    let mut sim = load(programs::WEIGHING)?;
+    let project = crate::project::Project::from_file(programs::WEIGHING).map_err(err)?;
+    let mut sim = crate::run::project_simulator(&project, None).map_err(|d| {
+        BenchError(
+            d.first().map_or("the weighing project does not build".into(), |d| d.message.clone()),
+        )
+    })?;
+    sim.set_watchdog(u64::MAX / 2);
     sim.hold("Start", "TRUE").map_err(err)?;
     sim.hold("Setpoint", "500").map_err(err)?;
     Ok(sim)

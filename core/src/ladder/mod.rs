@@ -116,9 +116,18 @@ pub struct ProjectSource {
     pub warnings: Vec<(String, LadderDiagnostic)>,
 }
 
-/// Validates every ladder POU of a project and combines them with the ST source. Fails
-/// with every ladder diagnostic (errors and warnings) when any ladder POU has errors.
+/// Validates every ladder POU of a project and combines them with the ST source and the
+/// generated Petri net POUs. Fails with every ladder diagnostic (errors and warnings) when
+/// any ladder POU has errors.
 pub fn project_source(project: &Project) -> Result<ProjectSource, Vec<(String, LadderDiagnostic)>> {
+    project_source_with(project, &crate::petri::compile_project(project))
+}
+
+/// [`project_source`] with the project's Petri net POUs already compiled.
+pub fn project_source_with(
+    project: &Project,
+    nets: &crate::petri::ProjectNets,
+) -> Result<ProjectSource, Vec<(String, LadderDiagnostic)>> {
     let mut diags = Vec::new();
     let catalog = Catalog::of_project(project);
     for pou in &project.ladder {
@@ -141,7 +150,7 @@ pub fn project_source(project: &Project) -> Result<ProjectSource, Vec<(String, L
         map.segments.push(Segment { pou: pou.name.clone(), first_line: line, lowered });
         line += n;
     }
-    crate::petri::append_to_source(project, &mut text, &mut map.petri, line);
+    crate::petri::append_to_source(nets, &mut text, &mut map.petri, line);
     Ok(ProjectSource { text, map, warnings: diags })
 }
 

@@ -19,8 +19,8 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 
 use super::components::{state_machine_components, uncovered};
 use super::net::{Marking, PtNet};
-use super::reach::{explore, scc, OMEGA};
-use super::semiflows::{is_semiflow, minimal_semiflows, transpose, Semiflow, Semiflows};
+use super::reach::{explore_with, scc, OMEGA};
+use super::semiflows::{is_semiflow, minimal_semiflows, Semiflow, Semiflows};
 
 /// The default number of markings the analysis explores.
 pub const DEFAULT_BUDGET: usize = 100_000;
@@ -71,7 +71,27 @@ pub struct NetAnalysis {
 
 /// Analyses `net`, exploring at most `budget` markings.
 pub fn analyze(net: &PtNet, budget: usize) -> NetAnalysis {
-    let g = explore(net, budget);
+    analyze_with(net, budget, minimal_semiflows(&net.incidence()), true)
+}
+
+/// [`analyze`] with the net's P-semiflows already computed; without `t_semiflows` the
+/// T-semiflows are left empty (and marked incomplete), for the checks run when compiling.
+pub fn analyze_with(
+    net: &PtNet,
+    budget: usize,
+    p_semiflows: Semiflows,
+    t_semiflows: bool,
+) -> NetAnalysis {
+    let conservative = {
+        let mut covered = vec![false; net.places()];
+        for y in &p_semiflows.flows {
+            for (p, &w) in y.iter().enumerate() {
+                covered[p] |= w > 0;
+            }
+        }
+        covered.iter().all(|&c| c)
+    };
+    let g = explore_with(net, budget, conservative);
     let n_t = net.transitions();
     let mut bounds: Vec<Option<u32>> = vec![Some(0); net.places()];
     for m in &g.markings {
@@ -127,12 +147,12 @@ pub fn analyze(net: &PtNet, budget: usize) -> NetAnalysis {
     if reversible.is_none() && deadlocks.iter().any(|d| d.marking != net.initial) {
         reversible = Some(false);
     }
-    let c = net.incidence();
-    let p_semiflows = minimal_semiflows(&c, n_t);
-    let ct = transpose(&c, n_t);
-    let t_semiflows = minimal_semiflows(&ct, net.places());
-    debug_assert!(p_semiflows.flows.iter().all(|y| is_semiflow(&c, n_t, y)));
-    debug_assert!(t_semiflows.flows.iter().all(|x| is_semiflow(&ct, net.places(), x)));
+    let t_semiflows = if t_semiflows {
+        minimal_semiflows(&net.incidence().transpose())
+    } else {
+        Semiflows::default()
+    };
+    debug_assert!(p_semiflows.flows.iter().all(|y| is_semiflow(&net.incidence(), y)));
     let components = state_machine_components(net, &p_semiflows.flows);
     let uncovered = uncovered(net, &components);
     NetAnalysis {

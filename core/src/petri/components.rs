@@ -173,9 +173,9 @@ fn declared(model: &Net, net: &PtNet) -> Result<Vec<ProcessPlan>, Vec<PetriDiagn
                 here.clone(),
                 "the process has no places",
             ));
-        } else if !super::semiflows::is_semiflow(&c, net.transitions(), &y) {
+        } else if !super::semiflows::is_semiflow(&c, &y) {
             let leaks: Vec<&str> = (0..net.transitions())
-                .filter(|&t| places.iter().map(|&p| c[p][t]).sum::<i64>() != 0)
+                .filter(|&t| places.iter().map(|&p| c.get(p, t)).sum::<i64>() != 0)
                 .map(|t| model.transitions[t].id.as_str())
                 .collect();
             diags.push(PetriDiagnostic::error(

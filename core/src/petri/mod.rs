@@ -34,6 +34,16 @@ use crate::project::Project;
 /// The state budget of the analysis run when a net is compiled (for its warnings).
 pub const COMPILE_BUDGET: usize = 10_000;
 
+/// At most this many marking entries (markings × places) are kept by the analysis run when
+/// a net is compiled: a 10,000-place net explores 500 markings, not 10,000 (which would
+/// take 800 MB).
+pub const COMPILE_CELLS: usize = 5_000_000;
+
+/// The state budget of the analysis run when a net of `places` places is compiled.
+pub fn compile_budget(places: usize) -> usize {
+    COMPILE_BUDGET.min(COMPILE_CELLS / places.max(1)).max(1)
+}
+
 /// A Petri net POU ready to run: its net, processes and generated PROGRAM.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Compiled {
@@ -55,13 +65,12 @@ pub fn compile(pou: &PetriPou) -> Result<Compiled, Vec<PetriDiagnostic>> {
     if has_errors(&diags) {
         return Err(diags);
     }
-    let c = net.incidence();
-    let flows = semiflows::minimal_semiflows(&c, net.transitions());
+    let flows = semiflows::minimal_semiflows(&net.incidence());
     let components = components::state_machine_components(&net, &flows.flows);
     let processes = components::plan_processes(&pou.net, &net, &components)?;
     let generated = codegen::generate(pou, &net, &processes)?;
     let mut warnings = diags;
-    warnings.extend(warnings_of(pou, &net, &processes));
+    warnings.extend(warnings_of(pou, &net, &processes, flows));
     Ok(Compiled { net, processes, generated, warnings })
 }
 
@@ -76,7 +85,12 @@ fn decided_at(net: &PtNet, processes: &[ProcessPlan], t: usize) -> Option<(usize
 /// The warnings of a net that compiles: conflicts decided only by declaration order or
 /// by process order (where priorities cannot act), and what the analysis finds within
 /// [`COMPILE_BUDGET`] (deadlocks, dead transitions).
-fn warnings_of(pou: &PetriPou, net: &PtNet, processes: &[ProcessPlan]) -> Vec<PetriDiagnostic> {
+fn warnings_of(
+    pou: &PetriPou,
+    net: &PtNet,
+    processes: &[ProcessPlan],
+    p_semiflows: semiflows::Semiflows,
+) -> Vec<PetriDiagnostic> {
     let mut out = Vec::new();
     for c in conflicts(pou, net) {
         let (a, b) = (&pou.net.transitions[c.first], &pou.net.transitions[c.second]);
@@ -111,7 +125,8 @@ fn warnings_of(pou: &PetriPou, net: &PtNet, processes: &[ProcessPlan]) -> Vec<Pe
             ));
         }
     }
-    let a = analyze(net, COMPILE_BUDGET);
+    let budget = compile_budget(net.places());
+    let a = analysis::analyze_with(net, budget, p_semiflows, false);
     for d in &a.deadlocks {
         let path: Vec<&str> = d.path.iter().map(|&t| pou.net.transitions[t].id.as_str()).collect();
         out.push(PetriDiagnostic::warning(
@@ -134,7 +149,11 @@ fn warnings_of(pou: &PetriPou, net: &PtNet, processes: &[ProcessPlan]) -> Vec<Pe
         out.push(PetriDiagnostic::warning(
             Code::PetriAnalysisIncomplete,
             NetElement::Pou,
-            format!("the net has more than {COMPILE_BUDGET} reachable markings; run `plc petri analyze` with a larger budget"),
+            format!(
+                "the net has more than {budget} reachable markings (the most checked when \
+                 compiling a net of {} places); run `plc petri analyze` with a larger budget",
+                net.places()
+            ),
         ));
     }
     out
@@ -145,17 +164,40 @@ pub fn is_hidden_name(name: &str) -> bool {
     name.len() >= SCAN_PREFIX.len() && name[..SCAN_PREFIX.len()].eq_ignore_ascii_case(SCAN_PREFIX)
 }
 
-/// Every diagnostic (errors and warnings) of a project's Petri net POUs, with the POU name.
-pub fn project_diagnostics(project: &Project) -> Vec<(String, PetriDiagnostic)> {
-    let mut out = Vec::new();
+/// A project's Petri net POUs compiled once, for its diagnostics and its combined source.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ProjectNets {
+    /// The POUs that compiled, by name, in project order.
+    pub compiled: Vec<(String, Compiled)>,
+    /// Every diagnostic (errors and warnings), with the POU name.
+    pub diagnostics: Vec<(String, PetriDiagnostic)>,
+}
+
+impl ProjectNets {
+    /// Whether some POU has an error.
+    pub fn has_errors(&self) -> bool {
+        self.diagnostics.iter().any(|(_, d)| d.is_error())
+    }
+}
+
+/// Compiles every Petri net POU of a project.
+pub fn compile_project(project: &Project) -> ProjectNets {
+    let mut out = ProjectNets::default();
     for pou in &project.petri {
-        let diags = match compile(pou) {
-            Ok(c) => c.warnings,
-            Err(d) => d,
-        };
-        out.extend(diags.into_iter().map(|d| (pou.name.clone(), d)));
+        match compile(pou) {
+            Ok(c) => {
+                out.diagnostics.extend(c.warnings.iter().map(|d| (pou.name.clone(), d.clone())));
+                out.compiled.push((pou.name.clone(), c));
+            }
+            Err(d) => out.diagnostics.extend(d.into_iter().map(|d| (pou.name.clone(), d))),
+        }
     }
     out
+}
+
+/// Every diagnostic (errors and warnings) of a project's Petri net POUs, with the POU name.
+pub fn project_diagnostics(project: &Project) -> Vec<(String, PetriDiagnostic)> {
+    compile_project(project).diagnostics
 }
 
 /// One generated Petri net POU inside a combined project source.
@@ -177,27 +219,25 @@ impl PetriSegment {
     }
 }
 
-/// Appends the generated PROGRAM of every Petri net POU that compiles to `text`, whose next
-/// line is `first_line`; POUs with errors are left out (report them with
-/// [`project_diagnostics`]).
+/// Appends the generated PROGRAM of every compiled Petri net POU to `text`, whose next
+/// line is `first_line`; POUs with errors are not among `nets.compiled` (report them from
+/// `nets.diagnostics`).
 pub fn append_to_source(
-    project: &Project,
+    nets: &ProjectNets,
     text: &mut String,
     segments: &mut Vec<PetriSegment>,
     first_line: u32,
 ) {
     let mut line = first_line;
-    for pou in &project.petri {
-        if let Ok(c) = compile(pou) {
-            let n = c.generated.st.lines().count() as u32;
-            text.push_str(&c.generated.st);
-            segments.push(PetriSegment {
-                pou: pou.name.clone(),
-                first_line: line,
-                generated: c.generated,
-            });
-            line += n;
-        }
+    for (pou, c) in &nets.compiled {
+        let n = c.generated.st.lines().count() as u32;
+        text.push_str(&c.generated.st);
+        segments.push(PetriSegment {
+            pou: pou.clone(),
+            first_line: line,
+            generated: c.generated.clone(),
+        });
+        line += n;
     }
 }
 

@@ -8,6 +8,7 @@ use std::collections::HashMap;
 
 use super::diagnostic::{NetElement, PetriDiagnostic};
 use super::model::Net;
+use super::semiflows::SparseMatrix;
 use crate::diagnostics::Code;
 
 /// A marking: tokens per place, in place order.
@@ -61,18 +62,24 @@ impl PtNet {
         next
     }
 
-    /// The incidence matrix C (places × transitions): `C[p][t] = post − pre`.
-    pub fn incidence(&self) -> Vec<Vec<i64>> {
-        let mut c = vec![vec![0i64; self.transitions()]; self.places()];
+    /// The incidence matrix C (places × transitions, kept sparse): `C[p][t] = post − pre`.
+    pub fn incidence(&self) -> SparseMatrix {
+        let mut rows: Vec<Vec<(usize, i64)>> = vec![Vec::new(); self.places()];
         for (t, (pre, post)) in self.pre.iter().zip(&self.post).enumerate() {
             for &(p, w) in pre {
-                c[p][t] -= i64::from(w);
+                rows[p].push((t, -i64::from(w)));
             }
             for &(p, w) in post {
-                c[p][t] += i64::from(w);
+                match rows[p].last_mut() {
+                    Some((last, v)) if *last == t => *v += i64::from(w),
+                    _ => rows[p].push((t, i64::from(w))),
+                }
             }
         }
-        c
+        for row in &mut rows {
+            row.retain(|&(_, v)| v != 0);
+        }
+        SparseMatrix { columns: self.transitions(), rows }
     }
 
     /// The weight of the arc from place `p` to transition `t` (0 when there is none).

@@ -57,6 +57,14 @@ fn covered_by(a: &[u32], b: &[u32]) -> bool {
 
 /// Explores the markings reachable from the initial one, at most `budget` of them.
 pub fn explore(net: &PtNet, budget: usize) -> ReachGraph {
+    explore_with(net, budget, false)
+}
+
+/// [`explore`], told whether the net is `conservative`: covered by P-semiflows, so some
+/// positive weighted token sum never changes. No marking of such a net strictly covers
+/// another, so the Karp–Miller comparison with the ancestors (quadratic along long paths)
+/// is skipped.
+pub fn explore_with(net: &PtNet, budget: usize, conservative: bool) -> ReachGraph {
     let mut g = ReachGraph {
         markings: vec![net.initial.clone()],
         edges: Vec::new(),
@@ -76,7 +84,9 @@ pub fn explore(net: &PtNet, budget: usize) -> ReachGraph {
                 continue;
             }
             let mut target = net.fire(&m, t);
-            accelerate(&g, here, &mut target);
+            if !conservative {
+                accelerate(&g, here, &mut target);
+            }
             let to = match index.get(&target) {
                 Some(&to) => to,
                 None => {

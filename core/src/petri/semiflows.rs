@@ -25,10 +25,61 @@ pub struct Semiflows {
     pub complete: bool,
 }
 
+/// An integer matrix kept by rows, each row as its non-zero entries `(column, value)` in
+/// column order: a net's incidence matrix is mostly zeros, and a dense one of a
+/// 10,000-place net would take 800 MB.
+#[derive(Debug, Clone, PartialEq, Eq, Default)]
+pub struct SparseMatrix {
+    /// Number of columns.
+    pub columns: usize,
+    /// Per row, its non-zero entries in column order.
+    pub rows: Vec<Vec<(usize, i64)>>,
+}
+
+impl SparseMatrix {
+    /// The sparse form of a dense rows × `columns` matrix.
+    pub fn from_dense(matrix: &[Vec<i64>], columns: usize) -> Self {
+        let rows = matrix
+            .iter()
+            .map(|row| {
+                row.iter()
+                    .take(columns)
+                    .enumerate()
+                    .filter(|(_, &v)| v != 0)
+                    .map(|(c, &v)| (c, v))
+                    .collect()
+            })
+            .collect();
+        SparseMatrix { columns, rows }
+    }
+
+    /// The entry at row `r`, column `c` (0 outside the matrix).
+    pub fn get(&self, r: usize, c: usize) -> i64 {
+        self.rows
+            .get(r)
+            .map_or(0, |row| row.binary_search_by_key(&c, |&(col, _)| col).map_or(0, |i| row[i].1))
+    }
+
+    /// The transpose.
+    pub fn transpose(&self) -> Self {
+        let mut rows = vec![Vec::new(); self.columns];
+        for (r, row) in self.rows.iter().enumerate() {
+            for &(c, v) in row {
+                rows[c].push((r, v));
+            }
+        }
+        SparseMatrix { columns: self.rows.len(), rows }
+    }
+}
+
+/// A sparse vector: non-zero `(index, value)` entries in index order.
+type SparseVec = Vec<(usize, i64)>;
+
+/// One row of the Farkas table: what is left of yᵀC (`rest`) and y itself (`flow`).
 #[derive(Clone, PartialEq, Eq)]
 struct Row {
-    rest: Vec<i64>,
-    flow: Vec<i64>,
+    rest: SparseVec,
+    flow: SparseVec,
 }
 
 fn gcd(mut a: i64, mut b: i64) -> i64 {
@@ -40,112 +91,176 @@ fn gcd(mut a: i64, mut b: i64) -> i64 {
     a
 }
 
+/// `a·x + b·y` without the zero entries, or `None` on overflow.
+fn mix(x: &[(usize, i64)], a: i64, y: &[(usize, i64)], b: i64) -> Option<SparseVec> {
+    let mut out = Vec::with_capacity(x.len() + y.len());
+    let (mut i, mut j) = (0, 0);
+    while i < x.len() || j < y.len() {
+        let (k, v) = match (x.get(i), y.get(j)) {
+            (Some(&(kx, vx)), Some(&(ky, _))) if kx < ky => {
+                i += 1;
+                (kx, vx.checked_mul(a)?)
+            }
+            (Some(&(kx, vx)), Some(&(ky, vy))) if kx == ky => {
+                i += 1;
+                j += 1;
+                (kx, vx.checked_mul(a)?.checked_add(vy.checked_mul(b)?)?)
+            }
+            (_, Some(&(ky, vy))) => {
+                j += 1;
+                (ky, vy.checked_mul(b)?)
+            }
+            (Some(&(kx, vx)), None) => {
+                i += 1;
+                (kx, vx.checked_mul(a)?)
+            }
+            (None, None) => break,
+        };
+        if v != 0 {
+            out.push((k, v));
+        }
+    }
+    Some(out)
+}
+
 impl Row {
     fn normalise(&mut self) {
-        let g = self.rest.iter().chain(&self.flow).fold(0, |g, &x| gcd(g, x));
+        let g = self.rest.iter().chain(&self.flow).fold(0, |g, &(_, x)| gcd(g, x));
         if g > 1 {
-            self.rest.iter_mut().chain(self.flow.iter_mut()).for_each(|x| *x /= g);
+            self.rest.iter_mut().chain(self.flow.iter_mut()).for_each(|(_, x)| *x /= g);
         }
     }
 
-    fn support(&self) -> Vec<bool> {
-        self.flow.iter().map(|&x| x != 0).collect()
+    /// The entry of `rest` in column `col`, when every earlier column is already cancelled.
+    fn lead(&self, col: usize) -> i64 {
+        match self.rest.first() {
+            Some(&(c, v)) if c == col => v,
+            _ => 0,
+        }
     }
 
     /// `a·self + b·other`, or `None` on overflow.
     fn combine(&self, a: i64, other: &Row, b: i64) -> Option<Row> {
-        let mix = |x: &[i64], y: &[i64]| -> Option<Vec<i64>> {
-            x.iter()
-                .zip(y)
-                .map(|(&u, &v)| u.checked_mul(a)?.checked_add(v.checked_mul(b)?))
-                .collect()
+        let mut row = Row {
+            rest: mix(&self.rest, a, &other.rest, b)?,
+            flow: mix(&self.flow, a, &other.flow, b)?,
         };
-        let mut row =
-            Row { rest: mix(&self.rest, &other.rest)?, flow: mix(&self.flow, &other.flow)? };
         row.normalise();
         Some(row)
     }
+
+    fn support_len(&self) -> usize {
+        self.flow.len()
+    }
 }
 
-fn strictly_contains(big: &[bool], small: &[bool]) -> bool {
-    big != small && small.iter().zip(big).all(|(&s, &b)| !s || b)
+/// Whether the support of `small` is strictly inside that of `big`.
+fn strictly_inside(small: &Row, big: &Row) -> bool {
+    small.support_len() < big.support_len()
+        && small.flow.iter().all(|&(k, _)| big.flow.binary_search_by_key(&k, |&(i, _)| i).is_ok())
 }
 
-/// Keeps the rows whose support is minimal, and one row per identical vector.
-fn prune(rows: Vec<Row>) -> Vec<Row> {
-    let supports: Vec<Vec<bool>> = rows.iter().map(Row::support).collect();
-    let mut out: Vec<Row> = Vec::new();
-    for (i, row) in rows.into_iter().enumerate() {
-        let dominated =
-            supports.iter().enumerate().any(|(j, s)| j != i && strictly_contains(&supports[i], s));
-        if !dominated && !out.contains(&row) {
-            out.push(row);
+/// The support of `row` as a bit set over `n` indices, for many containment tests.
+fn bits(row: &Row, n: usize) -> Vec<u64> {
+    let mut set = vec![0u64; n.div_ceil(64)];
+    for &(k, _) in &row.flow {
+        set[k / 64] |= 1 << (k % 64);
+    }
+    set
+}
+
+/// Whether the support of `small` is strictly inside the support `big` given as bits.
+fn strictly_inside_bits(small: &Row, big: &[u64], big_len: usize) -> bool {
+    small.support_len() < big_len
+        && small.flow.iter().all(|&(k, _)| big[k / 64] & (1 << (k % 64)) != 0)
+}
+
+/// The rows of `kept` (pairwise minimal and distinct, as an earlier prune left them) and
+/// of `new` whose support is minimal among all of them, one row per identical vector.
+fn prune(mut kept: Vec<Row>, new: Vec<Row>, n: usize) -> Vec<Row> {
+    if new.is_empty() {
+        return kept;
+    }
+    let new_bits: Vec<Vec<u64>> = new.iter().map(|r| bits(r, n)).collect();
+    kept.retain(|z| !new.iter().any(|r| strictly_inside(r, z)));
+    let mut out: Vec<Row> = Vec::with_capacity(new.len());
+    for (i, row) in new.iter().enumerate() {
+        let (set, len) = (&new_bits[i], row.support_len());
+        let dominated = kept.iter().any(|z| strictly_inside_bits(z, set, len))
+            || new.iter().enumerate().any(|(j, s)| j != i && strictly_inside_bits(s, set, len));
+        if !dominated && !kept.contains(row) && !out.contains(row) {
+            out.push(row.clone());
         }
     }
-    out
+    kept.extend(out);
+    kept
 }
 
-/// Minimal-support semiflows of the rows of `matrix` (rows × columns): the non-negative
-/// y over rows with yᵀ·matrix = 0.
-pub fn minimal_semiflows(matrix: &[Vec<i64>], columns: usize) -> Semiflows {
-    let n = matrix.len();
-    let mut rows: Vec<Row> = (0..n)
-        .map(|i| {
-            let mut flow = vec![0; n];
-            flow[i] = 1;
-            Row { rest: matrix[i].clone(), flow }
-        })
+/// Minimal-support semiflows of the rows of `matrix`: the non-negative y over rows with
+/// yᵀ·matrix = 0.
+pub fn minimal_semiflows(matrix: &SparseMatrix) -> Semiflows {
+    let n = matrix.rows.len();
+    let mut rows: Vec<Row> = matrix
+        .rows
+        .iter()
+        .enumerate()
+        .map(|(i, rest)| Row { rest: rest.clone(), flow: vec![(i, 1)] })
         .collect();
     let mut complete = true;
-    for col in 0..columns {
+    for col in 0..matrix.columns {
+        if rows.iter().all(|r| r.lead(col) == 0) {
+            continue;
+        }
         let (zero, nonzero): (Vec<Row>, Vec<Row>) =
-            rows.into_iter().partition(|r| r.rest[col] == 0);
-        let mut next = zero;
-        let (pos, neg): (Vec<&Row>, Vec<&Row>) = nonzero.iter().partition(|r| r.rest[col] > 0);
+            rows.into_iter().partition(|r| r.lead(col) == 0);
+        let mut new = Vec::new();
+        let (pos, neg): (Vec<&Row>, Vec<&Row>) = nonzero.iter().partition(|r| r.lead(col) > 0);
         'pairs: for p in &pos {
             for q in &neg {
-                let (a, b) = (-q.rest[col], p.rest[col]);
+                let (a, b) = (-q.lead(col), p.lead(col));
                 match p.combine(a, q, b) {
-                    Some(row) => next.push(row),
+                    Some(row) => new.push(row),
                     None => {
                         complete = false;
                         continue;
                     }
                 }
-                if next.len() > ROW_LIMIT {
+                if zero.len() + new.len() > ROW_LIMIT {
                     complete = false;
                     break 'pairs;
                 }
             }
         }
-        rows = prune(next);
+        rows = prune(zero, new, n);
     }
     let mut flows: Vec<Semiflow> = rows
         .into_iter()
-        .filter(|r| r.flow.iter().any(|&x| x != 0))
-        .map(|r| r.flow.iter().map(|&x| x.unsigned_abs()).collect())
+        .filter(|r| !r.flow.is_empty())
+        .map(|r| {
+            let mut y = vec![0u64; n];
+            for (k, v) in r.flow {
+                y[k] = v.unsigned_abs();
+            }
+            y
+        })
         .collect();
-    flows.sort_by(|a, b| {
-        let key = |f: &Semiflow| f.iter().map(|&x| x == 0).collect::<Vec<_>>();
-        key(a).cmp(&key(b)).then_with(|| a.cmp(b))
-    });
-    flows.retain(|f| is_semiflow(matrix, columns, f));
+    flows.sort_by_cached_key(|f| (f.iter().map(|&x| x == 0).collect::<Vec<_>>(), f.clone()));
+    flows.retain(|f| is_semiflow(matrix, f));
     Semiflows { flows, complete }
 }
 
 /// Whether `y` (over the rows) satisfies yᵀ·matrix = 0 and is non-zero.
-pub fn is_semiflow(matrix: &[Vec<i64>], columns: usize, y: &[u64]) -> bool {
-    if y.len() != matrix.len() || y.iter().all(|&x| x == 0) {
+pub fn is_semiflow(matrix: &SparseMatrix, y: &[u64]) -> bool {
+    if y.len() != matrix.rows.len() || y.iter().all(|&x| x == 0) {
         return false;
     }
-    (0..columns).all(|c| {
-        let sum: i128 =
-            matrix.iter().zip(y).map(|(row, &w)| i128::from(row[c]) * i128::from(w)).sum();
-        sum == 0
-    })
-}
-
-/// The transpose of a rows × columns matrix.
-pub fn transpose(matrix: &[Vec<i64>], columns: usize) -> Vec<Vec<i64>> {
-    (0..columns).map(|c| matrix.iter().map(|row| row[c]).collect()).collect()
+    let mut sums = vec![0i128; matrix.columns];
+    for (row, &w) in matrix.rows.iter().zip(y) {
+        if w != 0 {
+            for &(c, v) in row {
+                sums[c] += i128::from(v) * i128::from(w);
+            }
+        }
+    }
+    sums.iter().all(|&s| s == 0)
 }

@@ -2,7 +2,19 @@
 
 use proptest::prelude::*;
 
-use super::super::semiflows::{is_semiflow, minimal_semiflows, transpose};
+use super::super::semiflows::{self, SparseMatrix};
+
+fn minimal_semiflows(matrix: &[Vec<i64>], columns: usize) -> semiflows::Semiflows {
+    semiflows::minimal_semiflows(&SparseMatrix::from_dense(matrix, columns))
+}
+
+fn is_semiflow(matrix: &[Vec<i64>], columns: usize, y: &[u64]) -> bool {
+    semiflows::is_semiflow(&SparseMatrix::from_dense(matrix, columns), y)
+}
+
+fn transpose(matrix: &[Vec<i64>], columns: usize) -> Vec<Vec<i64>> {
+    (0..columns).map(|c| matrix.iter().map(|row| row[c]).collect()).collect()
+}
 
 fn support(v: &[u64]) -> Vec<bool> {
     v.iter().map(|&x| x > 0).collect()
@@ -86,6 +98,36 @@ proptest! {
                 }),
                 "minimal support of {y:?} missing from {:?} for {c:?}", found.flows
             );
+        }
+    }
+}
+
+#[test]
+fn a_long_cycle_has_one_semiflow_over_every_place() {
+    // 3,000 places in one cycle: the sparse table never holds more than one combined row,
+    // and a dense incidence matrix of this net would have 9,000,000 entries.
+    let n = 3_000;
+    let rows = (0..n).map(|p| {
+        let mut row = vec![(p, -1), ((p + n - 1) % n, 1)];
+        row.sort_unstable();
+        row
+    });
+    let c = SparseMatrix { columns: n, rows: rows.collect() };
+    let found = semiflows::minimal_semiflows(&c);
+    assert!(found.complete);
+    assert_eq!(found.flows, vec![vec![1; n]]);
+    assert_eq!(semiflows::minimal_semiflows(&c.transpose()).flows, vec![vec![1; n]]);
+}
+
+#[test]
+fn sparse_and_dense_forms_agree() {
+    let dense = vec![vec![-1, 0, 2], vec![0, 0, 0], vec![3, -4, 0]];
+    let c = SparseMatrix::from_dense(&dense, 3);
+    assert_eq!(c.rows[1], vec![]);
+    for (r, row) in dense.iter().enumerate() {
+        for (col, &v) in row.iter().enumerate() {
+            assert_eq!(c.get(r, col), v);
+            assert_eq!(c.transpose().get(col, r), v);
         }
     }
 }
