@@ -1,3 +1,4 @@
+#![cfg(not(target_arch = "wasm32"))]
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 //! Property: for random well-formed ladder POUs, running the LD and running its readable ST
 //! view give the same variable values, scan by scan, over random input sequences.

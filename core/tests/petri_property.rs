@@ -1,3 +1,4 @@
+#![cfg(not(target_arch = "wasm32"))]
 //! Correctness by construction: random safe nets built from sequences, choices,
 //! fork/join (with and without idle places) and mutual exclusion are generated into ST,
 //! run on the real VM with random guard values, and after every scan the marking read

@@ -1,3 +1,4 @@
+#![cfg(not(target_arch = "wasm32"))]
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 //! The importer never panics: the LD samples with lines dropped and wires pointed elsewhere
 //! either import (and then lower and export without panicking) or give an error.

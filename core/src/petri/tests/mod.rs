@@ -4,6 +4,7 @@
 mod analysis;
 mod codegen;
 mod conflicts;
+#[cfg(not(target_arch = "wasm32"))]
 mod semiflows;
 
 use super::*;
