@@ -57,6 +57,10 @@ pub(super) struct Checker<'a> {
     pub body: BodyState,
     pub calls: Vec<HashSet<PouId>>,
     pub library_pous: usize,
+    /// Per POU: its variables by upper-case name, and how many variables the index covers
+    /// (a POU's variable list only grows while it is declared). Without it every name in a
+    /// body was a linear search, and a 1,000-rung ladder POU took seconds to check.
+    pub var_index: HashMap<usize, (usize, HashMap<String, u32>)>,
 }
 
 impl<'a> Checker<'a> {
@@ -74,7 +78,22 @@ impl<'a> Checker<'a> {
             body: BodyState::default(),
             calls: Vec::new(),
             library_pous: 0,
+            var_index: HashMap::new(),
         }
+    }
+
+    /// The index of the variable named `key` (upper case, as [`ast::Ident::key`] gives it)
+    /// in POU `pou`: the first one declared with that name, as [`Pou::find_var`] finds it.
+    pub fn local_var(&mut self, pou: usize, key: &str) -> Option<u32> {
+        let vars = &self.pous.get(pou)?.vars;
+        let entry = self.var_index.entry(pou).or_default();
+        if entry.0 != vars.len() {
+            for (i, v) in vars.iter().enumerate().skip(entry.0) {
+                entry.1.entry(v.name.to_ascii_uppercase()).or_insert(i as u32);
+            }
+            entry.0 = vars.len();
+        }
+        entry.1.get(key).copied()
     }
 
     /// Reports an error.

@@ -361,6 +361,8 @@ impl<'a> Checker<'a> {
 
     /// Declares the variables of one VAR block into `out`.
     pub fn declare_block(&mut self, block: &ast::VarBlock, kind: PouKind, out: &mut Vec<Var>) {
+        let mut declared: std::collections::HashSet<String> =
+            out.iter().map(|v| v.name.to_ascii_uppercase()).collect();
         for decl in &block.decls {
             let owner = decl.names.first().map_or("", |n| n.name.as_str()).to_string();
             let Some(r) = self.resolve_type(&decl.ty, &owner) else { continue };
@@ -389,7 +391,7 @@ impl<'a> Checker<'a> {
                 ast::Ident { name: super::expr::normalize_address(loc), span: loc.span }
             });
             for name in decl.names.iter().chain(unnamed.as_ref()) {
-                if out.iter().any(|v| v.name.eq_ignore_ascii_case(&name.name)) {
+                if !declared.insert(name.key()) {
                     self.error(
                         Code::DuplicateDeclaration,
                         name.span,

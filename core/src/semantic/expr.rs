@@ -372,20 +372,18 @@ impl<'a> Checker<'a> {
     fn lookup(&mut self, id: &ast::Ident, expected: Option<Type>) -> Option<NameRef> {
         let key = id.key();
         let pou = self.body.pou as usize;
-        if let Some(p) = self.pous.get(pou) {
-            if let Some(i) = p.find_var(&key) {
-                let var = p.vars[i as usize].clone();
-                if var.section == VarSection::External {
-                    if let Some(&g) = self.global_index.get(&key) {
-                        return Some(NameRef::Var {
-                            place: Place::Global(g),
-                            var: Box::new(self.globals[g as usize].clone()),
-                        });
-                    }
-                    return None;
+        if let Some(i) = self.local_var(pou, &key) {
+            let var = self.pous[pou].vars[i as usize].clone();
+            if var.section == VarSection::External {
+                if let Some(&g) = self.global_index.get(&key) {
+                    return Some(NameRef::Var {
+                        place: Place::Global(g),
+                        var: Box::new(self.globals[g as usize].clone()),
+                    });
                 }
-                return Some(NameRef::Var { place: Place::Local(i), var: Box::new(var) });
+                return None;
             }
+            return Some(NameRef::Var { place: Place::Local(i), var: Box::new(var) });
         }
         if let Some(&g) = self.global_index.get(&key) {
             return Some(NameRef::Var {

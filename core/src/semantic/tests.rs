@@ -138,3 +138,14 @@ fn conditions_and_values_check_in_a_program_scope() {
     assert!(parse_value(&p, main, Type::Elem(Elem::Int), "i").is_err());
     assert!(parse_value(&p, main, Type::Elem(Elem::SInt), "300").is_err());
 }
+
+#[test]
+fn a_name_declared_twice_is_found_in_any_case_across_blocks() {
+    // The duplicate in a later block (other case) is reported where it is written, and the
+    // body's names resolve to the first declaration (INT, so 40000 does not fit).
+    let src = "PROGRAM P\nVAR_INPUT Level : INT; END_VAR\nVAR level : REAL; x : INT; X : BOOL; END_VAR\nLEVEL := 40000;\nEND_PROGRAM\n";
+    let errs = errors(src);
+    assert!(errs.contains(&(Code::DuplicateDeclaration, 3, 5)), "{errs:?}");
+    assert!(errs.contains(&(Code::DuplicateDeclaration, 3, 28)), "{errs:?}");
+    assert!(errs.contains(&(Code::ConstantOutOfRange, 4, 10)), "{errs:?}");
+}
