@@ -139,6 +139,17 @@ fn wastewater_sample_ld_and_st_fbs() {
     assert!(p.source.contains("FUNCTION_BLOCK Start_CMD"));
     assert!(p.source.contains("HOA_MODE"));
     assert_round_trip(p);
+    // `Mode := HOA_HAND;` inside Run_Mode, whose input is `HOA_Hand`: the enumeration value,
+    // as the expected type says (warning W0030), so the sample builds and runs.
+    let build = plc_core::build::build_project(p);
+    assert!(!build.has_errors(), "{:?}", build.diagnostics);
+    let shadowed = build.diagnostics.iter().filter(|d| d.code.as_str() == "W0030").count();
+    assert_eq!(shadowed, 2, "{:?}", build.diagnostics);
+    let mut sim = project_simulator(p, None).expect("builds");
+    sim.write("Hand_Relay", "TRUE").expect("Hand_Relay");
+    assert!(matches!(sim.scan(), plc_core::sim::ScanOutcome::Completed));
+    let mode = sim.read("START_CMD0.Run_Mode0.Mode").expect("Mode");
+    assert_eq!(plc_core::export::value_text(&mode), "HOA_HAND");
 }
 
 #[test]

@@ -5,7 +5,8 @@
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
 //! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder
 //! diagrams (W0005–W0009 are ladder warnings), E0500–E0549 Petri nets (W0010–W0019 are Petri
-//! net warnings), E0550–E0599 textual SFC (W0020–W0029 are SFC warnings), W0001– warnings.
+//! net warnings), E0550–E0599 textual SFC (W0020–W0029 are SFC warnings), W0001–W0004 and
+//! W0030– other warnings.
 
 use serde::Serialize;
 
@@ -194,6 +195,7 @@ problem_codes! {
     SfcUnusedAction = "W0023": "an ACTION that no step uses",
     SfcTransitionNotAssigned = "W0024": "a transition body that never assigns the transition's name",
     SfcSamePriority = "W0025": "transitions leaving the same step with the same PRIORITY (source order decides)",
+    VariableShadowsEnumValue = "W0030": "a name that is both a variable and a value of the enumeration expected there (read as the value)",
 }
 
 impl std::fmt::Display for Code {

@@ -368,12 +368,46 @@ impl<'a> Checker<'a> {
         }
     }
 
+    /// Where a value of enumeration `expected` is wanted and `id` names both a variable of
+    /// another type and a value of that enumeration (OpenPLC files have an input `HOA_Hand`
+    /// next to the value `HOA_HAND`, and names are case-insensitive): the value, as matiec
+    /// and CODESYS resolve it by the expected type, with warning W0030.
+    fn enum_value_over_variable(
+        &mut self,
+        id: &ast::Ident,
+        var: &Var,
+        expected: Option<Type>,
+    ) -> Option<NameRef> {
+        let Some(Type::Enum(eid)) = expected else { return None };
+        if var.ty == Type::Enum(eid) {
+            return None;
+        }
+        let def = &self.types.enums[eid as usize];
+        let &(_, value) = def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&id.name))?;
+        let message = format!(
+            "`{}` is both the variable `{}` ({}) and a value of `{}`; it is read as the value \
+             because a {} is expected here: write `{}#{}` to say so, or rename the variable",
+            id.name,
+            var.name,
+            self.tname(var.ty),
+            def.name,
+            def.name,
+            def.name,
+            id.name
+        );
+        self.warning(Code::VariableShadowsEnumValue, id.span, message);
+        Some(NameRef::Enumerator(Type::Enum(eid), value))
+    }
+
     /// Resolves a name used in a body.
     fn lookup(&mut self, id: &ast::Ident, expected: Option<Type>) -> Option<NameRef> {
         let key = id.key();
         let pou = self.body.pou as usize;
         if let Some(i) = self.local_var(pou, &key) {
             let var = self.pous[pou].vars[i as usize].clone();
+            if let Some(enumerator) = self.enum_value_over_variable(id, &var, expected) {
+                return Some(enumerator);
+            }
             if var.section == VarSection::External {
                 if let Some(&g) = self.global_index.get(&key) {
                     return Some(NameRef::Var {

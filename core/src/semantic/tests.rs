@@ -149,3 +149,30 @@ fn a_name_declared_twice_is_found_in_any_case_across_blocks() {
     assert!(errs.contains(&(Code::DuplicateDeclaration, 3, 28)), "{errs:?}");
     assert!(errs.contains(&(Code::ConstantOutOfRange, 4, 10)), "{errs:?}");
 }
+
+#[test]
+fn an_enum_value_expected_wins_over_a_variable_of_another_type() {
+    let src = "TYPE Mode_t : (HAND, AUTO); END_TYPE\nPROGRAM P\nVAR_INPUT Hand : BOOL; END_VAR\nVAR m : Mode_t := AUTO; b : BOOL; END_VAR\nm := HAND;\nb := hand;\nEND_PROGRAM\n";
+    let a = analyze(src);
+    assert!(a.program.is_some(), "{:?}", a.diagnostics);
+    let index = LineIndex::new(src);
+    let warned: Vec<(Code, u32, u32)> = a
+        .diagnostics
+        .iter()
+        .map(|d| {
+            let l = index.location(d.span.start);
+            (d.code, l.line, l.column)
+        })
+        .collect();
+    // Only where a Mode_t is expected; `b := hand` reads the BOOL input.
+    assert_eq!(warned, vec![(Code::VariableShadowsEnumValue, 5, 6)]);
+    let mut sim = crate::sim::Simulator::new(
+        a.program.clone().unwrap(),
+        a.program.as_ref().unwrap().find_pou("P").unwrap(),
+    )
+    .unwrap();
+    sim.hold("Hand", "TRUE").unwrap();
+    sim.scan();
+    assert_eq!(crate::export::value_text(&sim.read("m").unwrap()), "HAND");
+    assert_eq!(sim.read("b").unwrap(), crate::vm::Value::Bool(true));
+}
