@@ -218,12 +218,19 @@ fn project_report(d: &ProjectDiagnostic) -> DiagnosticReport {
 /// Ladder problems are reported with line 0 and `POU Name, rung R, row r, column c:` in the
 /// message, Petri net problems with `POU Name, transition T (guard line l, column c):`;
 /// the hidden variables of the ladder lowering and the Petri net code are left out of
-/// `vars`.
+/// `vars`. Without `options.program`, the PROGRAM the project's settings chose runs (when
+/// it still exists), else the first.
 pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> RunReport {
     let build = build_project(project);
     let diagnostics = build.diagnostics.iter().map(project_report).collect();
     let program = if build.has_errors() { None } else { build.program.clone() };
-    run_checked(program, options, diagnostics, |info| {
+    let mut options = options.clone();
+    if options.program.is_none() {
+        options.program = project.settings.program.clone().filter(|name| {
+            program.as_ref().is_some_and(|p| crate::build::find_program(p, Some(name)).is_ok())
+        });
+    }
+    run_checked(program, &options, diagnostics, |info| {
         let (message, line, column) = located(&build.site_of(info.span), &info.fault.to_string());
         FaultReport { message, line, column }
     })

@@ -146,3 +146,21 @@ fn projects_keep_their_nets_and_old_files_still_load() {
     assert!(Project::from_file(old).unwrap().petri.is_empty());
     assert!(!Project::new("x").to_file().contains("petri"), "no petri key when empty");
 }
+
+#[test]
+fn the_program_chosen_in_the_settings_runs_unless_the_options_name_another() {
+    let mut project = looping("n := n + 1;", "x");
+    project.source = "PROGRAM First\nVAR k : INT; END_VAR\nk := k + 1;\nEND_PROGRAM\n".into();
+    // No choice: the first PROGRAM (the ST one).
+    assert!(run(&project, 2).vars.contains_key("k"));
+    project.settings.program = Some("Loop".into());
+    let report = run(&project, 2);
+    assert_eq!(report.vars.get("n").map(|v| v.to_string()).as_deref(), Some("2"), "{report:?}");
+    // `--program` wins over the settings; a stale choice falls back to the first PROGRAM.
+    let options = RunOptions { program: Some("First".into()), ..RunOptions::default() };
+    assert!(run_project(&project, &options).vars.contains_key("k"));
+    project.settings.program = Some("Renamed".into());
+    let report = run(&project, 1);
+    assert_eq!(report.status, RunStatus::Ok, "{report:?}");
+    assert!(report.vars.contains_key("k"));
+}
