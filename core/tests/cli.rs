@@ -235,3 +235,16 @@ fn the_five_ladder_rungs_run_from_the_project_file_and_from_plcopen_xml() {
         stdout(&out)
     );
 }
+
+#[test]
+fn run_prints_warnings_as_check_does() {
+    let path = source_file(
+        "warn.st",
+        "PROGRAM P\nVAR s : SINT; i : INT; END_VAR\nCASE s OF 300: i := 1; END_CASE;\nEND_PROGRAM\n",
+    );
+    let p = path.to_str().expect("utf-8 path");
+    let checked = stdout(&plc(&["check", p]));
+    let run = stdout(&plc(&["run", p]));
+    let warning = checked.lines().find(|l| l.contains(": warning[W")).expect("a warning");
+    assert!(run.lines().any(|l| l == warning), "run printed:\n{run}\ncheck printed:\n{checked}");
+}

@@ -185,18 +185,15 @@ fn check_project(path: &Path, project: &Project) -> ExitCode {
     let report = run_project(project, &RunOptions { cycles: 0, ..RunOptions::default() });
     let mut errors = 0;
     for d in &report.diagnostics {
-        let severity = match d.severity {
-            plc_core::diagnostics::Severity::Error => {
-                errors += 1;
-                "error"
-            }
-            plc_core::diagnostics::Severity::Warning => "warning",
-        };
+        if d.severity == plc_core::diagnostics::Severity::Error {
+            errors += 1;
+        }
         println!(
-            "{}:{}:{}: {severity}[{}]: {}",
+            "{}:{}:{}: {}[{}]: {}",
             path.display(),
             d.line,
             d.column,
+            d.severity.as_str(),
             d.code,
             d.message
         );
@@ -255,11 +252,11 @@ fn bench(json: bool, quick: bool, only: &[String]) -> ExitCode {
 fn print_text(path: &Path, report: &RunReport) {
     for d in &report.diagnostics {
         println!(
-            "{}:{}:{}: {:?}[{}]: {}",
+            "{}:{}:{}: {}[{}]: {}",
             path.display(),
             d.line,
             d.column,
-            d.severity,
+            d.severity.as_str(),
             d.code,
             d.message
         );
