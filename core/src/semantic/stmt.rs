@@ -8,8 +8,22 @@ use crate::diagnostics::Code;
 use crate::syntax::{self as ast};
 
 impl<'a> Checker<'a> {
-    /// Checks a list of statements; statements with errors are left out.
+    /// Checks a list of statements; statements with errors are left out. The first
+    /// statement after a RETURN, EXIT or CONTINUE of the same list gets warning W0002.
     pub fn stmts(&mut self, list: &[ast::Stmt]) -> Vec<Stmt> {
+        use ast::StmtKind as K;
+        let leaving = list.iter().position(|s| matches!(s.kind, K::Return | K::Exit | K::Continue));
+        if let Some(i) = leaving {
+            if let Some(next) = list[i + 1..].iter().find(|s| !matches!(s.kind, K::Empty)) {
+                let why = match list[i].kind {
+                    K::Return => "the RETURN before it always leaves the POU",
+                    K::Exit => "the EXIT before it always leaves the loop",
+                    _ => "the CONTINUE before it always goes on with the loop's next pass",
+                };
+                let msg = format!("this statement can never run: {why}");
+                self.warning(Code::UnreachableCode, next.span, msg);
+            }
+        }
         list.iter().filter_map(|s| self.stmt(s)).collect()
     }
 

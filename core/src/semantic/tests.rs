@@ -176,3 +176,29 @@ fn an_enum_value_expected_wins_over_a_variable_of_another_type() {
     assert_eq!(crate::export::value_text(&sim.read("m").unwrap()), "HAND");
     assert_eq!(sim.read("b").unwrap(), crate::vm::Value::Bool(true));
 }
+
+#[test]
+fn the_first_statement_after_return_exit_or_continue_is_unreachable() {
+    let src = "PROGRAM P\nVAR i : INT; n : INT; END_VAR\nFOR i := 1 TO 3 DO\n    IF i = 2 THEN CONTINUE; n := 0; END_IF;\n    EXIT;\n    n := n + 1;\nEND_FOR;\nRETURN;\nn := 5;\nn := 6;\nEND_PROGRAM\n";
+    let a = analyze(src);
+    assert!(a.program.is_some(), "{:?}", a.diagnostics);
+    let index = LineIndex::new(src);
+    let found: Vec<(Code, u32, u32)> = a
+        .diagnostics
+        .iter()
+        .map(|d| {
+            let l = index.location(d.span.start);
+            (d.code, l.line, l.column)
+        })
+        .collect();
+    // One warning per list, at its first unreachable statement; a CONTINUE inside an IF
+    // does not make what follows the IF unreachable.
+    assert_eq!(
+        found,
+        vec![
+            (Code::UnreachableCode, 4, 29),
+            (Code::UnreachableCode, 6, 5),
+            (Code::UnreachableCode, 9, 1)
+        ]
+    );
+}
