@@ -183,10 +183,11 @@ fn check(path: &Path) -> ExitCode {
 /// their POU, rung, row and column in the message.
 fn check_project(path: &Path, project: &Project) -> ExitCode {
     let report = run_project(project, &RunOptions { cycles: 0, ..RunOptions::default() });
-    let mut errors = 0;
+    let (mut errors, mut warnings) = (0, 0);
     for d in &report.diagnostics {
-        if d.severity == plc_core::diagnostics::Severity::Error {
-            errors += 1;
+        match d.severity {
+            plc_core::diagnostics::Severity::Error => errors += 1,
+            plc_core::diagnostics::Severity::Warning => warnings += 1,
         }
         println!(
             "{}:{}:{}: {}[{}]: {}",
@@ -198,7 +199,7 @@ fn check_project(path: &Path, project: &Project) -> ExitCode {
             d.message
         );
     }
-    eprintln!("{}: {errors} error(s)", path.display());
+    eprintln!("{}: {errors} error(s), {warnings} warning(s)", path.display());
     if errors > 0 {
         ExitCode::FAILURE
     } else {

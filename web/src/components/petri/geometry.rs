@@ -129,6 +129,32 @@ pub fn macro_box(places: &[Point]) -> Option<(f64, f64, f64, f64)> {
     Some((x0 - MACRO_PAD, y0 - MACRO_PAD, x1 - x0 + 2.0 * MACRO_PAD, y1 - y0 + 2.0 * MACRO_PAD))
 }
 
+/// About how wide a transition's name and guard are drawn (26 characters of guard at 10 px).
+pub const LABEL_W: f64 = 130.0;
+
+/// The box `(x, y, width, height)` of the name and guard beside a transition at `c` whose
+/// bar is `hw` half wide: right of the bar, or left of it when `left`.
+pub fn label_box(c: Point, hw: f64, left: bool) -> (f64, f64, f64, f64) {
+    let x = if left { c.x - hw - 6.0 - LABEL_W } else { c.x + hw + 6.0 };
+    (x, c.y - 14.0, LABEL_W, 30.0)
+}
+
+fn box_hits_place(b: (f64, f64, f64, f64), places: &[Point]) -> bool {
+    let (x, y, w, h) = b;
+    places.iter().any(|p| {
+        let nx = p.x.clamp(x, x + w);
+        let ny = p.y.clamp(y, y + h);
+        (p.x - nx).powi(2) + (p.y - ny).powi(2) < PLACE_R * PLACE_R
+    })
+}
+
+/// Whether a transition's labels go left of its bar: when they would cover a place on the
+/// right and not on the left.
+pub fn label_on_left(c: Point, hw: f64, places: &[Point]) -> bool {
+    box_hits_place(label_box(c, hw, false), places)
+        && !box_hits_place(label_box(c, hw, true), places)
+}
+
 /// The view box `(x, y, width, height)` around points, with room for labels.
 pub fn view_box(points: &[Point], extra: &[(f64, f64, f64, f64)]) -> (f64, f64, f64, f64) {
     let mut x0 = f64::INFINITY;

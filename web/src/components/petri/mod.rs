@@ -20,7 +20,7 @@ use crate::state::{marking_of, AppState, RunMode};
 use analysis::AnalysisPanel;
 use code::CodePanel;
 use details::ElementDetails;
-use geometry::{arc_line, bar_of, macro_box, view_box, Bar, PLACE_R};
+use geometry::{arc_line, bar_of, label_box, label_on_left, macro_box, view_box, Bar, PLACE_R};
 use layout::{layout, NetLayout, Point};
 
 /// Characters of a guard shown beside its transition.
@@ -134,7 +134,14 @@ fn place_view(
     .into_any()
 }
 
-fn transition_view(ctx: NetCtx, pou: &PetriPou, j: usize, c: Point, bar: Bar) -> AnyView {
+fn transition_view(
+    ctx: NetCtx,
+    pou: &PetriPou,
+    j: usize,
+    c: Point,
+    bar: Bar,
+    label_left: bool,
+) -> AnyView {
     let t = &pou.net.transitions[j];
     let element = NetElement::Transition(t.id.clone());
     let shown = if t.name.trim().is_empty() { t.id.clone() } else { t.name.clone() };
@@ -145,7 +152,8 @@ fn transition_view(ctx: NetCtx, pou: &PetriPou, j: usize, c: Point, bar: Bar) ->
     let fired = move || ctx.fired.with(|f| f.get(j).copied().unwrap_or(false));
     let enabled = move || ctx.enabled.with(|f| f.get(j).copied().unwrap_or(false));
     let title = format!("{shown}: {guard} (priority {})", t.priority);
-    let label_x = c.x + hw + 6.0;
+    let (label_x, anchor) =
+        if label_left { (c.x - hw - 6.0, "end") } else { (c.x + hw + 6.0, "start") };
     let id = t.id.clone();
     view! {
         <g class="pn-transition" class:fired=fired class:enabled=enabled
@@ -161,8 +169,8 @@ fn transition_view(ctx: NetCtx, pou: &PetriPou, j: usize, c: Point, bar: Bar) ->
             <title>{title}</title>
             <rect class="pn-hit" x=c.x - hw - 4.0 y=c.y - hh - 4.0 width=2.0 * hw + 8.0 height=2.0 * hh + 8.0/>
             <rect class="pn-bar" x=c.x - hw y=c.y - hh width=2.0 * hw height=2.0 * hh rx="1.5"/>
-            <text class="pn-tname" x=label_x y=c.y - 2.0>{clip(&shown, 18)}</text>
-            <text class="pn-guard" x=label_x y=c.y + 11.0>{clip(&guard, GUARD_CHARS)}</text>
+            <text class="pn-tname" x=label_x y=c.y - 2.0 text-anchor=anchor>{clip(&shown, 18)}</text>
+            <text class="pn-guard" x=label_x y=c.y + 11.0 text-anchor=anchor>{clip(&guard, GUARD_CHARS)}</text>
         </g>
     }
     .into_any()
@@ -252,11 +260,19 @@ fn net_svg(
     let places = (0..net.places.len())
         .map(|i| place_view(ctx, pou, compiled, i, lay.places[i]))
         .collect_view();
+    let left: Vec<bool> = (0..net.transitions.len())
+        .map(|j| label_on_left(lay.transitions[j], bars[j].half().0, &lay.places))
+        .collect();
     let transitions = (0..net.transitions.len())
-        .map(|j| transition_view(ctx, pou, j, lay.transitions[j], bars[j]))
+        .map(|j| transition_view(ctx, pou, j, lay.transitions[j], bars[j], left[j]))
         .collect_view();
     let points: Vec<Point> = lay.places.iter().chain(&lay.transitions).copied().collect();
-    let extra: Vec<(f64, f64, f64, f64)> = boxes.iter().map(|&(_, b)| b).collect();
+    let mut extra: Vec<(f64, f64, f64, f64)> = boxes.iter().map(|&(_, b)| b).collect();
+    extra.extend(
+        (0..net.transitions.len())
+            .filter(|&j| left[j])
+            .map(|j| label_box(lay.transitions[j], bars[j].half().0, true)),
+    );
     let (vx, vy, vw, vh) = view_box(&points, &extra);
     view! {
         <svg class="pn-svg" viewBox=format!("{vx} {vy} {vw} {vh}") width=vw height=vh

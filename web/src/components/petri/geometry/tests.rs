@@ -51,3 +51,17 @@ fn macro_places_and_view_boxes_enclose_their_parts() {
     assert!(vx + vw > 300.0 + PLACE_R && vy + vh > 500.0 + PLACE_R);
     assert_eq!(view_box(&[], &[]), (0.0, 0.0, 200.0, 100.0));
 }
+
+#[test]
+fn transition_labels_move_left_of_a_place_they_would_cover() {
+    let (hw, _) = Bar::Horizontal.half();
+    // The weighing net's T(P33,P1) at x 0, P31 at (60, 220): its label would cover P31.
+    let t = pt(0.0, 240.0);
+    assert!(label_on_left(t, hw, &[pt(60.0, 220.0)]));
+    // Nothing on the right: labels stay right.
+    assert!(!label_on_left(t, hw, &[pt(-60.0, 240.0)]));
+    // Places on both sides: right, as everywhere else.
+    assert!(!label_on_left(t, hw, &[pt(60.0, 220.0), pt(-60.0, 240.0)]));
+    let (x, _, w, _) = label_box(t, hw, true);
+    assert!(x + w < t.x - hw, "a left label ends before the bar");
+}
