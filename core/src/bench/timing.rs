@@ -94,9 +94,9 @@ pub fn b2(effort: Effort) -> Result<Paired, BenchError> {
     ))
 }
 
-/// B3: scan time of the CASE OF code generated from Petri net cycles of 10 … 10,000 places (ns per scan, best
-/// of 15 runs of 20,000 scans, the sizes taken in turn so that all see the same moments of
-/// a busy machine), and the ratio largest/smallest.
+/// B3: scan time of the CASE OF code generated from Petri net cycles of 10 … 10,000 places
+/// (ns per scan, best of 15 runs of 20,000 scans, the sizes taken in turn so that all see
+/// the same moments of a busy machine), and the ratio largest/smallest.
 pub fn b3(effort: Effort) -> Result<Json, BenchError> {
     let sizes: &[usize] =
         if effort == Effort::Full { &[10, 100, 1_000, 10_000] } else { &[10, 100] };

@@ -17,6 +17,18 @@ fn errors(src: &str) -> Vec<(Code, u32, u32)> {
         .collect()
 }
 
+/// Every diagnostic of an analysis of `src` (warnings too) as (code, line, column).
+fn located(src: &str, a: &Analysis) -> Vec<(Code, u32, u32)> {
+    let index = LineIndex::new(src);
+    a.diagnostics
+        .iter()
+        .map(|d| {
+            let l = index.location(d.span.start);
+            (d.code, l.line, l.column)
+        })
+        .collect()
+}
+
 fn program(body: &str) -> String {
     format!(
         "PROGRAM P\nVAR i : INT; s : SINT; d : DINT; r : REAL; b : BOOL; w : WORD; t : TON; str : STRING[5]; END_VAR\n{body}\nEND_PROGRAM\n"
@@ -155,15 +167,7 @@ fn an_enum_value_expected_wins_over_a_variable_of_another_type() {
     let src = "TYPE Mode_t : (HAND, AUTO); END_TYPE\nPROGRAM P\nVAR_INPUT Hand : BOOL; END_VAR\nVAR m : Mode_t := AUTO; b : BOOL; END_VAR\nm := HAND;\nb := hand;\nEND_PROGRAM\n";
     let a = analyze(src);
     assert!(a.program.is_some(), "{:?}", a.diagnostics);
-    let index = LineIndex::new(src);
-    let warned: Vec<(Code, u32, u32)> = a
-        .diagnostics
-        .iter()
-        .map(|d| {
-            let l = index.location(d.span.start);
-            (d.code, l.line, l.column)
-        })
-        .collect();
+    let warned = located(src, &a);
     // Only where a Mode_t is expected; `b := hand` reads the BOOL input.
     assert_eq!(warned, vec![(Code::VariableShadowsEnumValue, 5, 6)]);
     let mut sim = crate::sim::Simulator::new(
@@ -182,15 +186,7 @@ fn the_first_statement_after_return_exit_or_continue_is_unreachable() {
     let src = "PROGRAM P\nVAR i : INT; n : INT; END_VAR\nFOR i := 1 TO 3 DO\n    IF i = 2 THEN CONTINUE; n := 0; END_IF;\n    EXIT;\n    n := n + 1;\nEND_FOR;\nRETURN;\nn := 5;\nn := 6;\nEND_PROGRAM\n";
     let a = analyze(src);
     assert!(a.program.is_some(), "{:?}", a.diagnostics);
-    let index = LineIndex::new(src);
-    let found: Vec<(Code, u32, u32)> = a
-        .diagnostics
-        .iter()
-        .map(|d| {
-            let l = index.location(d.span.start);
-            (d.code, l.line, l.column)
-        })
-        .collect();
+    let found = located(src, &a);
     // One warning per list, at its first unreachable statement; a CONTINUE inside an IF
     // does not make what follows the IF unreachable.
     assert_eq!(
