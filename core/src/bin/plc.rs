@@ -155,21 +155,12 @@ fn check(path: &Path) -> ExitCode {
     let (mut errors, mut warnings) = (0, 0);
     for d in &analysis.diagnostics {
         let loc = index.location(d.span.start);
-        let severity = if d.is_error() {
+        if d.is_error() {
             errors += 1;
-            "error"
         } else {
             warnings += 1;
-            "warning"
-        };
-        println!(
-            "{}:{}:{}: {severity}[{}]: {}",
-            path.display(),
-            loc.line,
-            loc.column,
-            d.code,
-            d.message
-        );
+        }
+        print_diagnostic(path, d.severity, loc.line, loc.column, d.code.as_str(), &d.message);
     }
     eprintln!("{}: {errors} error(s), {warnings} warning(s)", path.display());
     if errors > 0 {
@@ -189,15 +180,7 @@ fn check_project(path: &Path, project: &Project) -> ExitCode {
             plc_core::diagnostics::Severity::Error => errors += 1,
             plc_core::diagnostics::Severity::Warning => warnings += 1,
         }
-        println!(
-            "{}:{}:{}: {}[{}]: {}",
-            path.display(),
-            d.line,
-            d.column,
-            d.severity.as_str(),
-            d.code,
-            d.message
-        );
+        print_diagnostic(path, d.severity, d.line, d.column, &d.code, &d.message);
     }
     eprintln!("{}: {errors} error(s), {warnings} warning(s)", path.display());
     if errors > 0 {
@@ -250,17 +233,22 @@ fn bench(json: bool, quick: bool, only: &[String]) -> ExitCode {
     }
 }
 
+/// Prints one diagnostic as `FILE:LINE:COL: severity[CODE]: message` (what `plc check` and
+/// `plc run` print alike).
+fn print_diagnostic(
+    path: &Path,
+    severity: plc_core::diagnostics::Severity,
+    line: u32,
+    column: u32,
+    code: &str,
+    message: &str,
+) {
+    println!("{}:{line}:{column}: {}[{code}]: {message}", path.display(), severity.as_str());
+}
+
 fn print_text(path: &Path, report: &RunReport) {
     for d in &report.diagnostics {
-        println!(
-            "{}:{}:{}: {}[{}]: {}",
-            path.display(),
-            d.line,
-            d.column,
-            d.severity.as_str(),
-            d.code,
-            d.message
-        );
+        print_diagnostic(path, d.severity, d.line, d.column, &d.code, &d.message);
     }
     match report.status {
         RunStatus::Ok => println!("status: ok after {} scan(s)", report.cycles),
