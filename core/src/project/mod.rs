@@ -1,14 +1,17 @@
-//! Projects: the file format (serde, versioned), the share-link codec, and the storage
-//! abstraction the web app implements over the browser's local storage.
+//! Projects: the file format (serde, versioned), the share-link codec, the storage
+//! abstraction the web app implements over the browser's local storage, and the undo/redo
+//! history every editor shares.
 //!
 //! Nothing here touches the DOM or a real storage: `ProjectStore` is a trait with an
 //! in-memory implementation for tests, as Ruffle's `StorageBackend` does.
 
 mod codec;
+mod history;
 mod open;
 mod store;
 
 pub use codec::{decode_share, encode_share, ShareError, SHARE_PREFIX};
+pub use history::{History, DEFAULT_HISTORY_LIMIT};
 pub use open::{file_kind, open_text, FileKind, OpenError, Opened};
 pub use store::{MemoryBackend, ProjectStore, ProjectSummary, StorageBackend, StoreError};
 
