@@ -1,14 +1,15 @@
 //! The emitter: code buffer, temporaries, the debug map and the addressing of places.
 //! Expressions are in `expr.rs`, statements in `stmt.rs`.
 
-use super::expr::identity_widening;
-use super::layout::{add, bad, Layouts};
+use super::error::{add, bad};
 use super::{Code, CompileError, DebugEntry};
 use crate::diagnostics::Span;
+use crate::program::op::{DimInfo, ElemSite, Op, Reg};
+use crate::program::Layouts;
 use crate::semantic::ir::{BinOp, Expr, ExprKind, Place, Program, Stmt};
 use crate::semantic::types::{Elem, PouId, Type};
 use crate::syntax::{PouKind, VarSection};
-use crate::vm::op::{DimInfo, ElemSite, Op, Reg};
+use crate::values::arith::identity_widening;
 
 /// How a POU's frame is addressed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -170,12 +171,12 @@ impl<'a> Emitter<'a> {
             Op::Jump { target }
             | Op::JumpIf { target, .. }
             | Op::JumpIfNot { target, .. }
-            | Op::JumpLt(crate::vm::op::Branch { target, .. })
-            | Op::JumpLe(crate::vm::op::Branch { target, .. })
-            | Op::JumpGt(crate::vm::op::Branch { target, .. })
-            | Op::JumpGe(crate::vm::op::Branch { target, .. })
-            | Op::JumpEq(crate::vm::op::Branch { target, .. })
-            | Op::JumpNe(crate::vm::op::Branch { target, .. })
+            | Op::JumpLt(crate::program::op::Branch { target, .. })
+            | Op::JumpLe(crate::program::op::Branch { target, .. })
+            | Op::JumpGt(crate::program::op::Branch { target, .. })
+            | Op::JumpGe(crate::program::op::Branch { target, .. })
+            | Op::JumpEq(crate::program::op::Branch { target, .. })
+            | Op::JumpNe(crate::program::op::Branch { target, .. })
             | Op::ForTest { target, .. }
             | Op::ForNext { target, .. }
             | Op::ForNext32 { target, .. }
@@ -565,7 +566,7 @@ impl<'a> Emitter<'a> {
         let cells = self.alloc(n)?;
         if let Type::Str { wide, len } = ty {
             let cap = len * if wide { 2 } else { 1 };
-            let bits = crate::vm::memory::string_header(cap, 0);
+            let bits = crate::program::memory::string_header(cap, 0);
             self.emit(Op::Const { dst: cells, bits });
         }
         let dst = self.dst(hint)?;

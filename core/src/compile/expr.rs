@@ -4,13 +4,14 @@
 //! the expression itself reads.
 
 use super::emit::{Addr, Emitter};
-use super::layout::bad;
+use super::error::bad;
 use super::CompileError;
+use crate::program::memory::{string_cells, string_header};
+use crate::program::op::{MathFn, Op, Reg, StrFunc, R3};
 use crate::semantic::ir::{BinOp, Builtin, CallArg, Expr, ExprKind, UnOp};
 use crate::semantic::types::{Elem, PouId, Type};
 use crate::syntax::VarSection;
-use crate::vm::memory::{string_cells, string_header};
-use crate::vm::op::{MathFn, Op, Reg, StrFunc, R3};
+use crate::values::arith::identity_widening;
 
 /// The typed instruction for `op` on `elem`, if there is one.
 fn fast_op(op: BinOp, elem: Elem) -> Option<fn(R3) -> Op> {
@@ -137,7 +138,7 @@ impl Emitter<'_> {
         let addr = if self.lay.real {
             let at = self.out.init.len() as u32;
             let cap = bytes.len() as u32;
-            let end = super::layout::add(at, u64::from(string_cells(cap)))?;
+            let end = super::error::add(at, u64::from(string_cells(cap)))?;
             self.out.init.push(string_header(cap, cap));
             for chunk in bytes.chunks(8) {
                 let mut b = [0u8; 8];
@@ -559,65 +560,5 @@ impl Emitter<'_> {
             self.emit(Op::Conv { from: Elem::LInt, to, dst, a: dst });
         }
         Ok(dst)
-    }
-}
-
-/// True when converting `from` to `to` leaves a cell's bits unchanged (see the cell
-/// encoding in `vm::arith`): signed values are kept sign-extended and unsigned values and
-/// bit strings zero-extended, so widening within those families is free.
-pub(crate) fn identity_widening(from: Elem, to: Elem) -> bool {
-    if from == to {
-        return true;
-    }
-    let integral = |e: Elem| e.is_integral() || e == Elem::Bool;
-    if !integral(from) || !integral(to) || to == Elem::Bool {
-        return false;
-    }
-    if from.is_signed_int() {
-        return to.is_signed_int() && to.bits() >= from.bits();
-    }
-    // Zero-extended sources (unsigned, bit strings, BOOL).
-    if to.is_signed_int() {
-        to.bits() > from.bits()
-    } else {
-        to.bits() >= from.bits()
-    }
-}
-
-#[cfg(test)]
-mod identity_tests {
-    use super::identity_widening;
-    use crate::semantic::Elem;
-    use crate::vm::arith;
-
-    #[test]
-    fn identity_widenings_really_leave_the_bits_alone() {
-        let elems = [
-            Elem::Bool,
-            Elem::SInt,
-            Elem::Int,
-            Elem::DInt,
-            Elem::LInt,
-            Elem::USInt,
-            Elem::UInt,
-            Elem::UDInt,
-            Elem::ULInt,
-            Elem::Byte,
-            Elem::Word,
-            Elem::DWord,
-            Elem::LWord,
-        ];
-        for from in elems {
-            for to in elems {
-                if !identity_widening(from, to) {
-                    continue;
-                }
-                let (lo, hi) = from.int_range();
-                for v in [lo, hi, 0, 1, lo / 2, hi / 2] {
-                    let bits = arith::norm(from, v);
-                    assert_eq!(arith::convert(from, to, bits), bits, "{from:?} -> {to:?} of {v}");
-                }
-            }
-        }
     }
 }

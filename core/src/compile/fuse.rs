@@ -7,10 +7,10 @@
 
 use super::emit::Emitter;
 use super::CompileError;
+use crate::program::op::{Branch, Op};
 use crate::semantic::ir::{BinOp, Expr, ExprKind, Place, Stmt, StmtKind, UnOp};
 use crate::semantic::types::{Elem, Type};
 use crate::syntax::VarSection;
-use crate::vm::op::{Branch, Op};
 
 /// The compare-and-branch instruction that jumps when `op` on cells of `elem` is FALSE,
 /// if there is one (integers, bit strings, time and enumerations in the i64 order;

@@ -5,56 +5,13 @@
 //! compiles its body once "dry" (with placeholder addresses) to count them.
 
 use super::emit::{self, Frame};
+use super::error::{add, bad, too_large, MAX_CELLS};
 use super::{Code, CompileError, ConditionId, Executable, PouCode, Slot, VarEntry};
+use crate::program::memory::{string_cells, string_header};
+use crate::program::{Layouts, PouLayout};
 use crate::semantic::ir::{Expr, InitValue, Program, Var};
 use crate::semantic::types::{PouId, StructId, Type};
 use crate::syntax::{PouKind, VarSection};
-use crate::vm::memory::{string_cells, string_header};
-
-/// The largest memory image the compiler produces, in cells.
-pub const MAX_CELLS: u64 = 16 * 1024 * 1024;
-
-/// The layout of one POU's frame (instance).
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct PouLayout {
-    /// Offset of each variable in the frame.
-    pub offsets: Vec<u32>,
-    /// Cells taken by the variables; temporaries follow.
-    pub vars_size: u32,
-    /// Whole frame, temporaries included (valid when `complete`).
-    pub size: u32,
-    /// The dry compile finished.
-    pub complete: bool,
-}
-
-/// Layout facts for every POU and struct, computed on demand.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub(crate) struct Layouts {
-    pous: Vec<Option<PouLayout>>,
-    busy: Vec<bool>,
-    structs: Vec<Option<Vec<u32>>>,
-    /// Absolute address of each global (valid when `real`).
-    pub globals: Vec<u32>,
-    /// Absolute static frame of each FUNCTION (valid when `real`).
-    pub frames: Vec<Option<u32>>,
-    /// Absolute address of the main instance (valid when `real`).
-    pub main_base: u32,
-    /// Absolute addresses are final (false during dry compiles).
-    pub real: bool,
-}
-
-fn too_large(cells: u64) -> CompileError {
-    CompileError::MemoryTooLarge { cells }
-}
-
-/// Adds sizes, failing past [`MAX_CELLS`].
-pub(crate) fn add(a: u32, b: u64) -> Result<u32, CompileError> {
-    let s = u64::from(a) + b;
-    if s > MAX_CELLS {
-        return Err(too_large(s));
-    }
-    Ok(s as u32)
-}
 
 impl Layouts {
     fn new(p: &Program) -> Self {
@@ -163,22 +120,12 @@ impl Layouts {
         self.struct_offsets(p, s)?.get(i as usize).copied().ok_or_else(|| bad("field index"))
     }
 
-    /// Field offsets of struct `s` (followed by its size) if already computed.
-    pub fn cached_struct(&self, s: StructId) -> Option<&[u32]> {
-        self.structs.get(s as usize)?.as_deref()
-    }
-
     /// POUs with a complete layout.
     fn laid_out(&self) -> Vec<PouId> {
         (0..self.pous.len() as u32)
             .filter(|&i| self.pous[i as usize].as_ref().is_some_and(|l| l.complete))
             .collect()
     }
-}
-
-/// A compiler-invariant failure described as an unsupported construct.
-pub(crate) fn bad(what: &str) -> CompileError {
-    CompileError::Unsupported(format!("invalid {what} in the IR"))
 }
 
 /// Builds the executable (see [`super::compile`]).

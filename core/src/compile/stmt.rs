@@ -2,12 +2,12 @@
 //! loops with EXIT/CONTINUE, RETURN. Every statement starts a debug-map entry.
 
 use super::emit::{Addr, Emitter, LoopCtx};
-use super::layout::bad;
+use super::error::bad;
 use super::CompileError;
+use crate::program::op::{CaseTable, Op};
 use crate::semantic::ir::{CallArg, Expr, ExprKind, Place, Stmt, StmtKind};
 use crate::semantic::types::{Elem, PouId};
 use crate::syntax::VarSection;
-use crate::vm::op::{CaseTable, Op};
 
 /// One CASE arm: its label ranges and body.
 type Arm = (Vec<(i64, i64)>, Vec<Stmt>);

@@ -5,7 +5,8 @@ use crate::diagnostics::Span;
 use crate::semantic::ir::*;
 use crate::semantic::types::*;
 use crate::syntax::{PouKind, VarSection};
-use crate::vm::{arith, Machine, RuntimeError, SysState};
+use crate::values::arith;
+use crate::vm::{Machine, RuntimeError, SysState};
 
 pub fn sp(n: u32) -> Span {
     Span { start: n, end: n + 1 }

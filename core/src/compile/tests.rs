@@ -2,6 +2,7 @@
 
 use super::testkit::*;
 use super::*;
+use crate::program::op::{CaseTable, Op};
 use crate::semantic::ir::*;
 use crate::semantic::types::*;
 use crate::vm::{Fault, Machine, SysState, Value};
@@ -24,8 +25,8 @@ fn real_product_to_dint() {
     let body =
         vec![set(Place::Local(2), conv(bin(BinOp::Mul, local(0, REAL), local(1, REAL)), DINT), 1)];
     let vars = vec![
-        var_init("a", REAL, InitValue::Scalar(crate::vm::arith::from_f64(Elem::Real, 2.5))),
-        var_init("b", REAL, InitValue::Scalar(crate::vm::arith::from_f64(Elem::Real, 1.0))),
+        var_init("a", REAL, InitValue::Scalar(crate::values::arith::from_f64(Elem::Real, 2.5))),
+        var_init("b", REAL, InitValue::Scalar(crate::values::arith::from_f64(Elem::Real, 1.0))),
         var("d", DINT),
     ];
     let (m, exe, r) = run(&simple(vars, body), 1);

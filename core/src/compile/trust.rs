@@ -1,11 +1,11 @@
 //! Which code regions the VM's inner loop may run without checking register operands:
 //! after every compile (and every breakpoint condition added), each POU's code and each
-//! condition's code is checked once by `vm::fast::verify` against the frame it runs in.
+//! condition's code is checked once by `program::verify` against the frame it runs in.
 //! A region that fails (a compiler bug) simply runs with every check on.
 
 use super::Executable;
+use crate::program::verify::{verify, FrameKind};
 use crate::syntax::PouKind;
-use crate::vm::fast::{verify, FrameKind};
 
 /// Recomputes `PouCode::trusted` and `Executable::condition_trusted`.
 pub(crate) fn mark_trusted(exe: &mut Executable, kinds: &[PouKind]) {

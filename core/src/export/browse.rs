@@ -1,6 +1,6 @@
 //! The parts of aggregate variables, for an expandable variables table and snapshots.
 
-use crate::compile::Executable;
+use crate::program::Executable;
 use crate::semantic::types::Type;
 use crate::sim::Simulator;
 use crate::syntax::VarSection;

@@ -1,23 +1,11 @@
 //! Ladder POU → `<pou>` with an `<LD>` body: elements at grid positions, wired per the grid.
 
-use super::export::vars_xml;
+use super::decl_xml::{section_tag, vars_xml};
 use super::union_find::UnionFind;
 use super::xml::esc;
 use crate::ladder::{CoilKind, ContactKind, Element, LadderPou, LadderPouKind};
-use crate::syntax::ast::{Item, VarSection};
+use crate::syntax::ast::Item;
 use std::fmt::Write;
-
-fn section_tag(s: VarSection) -> &'static str {
-    match s {
-        VarSection::Var => "localVars",
-        VarSection::Input => "inputVars",
-        VarSection::Output => "outputVars",
-        VarSection::InOut => "inOutVars",
-        VarSection::Global => "globalVars",
-        VarSection::External => "externalVars",
-        VarSection::Temp => "tempVars",
-    }
-}
 
 const X0: i64 = 100;
 const DX: i64 = 80;

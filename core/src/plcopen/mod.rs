@@ -12,6 +12,7 @@
 //! XML is read with quick-xml's event reader into a small element tree; nothing here panics
 //! on malformed input: every problem is an [`ImportError`] naming the element.
 
+mod decl_xml;
 mod export;
 mod import;
 mod ld_export;

@@ -173,7 +173,7 @@ impl<'a> Checker<'a> {
             let fits = |t: &Typed| match (&t.e.kind, t.e.ty.elem()) {
                 (ExprKind::Const(bits), Some(el)) if el.is_integral() && want.is_integral() => {
                     let (lo, hi) = want.int_range();
-                    let v = crate::vm::arith::to_i128(el, *bits);
+                    let v = crate::values::arith::to_i128(el, *bits);
                     v >= lo && v <= hi
                 }
                 (ExprKind::Const(_), Some(el)) => el.is_num() && want.is_real(),

@@ -3,7 +3,7 @@
 
 use super::ir::{Expr, ExprKind, InitValue, Pou};
 use super::types::{Type, TypeTable};
-use crate::vm::arith;
+use crate::values::arith;
 
 /// The integer value of a constant integral or enumeration expression.
 pub fn int_value(e: &Expr) -> Option<i64> {

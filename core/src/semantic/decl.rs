@@ -156,7 +156,7 @@ impl<'a> Checker<'a> {
                 Some(Resolved {
                     ty: Type::Elem(elem),
                     range: Some((l, h)),
-                    init: Some(InitValue::Scalar(crate::vm::arith::norm(elem, l as i128))),
+                    init: Some(InitValue::Scalar(crate::values::arith::norm(elem, l as i128))),
                 })
             }
             TypeRef::Enum { values, span: _ } => {
@@ -250,7 +250,7 @@ impl<'a> Checker<'a> {
                     return None;
                 };
                 if let (Some((lo, hi)), InitValue::Scalar(bits), Type::Elem(el)) = (range, &v, ty) {
-                    let n = crate::vm::arith::to_i128(el, *bits);
+                    let n = crate::values::arith::to_i128(el, *bits);
                     if n < lo as i128 || n > hi as i128 {
                         self.error(
                             Code::SubrangeViolation,

@@ -5,7 +5,7 @@ use super::ir::{BinOp, Expr, ExprKind, InitValue, Place, SysVar, UnOp, Var};
 use super::types::{Elem, Type};
 use crate::diagnostics::{Code, Span};
 use crate::syntax::{self as ast, AddressArea, AddressSize, LiteralValue, VarSection};
-use crate::vm::arith;
+use crate::values::arith;
 
 /// A checked expression, and whether it is an untyped literal whose type may still adapt
 /// to its context (`x + 1` with `x : INT` makes the `1` an INT).

@@ -114,18 +114,7 @@ impl Var {
     }
 }
 
-/// A compile-time initial value, already converted to the variable's type.
-#[derive(Debug, Clone, PartialEq)]
-pub enum InitValue {
-    /// One cell's normalised bits (see `crate::vm` for the encoding).
-    Scalar(u64),
-    /// A string's bytes.
-    Str(Vec<u8>),
-    /// Array elements in memory order; missing trailing elements take their default.
-    Array(Vec<InitValue>),
-    /// Struct fields by index; `None` keeps the field's default.
-    Struct(Vec<Option<InitValue>>),
-}
+pub use super::types::InitValue;
 
 /// A system variable, read-only and visible in every POU.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -210,44 +199,7 @@ pub struct Expr {
     pub span: Span,
 }
 
-/// Operators of the IR. Operands of a binary operator have the same type unless noted.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BinOp {
-    /// `+` (TIME + TIME, TOD/DT + TIME also)
-    Add,
-    /// `-`
-    Sub,
-    /// `*` (TIME * number: right operand LINT or LREAL)
-    Mul,
-    /// `/` (TIME / number: right operand LINT or LREAL)
-    Div,
-    /// `MOD`
-    Mod,
-    /// `**` (on LREAL)
-    Pow,
-    /// `AND` (logical on BOOL, bitwise otherwise)
-    And,
-    /// `OR`
-    Or,
-    /// `XOR`
-    Xor,
-    /// `AND_THEN`: short-circuit, BOOL only
-    AndThen,
-    /// `OR_ELSE`: short-circuit, BOOL only
-    OrElse,
-    /// `=`
-    Eq,
-    /// `<>`
-    Ne,
-    /// `<`
-    Lt,
-    /// `<=`
-    Le,
-    /// `>`
-    Gt,
-    /// `>=`
-    Ge,
-}
+pub use crate::values::BinOp;
 
 /// Unary operators of the IR.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

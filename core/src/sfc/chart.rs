@@ -6,8 +6,8 @@
 use std::collections::HashMap;
 
 use crate::diagnostics::{Code, Diagnostic, Span};
+use crate::syntax::ast::sfc::*;
 use crate::syntax::ast::{Ident, Pou};
-use crate::syntax::sfc_ast::*;
 
 /// The variables an SFC body can name: the POU's own and the globals (upper-case keys).
 #[derive(Debug, Default)]

@@ -16,8 +16,8 @@ use super::build::At;
 use super::chart::{Action, ActionKind, Chart, Transition};
 use super::{Reword, Rewrite, DT, LAST, STARTED, STEP_TYPE};
 use crate::diagnostics::Code;
+use crate::syntax::ast::sfc::{Qualifier, TransitionCondition};
 use crate::syntax::ast::*;
-use crate::syntax::sfc_ast::{Qualifier, TransitionCondition};
 
 /// What one chart becomes.
 pub(super) struct Lowered {

@@ -25,8 +25,8 @@ mod walk;
 use std::collections::HashMap;
 
 use crate::diagnostics::{has_errors, Code, Diagnostic, Span};
+use crate::syntax::ast::sfc::{SfcElement, TransitionCondition};
 use crate::syntax::ast::{Item, PouKind, SourceFile, TypeDef, VarSection};
-use crate::syntax::sfc_ast::{SfcElement, TransitionCondition};
 use build::At;
 
 /// The structure type of every step variable (`X : BOOL; T : TIME`).
@@ -204,7 +204,7 @@ fn global_names(file: &SourceFile) -> HashMap<String, Span> {
 /// controls, no RETURN, and a statement body must assign the transition's name.
 fn check_statements(
     chart: &chart::Chart,
-    body: &crate::syntax::sfc_ast::SfcBody,
+    body: &crate::syntax::ast::sfc::SfcBody,
     diags: &mut Vec<Diagnostic>,
 ) {
     let mut protected: HashMap<String, &'static str> = HashMap::new();

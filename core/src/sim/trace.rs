@@ -2,7 +2,7 @@
 
 use std::collections::VecDeque;
 
-use crate::compile::Slot;
+use crate::program::Slot;
 use crate::vm::Value;
 
 /// The values of the traced variables after one scan.

@@ -9,12 +9,11 @@ mod highlight;
 mod lexer;
 mod literal;
 mod parser;
-pub mod sfc_ast;
 
+pub use ast::sfc::*;
 pub use ast::*;
 pub use highlight::{highlight_spans, tokens, TokenClass};
 pub use lexer::{Token, TokenKind};
-pub use sfc_ast::*;
 
 use crate::diagnostics::Diagnostic;
 

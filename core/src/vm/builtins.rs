@@ -2,15 +2,16 @@
 //! (SEL, MAX, MIN, LIMIT, MUX), strings, text conversion and BCD. Called from the
 //! dispatch loop for every instruction it does not handle itself.
 
-use super::arith::{self, ShiftKind};
-use super::fault::Fault;
-use super::machine::Scratch;
-use super::memory::{read_str_into, write_str};
-use super::op::{MathFn, Op};
-use super::{strings, text};
-use crate::compile::Executable;
+use super::strings::{self, Scratch};
+use super::text;
+use crate::program::memory::{read_str_into, write_str};
+use crate::program::op::{MathFn, Op};
+use crate::program::Executable;
 use crate::semantic::ir::BinOp;
 use crate::semantic::types::Elem;
+use crate::values::arith::{self, ShiftKind};
+use crate::values::math;
+use crate::values::Fault;
 
 const BAD: Fault = Fault::Internal("register address out of range");
 
@@ -126,18 +127,18 @@ pub(crate) fn math(f: MathFn, elem: Elem, x: u64, y: u64) -> u64 {
                 arith::norm(elem, arith::to_i128(elem, x).abs())
             }
         }
-        MathFn::Sqrt => real(arith::math::sqrt),
-        MathFn::Ln => real(arith::math::ln),
-        MathFn::Log => real(arith::math::log10),
-        MathFn::Exp => real(arith::math::exp),
-        MathFn::Sin => real(arith::math::sin),
-        MathFn::Cos => real(arith::math::cos),
-        MathFn::Tan => real(arith::math::tan),
-        MathFn::Asin => real(arith::math::asin),
-        MathFn::Acos => real(arith::math::acos),
-        MathFn::Atan => real(arith::math::atan),
+        MathFn::Sqrt => real(math::sqrt),
+        MathFn::Ln => real(math::ln),
+        MathFn::Log => real(math::log10),
+        MathFn::Exp => real(math::exp),
+        MathFn::Sin => real(math::sin),
+        MathFn::Cos => real(math::cos),
+        MathFn::Tan => real(math::tan),
+        MathFn::Asin => real(math::asin),
+        MathFn::Acos => real(math::acos),
+        MathFn::Atan => real(math::atan),
         MathFn::Expt => {
-            arith::from_f64(elem, arith::math::pow(arith::to_f64(elem, x), arith::to_f64(elem, y)))
+            arith::from_f64(elem, math::pow(arith::to_f64(elem, x), arith::to_f64(elem, y)))
         }
         MathFn::Shl => arith::shift(ShiftKind::Shl, elem, x, y as i64),
         MathFn::Shr => arith::shift(ShiftKind::Shr, elem, x, y as i64),

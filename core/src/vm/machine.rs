@@ -5,21 +5,22 @@
 //! itself, one `match` over the 16-byte [`Op`]s; registers are cells addressed relative to
 //! the current frame base. It never allocates during a scan except for string temporaries
 //! (reused scratch buffers) and never panics (every memory and code index is checked, a bad
-//! one is `Fault::Internal`, except in code `fast::verify` accepted, whose register
+//! one is `Fault::Internal`, except in code `program::verify` accepted, whose register
 //! operands were checked once). The watchdog budget counts every instruction run here and,
 //! in the inner loop, every pass of a loop at the number of instructions it jumps back
 //! over.
 
-use super::arith;
 use super::builtins;
 use super::fast;
-use super::fault::Fault;
-use super::memory::{copy_cells, copy_str, Memory};
-use super::op::Op;
-use crate::compile::{ConditionId, Executable};
+use super::strings::Scratch;
 use crate::diagnostics::Span;
+use crate::program::memory::{copy_cells, copy_str, Memory};
+use crate::program::op::Op;
+use crate::program::{ConditionId, Executable};
 use crate::semantic::ir::SysVar;
 use crate::semantic::types::PouId;
+use crate::values::arith;
+use crate::values::Fault;
 
 /// The deepest nesting of calls the VM allows.
 pub const MAX_CALL_DEPTH: usize = 64;
@@ -58,14 +59,6 @@ struct CallFrame {
     base: u32,
     /// The caller's code may run in the inner loop without operand checks.
     trusted: bool,
-}
-
-/// Reusable buffers for string work.
-#[derive(Debug, Clone, Default)]
-pub(crate) struct Scratch {
-    pub a: Vec<u8>,
-    pub b: Vec<u8>,
-    pub text: String,
 }
 
 /// A PLC: memory and the state needed to run scans.

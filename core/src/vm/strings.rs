@@ -4,10 +4,17 @@
 //! (SEMANTICS.md: reading past the end is a runtime fault). Work happens in the machine's
 //! scratch buffers, so no allocation once they have grown.
 
-use super::fault::Fault;
-use super::machine::Scratch;
-use super::memory::{read_str_into, write_str};
-use super::op::{Reg, StrFunc};
+use crate::program::memory::{read_str_into, write_str};
+use crate::program::op::{Reg, StrFunc};
+use crate::values::Fault;
+
+/// Reusable buffers for string work.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Scratch {
+    pub a: Vec<u8>,
+    pub b: Vec<u8>,
+    pub text: String,
+}
 
 const BAD: Fault = Fault::Internal("register address out of range");
 

@@ -3,6 +3,7 @@
 use crate::compile::testkit::*;
 use crate::semantic::ir::*;
 use crate::semantic::types::*;
+use crate::values::arith;
 use crate::vm::*;
 use serde_json::json;
 

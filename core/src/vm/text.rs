@@ -4,9 +4,9 @@
 
 use std::fmt::Write;
 
-use super::arith;
-use super::fault::Fault;
 use crate::semantic::types::{Elem, Type, TypeTable};
+use crate::values::arith;
+use crate::values::Fault;
 
 const NS_PER_DAY: i64 = 86_400_000_000_000;
 

@@ -3,13 +3,13 @@
 
 use std::fmt;
 
-use super::arith;
-use super::memory::{read_str_into, string_header, write_str, Memory};
-use crate::compile::locate::element_size;
-use crate::compile::{Executable, Slot};
+use crate::program::locate::element_size;
+use crate::program::memory::{read_str_into, string_header, write_str, Memory};
+use crate::program::{Executable, Slot};
 use crate::semantic::ir::InitValue;
 use crate::semantic::types::{Elem, Type, TypeTable};
 use crate::syntax::VarSection;
+use crate::values::arith;
 
 /// A value read from (or to be written to) memory.
 #[derive(Debug, Clone, PartialEq)]

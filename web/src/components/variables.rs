@@ -5,8 +5,8 @@ use std::collections::HashSet;
 
 use leptos::prelude::*;
 use plc_core::build::is_hidden_variable;
-use plc_core::compile::Executable;
 use plc_core::export::{children, is_expandable, snapshot, value_text, variables_csv};
+use plc_core::program::Executable;
 use plc_core::semantic::Type;
 use plc_core::syntax::VarSection;
 

@@ -4,9 +4,9 @@
 //! bounds checked before anything on the right-hand side runs).
 
 use crate::compile::{compile, Executable};
+use crate::program::op::Op;
 use crate::run::{run_source, RunOptions, RunStatus};
 use crate::semantic;
-use crate::vm::op::Op;
 
 /// The instructions of the main program of `src` (which must check).
 fn code_of(src: &str) -> Vec<Op> {
@@ -211,7 +211,7 @@ fn bubble_sort_inner_loop_is_seven_instructions() {
     let want = [
         Op::LoadElem { dst: 0, idx: 0, site: 0 },
         Op::LoadElem { dst: 0, idx: 0, site: 0 },
-        Op::JumpLe(crate::vm::op::Branch { a: 0, b: 0, target: 0 }),
+        Op::JumpLe(crate::program::op::Branch { a: 0, b: 0, target: 0 }),
         Op::Move { dst: 0, a: 0 },
         Op::StoreElem { idx: 0, site: 0, a: 0 },
         Op::StoreElem { idx: 0, site: 0, a: 0 },
@@ -421,8 +421,8 @@ END_PROGRAM
 
 #[test]
 fn compiled_code_is_trusted_and_bad_code_is_not() {
-    use crate::vm::fast::{verify, FrameKind};
-    use crate::vm::op::{Branch, R3};
+    use crate::program::op::{Branch, R3};
+    use crate::program::verify::{verify, FrameKind};
     // Every POU the compiler produced (the program, an FB, a function) passes.
     let src = "FUNCTION Twice : DINT
 VAR_INPUT x : DINT; END_VAR

@@ -14,9 +14,9 @@ mod expr;
 mod sfc;
 mod stmt;
 
+use super::ast::sfc::{SfcBody, SfcElement};
 use super::ast::*;
 use super::lexer::{lex, Comment, Token, TokenKind};
-use super::sfc_ast::{SfcBody, SfcElement};
 use crate::diagnostics::{Code, Diagnostic, Span};
 
 /// Marks a failed parse whose diagnostic has already been reported.

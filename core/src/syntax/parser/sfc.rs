@@ -10,9 +10,9 @@
 
 use super::{is_block_end, Fail, PResult, Parser};
 use crate::diagnostics::{Code, Span};
+use crate::syntax::ast::sfc::*;
 use crate::syntax::ast::*;
 use crate::syntax::lexer::{Token, TokenKind};
-use crate::syntax::sfc_ast::*;
 
 impl Parser<'_> {
     /// True when the token `n` places ahead is the name `word` (any case).

@@ -758,7 +758,7 @@ fn never_panics_on_truncated_or_random_input() {
 
 // ---- textual SFC ----
 
-use crate::syntax::sfc_ast::{Qualifier, TransitionCondition};
+use crate::syntax::ast::sfc::{Qualifier, TransitionCondition};
 
 fn chart_of(src: &str) -> SfcBody {
     match parse_ok(src).items.into_iter().last() {

@@ -8,15 +8,12 @@
 //! handled through pointers; a string occupies a header cell (`capacity << 32 | length`,
 //! both in bytes) followed by its bytes packed eight to a cell.
 //!
-//! This module only defines data; it executes nothing (see `machine`).
+//! This module only defines data; it executes nothing (see `crate::vm`).
 
 use crate::semantic::ir::{BinOp, SysVar};
 use crate::semantic::types::{Elem, PouId};
 
-pub use super::tables::{Branch, CaseTable, DimInfo, ElemSite, MathFn, StrFunc, R3};
-
-/// A frame-relative cell offset.
-pub type Reg = u32;
+pub use super::tables::{Branch, CaseTable, DimInfo, ElemSite, MathFn, Reg, StrFunc, R3};
 
 /// One VM instruction. Kept at 16 bytes (checked by a test).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -5,6 +5,8 @@
 //! spelling the user wrote; comparisons are case-insensitive (see [`Ident::key`]).
 //! This module holds data only: no parsing, no checking.
 
+pub mod sfc;
+
 use crate::diagnostics::Span;
 
 /// An identifier as written, with its place in the source.
@@ -67,7 +69,7 @@ pub struct Pou {
     /// The statements of the body (empty when the body is a sequential function chart).
     pub body: Vec<Stmt>,
     /// The body written as a textual sequential function chart, if it is one.
-    pub sfc: Option<super::sfc_ast::SfcBody>,
+    pub sfc: Option<sfc::SfcBody>,
     /// The whole POU, from its keyword to its END keyword.
     pub span: Span,
 }

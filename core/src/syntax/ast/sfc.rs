@@ -4,7 +4,7 @@
 //! The parser produces it (`parser/sfc.rs`); `crate::sfc` checks the chart and turns it into
 //! ordinary statements before the checker runs. Data only: no parsing, no checking.
 
-use super::ast::{Expr, Ident, Stmt};
+use super::{Expr, Ident, Stmt};
 use crate::diagnostics::Span;
 
 /// A POU body written as a sequential function chart.

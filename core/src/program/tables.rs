@@ -1,8 +1,9 @@
 //! The operand types and side tables of the instruction set (see `op`): register
 //! triples, built-in selectors, array dimensions, element-access sites and CASE tables.
 
-use super::fault::Fault;
-use super::op::Reg;
+use crate::values::Fault;
+/// A frame-relative cell offset.
+pub type Reg = u32;
 
 /// The three registers of a typed binary instruction: `dst := a op b`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

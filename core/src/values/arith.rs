@@ -8,8 +8,7 @@
 //! - unsigned integers and bit strings: the value zero-extended;
 //! - REAL: the f64 bits of a value already rounded to f32 precision; LREAL: its f64 bits.
 
-use super::fault::Fault;
-use crate::semantic::{BinOp, Elem};
+use super::{BinOp, Elem, Fault};
 
 const NS_PER_MS: i64 = 1_000_000;
 const NS_PER_S: i64 = 1_000_000_000;
@@ -128,7 +127,7 @@ pub fn binary(op: BinOp, elem: Elem, a: u64, b: u64) -> Result<u64, Fault> {
             BinOp::Sub => x - y,
             BinOp::Mul => x * y,
             BinOp::Div => x / y,
-            BinOp::Pow => math::pow(x, y),
+            BinOp::Pow => super::math::pow(x, y),
             BinOp::Mod => {
                 if y == 0.0 {
                     0.0
@@ -164,7 +163,7 @@ pub fn binary(op: BinOp, elem: Elem, a: u64, b: u64) -> Result<u64, Fault> {
                 x % y
             }
         }
-        BinOp::Pow => return Ok(norm(elem, math::pow(x as f64, y as f64) as i128)),
+        BinOp::Pow => return Ok(norm(elem, super::math::pow(x as f64, y as f64) as i128)),
         _ => return Err(Fault::Internal("comparison in binary()")),
     };
     Ok(norm(elem, r))
@@ -288,6 +287,28 @@ pub fn set_bit(elem: Elem, a: u64, n: u32, value: bool) -> u64 {
     norm(elem, r as i64 as i128)
 }
 
+/// True when converting `from` to `to` leaves a cell's bits unchanged (see the cell
+/// encoding above): signed values are kept sign-extended and unsigned values and
+/// bit strings zero-extended, so widening within those families is free.
+pub fn identity_widening(from: Elem, to: Elem) -> bool {
+    if from == to {
+        return true;
+    }
+    let integral = |e: Elem| e.is_integral() || e == Elem::Bool;
+    if !integral(from) || !integral(to) || to == Elem::Bool {
+        return false;
+    }
+    if from.is_signed_int() {
+        return to.is_signed_int() && to.bits() >= from.bits();
+    }
+    // Zero-extended sources (unsigned, bit strings, BOOL).
+    if to.is_signed_int() {
+        to.bits() > from.bits()
+    } else {
+        to.bits() >= from.bits()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -344,51 +365,39 @@ mod tests {
     }
 }
 
-/// Transcendental functions from the pure-Rust `libm`, so a result is bit-for-bit the same
-/// natively and in wasm (the platforms' own maths libraries differ in the last bit).
-pub mod math {
-    /// Natural logarithm.
-    pub fn ln(x: f64) -> f64 {
-        libm::log(x)
-    }
-    /// Base-10 logarithm.
-    pub fn log10(x: f64) -> f64 {
-        libm::log10(x)
-    }
-    /// e to the power x.
-    pub fn exp(x: f64) -> f64 {
-        libm::exp(x)
-    }
-    /// Sine.
-    pub fn sin(x: f64) -> f64 {
-        libm::sin(x)
-    }
-    /// Cosine.
-    pub fn cos(x: f64) -> f64 {
-        libm::cos(x)
-    }
-    /// Tangent.
-    pub fn tan(x: f64) -> f64 {
-        libm::tan(x)
-    }
-    /// Arc sine.
-    pub fn asin(x: f64) -> f64 {
-        libm::asin(x)
-    }
-    /// Arc cosine.
-    pub fn acos(x: f64) -> f64 {
-        libm::acos(x)
-    }
-    /// Arc tangent.
-    pub fn atan(x: f64) -> f64 {
-        libm::atan(x)
-    }
-    /// x to the power y.
-    pub fn pow(x: f64, y: f64) -> f64 {
-        libm::pow(x, y)
-    }
-    /// Square root (IEEE-exact everywhere; here for uniformity).
-    pub fn sqrt(x: f64) -> f64 {
-        libm::sqrt(x)
+#[cfg(test)]
+mod identity_tests {
+    use super::identity_widening;
+    use crate::values::{arith, Elem};
+
+    #[test]
+    fn identity_widenings_really_leave_the_bits_alone() {
+        let elems = [
+            Elem::Bool,
+            Elem::SInt,
+            Elem::Int,
+            Elem::DInt,
+            Elem::LInt,
+            Elem::USInt,
+            Elem::UInt,
+            Elem::UDInt,
+            Elem::ULInt,
+            Elem::Byte,
+            Elem::Word,
+            Elem::DWord,
+            Elem::LWord,
+        ];
+        for from in elems {
+            for to in elems {
+                if !identity_widening(from, to) {
+                    continue;
+                }
+                let (lo, hi) = from.int_range();
+                for v in [lo, hi, 0, 1, lo / 2, hi / 2] {
+                    let bits = arith::norm(from, v);
+                    assert_eq!(arith::convert(from, to, bits), bits, "{from:?} -> {to:?} of {v}");
+                }
+            }
+        }
     }
 }

@@ -6,7 +6,7 @@
 //!
 //! Every access is checked: a bad address is `Fault::Internal`, never a panic.
 
-use super::fault::Fault;
+use crate::values::Fault;
 
 /// The memory of one machine.
 #[derive(Debug, Clone, PartialEq, Default)]

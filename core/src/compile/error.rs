@@ -1,0 +1,61 @@
+//! Why a program could not be compiled, and the size arithmetic that reports it.
+
+use std::fmt;
+
+use crate::semantic::types::PouId;
+
+/// Why a program could not be compiled.
+#[derive(Debug, Clone, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum CompileError {
+    /// The memory image would exceed [`MAX_CELLS`] cells.
+    MemoryTooLarge {
+        /// Cells needed (at least).
+        cells: u64,
+    },
+    /// The POU to run is not a PROGRAM of the program.
+    NotAProgram(PouId),
+    /// FB types contain each other (or a function frame contains an FB that calls it).
+    RecursiveLayout(String),
+    /// A construct the compiler does not support (a checker/compiler mismatch).
+    Unsupported(String),
+}
+
+impl fmt::Display for CompileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CompileError::MemoryTooLarge { cells } => write!(
+                f,
+                "the program needs {cells} memory cells, more than the limit of {MAX_CELLS}"
+            ),
+            CompileError::NotAProgram(id) => write!(f, "POU #{id} is not a PROGRAM"),
+            CompileError::RecursiveLayout(name) => {
+                write!(f, "the layout of `{name}` contains itself")
+            }
+            CompileError::Unsupported(what) => write!(f, "not supported by the compiler: {what}"),
+        }
+    }
+}
+
+impl std::error::Error for CompileError {}
+
+/// The largest memory image the compiler produces, in cells.
+pub const MAX_CELLS: u64 = 16 * 1024 * 1024;
+
+pub(crate) fn too_large(cells: u64) -> CompileError {
+    CompileError::MemoryTooLarge { cells }
+}
+
+/// Adds sizes, failing past [`MAX_CELLS`].
+pub(crate) fn add(a: u32, b: u64) -> Result<u32, CompileError> {
+    let s = u64::from(a) + b;
+    if s > MAX_CELLS {
+        return Err(too_large(s));
+    }
+    Ok(s as u32)
+}
+
+/// A compiler-invariant failure described as an unsupported construct.
+pub(crate) fn bad(what: &str) -> CompileError {
+    CompileError::Unsupported(format!("invalid {what} in the IR"))
+}

@@ -1,0 +1,40 @@
+//! The binary operators on values (the IR uses them as they are).
+
+/// Binary operators on values. Operands of a binary operator have the same type unless noted.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum BinOp {
+    /// `+` (TIME + TIME, TOD/DT + TIME also)
+    Add,
+    /// `-`
+    Sub,
+    /// `*` (TIME * number: right operand LINT or LREAL)
+    Mul,
+    /// `/` (TIME / number: right operand LINT or LREAL)
+    Div,
+    /// `MOD`
+    Mod,
+    /// `**` (on LREAL)
+    Pow,
+    /// `AND` (logical on BOOL, bitwise otherwise)
+    And,
+    /// `OR`
+    Or,
+    /// `XOR`
+    Xor,
+    /// `AND_THEN`: short-circuit, BOOL only
+    AndThen,
+    /// `OR_ELSE`: short-circuit, BOOL only
+    OrElse,
+    /// `=`
+    Eq,
+    /// `<>`
+    Ne,
+    /// `<`
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+}
