@@ -33,7 +33,7 @@ const ADDER_DECLS: &str = "VAR Run : BOOL; Lamp : BOOL; n : INT; Acc : Adder; EN
 #[test]
 fn user_fb_on_en_runs_only_when_powered_and_eno_carries_the_power() {
     let p = pou(ADDER_DECLS, vec![adder_rung(None)]);
-    let catalog = Catalog::of_project(&project_with(ADDER, p.clone()));
+    let catalog = project_with(ADDER, p.clone()).catalog();
     assert!(validate_with(&p, &catalog).is_empty(), "{:?}", validate_with(&p, &catalog));
     let (view, _) = st_view(&p);
     assert_eq!(view, "IF Run THEN Acc(Step := 1); n := Acc.Total; END_IF;\nLamp := Run;\n");
@@ -92,7 +92,7 @@ END_FUNCTION_BLOCK
     b1.power_out = Some("Q".into());
     let r = put(rung(&["[Key] B (Lamp)"]), 0, 1, Element::Block(b1));
     let p = pou("VAR Key : BOOL; Lamp : BOOL; C : Confirm; END_VAR", vec![r]);
-    let catalog = Catalog::of_project(&project_with(src, p.clone()));
+    let catalog = project_with(src, p.clone()).catalog();
     assert!(validate_with(&p, &catalog).is_empty(), "{:?}", validate_with(&p, &catalog));
     assert_eq!(st_view(&p).0, "C(In := Key);\nLamp := C.Q;\n");
     let mut s = sim_with(src, &p);
@@ -129,7 +129,7 @@ fn user_functions_on_en_write_their_result_and_pass_power() {
     let r1 = put(rung(&["[Go] B (Done)"]), 0, 1, Element::Block(twice));
     let r2 = put(rung(&["[Go] B (Lamp)"]), 0, 1, Element::Block(range));
     let p = pou("VAR Go : BOOL; a : INT; y : INT; Done : BOOL; Lamp : BOOL; END_VAR", vec![r1, r2]);
-    let catalog = Catalog::of_project(&project_with(FUNCTIONS, p.clone()));
+    let catalog = project_with(FUNCTIONS, p.clone()).catalog();
     assert!(validate_with(&p, &catalog).is_empty(), "{:?}", validate_with(&p, &catalog));
     let view = st_view(&p).0;
     assert!(view.contains("IF Go THEN y := Twice(x := a); END_IF;"), "{view}");
@@ -201,7 +201,7 @@ END_FUNCTION_BLOCK
     acc.in_outs = vec![Pin::operand("Sum", "total")];
     let r = put(rung(&["[Go] B (Lamp)", ". # ."]), 0, 1, Element::Block(acc));
     let p = pou("VAR Go : BOOL; Lamp : BOOL; total : INT := 1; A : Accumulate; END_VAR", vec![r]);
-    let catalog = Catalog::of_project(&project_with(src, p.clone()));
+    let catalog = project_with(src, p.clone()).catalog();
     assert!(validate_with(&p, &catalog).is_empty(), "{:?}", validate_with(&p, &catalog));
     let mut s = sim_with(src, &p);
     set(&mut s, "Go", true);
@@ -212,7 +212,7 @@ END_FUNCTION_BLOCK
 
 /// The diagnostics of `p` validated against `source`, as `(code, rung, row, column)`.
 fn problems(source: &str, p: &LadderPou) -> Vec<(Code, usize, usize, usize)> {
-    let catalog = Catalog::of_project(&project_with(source, p.clone()));
+    let catalog = project_with(source, p.clone()).catalog();
     validate_with(p, &catalog).iter().map(|d| (d.code, d.rung, d.row, d.column)).collect()
 }
 

@@ -290,7 +290,7 @@ proptest! {
     ) {
         let p = build_pou(&specs);
         let project = project_with(USER_POUS, p.clone());
-        let errors: Vec<_> = validate_with(&p, &Catalog::of_project(&project))
+        let errors: Vec<_> = validate_with(&p, &project.catalog())
             .into_iter()
             .filter(LadderDiagnostic::is_error)
             .collect();

@@ -1,7 +1,8 @@
 //! The shipped examples (`examples/*.st` and `*.plcproj.json`, embedded at build time by
 //! `build.rs`): their menu titles, and opening one as a new project.
 
-use plc_core::project::{open_text, Project};
+use plc_core::open::open_text;
+use plc_core::project::Project;
 
 mod files {
     include!(concat!(env!("OUT_DIR"), "/examples.rs"));

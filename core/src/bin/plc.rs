@@ -106,10 +106,10 @@ enum Input {
 /// warnings go to stderr).
 fn load_input(path: &Path) -> Result<Input, String> {
     let text = read_source(path)?;
-    if plc_core::project::file_kind(&text) == plc_core::project::FileKind::St {
+    if plc_core::open::file_kind(&text) == plc_core::open::FileKind::St {
         return Ok(Input::Source(text));
     }
-    let opened = plc_core::project::open_text("project", &text)
+    let opened = plc_core::open::open_text("project", &text)
         .map_err(|e| format!("plc: {}: {e}", path.display()))?;
     for w in &opened.warnings {
         eprintln!("plc: {}: warning: {w}", path.display());

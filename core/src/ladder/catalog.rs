@@ -151,11 +151,12 @@ impl Catalog {
         c
     }
 
-    /// The standard FBs, the project's ST POUs, types and globals, and its ladder FBs.
-    pub fn of_project(project: &crate::project::Project) -> Self {
+    /// The standard FBs, the ST POUs, types and globals of `source`, and the ladder FBs
+    /// among `ladder` (a project's catalog: `Project::catalog`).
+    pub fn of_parts(source: &str, ladder: &[super::LadderPou]) -> Self {
         let mut c = Catalog::standard();
-        c.add_source(&project.source);
-        for pou in &project.ladder {
+        c.add_source(source);
+        for pou in ladder {
             if pou.kind == super::LadderPouKind::FunctionBlock {
                 let text = format!(
                     "FUNCTION_BLOCK {}\n{}\nEND_FUNCTION_BLOCK\n",

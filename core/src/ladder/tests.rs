@@ -1,14 +1,7 @@
 #![allow(clippy::unwrap_used)]
 
 use super::*;
-
-#[test]
-fn empty_project_source_is_st_source() {
-    let project = Project::new("p");
-    let src = project_source(&project).unwrap();
-    assert_eq!(src.text, project.source);
-    assert_eq!(src.map.origin(1), Origin::St(1));
-}
+use crate::project::Project;
 
 #[test]
 fn catalog_reads_pou_signatures_and_operand_types() {
@@ -19,7 +12,7 @@ FUNCTION_BLOCK Fb VAR_INPUT a : Alias; END_VAR VAR_OUTPUT q : BOOL; p : Pos; END
 FUNCTION F : WORD VAR_INPUT x : BYTE; END_VAR F := x; END_FUNCTION
 "
     .into();
-    let c = Catalog::of_project(&project);
+    let c = project.catalog();
     let fb = c.block("fb").unwrap();
     assert_eq!(
         fb.input("A").unwrap().ty,

@@ -15,7 +15,6 @@ pub mod conflicts;
 mod diagnostic;
 pub mod model;
 pub mod net;
-pub mod pnml;
 pub mod reach;
 mod report;
 pub mod semiflows;
@@ -29,7 +28,6 @@ pub use net::{build, Marking, PtNet};
 pub use report::{conflicts, text_report, Conflict};
 
 use crate::diagnostics::Code;
-use crate::project::Project;
 
 /// The state budget of the analysis run when a net is compiled (for its warnings).
 pub const COMPILE_BUDGET: usize = 10_000;
@@ -162,83 +160,6 @@ fn warnings_of(
 /// Whether `name` is a hidden variable of the generated code (a scan-start copy).
 pub fn is_hidden_name(name: &str) -> bool {
     name.len() >= SCAN_PREFIX.len() && name[..SCAN_PREFIX.len()].eq_ignore_ascii_case(SCAN_PREFIX)
-}
-
-/// A project's Petri net POUs compiled once, for its diagnostics and its combined source.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct ProjectNets {
-    /// The POUs that compiled, by name, in project order.
-    pub compiled: Vec<(String, Compiled)>,
-    /// Every diagnostic (errors and warnings), with the POU name.
-    pub diagnostics: Vec<(String, PetriDiagnostic)>,
-}
-
-impl ProjectNets {
-    /// Whether some POU has an error.
-    pub fn has_errors(&self) -> bool {
-        self.diagnostics.iter().any(|(_, d)| d.is_error())
-    }
-}
-
-/// Compiles every Petri net POU of a project.
-pub fn compile_project(project: &Project) -> ProjectNets {
-    let mut out = ProjectNets::default();
-    for pou in &project.petri {
-        match compile(pou) {
-            Ok(c) => {
-                out.diagnostics.extend(c.warnings.iter().map(|d| (pou.name.clone(), d.clone())));
-                out.compiled.push((pou.name.clone(), c));
-            }
-            Err(d) => out.diagnostics.extend(d.into_iter().map(|d| (pou.name.clone(), d))),
-        }
-    }
-    out
-}
-
-/// Every diagnostic (errors and warnings) of a project's Petri net POUs, with the POU name.
-pub fn project_diagnostics(project: &Project) -> Vec<(String, PetriDiagnostic)> {
-    compile_project(project).diagnostics
-}
-
-/// One generated Petri net POU inside a combined project source.
-#[derive(Debug, Clone, PartialEq)]
-pub struct PetriSegment {
-    /// The POU's name.
-    pub pou: String,
-    /// 1-based line of the combined text where the generated POU starts.
-    pub first_line: u32,
-    /// The generated POU.
-    pub generated: Generated,
-}
-
-impl PetriSegment {
-    /// The element (and position in its text) behind a 1-based line and column of the
-    /// combined source.
-    pub fn locate(&self, line: u32, column: u32) -> Option<(NetElement, Option<TextPosition>)> {
-        self.generated.locate(line + 1 - self.first_line, column)
-    }
-}
-
-/// Appends the generated PROGRAM of every compiled Petri net POU to `text`, whose next
-/// line is `first_line`; POUs with errors are not among `nets.compiled` (report them from
-/// `nets.diagnostics`).
-pub fn append_to_source(
-    nets: &ProjectNets,
-    text: &mut String,
-    segments: &mut Vec<PetriSegment>,
-    first_line: u32,
-) {
-    let mut line = first_line;
-    for (pou, c) in &nets.compiled {
-        let n = c.generated.st.lines().count() as u32;
-        text.push_str(&c.generated.st);
-        segments.push(PetriSegment {
-            pou: pou.clone(),
-            first_line: line,
-            generated: c.generated.clone(),
-        });
-        line += n;
-    }
 }
 
 /// Describes a located Petri diagnostic for a message: `POU Name, transition T2 (guard line

@@ -96,7 +96,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     }
     let mut project =
         Project { schema: SCHEMA_VERSION, name, source, settings, ladder, petri: Vec::new() };
-    let catalog = crate::ladder::Catalog::of_project(&project);
+    let catalog = project.catalog();
     for (k, body) in bodies.into_iter().enumerate() {
         let lp = &mut project.ladder[k];
         let ld =

@@ -7,12 +7,10 @@
 
 mod codec;
 mod history;
-mod open;
 mod store;
 
 pub use codec::{decode_share, encode_share, ShareError, SHARE_PREFIX};
 pub use history::{History, DEFAULT_HISTORY_LIMIT};
-pub use open::{file_kind, open_text, FileKind, OpenError, Opened};
 pub use store::{MemoryBackend, ProjectStore, ProjectSummary, StorageBackend, StoreError};
 
 use serde::{Deserialize, Serialize};
@@ -77,6 +75,12 @@ END_PROGRAM
 ";
 
 impl Project {
+    /// The block types and operand types the project's ladder POUs can use: the standard
+    /// FBs, the ST POUs, types and globals, and the ladder FBs.
+    pub fn catalog(&self) -> crate::ladder::Catalog {
+        crate::ladder::Catalog::of_parts(&self.source, &self.ladder)
+    }
+
     /// A new project named `name` with the starter program.
     pub fn new(name: impl Into<String>) -> Self {
         Project {

@@ -4,7 +4,8 @@
 use leptos::ev;
 use leptos::html;
 use leptos::prelude::*;
-use plc_core::project::{open_text, FileKind, Project};
+use plc_core::open::{open_text, FileKind};
+use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 

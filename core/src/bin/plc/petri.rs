@@ -4,7 +4,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::Subcommand;
-use plc_core::petri::{self, pnml, PetriPou};
+use plc_core::petri::{self, PetriPou};
+use plc_core::pnml;
 use plc_core::project::Project;
 
 /// The `petri` subcommands.
@@ -56,7 +57,7 @@ fn load(path: &Path) -> Result<Project, String> {
         std::fs::read(path).map_err(|e| format!("plc: cannot read {}: {e}", path.display()))?;
     let text = String::from_utf8_lossy(&bytes);
     if pnml::is_pnml(&text) {
-        return plc_core::project::open_text("net", &text)
+        return plc_core::open::open_text("net", &text)
             .map(|opened| opened.project)
             .map_err(|e| format!("plc: {}: {e}", path.display()));
     }

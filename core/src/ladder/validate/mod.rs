@@ -67,7 +67,7 @@ pub fn validate(pou: &LadderPou) -> Vec<LadderDiagnostic> {
     validate_inner(pou, None)
 }
 
-/// Validates a ladder POU knowing the project ([`Catalog::of_project`]): unknown block types,
+/// Validates a ladder POU knowing the project ((`Project::catalog`)): unknown block types,
 /// pins the block type does not have, operands that are not declared or do not fit their
 /// pin, and wrong power pins are reported at their rung, row and column.
 pub fn validate_with(pou: &LadderPou, catalog: &Catalog) -> Vec<LadderDiagnostic> {

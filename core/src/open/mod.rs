@@ -4,7 +4,7 @@
 
 use std::fmt;
 
-use super::{Project, ProjectError};
+use crate::project::{Project, ProjectError};
 
 /// What kind of file a text was read as.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -39,7 +39,7 @@ pub enum OpenError {
     /// A PLCopen XML file that could not be imported.
     Plcopen(crate::plcopen::ImportError),
     /// A PNML file that could not be imported.
-    Pnml(crate::petri::pnml::PnmlError),
+    Pnml(crate::pnml::PnmlError),
 }
 
 impl fmt::Display for OpenError {
@@ -60,7 +60,7 @@ pub fn file_kind(text: &str) -> FileKind {
     let trimmed = text.trim_start_matches('\u{feff}').trim_start();
     if trimmed.starts_with('{') {
         FileKind::Project
-    } else if crate::petri::pnml::is_pnml(text) {
+    } else if crate::pnml::is_pnml(text) {
         FileKind::Pnml
     } else if trimmed.starts_with("<?xml") || trimmed.starts_with("<project") {
         FileKind::Plcopen
@@ -76,7 +76,7 @@ pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
     let (project, warnings) = match kind {
         FileKind::Project => (Project::from_file(text).map_err(OpenError::Project)?, Vec::new()),
         FileKind::Pnml => {
-            let pou = crate::petri::pnml::import(text).map_err(OpenError::Pnml)?;
+            let pou = crate::pnml::import(text).map_err(OpenError::Pnml)?;
             let mut project = Project::new(pou.name.clone());
             project.source.clear();
             project.petri.push(pou);
@@ -94,3 +94,6 @@ pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
     };
     Ok(Opened { project, kind, warnings })
 }
+
+#[cfg(test)]
+mod tests;

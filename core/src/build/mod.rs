@@ -4,16 +4,22 @@
 //!
 //! This is the one pipeline behind `plc check`, `plc run` ([`crate::run::run_project`]),
 //! [`crate::run::project_simulator`] and the web app: Petri net errors stop the build first,
-//! then ladder errors (from [`crate::ladder::project_source`]), then the ST checker runs on
+//! then ladder errors (from [`project_source`]), then the ST checker runs on
 //! the combined text. Nothing here runs a scan.
 
 use crate::diagnostics::{Code, LineIndex, Severity, Span};
-use crate::ladder::{Origin, ProjectSource};
 use crate::petri::{NetElement, TextPosition};
 use crate::project::Project;
 use crate::semantic::{self, PouId, Program};
 use crate::sim::Simulator;
 use crate::syntax::PouKind;
+
+mod source;
+
+pub use source::{
+    compile_project, project_diagnostics, project_source, project_source_with, Origin,
+    PetriSegment, ProjectNets, ProjectSource, Segment, SourceMap,
+};
 
 /// Where a problem (or a runtime fault, or a running statement) is in a project.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -189,7 +195,7 @@ fn site_in(source: &ProjectSource, index: &LineIndex<'_>, span: Span) -> Site {
 
 /// Builds a project as `plc check` and `plc run` do (see the module comment).
 pub fn build_project(project: &Project) -> ProjectBuild {
-    let nets = crate::petri::compile_project(project);
+    let nets = compile_project(project);
     let petri_diags: Vec<ProjectDiagnostic> = nets
         .diagnostics
         .iter()
@@ -210,7 +216,7 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         message: d.message,
         site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
     };
-    let source = match crate::ladder::project_source_with(project, &nets) {
+    let source = match project_source_with(project, &nets) {
         Ok(source) => source,
         Err(diags) => {
             let diagnostics = diags.into_iter().map(ladder_diag).collect();
