@@ -8,7 +8,7 @@ use crate::semantic::types::PouId;
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum CompileError {
-    /// The memory image would exceed [`MAX_CELLS`] cells.
+    /// The memory image would exceed the compiler's limit of cells (`MAX_CELLS`).
     MemoryTooLarge {
         /// Cells needed (at least).
         cells: u64,

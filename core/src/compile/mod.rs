@@ -29,7 +29,7 @@ use crate::semantic::types::PouId;
 
 pub(crate) use crate::program::{Code, PouCode};
 pub use crate::program::{ConditionId, DebugEntry, Executable, Slot, VarEntry};
-pub use error::{CompileError, MAX_CELLS};
+pub use error::CompileError;
 
 /// Compiles `program` to run PROGRAM `main`.
 pub fn compile(program: &Program, main: PouId) -> Result<Executable, CompileError> {

@@ -2,9 +2,9 @@
 //! lowering to ST (so ladder runs on the one ST compiler and VM), and the readable ST view.
 
 mod blocks;
-pub mod catalog;
+pub(crate) mod catalog;
 pub mod lower;
-pub mod model;
+pub(crate) mod model;
 mod network;
 pub mod st_view;
 pub mod validate;

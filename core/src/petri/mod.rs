@@ -7,20 +7,22 @@
 //! transition they belong to. The firing rule and the generation scheme are documented in
 //! `codegen` and in `docs/petri.md`. Nothing here runs a net by itself.
 
-pub mod analysis;
-pub mod check;
-pub mod codegen;
-pub mod components;
-pub mod conflicts;
+pub(crate) mod analysis;
+pub(crate) mod check;
+pub(crate) mod codegen;
+pub(crate) mod components;
+pub(crate) mod conflicts;
 mod diagnostic;
-pub mod model;
-pub mod net;
-pub mod reach;
+pub(crate) mod model;
+pub(crate) mod net;
+pub(crate) mod reach;
 mod report;
-pub mod semiflows;
+pub(crate) mod semiflows;
 
 pub use analysis::{analyze, Deadlock, NetAnalysis, DEFAULT_BUDGET};
-pub use codegen::{Generated, LineSource, PlaceMap, SCAN_PREFIX};
+pub use codegen::{
+    Generated, LineSource, MacroEntry, PlaceEntry, PlaceMap, ProcessEntry, SCAN_PREFIX,
+};
 pub use components::ProcessPlan;
 pub use diagnostic::{has_errors, NetElement, PetriDiagnostic, TextPart, TextPosition};
 pub use model::*;

@@ -55,6 +55,7 @@ fn covered_by(a: &[u32], b: &[u32]) -> bool {
     a.iter().zip(b).all(|(x, y)| x <= y)
 }
 
+#[cfg(test)]
 /// Explores the markings reachable from the initial one, at most `budget` of them.
 pub fn explore(net: &PtNet, budget: usize) -> ReachGraph {
     explore_with(net, budget, false)

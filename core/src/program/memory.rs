@@ -110,7 +110,7 @@ impl Memory {
         Ok(v)
     }
 
-    /// Writes `bytes` to the string at `addr` (see [`write_str`]).
+    /// Writes `bytes` to the string at `addr` (see the free function `write_str`).
     pub fn write_str(&mut self, addr: usize, bytes: &[u8], unit: u32) -> Result<(), Fault> {
         write_str(&mut self.cells, addr, bytes, unit)
     }

@@ -5,8 +5,8 @@
 
 mod layout;
 pub(crate) mod locate;
-pub mod memory;
-pub mod op;
+pub(crate) mod memory;
+pub(crate) mod op;
 mod tables;
 pub(crate) mod verify;
 

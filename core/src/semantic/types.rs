@@ -19,7 +19,7 @@ pub type PouId = u32;
 pub enum Type {
     /// An elementary type.
     Elem(Elem),
-    /// STRING[len] or WSTRING[len].
+    /// `STRING[len]` or `WSTRING[len]`.
     Str {
         /// WSTRING.
         wide: bool,

@@ -13,7 +13,8 @@ pub use trace::{Trace, TraceSample};
 
 use std::fmt;
 
-use crate::compile::{self, CompileError, ConditionId, Executable, Slot};
+pub use crate::compile::CompileError;
+use crate::compile::{self, ConditionId, Executable, Slot};
 use crate::diagnostics::{Diagnostic, Span};
 use crate::semantic::{self, InitValue, PouId, Program};
 use crate::vm::{self, Fault, Machine, RuntimeError, SysState, Value};

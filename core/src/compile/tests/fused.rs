@@ -197,6 +197,7 @@ END_PROGRAM
     );
 }
 
+#[cfg(feature = "bench")]
 #[test]
 fn bubble_sort_inner_loop_is_seven_instructions() {
     // The B2 benchmark's inner loop: two loads, one compare-and-branch, the swap from the

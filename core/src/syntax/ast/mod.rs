@@ -5,7 +5,7 @@
 //! spelling the user wrote; comparisons are case-insensitive (see [`Ident::key`]).
 //! This module holds data only: no parsing, no checking.
 
-pub mod sfc;
+pub(crate) mod sfc;
 
 use crate::diagnostics::Span;
 
