@@ -561,3 +561,56 @@ pub enum Op {
         a: Reg,
     },
 }
+
+/// The instructions of the standard functions, which the VM's outer loop hands to its
+/// built-ins (`vm/builtins.rs`). With [`outer_loop_ops`], the one place that says which
+/// loop runs an instruction: the inner loop (`vm/fast.rs`) stops at these, the outer loop
+/// (`vm/machine.rs`) dispatches them, the verifier (`verify.rs`) leaves their operands to
+/// the outer loop's checks. A pattern: `builtin_ops!() => …`.
+macro_rules! builtin_ops {
+    () => {
+        $crate::program::op::Op::StrCmp { .. }
+            | $crate::program::op::Op::Str { .. }
+            | $crate::program::op::Op::Math { .. }
+            | $crate::program::op::Op::Select { .. }
+            | $crate::program::op::Op::MinMax { .. }
+            | $crate::program::op::Op::Limit { .. }
+            | $crate::program::op::Op::Mux { .. }
+            | $crate::program::op::Op::ToStr { .. }
+            | $crate::program::op::Op::FromStr { .. }
+            | $crate::program::op::Op::Bcd { .. }
+    };
+}
+pub(crate) use builtin_ops;
+
+/// Every instruction the VM's outer loop runs (the generic operators, conversions, FOR
+/// loops over any type, CASE, calls, frames, copies, and [`builtin_ops`]); every other
+/// instruction is the inner loop's (`vm/fast.rs`), which the compiler checks: the inner
+/// loop matches its own instructions and `outer_loop_ops!()`, with no catch-all, so a new
+/// instruction must be given to one loop here or there.
+macro_rules! outer_loop_ops {
+    () => {
+        $crate::program::op::Op::Bin { .. }
+            | $crate::program::op::Op::Cmp { .. }
+            | $crate::program::op::Op::ScaleTime { .. }
+            | $crate::program::op::Op::Conv { .. }
+            | $crate::program::op::Op::Trunc { .. }
+            | $crate::program::op::Op::SetBit { .. }
+            | $crate::program::op::Op::Sys { .. }
+            | $crate::program::op::Op::ForStart { .. }
+            | $crate::program::op::Op::ForTest { .. }
+            | $crate::program::op::Op::ForNext { .. }
+            | $crate::program::op::Op::ForStep { .. }
+            | $crate::program::op::Op::Case { .. }
+            | $crate::program::op::Op::CallFb { .. }
+            | $crate::program::op::Op::CallFn { .. }
+            | $crate::program::op::Op::InitFrame { .. }
+            | $crate::program::op::Op::InitTemps { .. }
+            | $crate::program::op::Op::Ret
+            | $crate::program::op::Op::Halt { .. }
+            | $crate::program::op::Op::Copy { .. }
+            | $crate::program::op::Op::StrCopy { .. }
+            | $crate::program::op::builtin_ops!()
+    };
+}
+pub(crate) use outer_loop_ops;

@@ -11,7 +11,7 @@
 //! instructions of one pass of the loop on its straight path), so straight code costs
 //! nothing here and an endless loop still exhausts any budget.
 
-use crate::program::op::{Branch, DimInfo, ElemSite, Op, R3};
+use crate::program::op::{outer_loop_ops, Branch, DimInfo, ElemSite, Op, R3};
 use crate::semantic::types::Elem;
 use crate::values::arith;
 use crate::values::Fault;
@@ -260,36 +260,7 @@ pub(super) fn run<const TRUSTED: bool>(
                 }
             }
             // Not ours: give it back to the outer loop.
-            Op::Bin { .. }
-            | Op::Cmp { .. }
-            | Op::ScaleTime { .. }
-            | Op::Conv { .. }
-            | Op::Trunc { .. }
-            | Op::SetBit { .. }
-            | Op::Sys { .. }
-            | Op::ForStart { .. }
-            | Op::ForTest { .. }
-            | Op::ForNext { .. }
-            | Op::ForStep { .. }
-            | Op::Case { .. }
-            | Op::CallFb { .. }
-            | Op::CallFn { .. }
-            | Op::InitFrame { .. }
-            | Op::InitTemps { .. }
-            | Op::Ret
-            | Op::Halt { .. }
-            | Op::Copy { .. }
-            | Op::StrCopy { .. }
-            | Op::StrCmp { .. }
-            | Op::Str { .. }
-            | Op::Math { .. }
-            | Op::Select { .. }
-            | Op::MinMax { .. }
-            | Op::Limit { .. }
-            | Op::Mux { .. }
-            | Op::ToStr { .. }
-            | Op::FromStr { .. }
-            | Op::Bcd { .. } => {
+            outer_loop_ops!() => {
                 p -= 1;
                 break Exit::Slow;
             }

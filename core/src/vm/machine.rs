@@ -15,7 +15,7 @@ use super::fast;
 use super::strings::Scratch;
 use crate::diagnostics::Span;
 use crate::program::memory::{copy_cells, copy_str, Memory};
-use crate::program::op::Op;
+use crate::program::op::{builtin_ops, Op};
 use crate::program::{ConditionId, Executable};
 use crate::semantic::ir::SysVar;
 use crate::semantic::types::PouId;
@@ -331,16 +331,7 @@ impl Machine {
                     copy_cells(cells, r!(dst) as usize, r!(src) as usize, n as usize)?
                 }
                 Op::StrCopy { dst, src } => copy_str(cells, r!(dst) as usize, r!(src) as usize)?,
-                Op::StrCmp { .. }
-                | Op::Str { .. }
-                | Op::Math { .. }
-                | Op::Select { .. }
-                | Op::MinMax { .. }
-                | Op::Limit { .. }
-                | Op::Mux { .. }
-                | Op::ToStr { .. }
-                | Op::FromStr { .. }
-                | Op::Bcd { .. } => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
+                builtin_ops!() => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
                 // The inner loop's instructions never get here.
                 _ => return Err(Fault::Internal("instruction left by the inner loop")),
             }
