@@ -370,44 +370,8 @@ impl Emitter<'_> {
         hint: Option<Reg>,
     ) -> Result<Reg, CompileError> {
         let arg = |k: usize| args.get(k).ok_or_else(|| bad("builtin argument count"));
-        let math = match func {
-            Builtin::Abs => Some(MathFn::Abs),
-            Builtin::Sqrt => Some(MathFn::Sqrt),
-            Builtin::Ln => Some(MathFn::Ln),
-            Builtin::Log => Some(MathFn::Log),
-            Builtin::Exp => Some(MathFn::Exp),
-            Builtin::Sin => Some(MathFn::Sin),
-            Builtin::Cos => Some(MathFn::Cos),
-            Builtin::Tan => Some(MathFn::Tan),
-            Builtin::Asin => Some(MathFn::Asin),
-            Builtin::Acos => Some(MathFn::Acos),
-            Builtin::Atan => Some(MathFn::Atan),
-            _ => None,
-        };
-        if let Some(f) = math {
-            let elem = self.elem_of(ty)?;
-            let a = self.expr(arg(0)?, None)?;
-            let dst = self.dst(hint)?;
-            self.emit(Op::Math { f, elem, dst, a, b: a });
-            return Ok(dst);
-        }
-        let shift = match func {
-            Builtin::Shl => Some(MathFn::Shl),
-            Builtin::Shr => Some(MathFn::Shr),
-            Builtin::Rol => Some(MathFn::Rol),
-            Builtin::Ror => Some(MathFn::Ror),
-            _ => None,
-        };
-        if let Some(f) = shift {
-            let elem = self.elem_of(arg(0)?.ty)?;
-            let a = self.expr(arg(0)?, None)?;
-            let b = self.expr_lint(arg(1)?)?;
-            let dst = self.dst(hint)?;
-            self.emit(Op::Math { f, elem, dst, a, b });
-            return Ok(dst);
-        }
         match func {
-            Builtin::Expt => {
+            Builtin::Math(MathFn::Expt) => {
                 let elem = self.elem_of(ty)?;
                 let block = self.alloc(2)?;
                 for k in 0..2 {
@@ -418,6 +382,21 @@ impl Emitter<'_> {
                 }
                 let dst = self.dst(hint)?;
                 self.emit(Op::Math { f: MathFn::Expt, elem, dst, a: block, b: block + 1 });
+                Ok(dst)
+            }
+            Builtin::Math(f @ (MathFn::Shl | MathFn::Shr | MathFn::Rol | MathFn::Ror)) => {
+                let elem = self.elem_of(arg(0)?.ty)?;
+                let a = self.expr(arg(0)?, None)?;
+                let b = self.expr_lint(arg(1)?)?;
+                let dst = self.dst(hint)?;
+                self.emit(Op::Math { f, elem, dst, a, b });
+                Ok(dst)
+            }
+            Builtin::Math(f) => {
+                let elem = self.elem_of(ty)?;
+                let a = self.expr(arg(0)?, None)?;
+                let dst = self.dst(hint)?;
+                self.emit(Op::Math { f, elem, dst, a, b: a });
                 Ok(dst)
             }
             Builtin::Sel => {
@@ -505,7 +484,6 @@ impl Emitter<'_> {
                 self.emit(Op::Bcd { encode, from, to, dst, a });
                 Ok(dst)
             }
-            _ => Err(bad("builtin")),
         }
     }
 

@@ -2,6 +2,8 @@
 //! triples, built-in selectors, array dimensions, element-access sites and CASE tables.
 
 use crate::values::Fault;
+pub use crate::values::MathFn;
+
 /// A frame-relative cell offset.
 pub type Reg = u32;
 
@@ -14,43 +16,6 @@ pub struct R3 {
     pub a: Reg,
     /// Right operand.
     pub b: Reg,
-}
-
-/// Numeric built-ins executed by [`Op::Math`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum MathFn {
-    /// ABS (wraps for integers).
-    Abs,
-    /// SQRT
-    Sqrt,
-    /// LN
-    Ln,
-    /// LOG
-    Log,
-    /// EXP
-    Exp,
-    /// SIN
-    Sin,
-    /// COS
-    Cos,
-    /// TAN
-    Tan,
-    /// ASIN
-    Asin,
-    /// ACOS
-    Acos,
-    /// ATAN
-    Atan,
-    /// EXPT with an exponent of the same real type as the base.
-    Expt,
-    /// SHL with the count as LINT in `b`.
-    Shl,
-    /// SHR
-    Shr,
-    /// ROL
-    Rol,
-    /// ROR
-    Ror,
 }
 
 /// String built-ins executed by [`Op::Str`].

@@ -3,7 +3,7 @@
 
 use super::check::Checker;
 use super::expr::Typed;
-use super::ir::{Builtin, Expr, ExprKind};
+use super::ir::{Builtin, Expr, ExprKind, MathFn};
 use super::types::{Elem, Type};
 use crate::diagnostics::{Code, Span};
 use crate::syntax::{self as ast};
@@ -365,24 +365,29 @@ impl<'a> Checker<'a> {
                     return None;
                 }
                 let ty = t.e.ty;
-                return Some(self.builtin_expr(Builtin::Abs, vec![t.e], ty, span));
+                return Some(self.builtin_expr(Builtin::Math(MathFn::Abs), vec![t.e], ty, span));
             }
-            "SQRT" => Builtin::Sqrt,
-            "LN" => Builtin::Ln,
-            "LOG" => Builtin::Log,
-            "EXP" => Builtin::Exp,
-            "SIN" => Builtin::Sin,
-            "COS" => Builtin::Cos,
-            "TAN" => Builtin::Tan,
-            "ASIN" => Builtin::Asin,
-            "ACOS" => Builtin::Acos,
-            "ATAN" => Builtin::Atan,
+            "SQRT" => Builtin::Math(MathFn::Sqrt),
+            "LN" => Builtin::Math(MathFn::Ln),
+            "LOG" => Builtin::Math(MathFn::Log),
+            "EXP" => Builtin::Math(MathFn::Exp),
+            "SIN" => Builtin::Math(MathFn::Sin),
+            "COS" => Builtin::Math(MathFn::Cos),
+            "TAN" => Builtin::Math(MathFn::Tan),
+            "ASIN" => Builtin::Math(MathFn::Asin),
+            "ACOS" => Builtin::Math(MathFn::Acos),
+            "ATAN" => Builtin::Math(MathFn::Atan),
             "EXPT" => {
                 let base = self.want_real(a[0])?;
                 let exp = self.want_real(a[1])?;
                 let exp = self.convert(exp, Type::Elem(Elem::LReal));
                 let ty = base.ty;
-                return Some(self.builtin_expr(Builtin::Expt, vec![base, exp], ty, span));
+                return Some(self.builtin_expr(
+                    Builtin::Math(MathFn::Expt),
+                    vec![base, exp],
+                    ty,
+                    span,
+                ));
             }
             "SHL" | "SHR" | "ROL" | "ROR" => {
                 let t = self.expr(a[0], None)?;
@@ -396,10 +401,10 @@ impl<'a> Checker<'a> {
                 }
                 let n = self.want_int(a[1])?;
                 let f = match key.as_str() {
-                    "SHL" => Builtin::Shl,
-                    "SHR" => Builtin::Shr,
-                    "ROL" => Builtin::Rol,
-                    _ => Builtin::Ror,
+                    "SHL" => Builtin::Math(MathFn::Shl),
+                    "SHR" => Builtin::Math(MathFn::Shr),
+                    "ROL" => Builtin::Math(MathFn::Rol),
+                    _ => Builtin::Math(MathFn::Ror),
                 };
                 let ty = t.e.ty;
                 return Some(self.builtin_expr(f, vec![t.e, n], ty, span));

@@ -199,7 +199,7 @@ pub struct Expr {
     pub span: Span,
 }
 
-pub use crate::values::BinOp;
+pub use crate::values::{BinOp, MathFn};
 
 /// Unary operators of the IR.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -261,38 +261,9 @@ pub enum CallArg {
 /// of the instruction.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Builtin {
-    /// ABS
-    Abs,
-    /// SQRT
-    Sqrt,
-    /// LN
-    Ln,
-    /// LOG (base 10)
-    Log,
-    /// EXP
-    Exp,
-    /// SIN
-    Sin,
-    /// COS
-    Cos,
-    /// TAN
-    Tan,
-    /// ASIN
-    Asin,
-    /// ACOS
-    Acos,
-    /// ATAN
-    Atan,
-    /// EXPT (real base, real exponent)
-    Expt,
-    /// SHL(value, n)
-    Shl,
-    /// SHR(value, n)
-    Shr,
-    /// ROL(value, n)
-    Rol,
-    /// ROR(value, n)
-    Ror,
+    /// ABS, SQRT, LN, LOG, EXP, SIN … ATAN, EXPT (real base, LREAL exponent), SHL, SHR,
+    /// ROL, ROR (value, count).
+    Math(MathFn),
     /// SEL(g, in0, in1)
     Sel,
     /// MAX(a, b, ...)

@@ -38,3 +38,41 @@ pub enum BinOp {
     /// `>=`
     Ge,
 }
+
+/// The numeric and bit-string standard functions of one value (with a shift count or an
+/// exponent): one list for the checker's IR (`Builtin::Math`) and the VM's `Op::Math`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum MathFn {
+    /// ABS (wraps for integers).
+    Abs,
+    /// SQRT
+    Sqrt,
+    /// LN
+    Ln,
+    /// LOG
+    Log,
+    /// EXP
+    Exp,
+    /// SIN
+    Sin,
+    /// COS
+    Cos,
+    /// TAN
+    Tan,
+    /// ASIN
+    Asin,
+    /// ACOS
+    Acos,
+    /// ATAN
+    Atan,
+    /// EXPT with an exponent of the same real type as the base.
+    Expt,
+    /// SHL with the count as LINT in `b`.
+    Shl,
+    /// SHR
+    Shr,
+    /// ROL
+    Rol,
+    /// ROR
+    Ror,
+}

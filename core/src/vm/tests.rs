@@ -100,23 +100,30 @@ fn string_assignment_and_comparison() {
 
 #[test]
 fn numeric_builtins() {
-    let abs = builtin(Builtin::Abs, vec![int(SINT, -128)], SINT);
+    let abs = builtin(Builtin::Math(MathFn::Abs), vec![int(SINT, -128)], SINT);
     assert_eq!(eval(abs), Ok(int_val(-128, Elem::SInt)));
-    assert_eq!(eval(builtin(Builtin::Abs, vec![int(INT, -5)], INT)), Ok(int_val(5, Elem::Int)));
     assert_eq!(
-        eval(builtin(Builtin::Sqrt, vec![real(LREAL, 16.0)], LREAL)),
+        eval(builtin(Builtin::Math(MathFn::Abs), vec![int(INT, -5)], INT)),
+        Ok(int_val(5, Elem::Int))
+    );
+    assert_eq!(
+        eval(builtin(Builtin::Math(MathFn::Sqrt), vec![real(LREAL, 16.0)], LREAL)),
         Ok(Value::Real(4.0, Elem::LReal))
     );
     assert_eq!(
-        eval(builtin(Builtin::Expt, vec![real(LREAL, 2.0), real(LREAL, 10.0)], LREAL)),
+        eval(builtin(
+            Builtin::Math(MathFn::Expt),
+            vec![real(LREAL, 2.0), real(LREAL, 10.0)],
+            LREAL
+        )),
         Ok(Value::Real(1024.0, Elem::LReal))
     );
     assert_eq!(
-        eval(builtin(Builtin::Rol, vec![int(BYTE, 0x81), int(INT, 1)], BYTE)),
+        eval(builtin(Builtin::Math(MathFn::Rol), vec![int(BYTE, 0x81), int(INT, 1)], BYTE)),
         Ok(int_val(3, Elem::Byte))
     );
     assert_eq!(
-        eval(builtin(Builtin::Shl, vec![int(BYTE, 0x81), int(LINT, 1)], BYTE)),
+        eval(builtin(Builtin::Math(MathFn::Shl), vec![int(BYTE, 0x81), int(LINT, 1)], BYTE)),
         Ok(int_val(2, Elem::Byte))
     );
     assert_eq!(
