@@ -8,7 +8,7 @@ use super::error::bad;
 use super::CompileError;
 use crate::program::memory::{string_cells, string_header};
 use crate::program::op::{MathFn, Op, Reg, StrFunc, R3};
-use crate::semantic::ir::{BinOp, Builtin, CallArg, Expr, ExprKind, UnOp};
+use crate::semantic::ir::{BinOp, Builtin, CallArg, Cmp, Expr, ExprKind, UnOp};
 use crate::semantic::types::{Elem, PouId, Type};
 use crate::syntax::VarSection;
 use crate::values::arith::identity_widening;
@@ -34,12 +34,12 @@ fn fast_op(op: BinOp, elem: Elem) -> Option<fn(R3) -> Op> {
         (BinOp::Sub, Real) => Op::SubF32,
         (BinOp::Mul, Real) => Op::MulF32,
         (BinOp::Div, Real) => Op::DivF32,
-        (BinOp::Eq, e) if !e.is_real() => Op::EqCell,
-        (BinOp::Ne, e) if !e.is_real() => Op::NeCell,
-        (BinOp::Lt, _) if small_or_signed => Op::LtI64,
-        (BinOp::Le, _) if small_or_signed => Op::LeI64,
-        (BinOp::Gt, _) if small_or_signed => Op::GtI64,
-        (BinOp::Ge, _) if small_or_signed => Op::GeI64,
+        (BinOp::Cmp(Cmp::Eq), e) if !e.is_real() => Op::EqCell,
+        (BinOp::Cmp(Cmp::Ne), e) if !e.is_real() => Op::NeCell,
+        (BinOp::Cmp(Cmp::Lt), _) if small_or_signed => Op::LtI64,
+        (BinOp::Cmp(Cmp::Le), _) if small_or_signed => Op::LeI64,
+        (BinOp::Cmp(Cmp::Gt), _) if small_or_signed => Op::GtI64,
+        (BinOp::Cmp(Cmp::Ge), _) if small_or_signed => Op::GeI64,
         (BinOp::And, e) if !e.is_real() => Op::And,
         (BinOp::Or, e) if !e.is_real() => Op::Or,
         (BinOp::Xor, e) if !e.is_real() => Op::Xor,
@@ -48,7 +48,7 @@ fn fast_op(op: BinOp, elem: Elem) -> Option<fn(R3) -> Op> {
 }
 
 fn is_cmp(op: BinOp) -> bool {
-    matches!(op, BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge)
+    matches!(op, BinOp::Cmp(_))
 }
 
 impl Emitter<'_> {

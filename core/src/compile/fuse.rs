@@ -8,7 +8,7 @@
 use super::emit::Emitter;
 use super::CompileError;
 use crate::program::op::{Branch, Op};
-use crate::semantic::ir::{BinOp, Expr, ExprKind, Place, Stmt, StmtKind, UnOp};
+use crate::semantic::ir::{BinOp, Cmp, Expr, ExprKind, Place, Stmt, StmtKind, UnOp};
 use crate::semantic::types::{Elem, Type};
 use crate::syntax::VarSection;
 
@@ -18,12 +18,12 @@ use crate::syntax::VarSection;
 fn jump_when_false(op: BinOp, elem: Elem) -> Option<fn(Branch) -> Op> {
     let ordered = !matches!(elem, Elem::ULInt | Elem::LWord | Elem::Real | Elem::LReal);
     Some(match op {
-        BinOp::Eq if !elem.is_real() => Op::JumpNe,
-        BinOp::Ne if !elem.is_real() => Op::JumpEq,
-        BinOp::Lt if ordered => Op::JumpGe,
-        BinOp::Le if ordered => Op::JumpGt,
-        BinOp::Gt if ordered => Op::JumpLe,
-        BinOp::Ge if ordered => Op::JumpLt,
+        BinOp::Cmp(Cmp::Eq) if !elem.is_real() => Op::JumpNe,
+        BinOp::Cmp(Cmp::Ne) if !elem.is_real() => Op::JumpEq,
+        BinOp::Cmp(Cmp::Lt) if ordered => Op::JumpGe,
+        BinOp::Cmp(Cmp::Le) if ordered => Op::JumpGt,
+        BinOp::Cmp(Cmp::Gt) if ordered => Op::JumpLe,
+        BinOp::Cmp(Cmp::Ge) if ordered => Op::JumpLt,
         _ => return None,
     })
 }

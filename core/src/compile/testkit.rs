@@ -77,7 +77,7 @@ pub fn local(i: u32, ty: Type) -> Expr {
 
 pub fn bin(op: BinOp, a: Expr, b: Expr) -> Expr {
     let ty = match op {
-        BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge => BOOL,
+        BinOp::Cmp(_) => BOOL,
         _ => a.ty,
     };
     e(ExprKind::Binary(op, Box::new(a), Box::new(b)), ty)

@@ -40,11 +40,11 @@ fn if_elsif_else() {
         StmtKind::If {
             branches: vec![
                 (
-                    bin(BinOp::Gt, local(0, INT), int(INT, 10)),
+                    bin(BinOp::Cmp(Cmp::Gt), local(0, INT), int(INT, 10)),
                     vec![set(Place::Local(1), int(INT, 1), 2)],
                 ),
                 (
-                    bin(BinOp::Gt, local(0, INT), int(INT, 5)),
+                    bin(BinOp::Cmp(Cmp::Gt), local(0, INT), int(INT, 5)),
                     vec![set(Place::Local(1), int(INT, 2), 3)],
                 ),
             ],
@@ -167,13 +167,13 @@ fn while_with_exit_and_continue_and_repeat() {
     let body = vec![
         st(
             StmtKind::While {
-                cond: bin(BinOp::Lt, local(0, INT), int(INT, 10)),
+                cond: bin(BinOp::Cmp(Cmp::Lt), local(0, INT), int(INT, 10)),
                 body: vec![
                     set(Place::Local(0), inc(0, INT, 1), 2),
                     st(
                         StmtKind::If {
                             branches: vec![(
-                                bin(BinOp::Eq, local(0, INT), int(INT, 3)),
+                                bin(BinOp::Cmp(Cmp::Eq), local(0, INT), int(INT, 3)),
                                 vec![st(StmtKind::Continue, 4)],
                             )],
                             else_body: vec![],
@@ -184,7 +184,7 @@ fn while_with_exit_and_continue_and_repeat() {
                     st(
                         StmtKind::If {
                             branches: vec![(
-                                bin(BinOp::Eq, local(0, INT), int(INT, 7)),
+                                bin(BinOp::Cmp(Cmp::Eq), local(0, INT), int(INT, 7)),
                                 vec![st(StmtKind::Exit, 7)],
                             )],
                             else_body: vec![],
@@ -198,7 +198,7 @@ fn while_with_exit_and_continue_and_repeat() {
         st(
             StmtKind::Repeat {
                 body: vec![set(Place::Local(2), inc(2, INT, 2), 9)],
-                until: bin(BinOp::Ge, local(2, INT), int(INT, 5)),
+                until: bin(BinOp::Cmp(Cmp::Ge), local(2, INT), int(INT, 5)),
             },
             8,
         ),
@@ -376,7 +376,7 @@ fn conditions_evaluate_in_the_main_scope() {
     let mut exe = compile(&prog.0, prog.1).expect("compiles");
     let mut m = Machine::new(&exe);
     let c = exe
-        .compile_condition(&prog.0, &bin(BinOp::Ge, local(0, INT), int(INT, 2)))
+        .compile_condition(&prog.0, &bin(BinOp::Cmp(Cmp::Ge), local(0, INT), int(INT, 2)))
         .expect("condition compiles");
     let sys = SysState::default();
     let mut seen = vec![];

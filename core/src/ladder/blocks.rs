@@ -8,6 +8,7 @@
 //! every scan with that input following the power.
 
 use super::model::{is_comparison, Block};
+use crate::syntax::Cmp;
 
 /// The power a block passes on, relative to the power reaching it.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -48,15 +49,7 @@ pub(crate) struct BlockCode {
 }
 
 fn compare_op(name: &str) -> Option<&'static str> {
-    Some(match name.trim().to_ascii_uppercase().as_str() {
-        "EQ" => "=",
-        "NE" => "<>",
-        "GT" => ">",
-        "GE" => ">=",
-        "LT" => "<",
-        "LE" => "<=",
-        _ => return None,
-    })
+    Cmp::from_function(name.trim()).map(Cmp::symbol)
 }
 
 fn binary_op(name: &str) -> Option<&'static str> {

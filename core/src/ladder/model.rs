@@ -7,6 +7,7 @@
 //! `(row + 1, col)`, so parallel branches open and close at column boundaries. A block
 //! spans `height` rows from its anchor cell; the cells it covers below hold `Covered`.
 
+use crate::syntax::Cmp;
 use serde::{Deserialize, Serialize};
 
 /// Default grid limits (seed 002's PLCSim: 8 rows × 10 columns), configurable per project.
@@ -205,9 +206,6 @@ const STANDARD_FB_POWER: &[(&str, &str, &str)] = &[
     ("RS", "S", "Q1"),
 ];
 
-/// Comparison functions: power leaves through their BOOL result.
-const COMPARISONS: &[&str] = &["EQ", "NE", "GT", "GE", "LT", "LE"];
-
 /// The power pins of a standard FB type (`TON` → `("IN", "Q")`), if it is one.
 pub fn standard_fb_power(type_name: &str) -> Option<(&'static str, &'static str)> {
     STANDARD_FB_POWER
@@ -218,7 +216,7 @@ pub fn standard_fb_power(type_name: &str) -> Option<(&'static str, &'static str)
 
 /// Whether `type_name` is a comparison function (`GT`, `EQ`, …).
 pub fn is_comparison(type_name: &str) -> bool {
-    COMPARISONS.iter().any(|n| n.eq_ignore_ascii_case(type_name.trim()))
+    Cmp::from_function(type_name.trim()).is_some()
 }
 
 impl Block {

@@ -17,7 +17,7 @@
 //! "exclusive" is always true of the program; "not exclusive" may be a false alarm (for
 //! example `x > y` vs `y > x`, which we do not relate).
 
-use crate::syntax::{self, BinaryOp, Expr, ExprKind, LiteralValue, UnaryOp};
+use crate::syntax::{self, BinaryOp, Cmp, Expr, ExprKind, LiteralValue, UnaryOp};
 
 /// The largest truth table the check builds; larger guard pairs count as not exclusive.
 pub const MAX_ASSIGNMENTS: u64 = 1 << 16;
@@ -32,39 +32,6 @@ enum Formula {
     And(Box<Formula>, Box<Formula>),
     Or(Box<Formula>, Box<Formula>),
     Xor(Box<Formula>, Box<Formula>),
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Cmp {
-    Eq,
-    Ne,
-    Lt,
-    Le,
-    Gt,
-    Ge,
-}
-
-impl Cmp {
-    fn flip(self) -> Cmp {
-        match self {
-            Cmp::Lt => Cmp::Gt,
-            Cmp::Le => Cmp::Ge,
-            Cmp::Gt => Cmp::Lt,
-            Cmp::Ge => Cmp::Le,
-            c => c,
-        }
-    }
-
-    fn holds(self, x: i128, k: i128) -> bool {
-        match self {
-            Cmp::Eq => x == k,
-            Cmp::Ne => x != k,
-            Cmp::Lt => x < k,
-            Cmp::Le => x <= k,
-            Cmp::Gt => x > k,
-            Cmp::Ge => x >= k,
-        }
-    }
 }
 
 /// The atoms of the guards read so far.
@@ -172,15 +139,10 @@ impl Atoms {
 }
 
 fn comparison(op: BinaryOp) -> Option<Cmp> {
-    Some(match op {
-        BinaryOp::Eq => Cmp::Eq,
-        BinaryOp::Ne => Cmp::Ne,
-        BinaryOp::Lt => Cmp::Lt,
-        BinaryOp::Le => Cmp::Le,
-        BinaryOp::Gt => Cmp::Gt,
-        BinaryOp::Ge => Cmp::Ge,
-        _ => return None,
-    })
+    match op {
+        BinaryOp::Cmp(c) => Some(c),
+        _ => None,
+    }
 }
 
 fn int_literal(e: &Expr) -> Option<i128> {
@@ -199,7 +161,7 @@ fn eval(f: &Formula, bools: u64, nums: &[i128]) -> bool {
     match f {
         Formula::Const(b) => *b,
         Formula::Atom(i) => bools >> i & 1 == 1,
-        Formula::Cmp(v, c, k) => c.holds(nums[*v], *k),
+        Formula::Cmp(v, c, k) => c.holds(nums[*v].cmp(&*k)),
         Formula::Not(x) => !eval(x, bools, nums),
         Formula::And(x, y) => eval(x, bools, nums) && eval(y, bools, nums),
         Formula::Or(x, y) => eval(x, bools, nums) || eval(y, bools, nums),

@@ -334,13 +334,7 @@ impl<'a> Checker<'a> {
             "SUB" => Some(B::Sub),
             "DIV" => Some(B::Div),
             "MOD" => Some(B::Mod),
-            "GT" => Some(B::Gt),
-            "GE" => Some(B::Ge),
-            "EQ" => Some(B::Eq),
-            "NE" => Some(B::Ne),
-            "LT" => Some(B::Lt),
-            "LE" => Some(B::Le),
-            _ => None,
+            name => ast::Cmp::from_function(name).map(B::Cmp),
         };
         if let Some(op) = simple {
             return self.expr(&Self::binary_ast(op, a[0], a[1], span), None).map(|t| t.e);

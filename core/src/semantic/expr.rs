@@ -1,7 +1,7 @@
 //! Expressions: names and places, literals, operators, implicit conversions, folding.
 
 use super::check::Checker;
-use super::ir::{BinOp, Expr, ExprKind, InitValue, Place, SysVar, UnOp, Var};
+use super::ir::{BinOp, Cmp, Expr, ExprKind, InitValue, Place, SysVar, UnOp, Var};
 use super::types::{Elem, Type};
 use crate::diagnostics::{Code, Span};
 use crate::syntax::{self as ast, AddressArea, AddressSize, LiteralValue, VarSection};
@@ -88,12 +88,7 @@ fn map_binop(op: ast::BinaryOp) -> BinOp {
         A::Xor => BinOp::Xor,
         A::And => BinOp::And,
         A::AndThen => BinOp::AndThen,
-        A::Eq => BinOp::Eq,
-        A::Ne => BinOp::Ne,
-        A::Lt => BinOp::Lt,
-        A::Le => BinOp::Le,
-        A::Gt => BinOp::Gt,
-        A::Ge => BinOp::Ge,
+        A::Cmp(c) => BinOp::Cmp(c),
         A::Add => BinOp::Add,
         A::Sub => BinOp::Sub,
         A::Mul => BinOp::Mul,
@@ -117,17 +112,12 @@ pub(super) fn op_text(op: BinOp) -> &'static str {
         BinOp::Xor => "XOR",
         BinOp::AndThen => "AND_THEN",
         BinOp::OrElse => "OR_ELSE",
-        BinOp::Eq => "=",
-        BinOp::Ne => "<>",
-        BinOp::Lt => "<",
-        BinOp::Le => "<=",
-        BinOp::Gt => ">",
-        BinOp::Ge => ">=",
+        BinOp::Cmp(c) => c.symbol(),
     }
 }
 
 fn is_comparison(op: BinOp) -> bool {
-    matches!(op, BinOp::Eq | BinOp::Ne | BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge)
+    matches!(op, BinOp::Cmp(_))
 }
 
 /// Normalises a direct address text: upper case, with the `X` of bit addresses written.
@@ -972,7 +962,8 @@ impl<'a> Checker<'a> {
                 },
                 _ => return mismatch(self),
             };
-            if matches!(op, BinOp::Lt | BinOp::Le | BinOp::Gt | BinOp::Ge) && operand.is_bool() {
+            if matches!(op, BinOp::Cmp(Cmp::Lt | Cmp::Le | Cmp::Gt | Cmp::Ge)) && operand.is_bool()
+            {
                 // Allowed (FALSE < TRUE), as in IEC.
             }
             let (x, y) = (self.convert(a.e, operand), self.convert(b.e, operand));

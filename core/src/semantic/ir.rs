@@ -199,7 +199,7 @@ pub struct Expr {
     pub span: Span,
 }
 
-pub use crate::values::{BinOp, MathFn};
+pub use crate::values::{BinOp, Cmp, MathFn};
 
 /// Unary operators of the IR.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -79,7 +79,10 @@ pub(super) fn lower(chart: &Chart, rewrites: &mut Vec<Rewrite>) -> Lowered {
     let mut body = vec![
         pre.assign(pre.name(DT), pre.bin(BinaryOp::Sub, pre.name("SYS_CLOCK"), pre.name(LAST))),
         pre.if_then(
-            pre.or(pre.bin(BinaryOp::Lt, pre.name(DT), pre.time(0)), pre.not(pre.name(STARTED))),
+            pre.or(
+                pre.bin(BinaryOp::Cmp(Cmp::Lt), pre.name(DT), pre.time(0)),
+                pre.not(pre.name(STARTED)),
+            ),
             vec![pre.assign(pre.name(DT), pre.time(0))],
         ),
         pre.assign(pre.name(LAST), pre.name("SYS_CLOCK")),
@@ -317,7 +320,7 @@ impl ActionControl {
             vec![at.assign(self.f(&et), at.bin(BinaryOp::Add, self.f(&et), at.name(DT)))],
         );
         let cap = at.if_then(
-            at.bin(BinaryOp::Gt, self.f(&et), self.f(&pt)),
+            at.bin(BinaryOp::Cmp(Cmp::Gt), self.f(&et), self.f(&pt)),
             vec![at.assign(self.f(&et), self.f(&pt))],
         );
         vec![
@@ -328,12 +331,12 @@ impl ActionControl {
 
     /// `ET >= PT` of timer `q`.
     fn elapsed(&self, q: &str) -> Expr {
-        self.at.bin(BinaryOp::Ge, self.f(&format!("{q}_ET")), self.f(&format!("{q}_PT")))
+        self.at.bin(BinaryOp::Cmp(Cmp::Ge), self.f(&format!("{q}_ET")), self.f(&format!("{q}_PT")))
     }
 
     /// `ET < PT` of timer `q`.
     fn running(&self, q: &str) -> Expr {
-        self.at.bin(BinaryOp::Lt, self.f(&format!("{q}_ET")), self.f(&format!("{q}_PT")))
+        self.at.bin(BinaryOp::Cmp(Cmp::Lt), self.f(&format!("{q}_ET")), self.f(&format!("{q}_PT")))
     }
 
     /// Latches each timed qualifier's duration from the first active step using it.

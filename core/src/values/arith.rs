@@ -8,7 +8,7 @@
 //! - unsigned integers and bit strings: the value zero-extended;
 //! - REAL: the f64 bits of a value already rounded to f32 precision; LREAL: its f64 bits.
 
-use super::{BinOp, Elem, Fault};
+use super::{BinOp, Cmp, Elem, Fault};
 
 const NS_PER_MS: i64 = 1_000_000;
 const NS_PER_S: i64 = 1_000_000_000;
@@ -193,19 +193,15 @@ pub fn scale_time(op: BinOp, elem: Elem, t: u64, factor: u64, real: bool) -> Res
 
 /// Compares two cells of the same type with `op` (one of Eq, Ne, Lt, Le, Gt, Ge).
 pub fn compare(op: BinOp, elem: Elem, a: u64, b: u64) -> bool {
-    use std::cmp::Ordering;
     let ord = if elem.is_real() {
         f64::from_bits(a).partial_cmp(&f64::from_bits(b))
     } else {
         Some(to_i128(elem, a).cmp(&to_i128(elem, b)))
     };
     match (op, ord) {
-        (BinOp::Eq, o) => o == Some(Ordering::Equal),
-        (BinOp::Ne, o) => o != Some(Ordering::Equal),
-        (BinOp::Lt, Some(o)) => o == Ordering::Less,
-        (BinOp::Le, Some(o)) => o != Ordering::Greater,
-        (BinOp::Gt, Some(o)) => o == Ordering::Greater,
-        (BinOp::Ge, Some(o)) => o != Ordering::Less,
+        (BinOp::Cmp(c), Some(o)) => c.holds(o),
+        // NaN is unordered: only `<>` holds.
+        (BinOp::Cmp(c), None) => c == Cmp::Ne,
         _ => false,
     }
 }

@@ -1,5 +1,7 @@
 //! The binary operators on values (the IR uses them as they are).
 
+pub use crate::syntax::Cmp;
+
 /// Binary operators on values. Operands of a binary operator have the same type unless noted.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BinOp {
@@ -25,18 +27,8 @@ pub enum BinOp {
     AndThen,
     /// `OR_ELSE`: short-circuit, BOOL only
     OrElse,
-    /// `=`
-    Eq,
-    /// `<>`
-    Ne,
-    /// `<`
-    Lt,
-    /// `<=`
-    Le,
-    /// `>`
-    Gt,
-    /// `>=`
-    Ge,
+    /// A comparison (result BOOL).
+    Cmp(Cmp),
 }
 
 /// The numeric and bit-string standard functions of one value (with a shift count or an

@@ -7,7 +7,7 @@ use super::text;
 use crate::program::memory::{read_str_into, write_str};
 use crate::program::op::{MathFn, Op};
 use crate::program::Executable;
-use crate::semantic::ir::BinOp;
+use crate::semantic::ir::{BinOp, Cmp};
 use crate::semantic::types::Elem;
 use crate::values::arith::{self, ShiftKind};
 use crate::values::math;
@@ -40,12 +40,12 @@ pub(crate) fn exec(
             let o = s.a.cmp(&s.b);
             use std::cmp::Ordering::*;
             let r = match op {
-                BinOp::Eq => o == Equal,
-                BinOp::Ne => o != Equal,
-                BinOp::Lt => o == Less,
-                BinOp::Le => o != Greater,
-                BinOp::Gt => o == Greater,
-                BinOp::Ge => o != Less,
+                BinOp::Cmp(Cmp::Eq) => o == Equal,
+                BinOp::Cmp(Cmp::Ne) => o != Equal,
+                BinOp::Cmp(Cmp::Lt) => o == Less,
+                BinOp::Cmp(Cmp::Le) => o != Greater,
+                BinOp::Cmp(Cmp::Gt) => o == Greater,
+                BinOp::Cmp(Cmp::Ge) => o != Less,
                 _ => return Err(Fault::Internal("string operator")),
             };
             w!(dst, u64::from(r));
@@ -65,9 +65,9 @@ pub(crate) fn exec(
             for k in 1..u32::from(n) {
                 let v = get(cells, args.wrapping_add(k))?;
                 let better = if max {
-                    arith::compare(BinOp::Gt, elem, v, best)
+                    arith::compare(BinOp::Cmp(Cmp::Gt), elem, v, best)
                 } else {
-                    arith::compare(BinOp::Lt, elem, v, best)
+                    arith::compare(BinOp::Cmp(Cmp::Lt), elem, v, best)
                 };
                 if better {
                     best = v;
@@ -79,9 +79,9 @@ pub(crate) fn exec(
             let mn = get(cells, args)?;
             let x = get(cells, args.wrapping_add(1))?;
             let mx = get(cells, args.wrapping_add(2))?;
-            let v = if arith::compare(BinOp::Lt, elem, x, mn) {
+            let v = if arith::compare(BinOp::Cmp(Cmp::Lt), elem, x, mn) {
                 mn
-            } else if arith::compare(BinOp::Gt, elem, x, mx) {
+            } else if arith::compare(BinOp::Cmp(Cmp::Gt), elem, x, mx) {
                 mx
             } else {
                 x

@@ -86,8 +86,8 @@ fn string_assignment_and_comparison() {
     // a := 'abcdef' (STRING[3]); b := a < 'abd'; c := a = 'abc'
     let body = vec![
         set(Place::Local(0), text("abcdef", 6), 1),
-        set(Place::Local(1), bin(BinOp::Lt, local(0, s(3)), text("abd", 3)), 2),
-        set(Place::Local(2), bin(BinOp::Eq, local(0, s(3)), text("abc", 3)), 3),
+        set(Place::Local(1), bin(BinOp::Cmp(Cmp::Lt), local(0, s(3)), text("abd", 3)), 2),
+        set(Place::Local(2), bin(BinOp::Cmp(Cmp::Eq), local(0, s(3)), text("abc", 3)), 3),
         set(Place::Local(3), local(0, s(3)), 4),
     ];
     let p = simple(vec![var("a", s(3)), var("b", BOOL), var("c", BOOL), var("d", s(10))], body);
@@ -199,7 +199,7 @@ fn time_arithmetic() {
 #[test]
 fn short_circuit_operators() {
     // r := FALSE AND_THEN (1 / 0 = 0): the right side never runs.
-    let boom = bin(BinOp::Eq, bin(BinOp::Div, int(INT, 1), int(INT, 0)), int(INT, 0));
+    let boom = bin(BinOp::Cmp(Cmp::Eq), bin(BinOp::Div, int(INT, 1), int(INT, 0)), int(INT, 0));
     assert_eq!(eval(bin(BinOp::AndThen, boolean(false), boom.clone())), Ok(Value::Bool(false)));
     assert_eq!(eval(bin(BinOp::OrElse, boolean(true), boom.clone())), Ok(Value::Bool(true)));
     assert_eq!(eval(bin(BinOp::And, boolean(false), boom)), Err(Fault::DivisionByZero));

@@ -459,18 +459,8 @@ pub enum BinaryOp {
     And,
     /// `AND_THEN` (short-circuit)
     AndThen,
-    /// `=`
-    Eq,
-    /// `<>`
-    Ne,
-    /// `<`
-    Lt,
-    /// `<=`
-    Le,
-    /// `>`
-    Gt,
-    /// `>=`
-    Ge,
+    /// A comparison (`=`, `<>`, `<`, `<=`, `>`, `>=`).
+    Cmp(Cmp),
     /// `+`
     Add,
     /// `-`
@@ -483,6 +473,83 @@ pub enum BinaryOp {
     Mod,
     /// `**`
     Pow,
+}
+
+/// A comparison operator: the one definition for the AST, the checked IR
+/// (`values::BinOp::Cmp`), ladder comparison blocks (`GT`, `LE`, …) and the Petri net
+/// guard analysis.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Cmp {
+    /// `=` (`EQ`)
+    Eq,
+    /// `<>` (`NE`)
+    Ne,
+    /// `<` (`LT`)
+    Lt,
+    /// `<=` (`LE`)
+    Le,
+    /// `>` (`GT`)
+    Gt,
+    /// `>=` (`GE`)
+    Ge,
+}
+
+impl Cmp {
+    /// Every comparison, in the order of the standard functions EQ, NE, LT, LE, GT, GE.
+    pub const ALL: [Cmp; 6] = [Cmp::Eq, Cmp::Ne, Cmp::Lt, Cmp::Le, Cmp::Gt, Cmp::Ge];
+
+    /// The operator as written in ST (`<=`).
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Cmp::Eq => "=",
+            Cmp::Ne => "<>",
+            Cmp::Lt => "<",
+            Cmp::Le => "<=",
+            Cmp::Gt => ">",
+            Cmp::Ge => ">=",
+        }
+    }
+
+    /// The name of the standard function (`LE`).
+    pub fn function(self) -> &'static str {
+        match self {
+            Cmp::Eq => "EQ",
+            Cmp::Ne => "NE",
+            Cmp::Lt => "LT",
+            Cmp::Le => "LE",
+            Cmp::Gt => "GT",
+            Cmp::Ge => "GE",
+        }
+    }
+
+    /// The comparison a standard function name stands for (any case): `le` → `Le`.
+    pub fn from_function(name: &str) -> Option<Cmp> {
+        Cmp::ALL.into_iter().find(|c| c.function().eq_ignore_ascii_case(name))
+    }
+
+    /// The same comparison with its operands swapped: `a < b` is `b > a`.
+    pub fn flip(self) -> Cmp {
+        match self {
+            Cmp::Lt => Cmp::Gt,
+            Cmp::Le => Cmp::Ge,
+            Cmp::Gt => Cmp::Lt,
+            Cmp::Ge => Cmp::Le,
+            c => c,
+        }
+    }
+
+    /// Whether the comparison holds for two operands ordered as `ord` (`a.cmp(&b)`).
+    pub fn holds(self, ord: std::cmp::Ordering) -> bool {
+        use std::cmp::Ordering::{Equal, Greater, Less};
+        match self {
+            Cmp::Eq => ord == Equal,
+            Cmp::Ne => ord != Equal,
+            Cmp::Lt => ord == Less,
+            Cmp::Le => ord != Greater,
+            Cmp::Gt => ord == Greater,
+            Cmp::Ge => ord != Less,
+        }
+    }
 }
 
 /// An argument of a call.

@@ -72,6 +72,7 @@ fn sx(e: &Expr) -> String {
             format!("{}[{}]", sx(b), ix.iter().map(sx).collect::<Vec<_>>().join(","))
         }
         ExprKind::Unary(op, x) => format!("({op:?} {})", sx(x)),
+        ExprKind::Binary(BinaryOp::Cmp(c), a, b) => format!("({c:?} {} {})", sx(a), sx(b)),
         ExprKind::Binary(op, a, b) => format!("({op:?} {} {})", sx(a), sx(b)),
         ExprKind::Call { callee, args } => {
             let args: Vec<String> = args
