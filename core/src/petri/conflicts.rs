@@ -161,7 +161,7 @@ fn eval(f: &Formula, bools: u64, nums: &[i128]) -> bool {
     match f {
         Formula::Const(b) => *b,
         Formula::Atom(i) => bools >> i & 1 == 1,
-        Formula::Cmp(v, c, k) => c.holds(nums[*v].cmp(&*k)),
+        Formula::Cmp(v, c, k) => c.holds(nums[*v].cmp(k)),
         Formula::Not(x) => !eval(x, bools, nums),
         Formula::And(x, y) => eval(x, bools, nums) && eval(y, bools, nums),
         Formula::Or(x, y) => eval(x, bools, nums) || eval(y, bools, nums),
