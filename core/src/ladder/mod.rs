@@ -8,6 +8,7 @@ pub(crate) mod model;
 mod network;
 pub mod st_view;
 pub mod validate;
+mod walk;
 
 pub use catalog::Catalog;
 pub use lower::{is_hidden_name, lower, power_map, power_var, LineMap, LoweredPou};

@@ -1,12 +1,11 @@
 //! The readable ST view of a ladder POU: one statement per coil or block, rung comments
 //! kept, power flow written as plain boolean expressions.
 
-use std::collections::HashMap;
-
-use super::blocks::{block_code, PowerOut};
-use super::lower::{jumps, pou_keywords};
-use super::model::{CoilKind, ContactKind, Element, LadderPou};
-use super::network::{Network, RAIL};
+use super::blocks::PowerOut;
+use super::lower::pou_keywords;
+use super::model::{Element, LadderPou, Rung};
+use super::network::Network;
+use super::walk::{walk, At, RungWriter, Term};
 
 /// A boolean expression of the power flow.
 #[derive(Debug, Clone, PartialEq)]
@@ -123,175 +122,130 @@ fn mentions(b: &B, names: &[String]) -> bool {
     }
 }
 
-/// The statements of the ST view with the rung each comes from, and the declarations of
-/// the helpers the view needs (`LdEdge_0 : R_TRIG;`, `LdTmp_0 : BOOL;`).
-fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
-    let mut lines: Vec<(String, Option<usize>)> = Vec::new();
-    let mut decls = String::new();
-    let mut edge = 0usize;
-    let mut tmp = 0usize;
-    let jumps = jumps(pou);
-    for (id, ..) in &jumps {
-        lines.push((format!("LdJmp_{id} := FALSE;"), None));
+/// The view's writer: power as boolean expressions, statements with the rung they are in.
+struct View {
+    lines: Vec<(String, Option<usize>)>,
+    decls: String,
+    indent: &'static str,
+    tmp: usize,
+}
+
+impl RungWriter for View {
+    type Power = B;
+
+    fn constant(&mut self, on: bool) -> B {
+        if on {
+            B::True
+        } else {
+            B::False
+        }
     }
-    for (ri, rung) in pou.rungs.iter().enumerate() {
-        let skip: Vec<String> = jumps
-            .iter()
-            .filter(|&&(_, s, _, t)| s < ri && ri < t)
-            .map(|(id, ..)| format!("LdJmp_{id}"))
-            .collect();
-        let indent = if skip.is_empty() { "" } else { "    " };
+
+    fn any(&mut self, feeds: Vec<B>) -> B {
+        or(feeds)
+    }
+
+    fn and_term(&mut self, power: B, term: Term) -> B {
+        match term {
+            Term::Is(x) => and(power, B::Atom(x)),
+            Term::Not(x) => and(power, B::Not(Box::new(B::Atom(x)))),
+        }
+    }
+
+    fn block_out(&mut self, power: B, out: PowerOut) -> B {
+        match out {
+            PowerOut::Same => power,
+            PowerOut::And(x) => and(power, atom(x)),
+            PowerOut::AndThen(x) => match power {
+                B::True => atom(x),
+                B::Or(_) => B::Atom(format!("(({}) AND_THEN {x})", render(&power))),
+                _ => B::Atom(format!("({} AND_THEN {x})", render(&power))),
+            },
+            PowerOut::Value(x) => atom(x),
+        }
+    }
+
+    fn text(&self, power: &B) -> String {
+        render(power)
+    }
+
+    fn negated(&self, power: &B) -> String {
+        render(&B::Not(Box::new(power.clone())))
+    }
+
+    fn hold(&mut self, _at: At, power: B) -> B {
+        power
+    }
+
+    fn statement(&mut self, (rung, ..): At, text: String) {
+        self.lines.push((format!("{}{text}", self.indent), Some(rung)));
+    }
+
+    fn line(&mut self, text: String) {
+        self.lines.push((text, None));
+    }
+
+    fn declare(&mut self, text: String) {
+        self.decls.push_str(&format!("    {text}\n"));
+    }
+
+    fn start_rung(&mut self, ri: usize, rung: &Rung, skip: &str) {
+        self.indent = if skip.is_empty() { "" } else { "    " };
         let comment = rung.comment.trim().replace("*)", "* )");
         let comment: Vec<&str> = comment.lines().collect();
         match comment.as_slice() {
             [] => {}
-            [one] => lines.push((format!("(* {one} *)"), Some(ri))),
+            [one] => self.lines.push((format!("(* {one} *)"), Some(ri))),
             [first, rest @ ..] => {
-                lines.push((format!("(* {first}"), Some(ri)));
+                self.lines.push((format!("(* {first}"), Some(ri)));
                 for (k, l) in rest.iter().enumerate() {
                     let end = if k + 1 == rest.len() { " *)" } else { "" };
-                    lines.push((format!("   {l}{end}"), Some(ri)));
+                    self.lines.push((format!("   {l}{end}"), Some(ri)));
                 }
             }
         }
         if let Some(l) = &rung.label {
-            lines.push((format!("(* label {} *)", l.trim()), Some(ri)));
+            self.lines.push((format!("(* label {} *)", l.trim()), Some(ri)));
         }
         if !skip.is_empty() {
-            lines.push((format!("IF NOT ({}) THEN", skip.join(" OR ")), Some(ri)));
-        }
-        let net = Network::new(rung);
-        let mut outs: HashMap<usize, B> = HashMap::new();
-        for (i, e) in net.elements.iter().enumerate() {
-            let input = if !net.powered[e.input] {
-                B::False
-            } else if e.input == RAIL {
-                B::True
-            } else {
-                or(net
-                    .feeders(e.input)
-                    .map(|(j, _)| outs.get(&j).cloned().unwrap_or(B::False))
-                    .collect())
-            };
-            // A statement that writes a variable an expression still waiting to be used has
-            // read: keep that expression's value in a temporary first, so the view computes
-            // what the rung computes (power is evaluated where the element stands).
-            let written = written_names(e.element);
-            if !written.is_empty() {
-                let mut pending: Vec<usize> = outs
-                    .keys()
-                    .copied()
-                    .filter(|&j| {
-                        let node = net.elements[j].output;
-                        net.elements.iter().skip(i + 1).any(|k| k.input == node)
-                            || net.pins.iter().any(|p| p.block > i && p.node == node)
-                    })
-                    .collect();
-                pending.sort_unstable();
-                for j in pending {
-                    let Some(value) = outs.get(&j) else { continue };
-                    if !mentions(value, &written) {
-                        continue;
-                    }
-                    let line = format!("LdTmp_{tmp} := {};", render(value));
-                    lines.push((format!("{indent}{line}"), Some(ri)));
-                    decls.push_str(&format!("    LdTmp_{tmp} : BOOL;\n"));
-                    outs.insert(j, B::Atom(format!("LdTmp_{tmp}")));
-                    tmp += 1;
-                }
-            }
-            let mut emit = |s: String| lines.push((format!("{indent}{s}"), Some(ri)));
-            let out = match e.element {
-                Element::Empty | Element::Covered | Element::Wire => input,
-                Element::Contact { kind, operand } => {
-                    let x = operand.trim().to_string();
-                    let term = match kind {
-                        ContactKind::NormallyOpen => B::Atom(x),
-                        ContactKind::NormallyClosed => B::Not(Box::new(B::Atom(x))),
-                        ContactKind::Rising | ContactKind::Falling => {
-                            let ty = if *kind == ContactKind::Rising { "R_TRIG" } else { "F_TRIG" };
-                            decls.push_str(&format!("    LdEdge_{edge} : {ty};\n"));
-                            emit(format!("LdEdge_{edge}(CLK := {x});"));
-                            edge += 1;
-                            B::Atom(format!("LdEdge_{}.Q", edge - 1))
-                        }
-                    };
-                    and(input, term)
-                }
-                Element::Coil { kind, operand } => {
-                    let x = operand.trim();
-                    let p = render(&input);
-                    match kind {
-                        CoilKind::Normal => emit(format!("{x} := {p};")),
-                        CoilKind::Negated => {
-                            emit(format!("{x} := {};", render(&B::Not(Box::new(input.clone())))))
-                        }
-                        CoilKind::Set => emit(format!("IF {p} THEN {x} := TRUE; END_IF;")),
-                        CoilKind::Reset => emit(format!("IF {p} THEN {x} := FALSE; END_IF;")),
-                        CoilKind::Rising | CoilKind::Falling => {
-                            let ty = if *kind == CoilKind::Rising { "R_TRIG" } else { "F_TRIG" };
-                            decls.push_str(&format!("    LdEdge_{edge} : {ty};\n"));
-                            emit(format!("LdEdge_{edge}(CLK := {p});"));
-                            emit(format!("{x} := LdEdge_{edge}.Q;"));
-                            edge += 1;
-                        }
-                    }
-                    input
-                }
-                Element::Block(b) => {
-                    let p = render(&input);
-                    let wired: Vec<Option<String>> = (0..b.inputs.len())
-                        .map(|k| {
-                            net.pin_node(i, k).map(|n| {
-                                if !net.powered[n] {
-                                    return "FALSE".to_string();
-                                }
-                                let feed = or(net
-                                    .feeders(n)
-                                    .map(|(j, _)| outs.get(&j).cloned().unwrap_or(B::False))
-                                    .collect());
-                                render(&feed)
-                            })
-                        })
-                        .collect();
-                    let code = block_code(b, &p, &wired);
-                    for s in code.statements {
-                        emit(s);
-                    }
-                    match code.power_out {
-                        PowerOut::Same => input,
-                        PowerOut::And(x) => and(input, atom(x)),
-                        PowerOut::AndThen(x) => match input {
-                            B::True => atom(x),
-                            B::Or(_) => B::Atom(format!("(({p}) AND_THEN {x})")),
-                            _ => B::Atom(format!("({p} AND_THEN {x})")),
-                        },
-                        PowerOut::Value(x) => atom(x),
-                    }
-                }
-                Element::Jump { .. } => {
-                    if let Some((id, ..)) =
-                        jumps.iter().find(|&&(_, s, row, _)| s == ri && row == e.row)
-                    {
-                        emit(format!("IF {} THEN LdJmp_{id} := TRUE; END_IF;", render(&input)));
-                    }
-                    input
-                }
-                Element::Return => {
-                    emit(format!("IF {} THEN RETURN; END_IF;", render(&input)));
-                    input
-                }
-            };
-            outs.insert(i, out);
-        }
-        if !skip.is_empty() {
-            lines.push(("END_IF;".to_string(), Some(ri)));
+            self.lines.push((format!("IF NOT ({skip}) THEN"), Some(ri)));
         }
     }
-    let jump_decls: String =
-        jumps.iter().map(|(id, ..)| format!("    LdJmp_{id} : BOOL;\n")).collect();
-    decls.push_str(&jump_decls);
-    (lines, decls)
+
+    fn end_rung(&mut self, ri: usize, skip: &str) {
+        if !skip.is_empty() {
+            self.lines.push(("END_IF;".to_string(), Some(ri)));
+        }
+    }
+
+    /// A statement that writes a variable an expression still waiting to be used has read:
+    /// keep that expression's value in a temporary first, so the view computes what the
+    /// rung computes (power is evaluated where the element stands).
+    fn before_writes(&mut self, at: At, net: &Network<'_>, i: usize, outs: &mut [B]) {
+        let Some(e) = net.elements.get(i) else { return };
+        let written = written_names(e.element);
+        for (j, value) in outs.iter_mut().enumerate() {
+            let Some(node) = net.elements.get(j).map(|p| p.output) else { continue };
+            let pending = net.elements.iter().skip(i + 1).any(|k| k.input == node)
+                || net.pins.iter().any(|p| p.block > i && p.node == node);
+            if !pending || !mentions(value, &written) {
+                continue;
+            }
+            let line = format!("LdTmp_{} := {};", self.tmp, render(value));
+            self.statement(at, line);
+            self.declare(format!("LdTmp_{} : BOOL;", self.tmp));
+            *value = B::Atom(format!("LdTmp_{}", self.tmp));
+            self.tmp += 1;
+        }
+    }
+}
+
+/// The statements of the ST view with the rung each comes from, and the declarations of
+/// the helpers the view needs (`LdEdge_0 : R_TRIG;`, `LdTmp_0 : BOOL;`).
+fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
+    let mut w = View { lines: Vec::new(), decls: String::new(), indent: "", tmp: 0 };
+    walk(pou, &mut w);
+    (w.lines, w.decls)
 }
 
 /// The readable ST body of a ladder POU and a map from its 1-based lines to 0-based rungs.
