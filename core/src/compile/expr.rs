@@ -434,15 +434,7 @@ impl Emitter<'_> {
                 self.emit(Op::Mux { n, dst, args: block });
                 Ok(dst)
             }
-            Builtin::Len
-            | Builtin::Find
-            | Builtin::Left
-            | Builtin::Right
-            | Builtin::Mid
-            | Builtin::Concat
-            | Builtin::Insert
-            | Builtin::Delete
-            | Builtin::Replace => self.string_fn(func, args, ty, hint),
+            Builtin::Str(f) => self.string_fn(f, args, ty, hint),
             Builtin::ToString => {
                 let a = self.expr(arg(0)?, None)?;
                 let t = arg(0)?.ty;
@@ -504,22 +496,11 @@ impl Emitter<'_> {
 
     fn string_fn(
         &mut self,
-        func: Builtin,
+        f: StrFunc,
         args: &[Expr],
         ty: Type,
         hint: Option<Reg>,
     ) -> Result<Reg, CompileError> {
-        let f = match func {
-            Builtin::Len => StrFunc::Len,
-            Builtin::Find => StrFunc::Find,
-            Builtin::Left => StrFunc::Left,
-            Builtin::Right => StrFunc::Right,
-            Builtin::Mid => StrFunc::Mid,
-            Builtin::Concat => StrFunc::Concat,
-            Builtin::Insert => StrFunc::Insert,
-            Builtin::Delete => StrFunc::Delete,
-            _ => StrFunc::Replace,
-        };
         let wide = matches!(args.first().map(|a| a.ty), Some(Type::Str { wide: true, .. }));
         let n = u8::try_from(args.len()).map_err(|_| bad("argument count"))?;
         let block = self.alloc(u32::from(n))?;

@@ -2,7 +2,7 @@
 //! triples, built-in selectors, array dimensions, element-access sites and CASE tables.
 
 use crate::values::Fault;
-pub use crate::values::MathFn;
+pub use crate::values::{MathFn, StrFunc};
 
 /// A frame-relative cell offset.
 pub type Reg = u32;
@@ -16,33 +16,6 @@ pub struct R3 {
     pub a: Reg,
     /// Right operand.
     pub b: Reg,
-}
-
-/// String built-ins executed by [`Op::Str`].
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum StrFunc {
-    /// LEN(s) → INT
-    Len,
-    /// LEFT(s, n)
-    Left,
-    /// RIGHT(s, n)
-    Right,
-    /// MID(s, n, p)
-    Mid,
-    /// CONCAT(a, b, …)
-    Concat,
-    /// INSERT(s1, s2, p)
-    Insert,
-    /// DELETE(s, n, p)
-    Delete,
-    /// REPLACE(s1, s2, n, p)
-    Replace,
-    /// FIND(s1, s2) → INT
-    Find,
-    /// STRING → WSTRING (each byte a Latin-1 character).
-    Widen,
-    /// WSTRING → STRING (characters above 255 become `?`).
-    Narrow,
 }
 
 /// One array dimension for [`Op::Index`].

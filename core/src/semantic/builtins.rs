@@ -3,7 +3,7 @@
 
 use super::check::Checker;
 use super::expr::Typed;
-use super::ir::{Builtin, Expr, ExprKind, MathFn};
+use super::ir::{Builtin, Expr, ExprKind, MathFn, StrFunc};
 use super::types::{Elem, Type};
 use crate::diagnostics::{Code, Span};
 use crate::syntax::{self as ast};
@@ -431,13 +431,22 @@ impl<'a> Checker<'a> {
             }
             "LEN" => {
                 let s = self.want_string(a[0])?;
-                return Some(self.builtin_expr(Builtin::Len, vec![s], Type::Elem(Elem::Int), span));
+                return Some(self.builtin_expr(
+                    Builtin::Str(StrFunc::Len),
+                    vec![s],
+                    Type::Elem(Elem::Int),
+                    span,
+                ));
             }
             "LEFT" | "RIGHT" => {
                 let s = self.want_string(a[0])?;
                 let n = self.want_int(a[1])?;
                 let ty = s.ty;
-                let f = if key == "LEFT" { Builtin::Left } else { Builtin::Right };
+                let f = if key == "LEFT" {
+                    Builtin::Str(StrFunc::Left)
+                } else {
+                    Builtin::Str(StrFunc::Right)
+                };
                 return Some(self.builtin_expr(f, vec![s, n], ty, span));
             }
             "MID" | "DELETE" => {
@@ -445,7 +454,11 @@ impl<'a> Checker<'a> {
                 let l = self.want_int(a[1])?;
                 let p = self.want_int(a[2])?;
                 let ty = s.ty;
-                let f = if key == "MID" { Builtin::Mid } else { Builtin::Delete };
+                let f = if key == "MID" {
+                    Builtin::Str(StrFunc::Mid)
+                } else {
+                    Builtin::Str(StrFunc::Delete)
+                };
                 return Some(self.builtin_expr(f, vec![s, l, p], ty, span));
             }
             "INSERT" | "REPLACE" => {
@@ -456,14 +469,18 @@ impl<'a> Checker<'a> {
                 for e in &a[2..] {
                     args.push(self.want_int(e)?);
                 }
-                let f = if key == "INSERT" { Builtin::Insert } else { Builtin::Replace };
+                let f = if key == "INSERT" {
+                    Builtin::Str(StrFunc::Insert)
+                } else {
+                    Builtin::Str(StrFunc::Replace)
+                };
                 return Some(self.builtin_expr(f, args, ty, span));
             }
             "FIND" => {
                 let s1 = self.want_string(a[0])?;
                 let s2 = self.want_string(a[1])?;
                 return Some(self.builtin_expr(
-                    Builtin::Find,
+                    Builtin::Str(StrFunc::Find),
                     vec![s1, s2],
                     Type::Elem(Elem::Int),
                     span,
@@ -484,7 +501,7 @@ impl<'a> Checker<'a> {
                     }
                     ty = sum_string(ty, i.ty);
                 }
-                return Some(self.builtin_expr(Builtin::Concat, items, ty, span));
+                return Some(self.builtin_expr(Builtin::Str(StrFunc::Concat), items, ty, span));
             }
             "TRUNC" => {
                 let x = self.want_real(a[0])?;

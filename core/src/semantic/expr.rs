@@ -80,24 +80,6 @@ fn fits(elem: Elem, v: i128) -> bool {
     v >= lo && v <= hi
 }
 
-fn map_binop(op: ast::BinaryOp) -> BinOp {
-    use ast::BinaryOp as A;
-    match op {
-        A::Or => BinOp::Or,
-        A::OrElse => BinOp::OrElse,
-        A::Xor => BinOp::Xor,
-        A::And => BinOp::And,
-        A::AndThen => BinOp::AndThen,
-        A::Cmp(c) => BinOp::Cmp(c),
-        A::Add => BinOp::Add,
-        A::Sub => BinOp::Sub,
-        A::Mul => BinOp::Mul,
-        A::Div => BinOp::Div,
-        A::Mod => BinOp::Mod,
-        A::Pow => BinOp::Pow,
-    }
-}
-
 /// The operator as written, for messages.
 pub(super) fn op_text(op: BinOp) -> &'static str {
     match op {
@@ -193,7 +175,7 @@ impl<'a> Checker<'a> {
                 Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty, span }))
             }
             K::Unary(op, operand) => self.unary(*op, operand, span, expected),
-            K::Binary(op, l, r) => self.binary(map_binop(*op), l, r, span, expected),
+            K::Binary(op, l, r) => self.binary(*op, l, r, span, expected),
             K::Call { callee, args } => {
                 self.call_expr(callee, args, span, expected).map(Typed::fixed)
             }

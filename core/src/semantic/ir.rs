@@ -199,7 +199,7 @@ pub struct Expr {
     pub span: Span,
 }
 
-pub use crate::values::{BinOp, Cmp, MathFn};
+pub use crate::values::{BinOp, Cmp, MathFn, StrFunc};
 
 /// Unary operators of the IR.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -274,24 +274,8 @@ pub enum Builtin {
     Limit,
     /// MUX(k, in0, in1, ...)
     Mux,
-    /// LEN(s)
-    Len,
-    /// LEFT(s, n)
-    Left,
-    /// RIGHT(s, n)
-    Right,
-    /// MID(s, n, p)
-    Mid,
-    /// CONCAT(a, b, ...)
-    Concat,
-    /// INSERT(s1, s2, p)
-    Insert,
-    /// DELETE(s, n, p)
-    Delete,
-    /// REPLACE(s1, s2, n, p)
-    Replace,
-    /// FIND(s1, s2)
-    Find,
+    /// LEN, LEFT, RIGHT, MID, CONCAT, INSERT, DELETE, REPLACE, FIND.
+    Str(StrFunc),
     /// Any value to its STRING text (`*_TO_STRING`).
     ToString,
     /// STRING text to a value (`STRING_TO_*`).

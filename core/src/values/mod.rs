@@ -11,4 +11,4 @@ mod ops;
 
 pub use elem::Elem;
 pub use fault::Fault;
-pub use ops::{BinOp, Cmp, MathFn};
+pub use ops::{BinOp, Cmp, MathFn, StrFunc};

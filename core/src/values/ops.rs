@@ -1,35 +1,11 @@
-//! The binary operators on values (the IR uses them as they are).
+//! The operators and function families on values that the IR and the VM share.
 
 pub use crate::syntax::Cmp;
 
-/// Binary operators on values. Operands of a binary operator have the same type unless noted.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum BinOp {
-    /// `+` (TIME + TIME, TOD/DT + TIME also)
-    Add,
-    /// `-`
-    Sub,
-    /// `*` (TIME * number: right operand LINT or LREAL)
-    Mul,
-    /// `/` (TIME / number: right operand LINT or LREAL)
-    Div,
-    /// `MOD`
-    Mod,
-    /// `**` (on LREAL)
-    Pow,
-    /// `AND` (logical on BOOL, bitwise otherwise)
-    And,
-    /// `OR`
-    Or,
-    /// `XOR`
-    Xor,
-    /// `AND_THEN`: short-circuit, BOOL only
-    AndThen,
-    /// `OR_ELSE`: short-circuit, BOOL only
-    OrElse,
-    /// A comparison (result BOOL).
-    Cmp(Cmp),
-}
+/// The binary operators of the checked IR are those of the AST: the checker keeps the
+/// operator as written and types its operands (both of the same type unless the operator
+/// says otherwise: TIME + TIME, TOD/DT + TIME, TIME * or / a LINT or LREAL, `**` on LREAL).
+pub use crate::syntax::BinaryOp as BinOp;
 
 /// The numeric and bit-string standard functions of one value (with a shift count or an
 /// exponent): one list for the checker's IR (`Builtin::Math`) and the VM's `Op::Math`.
@@ -67,4 +43,32 @@ pub enum MathFn {
     Rol,
     /// ROR
     Ror,
+}
+
+/// The string standard functions (and the two conversions between STRING and WSTRING):
+/// one list for the checker's IR (`Builtin::Str`) and the VM's `Op::Str`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StrFunc {
+    /// LEN(s) → INT
+    Len,
+    /// LEFT(s, n)
+    Left,
+    /// RIGHT(s, n)
+    Right,
+    /// MID(s, n, p)
+    Mid,
+    /// CONCAT(a, b, …)
+    Concat,
+    /// INSERT(s1, s2, p)
+    Insert,
+    /// DELETE(s, n, p)
+    Delete,
+    /// REPLACE(s1, s2, n, p)
+    Replace,
+    /// FIND(s1, s2) → INT
+    Find,
+    /// STRING → WSTRING (each byte a Latin-1 character).
+    Widen,
+    /// WSTRING → STRING (characters above 255 become `?`).
+    Narrow,
 }

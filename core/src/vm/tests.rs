@@ -33,29 +33,44 @@ fn string_functions() {
     let t = |x: &str| text(x, 20);
     let i = |v: i128| int(INT, v);
     let cases = [
-        (builtin(Builtin::Left, vec![t("hello"), i(2)], s(20)), st_val("he")),
-        (builtin(Builtin::Right, vec![t("hello"), i(3)], s(20)), st_val("llo")),
-        (builtin(Builtin::Mid, vec![t("hello"), i(3), i(2)], s(20)), st_val("ell")),
-        (builtin(Builtin::Concat, vec![t("ab"), t("cd"), t("e")], s(20)), st_val("abcde")),
-        (builtin(Builtin::Concat, vec![t("abc"), t("def")], s(4)), st_val("abcd")),
-        (builtin(Builtin::Insert, vec![t("ABC"), t("XY"), i(2)], s(20)), st_val("ABXYC")),
-        (builtin(Builtin::Insert, vec![t("ABC"), t("XY"), i(0)], s(20)), st_val("XYABC")),
-        (builtin(Builtin::Delete, vec![t("ABCDE"), i(2), i(2)], s(20)), st_val("ADE")),
+        (builtin(Builtin::Str(StrFunc::Left), vec![t("hello"), i(2)], s(20)), st_val("he")),
+        (builtin(Builtin::Str(StrFunc::Right), vec![t("hello"), i(3)], s(20)), st_val("llo")),
+        (builtin(Builtin::Str(StrFunc::Mid), vec![t("hello"), i(3), i(2)], s(20)), st_val("ell")),
         (
-            builtin(Builtin::Replace, vec![t("ABCDE"), t("xyz"), i(2), i(2)], s(20)),
+            builtin(Builtin::Str(StrFunc::Concat), vec![t("ab"), t("cd"), t("e")], s(20)),
+            st_val("abcde"),
+        ),
+        (builtin(Builtin::Str(StrFunc::Concat), vec![t("abc"), t("def")], s(4)), st_val("abcd")),
+        (
+            builtin(Builtin::Str(StrFunc::Insert), vec![t("ABC"), t("XY"), i(2)], s(20)),
+            st_val("ABXYC"),
+        ),
+        (
+            builtin(Builtin::Str(StrFunc::Insert), vec![t("ABC"), t("XY"), i(0)], s(20)),
+            st_val("XYABC"),
+        ),
+        (
+            builtin(Builtin::Str(StrFunc::Delete), vec![t("ABCDE"), i(2), i(2)], s(20)),
+            st_val("ADE"),
+        ),
+        (
+            builtin(Builtin::Str(StrFunc::Replace), vec![t("ABCDE"), t("xyz"), i(2), i(2)], s(20)),
             st_val("AxyzDE"),
         ),
     ];
     for (expr, want) in cases {
         assert_eq!(eval(expr.clone()), Ok(want), "{expr:?}");
     }
-    assert_eq!(eval(builtin(Builtin::Len, vec![t("hello")], INT)), Ok(int_val(5, Elem::Int)));
     assert_eq!(
-        eval(builtin(Builtin::Find, vec![t("abcbc"), t("bc")], INT)),
+        eval(builtin(Builtin::Str(StrFunc::Len), vec![t("hello")], INT)),
+        Ok(int_val(5, Elem::Int))
+    );
+    assert_eq!(
+        eval(builtin(Builtin::Str(StrFunc::Find), vec![t("abcbc"), t("bc")], INT)),
         Ok(int_val(2, Elem::Int))
     );
     assert_eq!(
-        eval(builtin(Builtin::Find, vec![t("abc"), t("x")], INT)),
+        eval(builtin(Builtin::Str(StrFunc::Find), vec![t("abc"), t("x")], INT)),
         Ok(int_val(0, Elem::Int))
     );
 }
@@ -67,16 +82,28 @@ fn string_position_faults() {
     let fault = |f: &'static str, position: i64, length: usize| {
         Err(Fault::StringPosition { function: f, position, length })
     };
-    assert_eq!(eval(builtin(Builtin::Left, vec![t("abc"), i(4)], s(20))), fault("LEFT", 4, 3));
-    assert_eq!(eval(builtin(Builtin::Right, vec![t("abc"), i(-1)], s(20))), fault("RIGHT", -1, 3));
-    assert_eq!(eval(builtin(Builtin::Mid, vec![t("abc"), i(2), i(3)], s(20))), fault("MID", 3, 3));
-    assert_eq!(eval(builtin(Builtin::Mid, vec![t("abc"), i(1), i(0)], s(20))), fault("MID", 0, 3));
     assert_eq!(
-        eval(builtin(Builtin::Insert, vec![t("abc"), t("x"), i(4)], s(20))),
+        eval(builtin(Builtin::Str(StrFunc::Left), vec![t("abc"), i(4)], s(20))),
+        fault("LEFT", 4, 3)
+    );
+    assert_eq!(
+        eval(builtin(Builtin::Str(StrFunc::Right), vec![t("abc"), i(-1)], s(20))),
+        fault("RIGHT", -1, 3)
+    );
+    assert_eq!(
+        eval(builtin(Builtin::Str(StrFunc::Mid), vec![t("abc"), i(2), i(3)], s(20))),
+        fault("MID", 3, 3)
+    );
+    assert_eq!(
+        eval(builtin(Builtin::Str(StrFunc::Mid), vec![t("abc"), i(1), i(0)], s(20))),
+        fault("MID", 0, 3)
+    );
+    assert_eq!(
+        eval(builtin(Builtin::Str(StrFunc::Insert), vec![t("abc"), t("x"), i(4)], s(20))),
         fault("INSERT", 4, 3)
     );
     assert_eq!(
-        eval(builtin(Builtin::Delete, vec![t("abc"), i(5), i(1)], s(20))),
+        eval(builtin(Builtin::Str(StrFunc::Delete), vec![t("abc"), i(5), i(1)], s(20))),
         fault("DELETE", 1, 3)
     );
 }
@@ -309,7 +336,7 @@ fn wide_strings_convert_both_ways() {
     );
     let from = builtin(Builtin::FromString, vec![conv(text("77", 2), w(2))], INT);
     assert_eq!(eval(from), Ok(int_val(77, Elem::Int)));
-    let len = builtin(Builtin::Len, vec![conv(text("abc", 3), w(3))], INT);
+    let len = builtin(Builtin::Str(StrFunc::Len), vec![conv(text("abc", 3), w(3))], INT);
     assert_eq!(eval(len), Ok(int_val(3, Elem::Int)));
 }
 

@@ -446,32 +446,33 @@ pub enum UnaryOp {
 
 /// An infix operator, from loosest to tightest binding:
 /// `OR OR_ELSE` < `XOR` < `AND & AND_THEN` < `= <>` < `< > <= >=` < `+ -` < `* / MOD` < `**`.
-/// Unary operators bind tighter than `**`.
+/// Unary operators bind tighter than `**`. The checked IR uses the same enum
+/// (`values::BinOp`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BinaryOp {
-    /// `OR`
+    /// `OR` (logical on BOOL, bitwise otherwise)
     Or,
-    /// `OR_ELSE` (short-circuit)
+    /// `OR_ELSE`: short-circuit, BOOL only
     OrElse,
     /// `XOR`
     Xor,
-    /// `AND` or `&`
+    /// `AND` or `&` (logical on BOOL, bitwise otherwise)
     And,
-    /// `AND_THEN` (short-circuit)
+    /// `AND_THEN`: short-circuit, BOOL only
     AndThen,
-    /// A comparison (`=`, `<>`, `<`, `<=`, `>`, `>=`).
+    /// A comparison (`=`, `<>`, `<`, `<=`, `>`, `>=`; result BOOL).
     Cmp(Cmp),
-    /// `+`
+    /// `+` (TIME + TIME, TOD/DT + TIME also)
     Add,
     /// `-`
     Sub,
-    /// `*`
+    /// `*` (TIME * number: right operand LINT or LREAL)
     Mul,
-    /// `/`
+    /// `/` (TIME / number: right operand LINT or LREAL)
     Div,
     /// `MOD`
     Mod,
-    /// `**`
+    /// `**` (on LREAL)
     Pow,
 }
 
