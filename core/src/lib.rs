@@ -35,6 +35,7 @@ pub(crate) mod compile;
 pub mod diagnostics;
 pub mod export;
 pub mod ladder;
+pub mod limits;
 pub mod open;
 pub mod petri;
 pub mod plcopen;

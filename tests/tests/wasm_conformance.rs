@@ -69,3 +69,10 @@ fn conformance_cases_match_native() {
         failures.join("\n\n")
     );
 }
+
+/// The inputs that once crashed or hung the engine, on wasm's own 1 MiB stack.
+#[wasm_bindgen_test]
+fn hostile_inputs_give_located_errors() {
+    let failures = plc_tests::hostile::check_all();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

@@ -56,6 +56,7 @@ problem_codes! {
     InvalidIdentifier = "E0011": "an identifier with a trailing or doubled underscore",
     IntegerLiteralTooLarge = "E0012": "an integer literal too large for any integer type",
     InvalidTypedLiteral = "E0013": "a type prefix that does not fit its literal",
+    TooComplex = "E0014": "an expression, statement, type or file nested or chained beyond the trainer's limits",
 
     // ---- names and declarations (checker): E0100–E0149 ----
     UndeclaredName = "E0100": "a name that is not declared",

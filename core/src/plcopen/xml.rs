@@ -4,6 +4,8 @@
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
+use crate::limits::MAX_XML_DEPTH;
+
 /// One XML element.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Node {
@@ -68,7 +70,16 @@ pub(crate) fn parse(xml: &str) -> Result<Node, String> {
         let event =
             reader.read_event().map_err(|e| format!("malformed XML near byte {pos}: {e}"))?;
         match event {
-            Event::Start(e) => stack.push(start_node(&e)?),
+            Event::Start(e) => {
+                if stack.len() >= MAX_XML_DEPTH {
+                    let at = crate::diagnostics::LineIndex::new(xml).location(pos as u32);
+                    return Err(format!(
+                        "elements nested more than {MAX_XML_DEPTH} deep at line {}, column {}",
+                        at.line, at.column
+                    ));
+                }
+                stack.push(start_node(&e)?)
+            }
             Event::Empty(e) => {
                 let node = start_node(&e)?;
                 match stack.last_mut() {

@@ -7,6 +7,7 @@ use quick_xml::Reader;
 
 use super::PnmlError;
 use crate::diagnostics::LineIndex;
+use crate::limits::MAX_XML_DEPTH;
 
 /// One XML element.
 #[derive(Debug, Clone, Default)]
@@ -74,6 +75,10 @@ pub(super) fn parse(xml: &str) -> Result<Element, PnmlError> {
         })?;
         let finished = match event {
             Event::Start(e) => {
+                if stack.len() >= MAX_XML_DEPTH {
+                    let message = format!("elements nested more than {MAX_XML_DEPTH} deep");
+                    return Err(PnmlError::at(&index, offset, message));
+                }
                 stack.push(start(&e, offset, &index)?);
                 None
             }

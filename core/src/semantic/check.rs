@@ -61,6 +61,9 @@ pub(super) struct Checker<'a> {
     /// (a POU's variable list only grows while it is declared). Without it every name in a
     /// body was a linear search, and a 1,000-rung ladder POU took seconds to check.
     pub var_index: HashMap<usize, (usize, HashMap<String, u32>)>,
+    /// How many type resolutions are under way (a named type resolving the types of its
+    /// fields recurses), capped by `limits::MAX_TYPE_NESTING`.
+    pub resolve_depth: usize,
 }
 
 impl<'a> Checker<'a> {
@@ -79,6 +82,7 @@ impl<'a> Checker<'a> {
             calls: Vec::new(),
             library_pous: 0,
             var_index: HashMap::new(),
+            resolve_depth: 0,
         }
     }
 
@@ -267,6 +271,7 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
         checker.check_body(i as PouId);
     }
     checker.check_recursion();
+    checker.check_type_nesting();
     let (program, mut diags) = checker.finish();
     if !lib_diags.is_empty() {
         diags.extend(lib_diags.into_iter().map(|mut d| {

@@ -5,6 +5,7 @@ use super::consts;
 use super::ir::{InitValue, Var};
 use super::types::{ArrayDef, Elem, EnumDef, FieldDef, PouId, StructDef, Type};
 use crate::diagnostics::Code;
+use crate::limits::MAX_TYPE_NESTING;
 use crate::syntax::{self as ast, AddressSize, PouKind, TypeRef, VarSection};
 
 /// Longest STRING the checker accepts.
@@ -44,8 +45,25 @@ impl<'a> Checker<'a> {
         resolved
     }
 
-    /// Resolves a type reference. `owner` names the declaration (for inline enums).
+    /// Resolves a type reference. `owner` names the declaration (for inline enums). Types
+    /// that name types that name types … recurse here; past `MAX_TYPE_NESTING` levels the
+    /// type is refused at `span` of the reference rather than exhausting the stack.
     pub fn resolve_type(&mut self, tr: &TypeRef, owner: &str) -> Option<Resolved> {
+        if self.resolve_depth >= MAX_TYPE_NESTING {
+            let message = format!(
+                "the type of `{owner}` is built from types nested more than \
+                 {MAX_TYPE_NESTING} levels deep; flatten it"
+            );
+            self.error(Code::TooComplex, tr.span(), message);
+            return None;
+        }
+        self.resolve_depth += 1;
+        let r = self.resolve_type_inner(tr, owner);
+        self.resolve_depth -= 1;
+        r
+    }
+
+    fn resolve_type_inner(&mut self, tr: &TypeRef, owner: &str) -> Option<Resolved> {
         let plain = |ty| Some(Resolved { ty, range: None, init: None });
         match tr {
             TypeRef::Named(id) => {

@@ -12,6 +12,7 @@ mod consts;
 mod decl;
 mod expr;
 pub mod ir;
+mod nesting;
 mod prelude;
 mod stmt;
 pub mod types;

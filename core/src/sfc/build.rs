@@ -60,12 +60,31 @@ impl At {
 
     /// The OR of `terms`; FALSE when there is none.
     pub fn any(self, terms: Vec<Expr>) -> Expr {
-        terms.into_iter().reduce(|a, b| self.or(a, b)).unwrap_or_else(|| self.bool(false))
+        self.balanced(terms, BinaryOp::Or).unwrap_or_else(|| self.bool(false))
     }
 
     /// The AND of `terms`; TRUE when there is none.
     pub fn all(self, terms: Vec<Expr>) -> Expr {
-        terms.into_iter().reduce(|a, b| self.and(a, b)).unwrap_or_else(|| self.bool(true))
+        self.balanced(terms, BinaryOp::And).unwrap_or_else(|| self.bool(true))
+    }
+
+    /// `terms` joined by `op` as a balanced tree: `(a op b) op (c op d)`. The terms are
+    /// still evaluated left to right, and a chart joining thousands of steps gives a tree
+    /// of logarithmic height, which the checker and the compiler walk without exhausting
+    /// the stack (a chain `a op b op c …` would be one level per step).
+    fn balanced(self, mut terms: Vec<Expr>, op: BinaryOp) -> Option<Expr> {
+        while terms.len() > 1 {
+            let mut paired = Vec::with_capacity(terms.len().div_ceil(2));
+            let mut it = terms.into_iter();
+            while let Some(a) = it.next() {
+                paired.push(match it.next() {
+                    Some(b) => self.bin(op, a, b),
+                    None => a,
+                });
+            }
+            terms = paired;
+        }
+        terms.pop()
     }
 
     fn stmt(self, kind: StmtKind) -> Stmt {

@@ -433,6 +433,44 @@ pub enum ExprKind {
     Paren(Box<Expr>),
 }
 
+impl Expr {
+    /// The height of the expression tree (a name or literal is 1, `a + b` is 2), measured
+    /// without recursion so that it is safe on any tree.
+    pub fn height(&self) -> usize {
+        let mut tallest = 0;
+        let mut todo: Vec<(&Expr, usize)> = vec![(self, 1)];
+        while let Some((e, h)) = todo.pop() {
+            tallest = tallest.max(h);
+            match &e.kind {
+                ExprKind::Literal(_)
+                | ExprKind::Name(_)
+                | ExprKind::EnumValue { .. }
+                | ExprKind::Direct(_) => {}
+                ExprKind::Member(b, _)
+                | ExprKind::Bit(b, _)
+                | ExprKind::Unary(_, b)
+                | ExprKind::Paren(b) => todo.push((b, h + 1)),
+                ExprKind::Index(b, indices) => {
+                    todo.push((b, h + 1));
+                    todo.extend(indices.iter().map(|i| (i, h + 1)));
+                }
+                ExprKind::Binary(_, l, r) => {
+                    todo.push((l, h + 1));
+                    todo.push((r, h + 1));
+                }
+                ExprKind::Call { callee, args } => {
+                    todo.push((callee, h + 1));
+                    todo.extend(args.iter().map(|a| match a {
+                        Arg::Positional(v) | Arg::Input { value: v, .. } => (v, h + 1),
+                        Arg::Output { target, .. } => (target, h + 1),
+                    }));
+                }
+            }
+        }
+        tallest
+    }
+}
+
 /// A prefix operator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum UnaryOp {

@@ -35,18 +35,26 @@ fn infix(kind: TokenKind) -> Option<(BinaryOp, u8)> {
 impl Parser<'_> {
     /// Parses a whole expression.
     pub(super) fn parse_expr(&mut self) -> PResult<Expr> {
-        self.nested(|p| p.parse_binary(1))
+        let e = self.nested(|p| p.parse_binary(1))?;
+        // Chains are checked as they grow; this catches height built by nesting
+        // (parentheses and unary operators around a long chain).
+        self.check_height(e.height(), e.span)?;
+        Ok(e)
     }
 
     /// Binary operators of binding power `min` or more; all are left-associative.
     fn parse_binary(&mut self, min: u8) -> PResult<Expr> {
         let mut lhs = self.parse_unary()?;
+        let mut height = None;
         while let Some((op, bp)) = infix(self.peek()) {
             if bp < min {
                 break;
             }
-            self.bump();
+            let tok = self.bump();
             let rhs = self.nested(|p| p.parse_binary(bp + 1))?;
+            let h = 1 + height.unwrap_or_else(|| lhs.height()).max(rhs.height());
+            self.check_height(h, tok.span)?;
+            height = Some(h);
             let span = lhs.span.to(rhs.span);
             lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span };
         }
@@ -69,7 +77,14 @@ impl Parser<'_> {
     /// A primary expression followed by calls, `[…]`, `.member` and `.bit`.
     pub(super) fn parse_postfix(&mut self) -> PResult<Expr> {
         let mut e = self.parse_primary()?;
+        let mut height = None;
         loop {
+            if !matches!(self.peek(), TokenKind::LParen | TokenKind::LBracket | TokenKind::Dot) {
+                return Ok(e);
+            }
+            let h = 1 + height.unwrap_or_else(|| e.height());
+            self.check_height(h, self.tok().span)?;
+            height = Some(h);
             match self.peek() {
                 TokenKind::LParen => {
                     self.bump();

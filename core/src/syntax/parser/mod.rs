@@ -26,10 +26,9 @@ pub(super) struct Fail;
 /// The result of a parsing step.
 pub(super) type PResult<T> = Result<T, Fail>;
 
-/// The deepest nesting of expressions, statements and initializers accepted. Far beyond
-/// any real program, and low enough that this parser (about 7 KiB of stack per level in a
-/// debug build, 1.5 KiB optimised) and the later recursive passes fit a 1 MiB wasm stack.
-pub(crate) const MAX_DEPTH: usize = 100;
+// The deepest nesting of expressions, statements and initializers accepted (this parser
+// takes about 7 KiB of stack per level in a debug build, 1.5 KiB optimised).
+use crate::limits::{MAX_EXPR_HEIGHT, MAX_NESTING};
 
 /// Parses a whole source file; diagnostics come back in source order.
 pub(crate) fn parse_source(source: &str) -> (SourceFile, Vec<Diagnostic>) {
@@ -190,12 +189,12 @@ impl<'a> Parser<'a> {
 
     /// Runs `f` one nesting level deeper, failing when the input nests too deeply.
     pub(super) fn nested<T>(&mut self, f: impl FnOnce(&mut Self) -> PResult<T>) -> PResult<T> {
-        if self.depth >= MAX_DEPTH {
+        if self.depth >= MAX_NESTING {
             let span = self.tok().span;
             self.error(
-                Code::UnexpectedToken,
+                Code::TooComplex,
                 span,
-                format!("this is nested too deeply (more than {MAX_DEPTH} levels); simplify it"),
+                format!("this is nested too deeply (more than {MAX_NESTING} levels); simplify it"),
             );
             return Err(Fail);
         }
@@ -203,6 +202,24 @@ impl<'a> Parser<'a> {
         let r = f(self);
         self.depth -= 1;
         r
+    }
+
+    /// Fails with a located error when an expression tree grown by a chain of operators
+    /// or postfix steps (at `span`) would be taller than [`MAX_EXPR_HEIGHT`]: the later
+    /// passes recurse once per level.
+    pub(super) fn check_height(&mut self, height: usize, span: Span) -> PResult<()> {
+        if height <= MAX_EXPR_HEIGHT {
+            return Ok(());
+        }
+        self.error(
+            Code::TooComplex,
+            span,
+            format!(
+                "this expression is too long: more than {MAX_EXPR_HEIGHT} operators, calls, \
+                 indices or members in a row; split it over several statements"
+            ),
+        );
+        Err(Fail)
     }
 
     /// The text of a comment that starts on the same line right after byte `end`.

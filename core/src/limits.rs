@@ -1,0 +1,26 @@
+//! The limits the engines keep, in one place, so that no program, file or value a user
+//! hands the trainer can exhaust the stack, the memory or the time: each is a named
+//! constant, and going past one is a located diagnostic (or a FAULT at run time), never a
+//! crash. `docs/reliability.md` lists them with the reason for each figure.
+//!
+//! The recursive passes (parser, checker, compiler, the drop of a syntax tree) use about
+//! 8 KiB of stack per level of an expression or statement in a debug build and far less
+//! optimised; the figures keep every pass inside a 1 MiB stack (the default of a wasm32
+//! module) with room to spare.
+
+/// The deepest nesting of expressions, statements and initializers the parser accepts
+/// (parentheses, unary operators, nested IF/CASE/loops, nested array initializers).
+pub const MAX_NESTING: usize = 100;
+
+/// The tallest expression tree the parser builds: a chain `a + b + … ` of this many
+/// operators, a postfix chain `a.b.c…` or `a[0][0]…` of this many steps, or any mix with
+/// nesting. Far beyond a hand-written expression; a longer one is split over statements.
+pub const MAX_EXPR_HEIGHT: usize = 100;
+
+/// The deepest element nesting read from an XML document (PLCopen XML, PNML). Real files
+/// nest about 15 deep.
+pub const MAX_XML_DEPTH: usize = 200;
+
+/// The deepest nesting of data types: FB instances inside FBs, structs inside structs,
+/// arrays of arrays. Laying out and reading such a type recurses once per level.
+pub const MAX_TYPE_NESTING: usize = 64;

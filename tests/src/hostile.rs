@@ -1,0 +1,223 @@
+//! Inputs that once crashed or hung the engine (issue 11), built at run time, each with
+//! what must come out now: a located error, or a run that completes. The same list runs
+//! natively on a thread with a 1 MiB stack (`tests/hostile.rs`) and in wasm32 under Node
+//! (`tests/wasm_conformance.rs`), whose stack is 1 MiB too: the browser's stack is
+//! small, and a debug build takes the most stack per level, so passing here leaves room.
+
+use plc_core::open::open_text;
+use plc_core::run::{run_project, run_source, RunOptions, RunReport, RunStatus};
+
+/// What a hostile input must give.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome {
+    /// The program is refused with this code at this 1-based line (any column).
+    Error {
+        /// The problem code.
+        code: &'static str,
+        /// The line it is reported on.
+        line: u32,
+    },
+    /// The file is refused when opened, with a message containing this text.
+    Refused(&'static str),
+    /// The program runs and `var` ends with this JSON value.
+    Runs {
+        /// The variable.
+        var: &'static str,
+        /// Its value as `plc run --json` prints it.
+        value: serde_json::Value,
+    },
+}
+
+/// One input: a name, the text, and what it must give.
+pub struct Hostile {
+    /// What the input is.
+    pub name: &'static str,
+    /// The file's text (an ST program, a PLCopen XML or PNML document).
+    pub text: String,
+    /// What must come out.
+    pub outcome: Outcome,
+}
+
+fn sum(terms: usize) -> String {
+    let sum = vec!["1"; terms].join("+");
+    format!("PROGRAM Main VAR x : DINT; END_VAR x := {sum}; END_PROGRAM")
+}
+
+fn nested_fbs(levels: usize) -> String {
+    let mut s =
+        String::from("FUNCTION_BLOCK F0 VAR x : INT; END_VAR x := x + 1; END_FUNCTION_BLOCK\n");
+    for i in 1..levels {
+        s += &format!("FUNCTION_BLOCK F{i} VAR f : F{}; END_VAR f(); END_FUNCTION_BLOCK\n", i - 1);
+    }
+    s + &format!("PROGRAM Main VAR top : F{}; END_VAR top(); END_PROGRAM\n", levels - 1)
+}
+
+/// Structs nested `levels` deep, the outermost declared first (so that resolving it
+/// recurses through all the others) or last.
+fn nested_structs(levels: usize, outermost_first: bool) -> String {
+    let mut decls: Vec<String> =
+        (1..levels).map(|i| format!("S{i} : STRUCT s : S{}; END_STRUCT;", i - 1)).collect();
+    decls.insert(0, "S0 : STRUCT x : INT; END_STRUCT;".into());
+    if outermost_first {
+        decls.reverse();
+    }
+    format!(
+        "TYPE\n{}\nEND_TYPE\nPROGRAM Main VAR top : S{}; END_VAR END_PROGRAM\n",
+        decls.join("\n"),
+        levels - 1
+    )
+}
+
+/// An SFC whose start step fans out to `n` steps that all join again (an AND divergence and
+/// convergence of `n` branches), then `n` alternative branches back.
+fn wide_sfc(n: usize) -> String {
+    let steps: Vec<String> = (0..n).map(|i| format!("S{i}")).collect();
+    let list = steps.join(", ");
+    let mut s =
+        String::from("PROGRAM Main\nVAR finished : BOOL; END_VAR\nINITIAL_STEP Start : END_STEP\n");
+    s += &format!("TRANSITION FROM Start TO ({list}) := TRUE; END_TRANSITION\n");
+    for step in &steps {
+        s += &format!("STEP {step} : END_STEP\n");
+    }
+    s += &format!("TRANSITION FROM ({list}) TO Done := TRUE; END_TRANSITION\n");
+    s += "STEP Done : finished(N); END_STEP\n";
+    for i in 0..n {
+        s += &format!(
+            "TRANSITION FROM Done TO X{i} := FALSE; END_TRANSITION\nSTEP X{i} : END_STEP\n"
+        );
+        s += &format!("TRANSITION FROM X{i} TO Start := TRUE; END_TRANSITION\n");
+    }
+    s + "END_PROGRAM\n"
+}
+
+fn deep_xml(depth: usize) -> String {
+    format!(
+        "<?xml version=\"1.0\"?><project xmlns=\"http://www.plcopen.org/xml/tc6_0201\">{}{}</project>",
+        "<a>".repeat(depth),
+        "</a>".repeat(depth)
+    )
+}
+
+fn deep_pnml(depth: usize) -> String {
+    format!(
+        "<?xml version=\"1.0\"?><pnml><net id=\"n\" type=\"http://www.pnml.org/version-2009/grammar/ptnet\">{}{}</net></pnml>",
+        "<a>".repeat(depth),
+        "</a>".repeat(depth)
+    )
+}
+
+/// Every hostile input, with what it must give.
+pub fn all() -> Vec<Hostile> {
+    let error = |code, line| Outcome::Error { code, line };
+    vec![
+        Hostile { name: "a 20,000-term sum", text: sum(20_000), outcome: error("E0014", 1) },
+        Hostile {
+            name: "a 100-term sum (at the limit)",
+            text: sum(100),
+            outcome: Outcome::Runs { var: "x", value: 100.into() },
+        },
+        Hostile {
+            name: "a 20,000-step member chain",
+            text: format!(
+                "TYPE S : STRUCT b : INT; END_STRUCT; END_TYPE\n\
+                 PROGRAM Main VAR a : S; x : INT; END_VAR x := a{}; END_PROGRAM",
+                ".b".repeat(20_000)
+            ),
+            outcome: error("E0014", 2),
+        },
+        Hostile {
+            name: "a 20,000-step index chain",
+            text: format!(
+                "PROGRAM Main VAR a : ARRAY[0..1] OF INT; x : INT; END_VAR x := a{}; END_PROGRAM",
+                "[0]".repeat(20_000)
+            ),
+            outcome: error("E0014", 1),
+        },
+        Hostile {
+            name: "parentheses around a chain at the limit",
+            text: format!(
+                "PROGRAM Main VAR x : DINT; END_VAR x := {}{}{}; END_PROGRAM",
+                "(".repeat(90),
+                vec!["1"; 60].join("+"),
+                ")".repeat(90)
+            ),
+            outcome: error("E0014", 1),
+        },
+        Hostile {
+            name: "function blocks nested 3,000 deep",
+            text: nested_fbs(3_000),
+            outcome: error("E0014", 66),
+        },
+        Hostile {
+            name: "structs nested 3,000 deep, innermost first",
+            text: nested_structs(3_000, false),
+            outcome: error("E0014", 3_003),
+        },
+        Hostile {
+            name: "structs nested 3,000 deep, outermost first",
+            text: nested_structs(3_000, true),
+            outcome: error("E0014", 2_938),
+        },
+        Hostile {
+            name: "an SFC joining 3,000 steps",
+            text: wide_sfc(3_000),
+            outcome: Outcome::Runs { var: "finished", value: true.into() },
+        },
+        Hostile {
+            name: "PLCopen XML nested 200,000 deep",
+            text: deep_xml(200_000),
+            outcome: Outcome::Refused("nested more than 200 deep at line 1"),
+        },
+        Hostile {
+            name: "PNML nested 200,000 deep",
+            text: deep_pnml(200_000),
+            outcome: Outcome::Refused("nested more than 200 deep"),
+        },
+    ]
+}
+
+/// Opens `text` as the CLI does (`plc run FILE`) and runs it for 3 scans.
+fn run(text: &str) -> Result<RunReport, String> {
+    let options = RunOptions { cycles: 3, ..Default::default() };
+    if text.starts_with("<?xml") {
+        let opened = open_text("hostile", text).map_err(|e| e.to_string())?;
+        return Ok(run_project(&opened.project, &options));
+    }
+    Ok(run_source(text, &options))
+}
+
+/// Runs every hostile input and returns what did not come out as it must.
+pub fn check_all() -> Vec<String> {
+    let mut failures = Vec::new();
+    for h in all() {
+        let got = run(&h.text);
+        let ok = match (&h.outcome, &got) {
+            (Outcome::Error { code, line }, Ok(r)) => {
+                r.status == RunStatus::Error
+                    && r.diagnostics.iter().any(|d| d.code == *code && d.line == *line)
+            }
+            (Outcome::Refused(text), Err(e)) => e.contains(text),
+            (Outcome::Runs { var, value }, Ok(r)) => {
+                r.status == RunStatus::Ok && r.vars.get(*var) == Some(value)
+            }
+            _ => false,
+        };
+        if !ok {
+            let got = match got {
+                Ok(r) => {
+                    let mut d: Vec<String> = r
+                        .diagnostics
+                        .iter()
+                        .take(3)
+                        .map(|d| format!("{}:{}: {} {}", d.line, d.column, d.code, d.message))
+                        .collect();
+                    d.truncate(3);
+                    format!("{:?}, {}", r.status, d.join(" | "))
+                }
+                Err(e) => format!("refused: {e}"),
+            };
+            failures.push(format!("[{}] wanted {:?}, got {got}", h.name, h.outcome));
+        }
+    }
+    failures
+}
