@@ -12,6 +12,7 @@
 #![deny(missing_docs)]
 
 pub mod directives;
+pub mod fuzz;
 pub mod hostile;
 pub mod path;
 
