@@ -122,6 +122,14 @@ test('a ladder problem is listed at its rung, row and column, and clicking it sh
   const problem = page.getByRole('list', { name: 'Problems' }).getByRole('button').filter({ hasText: 'E0403' });
   await problem.waitFor();
   assert.match(await problem.textContent(), /^Latch, rung 1, row 1, column 3 {2}E0403 {2}/);
+  // The code links to its explanation, a static page of the site.
+  const help = page.getByRole('link', { name: 'Explain E0403' });
+  assert.equal(await help.getAttribute('href'), 'problems.html#E0403');
+  const explained = await context.newPage();
+  await explained.goto(new URL('problems.html#E0403', page.url()).href);
+  const section = explained.locator('section#E0403');
+  assert.match(await section.textContent(), /contact, coil or block pin without an operand[\s\S]*Wrong:[\s\S]*Right:/);
+  await explained.close();
   await page.getByRole('button', { name: 'Structured Text source' }).click();
   await problem.click();
   const view = page.getByRole('region', { name: 'Ladder diagram Latch' });

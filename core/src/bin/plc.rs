@@ -51,10 +51,18 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Explain a problem code such as E0150.
+    /// Explain a problem code such as E0150: what it means, how to fix it, and a wrong and a
+    /// right example.
     Explain {
         /// The code.
-        code: String,
+        #[arg(required_unless_present_any = ["markdown", "html"])]
+        code: Option<String>,
+        /// Print every code as the Markdown page docs/problems.md.
+        #[arg(long, conflicts_with_all = ["code", "html"])]
+        markdown: bool,
+        /// Print every code as the HTML page problems.html of the site.
+        #[arg(long, conflicts_with_all = ["code", "markdown"])]
+        html: bool,
     },
     /// Print the readable ST view of a ladder POU of a project.
     StView {
@@ -295,7 +303,7 @@ fn run(path: &Path, options: RunOptions, json: bool) -> ExitCode {
 fn explain(code: &str) -> ExitCode {
     match Code::all().iter().find(|c| c.as_str().eq_ignore_ascii_case(code)) {
         Some(c) => {
-            println!("{}: {}", c.as_str(), c.title());
+            print!("{}", plc_core::diagnostics::explain_text(*c));
             ExitCode::SUCCESS
         }
         None => {
@@ -322,7 +330,15 @@ fn main() -> ExitCode {
             }
             run(&file, RunOptions { program, cycles, cycle_ms, set: pairs }, json)
         }
-        Command::Explain { code } => explain(&code),
+        Command::Explain { markdown: true, .. } => {
+            print!("{}", plc_core::diagnostics::problems_markdown());
+            ExitCode::SUCCESS
+        }
+        Command::Explain { html: true, .. } => {
+            print!("{}", plc_core::diagnostics::problems_html());
+            ExitCode::SUCCESS
+        }
+        Command::Explain { code, .. } => explain(code.as_deref().unwrap_or_default()),
         Command::StView { project, pou } => st_view(&project, &pou),
         Command::Bench { json, quick, only } => bench(json, quick, &only),
         Command::Petri { command } => petri::run(command),

@@ -1,6 +1,8 @@
 //! The table of problem codes. One row per code: the enum variant, the stable code that
-//! students search for, and a one-line explanation. `docs/problems.md` is generated from
-//! nothing but this table (see `Code::all`).
+//! students search for, and a one-line title. `explain.rs` holds each code's explanation
+//! with a wrong and a right example; `docs/problems.md` and the site's `problems.html` are
+//! generated from both (`plc explain --markdown`, `--html`), and a test fails when a code
+//! has no explanation or a page is not current.
 //!
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
 //! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder

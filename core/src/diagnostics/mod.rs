@@ -1,12 +1,17 @@
 //! Located diagnostics: spans, line/column lookup and the table of problem codes.
 //!
 //! Every stage reports problems as [`Diagnostic`] values carrying a stable [`Code`]; nothing
-//! here prints or panics. The codes and their explanations live in one table (`codes.rs`).
+//! here prints or panics. The codes live in one table (`codes.rs`), their explanations and examples in
+//! another (`explain.rs`), from which `docs/problems.md` is generated.
 
 mod codes;
+mod explain;
 mod span;
 
 pub use codes::Code;
+pub use explain::{
+    explain_text, problems_html, problems_markdown, Example, Explanation, EXPLANATIONS,
+};
 pub use span::{LineIndex, Location, Span};
 
 use serde::Serialize;

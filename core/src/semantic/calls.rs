@@ -92,6 +92,15 @@ impl<'a> Checker<'a> {
                 self.calls[self.body.pou as usize].insert(pou);
                 let args = self.bind_args(pou, args, span)?;
                 let ty = self.pous[pou as usize].result_type();
+                if ty == Type::Void {
+                    let name = self.pous[pou as usize].name.clone();
+                    let msg = format!(
+                        "`{name}` has no result type, so it gives no value here; call it as a \
+                         statement of its own: `{name}(…);`"
+                    );
+                    self.error(Code::NoReturnValue, span, msg);
+                    return None;
+                }
                 Some(Expr { kind: ExprKind::Call { pou, args }, ty, span })
             }
         }

@@ -1,6 +1,8 @@
 //! The problem list of the whole project: ST, ladder and Petri net diagnostics, each
 //! with its place; clicking one shows that place (the ST line, the ladder cell, the net
-//! element).
+//! element). Each problem links to its code's explanation and examples in
+//! `problems.html` (generated from the code table: `plc explain --html`), a static page of
+//! the site that costs nothing until it is opened.
 
 use leptos::prelude::*;
 
@@ -36,12 +38,16 @@ pub fn Problems() -> impl IntoView {
                     let class = if d.error { "ed-problem ed-problem-err" } else { "ed-problem ed-problem-warn" };
                     let label = format!("{}  {}  {}", d.place_label(), d.code, d.message);
                     let site = d.site.clone();
+                    let help = format!("problems.html#{}", d.code);
+                    let help_name = format!("Explain {}", d.code);
                     view! {
                         <li>
                             <button class=class title=if d.error { "Error" } else { "Warning" }
                                 on:click=move |_| state.reveal(&site)>
                                 {label}
                             </button>
+                            <a class="ed-problem-help" href=help target="_blank" rel="noopener"
+                                aria-label=help_name.clone() title=help_name>"?"</a>
                         </li>
                     }
                 }).collect_view()}
