@@ -28,6 +28,29 @@ fn jump_when_false(op: BinOp, elem: Elem) -> Option<fn(Branch) -> Op> {
     })
 }
 
+/// Whether evaluating `e` writes no variable: anything but a call of a FUNCTION (which may
+/// write through VAR_IN_OUT, globals or its own FB instances). It may still fault; that
+/// ends the scan, so nothing after it observes a stale value.
+fn writes_nothing(e: &Expr) -> bool {
+    match &e.kind {
+        ExprKind::Const(_) | ExprKind::ConstStr(_) | ExprKind::Sys(_) => true,
+        ExprKind::Load(place) => place_writes_nothing(place),
+        ExprKind::Unary(_, a) | ExprKind::Convert(a) | ExprKind::Trunc(a) => writes_nothing(a),
+        ExprKind::Binary(_, a, b) => writes_nothing(a) && writes_nothing(b),
+        ExprKind::Builtin { args, .. } => args.iter().all(writes_nothing),
+        ExprKind::Call { .. } => false,
+    }
+}
+
+/// Whether computing the address of `place` writes nothing (its indices call nothing).
+fn place_writes_nothing(place: &Place) -> bool {
+    match place {
+        Place::Local(_) | Place::Global(_) => true,
+        Place::Field(b, _) | Place::Bit(b, ..) => place_writes_nothing(b),
+        Place::Element(b, _, idx) => place_writes_nothing(b) && idx.iter().all(writes_nothing),
+    }
+}
+
 impl Emitter<'_> {
     /// Compiles the BOOL `cond` and a jump taken when it is FALSE; returns the jump's index
     /// for [`Emitter::patch`]. `IF a > b` becomes one `JumpLe`, `IF NOT x` one `JumpIf`.
@@ -40,7 +63,13 @@ impl Emitter<'_> {
                     let ra = self.expr(a, None)?;
                     let rb = self.expr(b, None)?;
                     self.compared.clear();
-                    for (e, r) in [(a, ra), (b, rb)] {
+                    // The left operand's element was loaded before the right operand ran:
+                    // it is still the element's value only if the right operand changes
+                    // nothing (a call may write the array or the index through VAR_IN_OUT
+                    // or a global).
+                    let a_still_current = writes_nothing(b);
+                    let loaded = [(a, ra)].into_iter().filter(|_| a_still_current);
+                    for (e, r) in loaded.chain([(b, rb)]) {
                         if let ExprKind::Load(place @ Place::Element(_, _, idx)) = &e.kind {
                             if idx.iter().all(|i| self.is_pure(i)) {
                                 self.compared.push((place.clone(), r));
