@@ -7,7 +7,7 @@ use crate::diagnostics::Span;
 use crate::program::op::{DimInfo, ElemSite, Op, Reg};
 use crate::program::Layouts;
 use crate::semantic::ir::{BinOp, Expr, ExprKind, Place, Program, Stmt};
-use crate::semantic::types::{Elem, PouId, Type};
+use crate::semantic::types::{dim_len, Elem, PouId, Type};
 use crate::syntax::{PouKind, VarSection};
 use crate::values::arith::identity_widening;
 
@@ -319,7 +319,7 @@ impl<'a> Emitter<'a> {
         let mut s = u64::from(esize);
         for (k, (lo, hi)) in def.dims.iter().enumerate().rev() {
             strides[k] = add(0, s)?;
-            s = s.saturating_mul((hi - lo + 1).max(0) as u64);
+            s = s.saturating_mul(dim_len(*lo, *hi));
         }
         let ba = self.place_addr(b)?;
         let consts: Option<Vec<i64>> = idx

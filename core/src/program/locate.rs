@@ -3,7 +3,7 @@
 //! then the globals. Used by the simulator's `--set`, forcing and the variables table.
 
 use super::{Executable, Slot};
-use crate::semantic::types::Type;
+use crate::semantic::types::{dim_len, Type};
 use crate::syntax::VarSection;
 
 /// One step of a path.
@@ -95,9 +95,10 @@ pub(crate) fn locate(exe: &Executable, path: &str) -> Option<Slot> {
                     if i < lo || i > hi {
                         return None;
                     }
-                    flat = flat * (hi - lo + 1) as u64 + (i - lo) as u64;
+                    let offset = dim_len(*lo, *i) - 1;
+                    flat = flat.checked_mul(dim_len(*lo, *hi))?.checked_add(offset)?;
                 }
-                let addr = u64::from(slot.addr) + flat * u64::from(esize);
+                let addr = u64::from(slot.addr).checked_add(flat.checked_mul(u64::from(esize))?)?;
                 Slot { addr: u32::try_from(addr).ok()?, ty: def.element, bit: None }
             }
             _ => return None,

@@ -3,7 +3,7 @@
 use super::check::{Checker, Resolved, TypeSlot};
 use super::consts;
 use super::ir::{InitValue, Var};
-use super::types::{ArrayDef, Elem, EnumDef, FieldDef, PouId, StructDef, Type};
+use super::types::{dim_len, ArrayDef, Elem, EnumDef, FieldDef, PouId, StructDef, Type};
 use crate::diagnostics::Code;
 use crate::limits::MAX_TYPE_NESTING;
 use crate::syntax::{self as ast, AddressSize, PouKind, TypeRef, VarSection};
@@ -137,10 +137,8 @@ impl<'a> Checker<'a> {
                     element_range: elem.range,
                     element_init: elem.init,
                 };
-                let total = def
-                    .dims
-                    .iter()
-                    .try_fold(1u64, |acc, (l, h)| acc.checked_mul((h - l + 1) as u64));
+                let total =
+                    def.dims.iter().try_fold(1u64, |acc, &(l, h)| acc.checked_mul(dim_len(l, h)));
                 if total.is_none_or(|t| t > MAX_ARRAY_ELEMENTS) {
                     self.error(
                         Code::InvalidArraySize,

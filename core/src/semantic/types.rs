@@ -88,10 +88,17 @@ pub struct ArrayDef {
     pub element_init: Option<InitValue>,
 }
 
+/// The number of indices in `l..=h`, computed without overflow (0 when `h < l`; an
+/// extent beyond `u64` saturates, and the checker refuses such arrays).
+pub fn dim_len(l: i64, h: i64) -> u64 {
+    let n = i128::from(h) - i128::from(l) + 1;
+    u64::try_from(n.max(0)).unwrap_or(u64::MAX)
+}
+
 impl ArrayDef {
     /// Total number of elements.
     pub fn len(&self) -> u64 {
-        self.dims.iter().map(|(l, h)| (h - l + 1).max(0) as u64).product()
+        self.dims.iter().map(|&(l, h)| dim_len(l, h)).fold(1u64, u64::saturating_mul)
     }
 
     /// True when the array has no elements.

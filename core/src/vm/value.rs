@@ -7,7 +7,7 @@ use crate::program::locate::element_size;
 use crate::program::memory::{read_str_into, string_header, write_str, Memory};
 use crate::program::{Executable, Slot};
 use crate::semantic::ir::InitValue;
-use crate::semantic::types::{Elem, Type, TypeTable};
+use crate::semantic::types::{dim_len, Elem, Type, TypeTable};
 use crate::syntax::VarSection;
 use crate::values::arith;
 
@@ -101,7 +101,7 @@ fn read_at(mem: &Memory, exe: &Executable, addr: u32, ty: Type) -> Value {
                 return Value::Array(Vec::new());
             };
             let es = element_size(exe, def.element).unwrap_or(1);
-            let dims: Vec<u64> = def.dims.iter().map(|(l, h)| (h - l + 1).max(0) as u64).collect();
+            let dims: Vec<u64> = def.dims.iter().map(|&(l, h)| dim_len(l, h)).collect();
             read_dims(mem, exe, addr, def.element, es, &dims)
         }
         Type::Struct(s) => {
