@@ -24,3 +24,20 @@ pub const MAX_XML_DEPTH: usize = 200;
 /// The deepest nesting of data types: FB instances inside FBs, structs inside structs,
 /// arrays of arrays. Laying out and reading such a type recurses once per level.
 pub const MAX_TYPE_NESTING: usize = 64;
+
+/// The shortest scan cycle of the virtual clock, in milliseconds.
+pub const MIN_CYCLE_MS: u64 = 1;
+
+/// The longest scan cycle of the virtual clock, in milliseconds (one minute).
+pub const MAX_CYCLE_MS: u64 = 60_000;
+
+/// A scan cycle given in milliseconds (a project setting, `plc run --cycle-ms`, the page's
+/// cycle time) as nanoseconds for the simulator, or why it cannot be one.
+pub fn cycle_ns(ms: u64) -> Result<i64, String> {
+    if (MIN_CYCLE_MS..=MAX_CYCLE_MS).contains(&ms) {
+        // At most 6e13 ns: far inside i64.
+        Ok(ms as i64 * 1_000_000)
+    } else {
+        Err(format!("a scan cycle is {MIN_CYCLE_MS} to {MAX_CYCLE_MS} ms, not {ms} ms"))
+    }
+}

@@ -160,7 +160,13 @@ fn run_checked(
             return report;
         }
     };
-    sim.set_cycle_ns((options.cycle_ms as i64).saturating_mul(1_000_000));
+    match crate::limits::cycle_ns(options.cycle_ms) {
+        Ok(ns) => sim.set_cycle_ns(ns),
+        Err(message) => {
+            report.diagnostics.push(option_error(Code::BadCycleTime, message));
+            return report;
+        }
+    }
     for (name, value) in &options.set {
         let is_input = sim
             .executable()

@@ -248,3 +248,20 @@ fn run_prints_warnings_as_check_does() {
     let warning = checked.lines().find(|l| l.contains(": warning[W")).expect("a warning");
     assert!(run.lines().any(|l| l == warning), "run printed:\n{run}\ncheck printed:\n{checked}");
 }
+
+#[test]
+fn a_cycle_time_out_of_range_is_refused() {
+    // Issue 11: `--cycle-ms` overflowed the nanosecond clock or silently became 1 ns.
+    let f = source_file("cycle.st", "PROGRAM Main VAR t : TIME; END_VAR t := TIME(); END_PROGRAM");
+    for bad in ["0", "60001", "18446744073709551615"] {
+        let out = plc(&["run", "--cycle-ms", bad, f.to_str().unwrap_or_default()]);
+        assert!(!out.status.success(), "--cycle-ms {bad} was accepted");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("--cycle-ms") && err.contains("1..=60000"), "{err}");
+    }
+    let json = plc_core::run::run_source(
+        "PROGRAM Main END_PROGRAM",
+        &plc_core::run::RunOptions { cycle_ms: u64::MAX, ..Default::default() },
+    );
+    assert!(json.diagnostics.iter().any(|d| d.code == "E0303"), "{:?}", json.diagnostics);
+}

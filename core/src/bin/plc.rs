@@ -40,8 +40,9 @@ enum Command {
         /// How many scans to run.
         #[arg(long, default_value_t = 1)]
         cycles: u64,
-        /// Virtual milliseconds per scan.
-        #[arg(long = "cycle-ms", default_value_t = 10)]
+        /// Virtual milliseconds per scan (1 to 60000).
+        #[arg(long = "cycle-ms", default_value_t = 10,
+              value_parser = clap::value_parser!(u64).range(1..=60_000))]
         cycle_ms: u64,
         /// VAR=VALUE (an IEC literal). Inputs are held at the value on every scan; other
         /// variables are set before the first scan.

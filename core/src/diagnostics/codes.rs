@@ -117,6 +117,7 @@ problem_codes! {
     UnknownSetVariable = "E0300": "`--set` names a variable the program does not have",
     BadSetValue = "E0301": "`--set` gives a value that does not fit the variable",
     ProgramTooLarge = "E0302": "the program needs more memory than the simulator allows",
+    BadCycleTime = "E0303": "a scan cycle time outside 1 ms to 1 minute",
 
     // ---- ladder diagrams: E0400–E0449 ----
     LadderOpenCircuit = "E0400": "a ladder element that no power path reaches, or that leads nowhere",

@@ -253,6 +253,9 @@ explanations! {
     ProgramTooLarge: "The program needs more memory cells than the simulator provides (16 M cells of 64 bits). Make the arrays smaller.",
         st("PROGRAM Main VAR a, b, c, d, e : ARRAY[1..4000000] OF LINT; END_VAR a[1] := 1; END_PROGRAM"),
         st("PROGRAM Main VAR a : ARRAY[1..4000000] OF LINT; END_VAR a[1] := 1; END_PROGRAM");
+    BadCycleTime: "The virtual clock advances by the scan cycle after every scan; it is a whole number of milliseconds from 1 to 60000 (a project's `cycle_ms`, `plc run --cycle-ms`, the page's cycle time).",
+        drawn("`plc run --cycle-ms 0 main.st`, or `\"cycle_ms\": 18446744073709551615` in a project file"),
+        drawn("`plc run --cycle-ms 10 main.st`");
     LadderOpenCircuit: "An element of the rung cannot carry power: no path from the left rail reaches it, or it leads nowhere (no coil after it).",
         drawn("A contact `Start` on row 1, column 3, with empty cells before it: `|-    -| Start |--( Motor )-`."),
         drawn("Wire the gap: `|-------| Start |--( Motor )-`.");

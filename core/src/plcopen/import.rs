@@ -73,6 +73,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
                 if let Some(ms) = res
                     .children_named("task")
                     .find_map(|t| t.attr("interval").and_then(parse_interval_ms))
+                    .filter(|&ms| crate::limits::cycle_ns(ms).is_ok())
                 {
                     settings.cycle_ms = ms;
                 }

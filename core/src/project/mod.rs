@@ -111,6 +111,8 @@ impl Project {
         }
         let mut project: Project =
             serde_json::from_value(value).map_err(|e| ProjectError::Invalid(e.to_string()))?;
+        crate::limits::cycle_ns(project.settings.cycle_ms)
+            .map_err(|e| ProjectError::Invalid(format!("settings.cycle_ms: {e}")))?;
         project.schema = SCHEMA_VERSION;
         Ok(project)
     }

@@ -82,3 +82,16 @@ fn the_chosen_program_is_kept_and_old_settings_still_load() {
     let back = Project::from_file(&chosen.to_file()).unwrap();
     assert_eq!(back.settings.program.as_deref(), Some("PartCounter"));
 }
+
+#[test]
+fn a_cycle_time_out_of_range_is_refused_with_its_field() {
+    // Issue 11: a cycle_ms that overflowed the nanosecond clock or became 1 ns silently.
+    for bad in ["0", "18446744073709551615", "60001"] {
+        let text = format!(
+            r#"{{"schema":1,"name":"p","source":"","settings":{{"cycle_ms":{bad},"traced":[],"breakpoints":[]}}}}"#
+        );
+        let e = Project::from_file(&text).unwrap_err();
+        assert!(e.to_string().contains("settings.cycle_ms"), "{e}");
+        assert!(e.to_string().contains("1 to 60000 ms"), "{e}");
+    }
+}

@@ -96,7 +96,9 @@ impl AppState {
         };
         match build.simulator(Some(&chosen)) {
             Ok(mut sim) => {
-                sim.set_cycle_ns(project.settings.cycle_ms.max(1) as i64 * 1_000_000);
+                sim.set_cycle_ns(
+                    plc_core::limits::cycle_ns(project.settings.cycle_ms).unwrap_or(10_000_000),
+                );
                 for (name, value) in self.held.get_untracked() {
                     let _ = sim.hold(&name, &value);
                 }

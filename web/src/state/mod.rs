@@ -393,10 +393,14 @@ impl AppState {
 
     /// Sets the cycle time in milliseconds (kept in the project).
     pub fn set_cycle_ms(&self, ms: u64) {
-        let ms = ms.clamp(1, 60_000);
-        self.project.update(|p| p.settings.cycle_ms = ms);
-        self.with_sim_mut(|s| s.set_cycle_ns(ms as i64 * 1_000_000));
-        self.save();
+        match plc_core::limits::cycle_ns(ms) {
+            Ok(ns) => {
+                self.project.update(|p| p.settings.cycle_ms = ms);
+                self.with_sim_mut(|s| s.set_cycle_ns(ns));
+                self.save();
+            }
+            Err(message) => self.error(format!("The cycle time is unchanged: {message}.")),
+        }
     }
 }
 
