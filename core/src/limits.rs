@@ -41,3 +41,12 @@ pub fn cycle_ns(ms: u64) -> Result<i64, String> {
         Err(format!("a scan cycle is {MIN_CYCLE_MS} to {MAX_CYCLE_MS} ms, not {ms} ms"))
     }
 }
+
+/// Watchdog charge of work that grows with its operands (issue 11: a loop of whole-array
+/// copies or FIND on 64 KB strings ran for hours on a budget counted in instructions):
+/// one unit, the cost of one instruction, per this many cells an array copy moves.
+pub const WATCHDOG_CELLS_PER_UNIT: u64 = 8;
+
+/// … and per this many bytes a string instruction reads or writes (string functions
+/// look at every byte; FIND is linear, Knuth–Morris–Pratt).
+pub const WATCHDOG_BYTES_PER_UNIT: u64 = 8;

@@ -201,3 +201,40 @@ END_PROGRAM";
     s.scan();
     assert!(s.active_case_branches().is_empty(), "no label matched");
 }
+
+/// How many loop iterations ran before the watchdog stopped the scan, with `budget`.
+fn iterations_before_watchdog(source: &str, budget: u64) -> i128 {
+    let mut s = sim(source);
+    s.set_watchdog(budget);
+    let outcome = s.scan();
+    assert!(
+        matches!(&outcome, ScanOutcome::Fault(f) if matches!(f.fault, crate::vm::Fault::Watchdog { .. })),
+        "{outcome:?}"
+    );
+    int(&s, "n")
+}
+
+#[test]
+fn the_watchdog_charges_array_copies_by_their_size() {
+    // Issue 11: a loop of whole-array copies ran for hours, each copy counted as one
+    // instruction. Now a copy of 4,096 cells costs 512 units: about 194 copies fit a budget
+    // of 100,000 (counted by instructions, 33,000 did).
+    let src = "PROGRAM Main VAR a, b : ARRAY[1..4096] OF LINT; n : DINT; END_VAR
+               WHILE TRUE DO a := b; n := n + 1; END_WHILE; END_PROGRAM";
+    let n = iterations_before_watchdog(src, 100_000);
+    assert!((150..=200).contains(&n), "{n} copies");
+}
+
+#[test]
+fn the_watchdog_charges_string_functions_by_their_length() {
+    // Issue 11: FIND on long strings was one instruction however long the strings.
+    let src = "PROGRAM Main VAR s, t : STRING[4000]; k, n : DINT; END_VAR
+               WHILE LEN(s) < 3990 DO s := CONCAT(s, 'aaaaaaaaaa'); END_WHILE;
+               t := LEFT(s, 1990); t := CONCAT(t, 'b'); s := CONCAT(s, 'b');
+               n := 0;
+               WHILE TRUE DO k := FIND(s, t); n := n + 1; END_WHILE; END_PROGRAM";
+    let n = iterations_before_watchdog(src, 1_000_000);
+    // FIND reads about 6,000 bytes: 750 units, after the CONCAT loop has used about a
+    // fifth of the budget (counted by instructions, about 250,000 searches fit).
+    assert!((600..=1_100).contains(&n), "{n} searches");
+}

@@ -15,14 +15,15 @@ use crate::values::Fault;
 
 const BAD: Fault = Fault::Internal("register address out of range");
 
-/// Executes one of the instructions listed in the module comment.
+/// Executes one of the instructions listed in the module comment; returns how many string
+/// bytes it read and wrote (the watchdog charges them).
 pub(crate) fn exec(
     op: Op,
     cells: &mut [u64],
     base: u32,
     exe: &Executable,
     s: &mut Scratch,
-) -> Result<(), Fault> {
+) -> Result<u64, Fault> {
     let reg = |x: u32| base.wrapping_add(x) as usize;
     let get = |cells: &[u64], x: u32| cells.get(reg(x)).copied().ok_or(BAD);
     macro_rules! w {
@@ -37,20 +38,13 @@ pub(crate) fn exec(
             s.b.clear();
             read_str_into(cells, get(cells, a)? as usize, &mut s.a)?;
             read_str_into(cells, get(cells, b)? as usize, &mut s.b)?;
-            let o = s.a.cmp(&s.b);
-            use std::cmp::Ordering::*;
-            let r = match op {
-                BinOp::Cmp(Cmp::Eq) => o == Equal,
-                BinOp::Cmp(Cmp::Ne) => o != Equal,
-                BinOp::Cmp(Cmp::Lt) => o == Less,
-                BinOp::Cmp(Cmp::Le) => o != Greater,
-                BinOp::Cmp(Cmp::Gt) => o == Greater,
-                BinOp::Cmp(Cmp::Ge) => o != Less,
-                _ => return Err(Fault::Internal("string operator")),
-            };
-            w!(dst, u64::from(r));
+            let BinOp::Cmp(c) = op else { return Err(Fault::Internal("string operator")) };
+            w!(dst, u64::from(c.holds(s.a.cmp(&s.b))));
+            return Ok((s.a.len() + s.b.len()) as u64);
         }
-        Op::Str { f, n, wide, dst, args } => strings::exec(f, n, wide, dst, args, cells, base, s)?,
+        Op::Str { f, n, wide, dst, args } => {
+            return strings::exec(f, n, wide, dst, args, cells, base, s);
+        }
         Op::Math { f, elem, dst, a, b } => {
             let x = get(cells, a)?;
             let y = get(cells, b)?;
@@ -106,6 +100,7 @@ pub(crate) fn exec(
             s.a.clear();
             read_str_into(cells, get(cells, a)? as usize, &mut s.a)?;
             w!(dst, text::parse_cell(&s.a, elem)?);
+            return Ok(s.a.len() as u64);
         }
         Op::Bcd { encode, from, to, dst, a } => {
             let x = get(cells, a)?;
@@ -113,7 +108,7 @@ pub(crate) fn exec(
         }
         _ => return Err(Fault::Internal("unknown instruction")),
     }
-    Ok(())
+    Ok(0)
 }
 
 /// A numeric built-in on cells of type `elem`.

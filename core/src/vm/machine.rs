@@ -14,7 +14,8 @@ use super::builtins;
 use super::fast;
 use super::strings::Scratch;
 use crate::diagnostics::Span;
-use crate::program::memory::{copy_cells, copy_str, Memory};
+use crate::limits::{WATCHDOG_BYTES_PER_UNIT, WATCHDOG_CELLS_PER_UNIT};
+use crate::program::memory::{copy_cells, copy_str, str_header, Memory};
 use crate::program::op::{builtin_ops, Op};
 use crate::program::{ConditionId, Executable};
 use crate::semantic::ir::SysVar;
@@ -327,11 +328,20 @@ impl Machine {
                     None => return Ok(0),
                 },
                 Op::Halt { a } => return Ok(r!(a)),
+                // Work that grows with the operands is charged by size (`limits`).
                 Op::Copy { dst, src, n } => {
-                    copy_cells(cells, r!(dst) as usize, r!(src) as usize, n as usize)?
+                    copy_cells(cells, r!(dst) as usize, r!(src) as usize, n as usize)?;
+                    fuel = fuel.saturating_sub(u64::from(n) / WATCHDOG_CELLS_PER_UNIT);
                 }
-                Op::StrCopy { dst, src } => copy_str(cells, r!(dst) as usize, r!(src) as usize)?,
-                builtin_ops!() => builtins::exec(*op, cells, base, exe, &mut self.scratch)?,
+                Op::StrCopy { dst, src } => {
+                    let (_, len) = str_header(cells, r!(src) as usize)?;
+                    copy_str(cells, r!(dst) as usize, r!(src) as usize)?;
+                    fuel = fuel.saturating_sub(u64::from(len) / WATCHDOG_BYTES_PER_UNIT);
+                }
+                builtin_ops!() => {
+                    let bytes = builtins::exec(*op, cells, base, exe, &mut self.scratch)?;
+                    fuel = fuel.saturating_sub(bytes / WATCHDOG_BYTES_PER_UNIT);
+                }
                 // The inner loop's instructions never get here.
                 _ => return Err(Fault::Internal("instruction left by the inner loop")),
             }

@@ -14,6 +14,8 @@ pub(crate) struct Scratch {
     pub a: Vec<u8>,
     pub b: Vec<u8>,
     pub text: String,
+    /// FIND's failure function.
+    pub table: Vec<usize>,
 }
 
 const BAD: Fault = Fault::Internal("register address out of range");
@@ -45,7 +47,7 @@ pub(crate) fn exec(
     cells: &mut [u64],
     base: u32,
     s: &mut Scratch,
-) -> Result<(), Fault> {
+) -> Result<u64, Fault> {
     let unit = if wide { 2 } else { 1 };
     if matches!(f, StrFunc::Widen | StrFunc::Narrow) {
         return convert_width(f, dst, args, cells, base, s);
@@ -76,10 +78,10 @@ pub(crate) fn exec(
                 len
             } else {
                 read_str_into(cells, arg(cells, 1)? as usize, &mut s.b)?;
-                find(&s.a, &s.b, unit)
+                find(&s.a, &s.b, unit, &mut s.table)
             };
             *cells.get_mut(base.wrapping_add(dst) as usize).ok_or(BAD)? = v as u64;
-            return Ok(());
+            return Ok((s.a.len() + s.b.len()) as u64);
         }
         StrFunc::Left | StrFunc::Right => {
             let k = int(cells, 1)?;
@@ -123,7 +125,8 @@ pub(crate) fn exec(
         }
     }
     let d = cells.get(base.wrapping_add(dst) as usize).copied().ok_or(BAD)? as usize;
-    write_str(cells, d, &s.b, unit as u32)
+    write_str(cells, d, &s.b, unit as u32)?;
+    Ok((s.a.len() + s.b.len()) as u64)
 }
 
 /// STRING ↔ WSTRING: the argument (a pointer at `args`) converted into the string at
@@ -135,7 +138,7 @@ fn convert_width(
     cells: &mut [u64],
     base: u32,
     s: &mut Scratch,
-) -> Result<(), Fault> {
+) -> Result<u64, Fault> {
     let ptr = |cells: &[u64], r: Reg| cells.get(base.wrapping_add(r) as usize).copied().ok_or(BAD);
     s.a.clear();
     read_str_into(cells, ptr(cells, args)? as usize, &mut s.a)?;
@@ -146,16 +149,46 @@ fn convert_width(
         s.b.extend(s.a.chunks_exact(2).map(|u| if u[1] == 0 { u[0] } else { b'?' }));
     }
     let d = ptr(cells, dst)? as usize;
-    write_str(cells, d, &s.b, if f == StrFunc::Widen { 2 } else { 1 })
+    write_str(cells, d, &s.b, if f == StrFunc::Widen { 2 } else { 1 })?;
+    Ok((s.a.len() + s.b.len()) as u64)
 }
 
-/// 1-based character position of `needle` in `hay`, 0 when absent (or empty).
-fn find(hay: &[u8], needle: &[u8], unit: usize) -> i64 {
+/// 1-based character position of `needle` in `hay`, 0 when absent (or empty). Characters
+/// are `unit` bytes. Knuth–Morris–Pratt over characters, so the time is linear in both
+/// lengths whatever they hold (a byte-by-byte search took 32K × 32K steps on
+/// `FIND(aaa…ab, aa…ab)`); `table` is a reusable buffer for the failure function.
+pub(super) fn find(hay: &[u8], needle: &[u8], unit: usize, table: &mut Vec<usize>) -> i64 {
     if needle.is_empty() || needle.len() > hay.len() {
         return 0;
     }
-    (0..=hay.len() - needle.len())
-        .step_by(unit)
-        .find(|&i| &hay[i..i + needle.len()] == needle)
-        .map_or(0, |i| (i / unit) as i64 + 1)
+    fn ch(s: &[u8], unit: usize, i: usize) -> &[u8] {
+        &s[i * unit..(i + 1) * unit]
+    }
+    let (n, m) = (hay.len() / unit, needle.len() / unit);
+    // table[i]: the length of the longest proper border of needle[..=i].
+    table.clear();
+    table.resize(m, 0);
+    let mut k = 0;
+    for i in 1..m {
+        while k > 0 && ch(needle, unit, i) != ch(needle, unit, k) {
+            k = table[k - 1];
+        }
+        if ch(needle, unit, i) == ch(needle, unit, k) {
+            k += 1;
+        }
+        table[i] = k;
+    }
+    let mut q = 0;
+    for i in 0..n {
+        while q > 0 && ch(hay, unit, i) != ch(needle, unit, q) {
+            q = table[q - 1];
+        }
+        if ch(hay, unit, i) == ch(needle, unit, q) {
+            q += 1;
+        }
+        if q == m {
+            return (i + 2 - m) as i64;
+        }
+    }
+    0
 }

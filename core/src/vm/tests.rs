@@ -371,3 +371,41 @@ fn fast_real_to_dint_matches_arith() {
         }
     }
 }
+
+#[test]
+fn find_is_linear_and_agrees_with_a_plain_search() {
+    // FIND (Knuth–Morris–Pratt) against the obvious search, on every pair of short strings
+    // over a two-letter alphabet, for STRING and WSTRING characters.
+    fn plain(hay: &[u8], needle: &[u8], unit: usize) -> i64 {
+        if needle.is_empty() || needle.len() > hay.len() {
+            return 0;
+        }
+        (0..=hay.len() - needle.len())
+            .step_by(unit)
+            .find(|&i| &hay[i..i + needle.len()] == needle)
+            .map_or(0, |i| (i / unit) as i64 + 1)
+    }
+    let words: Vec<Vec<u8>> = (0..1u32 << 7)
+        .flat_map(|bits| {
+            (0..=7).map(move |len| (0..len).map(|k| b'a' + ((bits >> k) & 1) as u8).collect())
+        })
+        .collect();
+    let mut table = Vec::new();
+    for unit in [1usize, 2] {
+        let widen = |w: &Vec<u8>| -> Vec<u8> {
+            w.iter()
+                .flat_map(|&c| std::iter::once(c).chain(std::iter::repeat_n(0, unit - 1)))
+                .collect()
+        };
+        for h in words.iter().step_by(3) {
+            for n in words.iter().step_by(5) {
+                let (h, n) = (widen(h), widen(n));
+                assert_eq!(
+                    super::strings::find(&h, &n, unit, &mut table),
+                    plain(&h, &n, unit),
+                    "{h:?} {n:?}"
+                );
+            }
+        }
+    }
+}
