@@ -170,16 +170,7 @@ impl<'a> Checker<'a> {
     ) -> Option<(Type, Vec<Expr>)> {
         // Untyped literals only: take the type the context expects when every one fits.
         if let Some(Type::Elem(want)) = expected.filter(|_| items.iter().all(|t| t.flexible)) {
-            let fits = |t: &Typed| match (&t.e.kind, t.e.ty.elem()) {
-                (ExprKind::Const(bits), Some(el)) if el.is_integral() && want.is_integral() => {
-                    let (lo, hi) = want.int_range();
-                    let v = crate::values::arith::to_i128(el, *bits);
-                    v >= lo && v <= hi
-                }
-                (ExprKind::Const(_), Some(el)) => el.is_num() && want.is_real(),
-                _ => false,
-            };
-            if items.iter().all(fits) {
+            if items.iter().all(|t| literal_fits(t, want)) {
                 let ty = Type::Elem(want);
                 let exprs = items.into_iter().map(|t| self.convert(t.e, ty)).collect();
                 return Some((ty, exprs));
@@ -284,8 +275,21 @@ impl<'a> Checker<'a> {
         Some(t.e)
     }
 
-    fn want_real(&mut self, e: &ast::Expr) -> Option<Expr> {
+    /// `t` in the type the call's result is expected to have, when `t` is an untyped
+    /// literal (or a constant folded from literals) that fits it: the generic-literal rule.
+    fn adapt(&mut self, t: Typed, want: Option<Type>) -> Typed {
+        match want {
+            Some(ty @ Type::Elem(w)) if t.flexible && literal_fits(&t, w) => {
+                Typed { e: self.convert(t.e, ty), flexible: false }
+            }
+            _ => t,
+        }
+    }
+
+    /// A REAL or LREAL argument (an integer is converted); `hint` types an untyped literal.
+    fn want_real(&mut self, e: &ast::Expr, hint: Option<Type>) -> Option<Expr> {
         let t = self.expr(e, None)?;
+        let t = self.adapt(t, hint);
         let target = match t.e.ty.elem() {
             Some(el) if el.is_real() => return Some(t.e),
             Some(el) if el.is_int() => {
@@ -317,13 +321,20 @@ impl<'a> Checker<'a> {
     ) -> Option<Expr> {
         let key = name.key();
         let a = self.builtin_args(name, args, span)?;
+        // The generic-literal rule (as CODESYS and matiec): an untyped literal argument of a
+        // generic function takes the type the call's result is expected to have, when it
+        // fits (`y := ABS(-3)` with `y : SINT`, `r := EXPT(3.0, 2)` with `r : REAL`).
+        let hint = expected.filter(|t| t.elem().is_some());
+        let num_hint = hint.filter(|t| t.elem().is_some_and(|e| e.is_num()));
+        let real_hint = hint.filter(|t| t.elem().is_some_and(|e| e.is_real()));
         use ast::BinaryOp as B;
         let fold_ops = |c: &mut Self, op: B| {
             let mut acc = a[0].clone();
             for next in &a[1..] {
                 acc = Self::binary_ast(op, &acc, next, span);
             }
-            c.expr(&acc, None).map(|t| t.e)
+            let t = c.expr(&acc, None)?;
+            Some(c.adapt(t, hint).e)
         };
         let simple = match key.as_str() {
             "ADD" => return fold_ops(self, B::Add),
@@ -337,10 +348,16 @@ impl<'a> Checker<'a> {
             name => ast::Cmp::from_function(name).map(B::Cmp),
         };
         if let Some(op) = simple {
-            return self.expr(&Self::binary_ast(op, a[0], a[1], span), None).map(|t| t.e);
+            // A comparison's result is BOOL whatever its operands: no hint for them.
+            let result = if matches!(op, B::Cmp(_)) { None } else { hint };
+            let t = self.expr(&Self::binary_ast(op, a[0], a[1], span), None)?;
+            return Some(self.adapt(t, result).e);
         }
         match key.as_str() {
-            "MOVE" => return self.expr(a[0], None).map(|t| t.e),
+            "MOVE" => {
+                let t = self.expr(a[0], None)?;
+                return Some(self.adapt(t, hint).e);
+            }
             "NOT" => {
                 let e = ast::Expr {
                     kind: ast::ExprKind::Unary(ast::UnaryOp::Not, Box::new(a[0].clone())),
@@ -353,6 +370,7 @@ impl<'a> Checker<'a> {
         let func = match key.as_str() {
             "ABS" => {
                 let t = self.expr(a[0], None)?;
+                let t = self.adapt(t, num_hint);
                 if !t.e.ty.elem().is_some_and(|e| e.is_num()) {
                     let msg = format!("ABS needs a number, not {}", self.tname(t.e.ty));
                     self.error(Code::TypeMismatch, a[0].span, msg);
@@ -372,8 +390,8 @@ impl<'a> Checker<'a> {
             "ACOS" => Builtin::Math(MathFn::Acos),
             "ATAN" => Builtin::Math(MathFn::Atan),
             "EXPT" => {
-                let base = self.want_real(a[0])?;
-                let exp = self.want_real(a[1])?;
+                let base = self.want_real(a[0], real_hint)?;
+                let exp = self.want_real(a[1], None)?;
                 let exp = self.convert(exp, Type::Elem(Elem::LReal));
                 let ty = base.ty;
                 return Some(self.builtin_expr(
@@ -504,7 +522,7 @@ impl<'a> Checker<'a> {
                 return Some(self.builtin_expr(Builtin::Str(StrFunc::Concat), items, ty, span));
             }
             "TRUNC" => {
-                let x = self.want_real(a[0])?;
+                let x = self.want_real(a[0], real_hint)?;
                 return Some(Expr {
                     kind: ExprKind::Trunc(Box::new(x)),
                     ty: Type::Elem(Elem::DInt),
@@ -513,7 +531,7 @@ impl<'a> Checker<'a> {
             }
             _ => return self.conversion_call(name, a[0], span),
         };
-        let x = self.want_real(a[0])?;
+        let x = self.want_real(a[0], real_hint)?;
         let ty = x.ty;
         Some(self.builtin_expr(func, vec![x], ty, span))
     }
@@ -602,5 +620,19 @@ fn sum_string(a: Type, b: Type) -> Type {
             Type::Str { wide, len: (x + y).min(65_535) }
         }
         _ => a,
+    }
+}
+
+/// Whether the untyped literal (or folded constant) `t` can take type `want`: an integer
+/// within `want`'s range, or any number when `want` is real.
+fn literal_fits(t: &Typed, want: Elem) -> bool {
+    match (&t.e.kind, t.e.ty.elem()) {
+        (ExprKind::Const(bits), Some(el)) if el.is_integral() && want.is_integral() => {
+            let (lo, hi) = want.int_range();
+            let v = crate::values::arith::to_i128(el, *bits);
+            v >= lo && v <= hi
+        }
+        (ExprKind::Const(_), Some(el)) => el.is_num() && want.is_real(),
+        _ => false,
     }
 }
