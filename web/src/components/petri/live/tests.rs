@@ -1,8 +1,11 @@
 use super::*;
 
+/// Each transition's arcs as (place, weight).
+type Arcs = Vec<Vec<(usize, u32)>>;
+
 /// The sequential weighing net's start: P1 (0) -T1-> P20 (1), P1 -T2-> P31 (2),
 /// P31 -T5-> P32 (3); and a fork F: P1 + A0 (4) -> P30 (5) + A31 (6).
-fn net() -> (Vec<Vec<(usize, u32)>>, Vec<Vec<(usize, u32)>>) {
+fn net() -> (Arcs, Arcs) {
     let pre = vec![vec![(0, 1)], vec![(0, 1)], vec![(2, 1)], vec![(0, 1), (4, 1)]];
     let post = vec![vec![(1, 1)], vec![(2, 1)], vec![(3, 1)], vec![(5, 1), (6, 1)]];
     (pre, post)
