@@ -43,6 +43,9 @@ fn Banner() -> impl IntoView {
             view! {
                 <div class=class role="alert">
                     <span>{n.text.clone()}</span>
+                    {n.actions.iter().cloned().map(|action| view! {
+                        <button class="link" on:click=move |_| state.act(&action)>{action.label()}</button>
+                    }).collect_view()}
                     {site.map(|site| {
                         let label = match &site {
                             Site::St { line, .. } => format!("Go to line {line}"),

@@ -2,11 +2,15 @@
 
 mod app;
 mod components;
+mod download;
 mod examples;
 mod state;
 mod storage;
 
 fn main() {
-    console_error_panic_hook::set_once();
+    std::panic::set_hook(Box::new(|info| {
+        state::note_panic();
+        console_error_panic_hook::hook(info);
+    }));
     leptos::mount::mount_to_body(app::App);
 }

@@ -42,4 +42,16 @@ impl StorageBackend for LocalStorage {
     fn remove(&mut self, key: &str) -> Result<(), StoreError> {
         self.storage()?.remove_item(key).map_err(js_error)
     }
+
+    fn keys(&self) -> Result<Vec<String>, StoreError> {
+        let storage = self.storage()?;
+        let n = storage.length().map_err(js_error)?;
+        let mut keys = Vec::with_capacity(n as usize);
+        for i in 0..n {
+            if let Some(key) = storage.key(i).map_err(js_error)? {
+                keys.push(key);
+            }
+        }
+        Ok(keys)
+    }
 }

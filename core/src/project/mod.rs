@@ -11,7 +11,9 @@ mod store;
 
 pub use codec::{decode_share, encode_share, ShareError, SHARE_PREFIX};
 pub use history::{History, DEFAULT_HISTORY_LIMIT};
-pub use store::{MemoryBackend, ProjectStore, ProjectSummary, StorageBackend, StoreError};
+pub use store::{
+    MemoryBackend, Opened, ProjectStore, ProjectSummary, StorageBackend, StoreError, STORE_LAYOUT,
+};
 
 use serde::{Deserialize, Serialize};
 use std::fmt;

@@ -43,35 +43,6 @@ fn share_links_round_trip_and_reject_damage() {
 }
 
 #[test]
-fn the_store_lists_adds_renames_duplicates_and_deletes() {
-    let mut store = ProjectStore::new(MemoryBackend::default());
-    let a = store.add(&Project::new("A"), 1000).unwrap();
-    let b = store.add(&Project::new("B"), 2000).unwrap();
-    assert_ne!(a, b);
-    let names: Vec<String> = store.list().unwrap().into_iter().map(|p| p.name).collect();
-    assert_eq!(names, ["B", "A"]);
-    store.rename(&a, "A2", 3000).unwrap();
-    assert_eq!(store.load(&a).unwrap().name, "A2");
-    let c = store.duplicate(&a, 4000).unwrap();
-    assert_eq!(store.load(&c).unwrap().name, "A2 (copy)");
-    store.delete(&b).unwrap();
-    assert!(matches!(store.load(&b), Err(StoreError::NotFound(_))));
-    assert_eq!(store.list().unwrap().len(), 2);
-}
-
-#[test]
-fn adding_never_overwrites_and_a_full_quota_loses_nothing() {
-    let mut store = ProjectStore::new(MemoryBackend::with_quota(1500));
-    let a = store.add(&Project::new("A"), 5).unwrap();
-    let b = store.add(&Project::new("B"), 5).unwrap();
-    assert_ne!(a, b, "same clock, still a new id");
-    let mut big = Project::new("Big");
-    big.source = "x".repeat(5000);
-    assert_eq!(store.save(&a, &big, 6), Err(StoreError::QuotaExceeded));
-    assert_eq!(store.load(&a).unwrap().name, "A", "the old version is still there");
-}
-
-#[test]
 fn the_chosen_program_is_kept_and_old_settings_still_load() {
     let old = r#"{"schema":1,"name":"p","source":"","settings":{"cycle_ms":20,"traced":[],"breakpoints":[]}}"#;
     let p = Project::from_file(old).unwrap();

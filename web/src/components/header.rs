@@ -20,42 +20,6 @@ fn untitled_name(existing: &[String]) -> String {
         .unwrap_or_else(|| "Untitled".to_string())
 }
 
-/// A file name for the project: its name without characters file systems refuse.
-fn file_name(name: &str) -> String {
-    let clean: String = name
-        .trim()
-        .chars()
-        .map(|c| if c.is_control() || "/\\:*?\"<>|".contains(c) { '_' } else { c })
-        .collect();
-    let clean = if clean.is_empty() { "project".to_string() } else { clean };
-    format!("{clean}.plcproj.json")
-}
-
-/// Offers `text` as a download named `name`.
-fn download(name: &str, text: &str) -> Result<(), String> {
-    let err = |e: wasm_bindgen::JsValue| format!("{e:?}");
-    let window = web_sys::window().ok_or("no window")?;
-    let document = window.document().ok_or("no document")?;
-    let parts = js_sys::Array::of1(&wasm_bindgen::JsValue::from_str(text));
-    let options = web_sys::BlobPropertyBag::new();
-    options.set_type("application/json");
-    let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(err)?;
-    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(err)?;
-    let a: web_sys::HtmlAnchorElement =
-        document.create_element("a").map_err(err)?.dyn_into().map_err(|_| "not an anchor")?;
-    a.set_href(&url);
-    a.set_download(name);
-    let body = document.body().ok_or("no body")?;
-    body.append_child(&a).map_err(err)?;
-    a.click();
-    a.remove();
-    set_timeout(
-        move || drop(web_sys::Url::revoke_object_url(&url)),
-        std::time::Duration::from_secs(5),
-    );
-    Ok(())
-}
-
 /// Reads the chosen file (a project file, PLCopen XML, PNML or ST) and imports it as a new
 /// project.
 async fn import_file(state: AppState, file: web_sys::File) {
@@ -71,7 +35,9 @@ async fn import_file(state: AppState, file: web_sys::File) {
     match open_text(stem, &text) {
         Ok(opened) => {
             let pname = opened.project.name.clone();
-            state.add_and_open(opened.project);
+            if !state.add_and_open(opened.project) {
+                return; // the banner says it is open but not saved
+            }
             let kind = match opened.kind {
                 FileKind::Project => "the project file",
                 FileKind::Plcopen => "PLCopen XML",
@@ -156,12 +122,7 @@ pub fn Header() -> impl IntoView {
             state.info(format!("Deleted “{name}”."));
         }
     };
-    let export = move |_| {
-        let (name, text) = state.project.with_untracked(|p| (p.name.clone(), p.to_file()));
-        if let Err(e) = download(&file_name(&name), &text) {
-            state.error(format!("Could not export the project: {e}"));
-        }
-    };
+    let export = move |_| state.export_project();
     let on_file = move |_| {
         let Some(input) = file_input.get_untracked() else { return };
         let file = input.files().and_then(|f| f.get(0));
@@ -208,10 +169,20 @@ pub fn Header() -> impl IntoView {
                         prop:value=move || state.project_id.get().unwrap_or_default()>
                         {move || {
                             let current = state.project_id.get();
-                            state.projects.get().into_iter().map(|p| {
+                            let damaged = state.damaged.get();
+                            let unsaved = current.is_none().then(|| view! {
+                                <option value="" selected=true>{format!("{} (not saved)", name())}</option>
+                            });
+                            let stored = state.projects.get().into_iter().map(|p| {
                                 let selected = current.as_deref() == Some(p.id.as_str());
-                                view! { <option value=p.id.clone() selected=selected>{p.name.clone()}</option> }
-                            }).collect_view()
+                                let label = if damaged.contains_key(&p.id) {
+                                    format!("{} (damaged)", p.name)
+                                } else {
+                                    p.name.clone()
+                                };
+                                view! { <option value=p.id.clone() selected=selected>{label}</option> }
+                            }).collect_view();
+                            (unsaved, stored)
                         }}
                     </select>
                 </label>
@@ -231,8 +202,9 @@ pub fn Header() -> impl IntoView {
                             match examples::open(&file) {
                                 Ok(p) => {
                                     let title = p.name.clone();
-                                    state.add_and_open(p);
-                                    state.info(format!("Opened the example “{title}” as a new project."));
+                                    if state.add_and_open(p) {
+                                        state.info(format!("Opened the example “{title}” as a new project."));
+                                    }
                                 }
                                 Err(e) => state.error(format!("Could not open the example: {e}")),
                             }
@@ -275,7 +247,5 @@ mod tests {
     #[test]
     fn names() {
         assert_eq!(untitled_name(&["Untitled 1".into(), "x".into()]), "Untitled 2");
-        assert_eq!(file_name("a/b: c"), "a_b_ c.plcproj.json");
-        assert_eq!(file_name("  "), "project.plcproj.json");
     }
 }

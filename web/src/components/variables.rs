@@ -10,7 +10,7 @@ use plc_core::program::Executable;
 use plc_core::semantic::Type;
 use plc_core::syntax::VarSection;
 
-use crate::components::timeline::download;
+use crate::download::download;
 use crate::state::AppState;
 
 /// One row of the table.

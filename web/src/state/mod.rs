@@ -3,6 +3,7 @@
 //! in `run.rs`.
 
 mod check;
+mod projects;
 mod run;
 
 use std::collections::BTreeMap;
@@ -10,12 +11,11 @@ use std::collections::BTreeMap;
 use leptos::prelude::*;
 use plc_core::build::{ProjectBuild, Site};
 use plc_core::petri::PlaceMap;
-use plc_core::project::{decode_share, encode_share, Project, ProjectStore, ProjectSummary};
+use plc_core::project::{Project, ProjectSummary};
 use plc_core::sim::{BreakpointId, Simulator};
 
-use crate::storage::LocalStorage;
-
 pub use check::DiagView;
+pub use projects::note_panic;
 pub use run::marking_of;
 
 /// How many samples the timeline keeps (the oldest are dropped).
@@ -63,6 +63,42 @@ pub struct Notice {
     pub text: String,
     /// The place the message is about (the banner links to it).
     pub site: Option<Site>,
+    /// What the user can do about it (buttons in the banner).
+    pub actions: Vec<NoticeAction>,
+}
+
+/// A button in the banner: something the user can do about the message.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum NoticeAction {
+    /// Download the open project as a project file.
+    Export,
+    /// Replace the open project by the version another tab saved.
+    LoadTheirs,
+    /// Save this tab's version over the one another tab saved.
+    KeepMine,
+    /// Save this tab's version as a new project.
+    SaveAsNew,
+    /// Download the stored text of a damaged project (by id).
+    DownloadDamaged(String),
+    /// Delete a damaged project (by id).
+    DeleteDamaged(String),
+    /// Open a share link (the URL fragment) held back after it stopped the page.
+    OpenShared(String),
+}
+
+impl NoticeAction {
+    /// The button's text (its accessible name).
+    pub fn label(&self) -> &'static str {
+        match self {
+            NoticeAction::Export => "Export project",
+            NoticeAction::LoadTheirs => "Load the other tab's version",
+            NoticeAction::KeepMine => "Keep this tab's version",
+            NoticeAction::SaveAsNew => "Save this tab's version as a new project",
+            NoticeAction::DownloadDamaged(_) => "Download its text",
+            NoticeAction::DeleteDamaged(_) => "Delete it",
+            NoticeAction::OpenShared(_) => "Open it anyway",
+        }
+    }
 }
 
 /// The state shared by every component.
@@ -70,8 +106,13 @@ pub struct Notice {
 pub struct AppState {
     /// The open project.
     pub project: RwSignal<Project>,
-    /// Its id in storage.
+    /// Its id in storage (`None`: open but not stored, e.g. the storage is full).
     pub project_id: RwSignal<Option<String>>,
+    /// The revision of it that was opened or last saved (saves name it, so another tab's
+    /// change is never overwritten).
+    project_rev: StoredValue<Option<u64>>,
+    /// Stored projects that cannot be opened: id → why.
+    pub damaged: RwSignal<BTreeMap<String, String>>,
     /// Every stored project.
     pub projects: RwSignal<Vec<ProjectSummary>>,
     /// The diagnostics of the last build.
@@ -120,10 +161,6 @@ pub struct AppState {
     pending_ns: StoredValue<f64>,
 }
 
-fn now_ms() -> u64 {
-    js_sys::Date::now() as u64
-}
-
 impl AppState {
     /// Creates the state: opens a shared project from the URL fragment if there is one
     /// (as a new project), else the most recent project, else a new one.
@@ -131,6 +168,8 @@ impl AppState {
         let state = AppState {
             project: RwSignal::new(Project::new("My first project")),
             project_id: RwSignal::new(None),
+            project_rev: StoredValue::new(None),
+            damaged: RwSignal::new(BTreeMap::new()),
             projects: RwSignal::new(Vec::new()),
             diagnostics: RwSignal::new(Vec::new()),
             programs: RwSignal::new(Vec::new()),
@@ -155,52 +194,28 @@ impl AppState {
             pending_ns: StoredValue::new(0.0),
         };
         state.open_initial_project();
+        state.watch_other_tabs();
         state
-    }
-
-    fn store(&self) -> ProjectStore<LocalStorage> {
-        ProjectStore::new(LocalStorage::open())
     }
 
     /// Shows an error in the banner.
     pub fn error(&self, text: impl Into<String>) {
-        self.notice.set(Some(Notice { error: true, text: text.into(), site: None }));
+        self.notice.set(Some(Notice {
+            error: true,
+            text: text.into(),
+            site: None,
+            actions: vec![],
+        }));
     }
 
     /// Shows information in the banner.
     pub fn info(&self, text: impl Into<String>) {
-        self.notice.set(Some(Notice { error: false, text: text.into(), site: None }));
-    }
-
-    fn refresh_list(&self) {
-        match self.store().list() {
-            Ok(list) => self.projects.set(list),
-            Err(e) => self.error(e.to_string()),
-        }
-    }
-
-    fn open_initial_project(&self) {
-        let hash = web_sys::window().and_then(|w| w.location().hash().ok()).unwrap_or_default();
-        if hash.starts_with("#p=") {
-            match decode_share(&hash) {
-                Ok(project) => {
-                    let name = project.name.clone();
-                    self.add_and_open(project);
-                    self.info(format!("Opened the shared project “{name}” as a new project."));
-                }
-                Err(e) => self.error(format!("{e}. Your own projects are unchanged.")),
-            }
-            clear_fragment();
-            if self.project_id.get_untracked().is_some() {
-                return;
-            }
-        }
-        self.refresh_list();
-        let first = self.projects.get_untracked().first().map(|p| p.id.clone());
-        match first {
-            Some(id) => self.open(&id),
-            None => self.add_and_open(Project::new("My first project")),
-        }
+        self.notice.set(Some(Notice {
+            error: false,
+            text: text.into(),
+            site: None,
+            actions: vec![],
+        }));
     }
 
     /// Everything that belongs to the previous project is forgotten.
@@ -216,87 +231,6 @@ impl AppState {
         self.fault_site.set(None);
         self.focus.set(None);
         self.bump();
-    }
-
-    /// Stores `project` as a new project and opens it.
-    pub fn add_and_open(&self, project: Project) {
-        let result = self.store().add(&project, now_ms());
-        match result {
-            Ok(id) => self.project_id.set(Some(id)),
-            Err(e) => self.error(format!("{e} (the project is open but not saved)")),
-        }
-        self.project.set(project);
-        self.refresh_list();
-        self.forget_run();
-        self.check_now();
-        self.show_main_view();
-    }
-
-    /// Opens a stored project.
-    pub fn open(&self, id: &str) {
-        match self.store().load(id) {
-            Ok(project) => {
-                self.project.set(project);
-                self.project_id.set(Some(id.to_string()));
-                self.forget_run();
-                self.check_now();
-                self.show_main_view();
-            }
-            Err(e) => self.error(e.to_string()),
-        }
-    }
-
-    /// Saves the open project now.
-    pub fn save(&self) {
-        let Some(id) = self.project_id.get_untracked() else { return };
-        let project = self.project.get_untracked();
-        match self.store().save(&id, &project, now_ms()) {
-            Ok(()) => self.refresh_list(),
-            Err(e) => self.error(format!("Not saved: {e}")),
-        }
-    }
-
-    /// Renames the open project.
-    pub fn rename(&self, name: &str) {
-        let name = name.trim();
-        if name.is_empty() {
-            return;
-        }
-        self.project.update(|p| p.name = name.to_string());
-        self.save();
-    }
-
-    /// Copies the open project and opens the copy.
-    pub fn duplicate(&self) {
-        let mut p = self.project.get_untracked();
-        p.name = format!("{} (copy)", p.name);
-        self.add_and_open(p);
-    }
-
-    /// Deletes the open project and opens another (or a new one).
-    pub fn delete_current(&self) {
-        if let Some(id) = self.project_id.get_untracked() {
-            if let Err(e) = self.store().delete(&id) {
-                self.error(e.to_string());
-                return;
-            }
-        }
-        self.project_id.set(None);
-        self.refresh_list();
-        match self.projects.get_untracked().first().map(|p| p.id.clone()) {
-            Some(id) => self.open(&id),
-            None => self.add_and_open(Project::new("My first project")),
-        }
-    }
-
-    /// The share link of the open project.
-    pub fn share_link(&self) -> String {
-        let fragment = encode_share(&self.project.get_untracked());
-        let base = web_sys::window()
-            .and_then(|w| w.location().href().ok())
-            .map(|h| h.split('#').next().unwrap_or_default().to_string())
-            .unwrap_or_default();
-        format!("{base}#{fragment}")
     }
 
     /// Replaces the source text (from the editor). The caller debounces checks and saves.
@@ -400,16 +334,6 @@ impl AppState {
                 self.save();
             }
             Err(message) => self.error(format!("The cycle time is unchanged: {message}.")),
-        }
-    }
-}
-
-fn clear_fragment() {
-    if let Some(w) = web_sys::window() {
-        let url = w.location().href().unwrap_or_default();
-        let base = url.split('#').next().unwrap_or_default().to_string();
-        if let Ok(history) = w.history() {
-            let _ = history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&base));
         }
     }
 }

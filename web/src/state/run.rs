@@ -66,6 +66,7 @@ impl AppState {
                     error: true,
                     text: format!("FAULT on scan {}: {} ({place})", info.scan, info.fault),
                     site: Some(site),
+                    actions: Vec::new(),
                 }));
             }
         }

@@ -3,9 +3,8 @@
 //! and CSV / VCD / SVG export.
 
 mod chart;
-mod download;
 
-pub use download::download;
+use crate::download::download;
 
 use leptos::prelude::*;
 use plc_core::export::{trace_csv, trace_vcd, value_text};

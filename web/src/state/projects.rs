@@ -1,0 +1,456 @@
+//! The stored projects: opening, saving, adding and deleting them through the core's
+//! [`ProjectStore`], so that no failure of the browser's storage loses a project.
+//!
+//! - A project that could not be stored stays open *unsaved* (`project_id` is `None`)
+//!   with an Export button; it is never saved over the project open before it, and the
+//!   next save tries to store it again as a new project.
+//! - Saves name the revision they started from: a change made in another tab is never
+//!   overwritten; the user chooses (another tab's change is also noticed at once through
+//!   the `storage` event).
+//! - Damaged projects are listed, never opened or overwritten, and can be downloaded or
+//!   deleted. A damaged index is rebuilt from the projects found.
+//! - A mark is kept in storage while a project or share link is being opened: a page that
+//!   stopped while opening one does not open it again on reload.
+
+use leptos::prelude::*;
+use plc_core::project::{decode_share, encode_share, Project, ProjectStore, StoreError};
+use wasm_bindgen::closure::Closure;
+use wasm_bindgen::JsCast;
+
+use super::{AppState, Notice, NoticeAction};
+use crate::download::download;
+use crate::storage::LocalStorage;
+
+/// How long a project must have been open before its opening counts as finished.
+const OPENING_SETTLES: std::time::Duration = std::time::Duration::from_secs(3);
+
+/// Set by the panic hook: the page stopped, so leaving it must not count as a clean exit.
+static PANICKED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Notes that the app panicked (called from the panic hook before the instance stops).
+pub fn note_panic() {
+    PANICKED.store(true, std::sync::atomic::Ordering::SeqCst);
+}
+
+fn now_ms() -> u64 {
+    js_sys::Date::now() as u64
+}
+
+fn store() -> ProjectStore<LocalStorage> {
+    ProjectStore::new(LocalStorage::open())
+}
+
+/// A file name for a project: its name without characters file systems refuse.
+fn project_file_name(name: &str) -> String {
+    let clean: String = name
+        .trim()
+        .chars()
+        .map(|c| if c.is_control() || "/\\:*?\"<>|".contains(c) { '_' } else { c })
+        .collect();
+    let clean = if clean.is_empty() { "project".to_string() } else { clean };
+    format!("{clean}.plcproj.json")
+}
+
+/// The mark left while a share link is being opened: `share:` and a digest of the link.
+fn share_mark(fragment: &str) -> String {
+    // FNV-1a: stable across builds and enough to tell links apart.
+    let hash = fragment
+        .bytes()
+        .fold(0xcbf2_9ce4_8422_2325_u64, |h, b| (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3));
+    format!("share:{hash:016x}")
+}
+
+impl AppState {
+    /// Shows a problem with buttons for what the user can do about it.
+    pub fn error_with(&self, text: impl Into<String>, actions: Vec<NoticeAction>) {
+        self.notice.set(Some(Notice { error: true, text: text.into(), site: None, actions }));
+    }
+
+    pub(super) fn refresh_list(&self) {
+        let store = store();
+        match store.list() {
+            Ok(list) => self.projects.set(list),
+            Err(e) => self.error(e.to_string()),
+        }
+        self.damaged.set(store.damaged().unwrap_or_default().into_iter().collect());
+    }
+
+    /// Opens what the page starts with: a share link in the URL fragment (as a new
+    /// project), else the most recent project that opens, else a new one.
+    pub(super) fn open_initial_project(&self) {
+        let mut store = store();
+        let interrupted = store.interrupted_opening().ok().flatten();
+        let _ = store.clear_opening();
+        let hash = web_sys::window().and_then(|w| w.location().hash().ok()).unwrap_or_default();
+        if hash.starts_with("#p=") {
+            if interrupted.as_deref() == Some(share_mark(&hash).as_str()) {
+                clear_fragment();
+                self.error_with(
+                    "The shared project in this link stopped the page the last time it was opened, so it was not opened again. Your own projects are unchanged.",
+                    vec![NoticeAction::OpenShared(hash)],
+                );
+            } else if self.open_shared(&hash) {
+                return;
+            }
+        }
+        self.refresh_list();
+        let damage = store.index_damage().ok().flatten();
+        let damaged = self.damaged.get_untracked();
+        let projects = self.projects.get_untracked();
+        let first = projects.iter().find(|p| {
+            !damaged.contains_key(&p.id) && interrupted.as_deref() != Some(p.id.as_str())
+        });
+        match first.map(|p| p.id.clone()) {
+            Some(id) => self.open(&id),
+            None => {
+                self.add_and_open(Project::new("My first project"));
+            }
+        }
+        // Say why the most recent project is not the one open.
+        if let Some(skipped) = projects.first().filter(|p| first.is_none_or(|f| f.id != p.id)) {
+            if let Some(reason) = damaged.get(&skipped.id) {
+                self.error_with(
+                    format!("“{}” cannot be opened: {reason}. It is kept as it is.", skipped.name),
+                    vec![
+                        NoticeAction::DownloadDamaged(skipped.id.clone()),
+                        NoticeAction::DeleteDamaged(skipped.id.clone()),
+                    ],
+                );
+            } else if interrupted.as_deref() == Some(skipped.id.as_str()) {
+                self.error(format!(
+                    "“{}” stopped the page the last time it was opened, so another project was opened instead. It is kept in the list: open it from there when you are ready.",
+                    skipped.name
+                ));
+            }
+        }
+        if let Some(message) = damage {
+            self.error(message);
+        }
+    }
+
+    /// Opens the shared project in `fragment` as a new project; false when the link is
+    /// unusable (the most recent project opens instead).
+    fn open_shared(&self, fragment: &str) -> bool {
+        let project = match decode_share(fragment) {
+            Ok(project) => project,
+            Err(e) => {
+                clear_fragment();
+                self.error(format!("{e}. Your own projects are unchanged."));
+                return false;
+            }
+        };
+        let mut store = store();
+        let _ = store.mark_opening(&share_mark(fragment));
+        let name = project.name.clone();
+        match self.open_as_new(project) {
+            Ok(()) => {
+                clear_fragment();
+                self.info(format!("Opened the shared project “{name}” as a new project."));
+            }
+            // Not stored: the link stays in the address bar so that nothing is lost.
+            Err(e) => self.error_with(
+                format!("Opened the shared project “{name}”, but it is not saved: {e}. Export it to keep it, or keep this link."),
+                vec![NoticeAction::Export],
+            ),
+        }
+        self.settle_opening();
+        true
+    }
+
+    /// Removes the opening mark once the page has kept running for a while.
+    fn settle_opening(&self) {
+        set_timeout(
+            || {
+                let _ = store().clear_opening();
+            },
+            OPENING_SETTLES,
+        );
+    }
+
+    /// Opens `project` and stores it as a new project (checked before it is stored, so a
+    /// project that stops the page is never stored). Returns whether it was stored; when
+    /// not, it stays open unsaved and the banner says why, with an Export button.
+    pub fn add_and_open(&self, project: Project) -> bool {
+        let name = project.name.clone();
+        match self.open_as_new(project) {
+            Ok(()) => true,
+            Err(e) => {
+                self.error_with(
+                    format!("“{name}” is open but not saved: {e}."),
+                    vec![NoticeAction::Export],
+                );
+                false
+            }
+        }
+    }
+
+    /// Opens `project`, checks it, then stores it as a new project. When storing fails
+    /// it stays open with no id, so no later save can write it over another project.
+    fn open_as_new(&self, project: Project) -> Result<(), StoreError> {
+        self.project.set(project.clone());
+        self.project_id.set(None);
+        self.project_rev.set_value(None);
+        self.forget_run();
+        self.check_now();
+        self.show_main_view();
+        let stored = store().add(&project, now_ms());
+        if let Ok((id, rev)) = &stored {
+            self.project_id.set(Some(id.clone()));
+            self.project_rev.set_value(Some(*rev));
+        }
+        self.refresh_list();
+        stored.map(|_| ())
+    }
+
+    /// Opens a stored project; a damaged one is not opened and the banner offers to
+    /// download or delete it.
+    pub fn open(&self, id: &str) {
+        let mut store = store();
+        match store.open(id) {
+            Ok(opened) => {
+                let _ = store.mark_opening(id);
+                self.project.set(opened.project);
+                self.project_id.set(Some(id.to_string()));
+                self.project_rev.set_value(Some(opened.rev));
+                self.forget_run();
+                self.check_now();
+                self.show_main_view();
+                self.settle_opening();
+            }
+            Err(StoreError::Damaged(e)) => {
+                let name = self.name_of(id);
+                self.error_with(
+                    format!("“{name}” cannot be opened: {e}. It is kept as it is."),
+                    vec![
+                        NoticeAction::DownloadDamaged(id.to_string()),
+                        NoticeAction::DeleteDamaged(id.to_string()),
+                    ],
+                );
+                // The list still shows the project that is open.
+                self.project_id.update(|_| {});
+            }
+            Err(e) => self.error(e.to_string()),
+        }
+    }
+
+    fn name_of(&self, id: &str) -> String {
+        self.projects.with_untracked(|ps| {
+            ps.iter().find(|p| p.id == id).map_or_else(|| id.to_string(), |p| p.name.clone())
+        })
+    }
+
+    /// Saves the open project now: over the revision it was opened at, or as a new
+    /// project when it is not stored yet.
+    pub fn save(&self) {
+        let project = self.project.get_untracked();
+        let Some(id) = self.project_id.get_untracked() else {
+            match store().add(&project, now_ms()) {
+                Ok((id, rev)) => {
+                    self.project_id.set(Some(id));
+                    self.project_rev.set_value(Some(rev));
+                    self.refresh_list();
+                    self.info(format!("“{}” is saved now.", project.name));
+                }
+                Err(e) => self.error_with(format!("Not saved: {e}."), vec![NoticeAction::Export]),
+            }
+            return;
+        };
+        let base = self.project_rev.get_value();
+        match store().save(&id, &project, base, now_ms()) {
+            Ok(rev) => {
+                self.project_rev.set_value(Some(rev));
+                self.refresh_list();
+            }
+            Err(StoreError::Conflict { stored, .. }) => self.show_conflict(stored.is_some()),
+            Err(e) => self.error_with(format!("Not saved: {e}."), vec![NoticeAction::Export]),
+        }
+    }
+
+    /// Tells the user that another tab changed (or deleted) the open project and offers
+    /// the choices.
+    fn show_conflict(&self, still_stored: bool) {
+        let name = self.project.with_untracked(|p| p.name.clone());
+        if still_stored {
+            self.error_with(
+                format!("“{name}” was changed in another tab. Changes made here are not saved until you choose."),
+                vec![NoticeAction::LoadTheirs, NoticeAction::KeepMine, NoticeAction::SaveAsNew],
+            );
+        } else {
+            self.error_with(
+                format!("“{name}” was deleted in another tab. Changes made here are not saved until you choose."),
+                vec![NoticeAction::SaveAsNew, NoticeAction::Export],
+            );
+        }
+    }
+
+    /// Called on the window's `storage` event: another tab changed the store.
+    fn storage_changed(&self) {
+        self.refresh_list();
+        let Some(id) = self.project_id.get_untracked() else { return };
+        let Ok(stored) = store().current_rev(&id) else { return };
+        if stored != self.project_rev.get_value() {
+            self.show_conflict(stored.is_some());
+        }
+    }
+
+    /// Listens for changes other tabs make to the store.
+    pub(super) fn watch_other_tabs(&self) {
+        let Some(window) = web_sys::window() else { return };
+        let state = *self;
+        let listener =
+            Closure::<dyn Fn(web_sys::StorageEvent)>::new(move |ev: web_sys::StorageEvent| {
+                let ours = ev.key().is_none_or(|k| ProjectStore::<LocalStorage>::is_store_key(&k));
+                if ours && state.project.try_get_untracked().is_some() {
+                    state.storage_changed();
+                }
+            });
+        let _ =
+            window.add_event_listener_with_callback("storage", listener.as_ref().unchecked_ref());
+        // The listener lives as long as the page (the app is never unmounted).
+        listener.forget();
+        // Leaving the page normally (reload, close) is not a page that stopped.
+        let leaving = Closure::<dyn Fn()>::new(|| {
+            if !PANICKED.load(std::sync::atomic::Ordering::SeqCst) {
+                let _ = store().clear_opening();
+            }
+        });
+        let _ =
+            window.add_event_listener_with_callback("pagehide", leaving.as_ref().unchecked_ref());
+        leaving.forget();
+    }
+
+    /// Does what a banner button offers.
+    pub fn act(&self, action: &NoticeAction) {
+        self.notice.set(None);
+        match action {
+            NoticeAction::Export => self.export_project(),
+            NoticeAction::LoadTheirs => {
+                if let Some(id) = self.project_id.get_untracked() {
+                    self.open(&id);
+                    self.info("Opened the version saved in the other tab.");
+                }
+            }
+            NoticeAction::KeepMine => {
+                let Some(id) = self.project_id.get_untracked() else { return };
+                match store().current_rev(&id) {
+                    Ok(rev) => {
+                        self.project_rev.set_value(rev);
+                        self.save();
+                    }
+                    Err(e) => self.error(e.to_string()),
+                }
+            }
+            NoticeAction::SaveAsNew => {
+                let mut project = self.project.get_untracked();
+                project.name = format!("{} (this tab)", project.name);
+                let name = project.name.clone();
+                if self.add_and_open(project) {
+                    self.info(format!("Saved as “{name}”."));
+                }
+            }
+            NoticeAction::DownloadDamaged(id) => match store().raw(id) {
+                Ok(text) => {
+                    let file = format!("{} (damaged).txt", self.name_of(id));
+                    if let Err(e) = download(&project_file_name(&file), "text/plain", &text) {
+                        self.error(e);
+                    }
+                }
+                Err(e) => self.error(e.to_string()),
+            },
+            NoticeAction::DeleteDamaged(id) => {
+                let name = self.name_of(id);
+                match store().delete(id) {
+                    Ok(()) => {
+                        self.refresh_list();
+                        self.info(format!("Deleted the damaged project “{name}”."));
+                    }
+                    Err(e) => self.error(e.to_string()),
+                }
+            }
+            NoticeAction::OpenShared(fragment) => {
+                self.open_shared(fragment);
+            }
+        }
+    }
+
+    /// Offers the open project as a project file download.
+    pub fn export_project(&self) {
+        let (name, text) = self.project.with_untracked(|p| (p.name.clone(), p.to_file()));
+        if let Err(e) = download(&project_file_name(&name), "application/json", &text) {
+            self.error(format!("Could not export the project: {e}"));
+        }
+    }
+
+    /// Renames the open project.
+    pub fn rename(&self, name: &str) {
+        let name = name.trim();
+        if name.is_empty() {
+            return;
+        }
+        self.project.update(|p| p.name = name.to_string());
+        self.save();
+    }
+
+    /// Copies the open project and opens the copy.
+    pub fn duplicate(&self) {
+        let mut p = self.project.get_untracked();
+        p.name = format!("{} (copy)", p.name);
+        self.add_and_open(p);
+    }
+
+    /// Deletes the open project and opens another (or a new one).
+    pub fn delete_current(&self) {
+        if let Some(id) = self.project_id.get_untracked() {
+            if let Err(e) = store().delete(&id) {
+                self.error(e.to_string());
+                return;
+            }
+        }
+        self.project_id.set(None);
+        self.project_rev.set_value(None);
+        self.refresh_list();
+        let damaged = self.damaged.get_untracked();
+        let next = self.projects.with_untracked(|ps| {
+            ps.iter().find(|p| !damaged.contains_key(&p.id)).map(|p| p.id.clone())
+        });
+        match next {
+            Some(id) => self.open(&id),
+            None => {
+                self.add_and_open(Project::new("My first project"));
+            }
+        }
+    }
+
+    /// The share link of the open project.
+    pub fn share_link(&self) -> String {
+        let fragment = encode_share(&self.project.get_untracked());
+        let base = web_sys::window()
+            .and_then(|w| w.location().href().ok())
+            .map(|h| h.split('#').next().unwrap_or_default().to_string())
+            .unwrap_or_default();
+        format!("{base}#{fragment}")
+    }
+}
+
+fn clear_fragment() {
+    if let Some(w) = web_sys::window() {
+        let url = w.location().href().unwrap_or_default();
+        let base = url.split('#').next().unwrap_or_default().to_string();
+        if let Ok(history) = w.history() {
+            let _ = history.replace_state_with_url(&wasm_bindgen::JsValue::NULL, "", Some(&base));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn file_names_and_share_marks() {
+        assert_eq!(project_file_name("a/b: c"), "a_b_ c.plcproj.json");
+        assert_eq!(project_file_name("  "), "project.plcproj.json");
+        assert_eq!(share_mark("#p=abc"), share_mark("#p=abc"));
+        assert_ne!(share_mark("#p=abc"), share_mark("#p=abd"));
+    }
+}
