@@ -5,6 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 (cd web && trunk build --release)
+node scripts/csp.mjs dist/index.html
 total=0
 for f in dist/*.wasm dist/*.js dist/*.css; do
   [ -f "$f" ] || continue
