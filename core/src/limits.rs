@@ -50,3 +50,52 @@ pub const WATCHDOG_CELLS_PER_UNIT: u64 = 8;
 /// … and per this many bytes a string instruction reads or writes (string functions
 /// look at every byte; FIND is linear, Knuth–Morris–Pratt).
 pub const WATCHDOG_BYTES_PER_UNIT: u64 = 8;
+
+/// The most memory the timeline's recording may use, in bytes (estimated per sample: 16
+/// bytes per elementary value, 16 plus the declared length for a string). A trace keeps
+/// fewer samples than asked when its samples are large.
+pub const TRACE_BUDGET_BYTES: usize = 32 << 20;
+
+/// Longest STRING the checker accepts, in characters.
+pub const MAX_STRING_LEN: i64 = 65_535;
+
+/// Most elements the checker accepts in one array (sizes are computed in checked
+/// arithmetic; a larger or overflowing size is E0170).
+pub const MAX_ARRAY_ELEMENTS: u64 = 1 << 22;
+
+/// The largest memory image the compiler produces, in 8-byte cells (128 MiB).
+pub const MAX_CELLS: u64 = 16 * 1024 * 1024;
+
+/// The default watchdog budget: work units one scan may use (an instruction is one unit;
+/// array copies and string instructions are charged by size, see below).
+pub const DEFAULT_WATCHDOG: u64 = 10_000_000;
+
+/// The deepest nesting of calls the VM allows (deeper is a FAULT, not a stack overflow:
+/// calls do not recurse on the native stack).
+pub const MAX_CALL_DEPTH: usize = 64;
+
+/// The largest project a share link may expand to, in bytes (a decompression bomb is
+/// refused as it inflates).
+pub const MAX_PROJECT_BYTES: usize = 4 << 20;
+
+/// The markings `plc petri analyze` explores by default.
+pub const PETRI_DEFAULT_BUDGET: usize = 100_000;
+
+/// The markings the analysis run when a net is compiled explores at most (for warnings).
+pub const PETRI_COMPILE_BUDGET: usize = 10_000;
+
+/// The markings the web app's analysis panel explores at most.
+pub const PETRI_PANEL_BUDGET: usize = 20_000;
+
+/// At most this many marking entries (markings × places) are kept by the compile-time
+/// analysis and the web panel: a 10,000-place net explores 500 markings, not 10,000 (which
+/// would take 800 MB).
+pub const PETRI_MARKING_CELLS: usize = 5_000_000;
+
+/// More rows than this in the semiflow table and its computation stops (the count of
+/// minimal semiflows can grow exponentially with the net).
+pub const SEMIFLOW_ROW_LIMIT: usize = 20_000;
+
+/// The most situations (sets of active steps) explored per SFC chart by the structure
+/// check.
+pub const SFC_MAX_SITUATIONS: usize = 20_000;

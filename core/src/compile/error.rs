@@ -39,8 +39,7 @@ impl fmt::Display for CompileError {
 
 impl std::error::Error for CompileError {}
 
-/// The largest memory image the compiler produces, in cells.
-pub const MAX_CELLS: u64 = 16 * 1024 * 1024;
+pub use crate::limits::MAX_CELLS;
 
 pub(crate) fn too_large(cells: u64) -> CompileError {
     CompileError::MemoryTooLarge { cells }

@@ -22,8 +22,7 @@ use super::net::{Marking, PtNet};
 use super::reach::{explore_with, scc, OMEGA};
 use super::semiflows::{is_semiflow, minimal_semiflows, Semiflow, Semiflows};
 
-/// The default number of markings the analysis explores.
-pub const DEFAULT_BUDGET: usize = 100_000;
+pub use crate::limits::PETRI_DEFAULT_BUDGET as DEFAULT_BUDGET;
 
 /// A reachable marking where no transition is enabled.
 #[derive(Debug, Clone, PartialEq, Eq)]

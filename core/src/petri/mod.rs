@@ -31,17 +31,19 @@ pub use report::{conflicts, text_report, Conflict};
 
 use crate::diagnostics::Code;
 
-/// The state budget of the analysis run when a net is compiled (for its warnings).
-pub const COMPILE_BUDGET: usize = 10_000;
-
-/// At most this many marking entries (markings × places) are kept by the analysis run when
-/// a net is compiled: a 10,000-place net explores 500 markings, not 10,000 (which would
-/// take 800 MB).
-pub const COMPILE_CELLS: usize = 5_000_000;
+pub use crate::limits::{
+    PETRI_COMPILE_BUDGET as COMPILE_BUDGET, PETRI_MARKING_CELLS as COMPILE_CELLS,
+};
 
 /// The state budget of the analysis run when a net of `places` places is compiled.
 pub fn compile_budget(places: usize) -> usize {
     COMPILE_BUDGET.min(COMPILE_CELLS / places.max(1)).max(1)
+}
+
+/// The state budget of the web app's analysis panel for a net of `places` places: larger
+/// than when compiling, and scaled down by the net's size the same way.
+pub fn panel_budget(places: usize) -> usize {
+    crate::limits::PETRI_PANEL_BUDGET.min(COMPILE_CELLS / places.max(1)).max(1)
 }
 
 /// A Petri net POU ready to run: its net, processes and generated PROGRAM.

@@ -11,9 +11,7 @@
 /// A semiflow: a non-negative integer vector (over places or over transitions).
 pub type Semiflow = Vec<u64>;
 
-/// More rows than this in the table and the computation stops (the count of minimal
-/// semiflows can grow exponentially with the net).
-pub const ROW_LIMIT: usize = 20_000;
+pub use crate::limits::SEMIFLOW_ROW_LIMIT as ROW_LIMIT;
 
 /// The outcome: the semiflows found, and whether the row limit or an integer overflow cut
 /// the computation short.

@@ -10,8 +10,7 @@ use super::{Project, ProjectError};
 /// The fragment prefix of a share link: `#p=<data>`.
 pub const SHARE_PREFIX: &str = "p=";
 
-/// The largest project a link may expand to (protects against decompression bombs).
-const MAX_PROJECT_BYTES: usize = 4 << 20;
+use crate::limits::MAX_PROJECT_BYTES;
 
 /// Why a share link could not be opened.
 #[derive(Debug, Clone, PartialEq, Eq)]

@@ -8,10 +8,7 @@ use crate::diagnostics::Code;
 use crate::limits::MAX_TYPE_NESTING;
 use crate::syntax::{self as ast, AddressSize, PouKind, TypeRef, VarSection};
 
-/// Longest STRING the checker accepts.
-const MAX_STRING_LEN: i64 = 65_535;
-/// Most array elements the checker accepts in one array.
-const MAX_ARRAY_ELEMENTS: u64 = 1 << 22;
+use crate::limits::{MAX_ARRAY_ELEMENTS, MAX_STRING_LEN};
 
 impl<'a> Checker<'a> {
     /// Resolves the TYPE declared under `key` (upper case), once.

@@ -18,8 +18,7 @@ use std::collections::HashMap;
 use super::chart::Chart;
 use crate::diagnostics::{Code, Diagnostic};
 
-/// The most situations explored per chart.
-pub(super) const MAX_SITUATIONS: usize = 20_000;
+pub(super) use crate::limits::SFC_MAX_SITUATIONS as MAX_SITUATIONS;
 
 /// A set of active steps.
 type Situation = Vec<u64>;

@@ -16,11 +16,11 @@ use std::fmt;
 pub use crate::compile::CompileError;
 use crate::compile::{self, ConditionId, Executable, Slot};
 use crate::diagnostics::{Diagnostic, Span};
-use crate::semantic::{self, InitValue, PouId, Program};
+use crate::limits;
+use crate::semantic::{self, InitValue, PouId, Program, Type};
 use crate::vm::{self, Fault, Machine, RuntimeError, SysState, Value};
 
-/// The default watchdog budget: instructions one scan may execute.
-pub const DEFAULT_WATCHDOG: u64 = 10_000_000;
+pub use crate::limits::DEFAULT_WATCHDOG;
 
 /// Why the PLC stopped in FAULT.
 #[derive(Debug, Clone, PartialEq)]
@@ -82,6 +82,9 @@ pub enum SimError {
     BadCondition(Vec<Diagnostic>),
     /// No breakpoint with that id.
     UnknownBreakpoint(BreakpointId),
+    /// The variable is an array, structure or FB instance: the timeline records single
+    /// values.
+    NotTraceable(String),
 }
 
 impl fmt::Display for SimError {
@@ -95,6 +98,10 @@ impl fmt::Display for SimError {
                 write!(f, "breakpoint condition: {first}")
             }
             SimError::UnknownBreakpoint(id) => write!(f, "no breakpoint #{}", id.0),
+            SimError::NotTraceable(p) => write!(
+                f,
+                "`{p}` is not a single value: the timeline records single values, so choose its elements or members (e.g. `{p}[1]` or `{p}.x`)"
+            ),
         }
     }
 }
@@ -464,14 +471,27 @@ impl Simulator {
         }
     }
 
-    /// Starts recording `paths` after every scan, keeping the last `capacity` samples.
+    /// Starts recording `paths` after every scan, keeping the last `capacity` samples,
+    /// or fewer when that many would take more than [`limits::TRACE_BUDGET_BYTES`].
     pub fn set_trace(&mut self, paths: &[&str], capacity: usize) -> Result<(), SimError> {
         let mut slots = Vec::new();
+        let mut sample_bytes = 0usize;
         for p in paths {
+            sample_bytes = sample_bytes.saturating_add(self.trace_cost(p)?);
             slots.push((p.to_string(), self.slot(p)?));
         }
-        self.trace = Trace::new(slots, capacity);
+        let affordable = limits::TRACE_BUDGET_BYTES / sample_bytes.max(1);
+        self.trace = Trace::new(slots, capacity.min(affordable.max(1)));
         Ok(())
+    }
+
+    /// The bytes one recorded value of `path` is counted as, or why it cannot be recorded.
+    pub fn trace_cost(&self, path: &str) -> Result<usize, SimError> {
+        match self.slot(path)?.ty {
+            Type::Elem(_) | Type::Enum(_) => Ok(16),
+            Type::Str { wide, len } => Ok(16 + len as usize * if wide { 2 } else { 1 }),
+            _ => Err(SimError::NotTraceable(path.to_string())),
+        }
     }
 
     /// The trace recorded so far.

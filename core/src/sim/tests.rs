@@ -238,3 +238,22 @@ fn the_watchdog_charges_string_functions_by_their_length() {
     // fifth of the budget (counted by instructions, about 250,000 searches fit).
     assert!((600..=1_100).contains(&n), "{n} searches");
 }
+
+#[test]
+fn the_trace_stays_within_its_memory_budget() {
+    // Issue 11: tracing a whole 4M-element array kept 20,000 copies of it.
+    let mut s = sim("PROGRAM Main VAR big : ARRAY[1..4000000] OF LINT; s : STRING[60000]; \
+         n : INT; END_VAR n := n + 1; big[1] := n; END_PROGRAM");
+    let e = s.set_trace(&["big"], 20_000).unwrap_err();
+    assert!(matches!(e, SimError::NotTraceable(_)), "{e}");
+    assert!(e.to_string().contains("big[1]"), "{e}");
+    // Elements are fine; a long string gets fewer samples than asked, within the budget.
+    s.set_trace(&["big[1]", "n"], 20_000).unwrap();
+    assert_eq!(s.trace().capacity(), 20_000);
+    s.set_trace(&["s", "n"], 20_000).unwrap();
+    let per_sample = s.trace_cost("s").unwrap() + s.trace_cost("n").unwrap();
+    assert!(s.trace().capacity() * per_sample <= crate::limits::TRACE_BUDGET_BYTES);
+    assert!(s.trace().capacity() >= 100, "still a useful window");
+    s.run_scans(3);
+    assert_eq!(s.trace().len(), 3);
+}

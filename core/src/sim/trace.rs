@@ -35,6 +35,11 @@ impl Trace {
         !self.slots.is_empty() && self.capacity > 0
     }
 
+    /// The most samples kept (the oldest are dropped).
+    pub fn capacity(&self) -> usize {
+        self.capacity
+    }
+
     /// The traced variables' paths, in order.
     pub fn paths(&self) -> impl Iterator<Item = &str> {
         self.slots.iter().map(|(p, _)| p.as_str())

@@ -23,8 +23,7 @@ use crate::semantic::types::PouId;
 use crate::values::arith;
 use crate::values::Fault;
 
-/// The deepest nesting of calls the VM allows.
-pub const MAX_CALL_DEPTH: usize = 64;
+pub use crate::limits::MAX_CALL_DEPTH;
 
 /// The system state the simulator passes to each scan.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -60,10 +60,11 @@ fn line_of(text: &str, offset: usize) -> u32 {
     text.as_bytes()[..end].iter().filter(|&&b| b == b'\n').count() as u32 + 1
 }
 
-/// Records `paths` on the timeline (those the program does not have are left out).
+/// Records `paths` on the timeline (those the program does not have, and arrays or
+/// structures, which the timeline cannot draw, are left out).
 pub(super) fn trace_paths(sim: &mut Simulator, paths: &[String]) {
     let valid: Vec<&str> =
-        paths.iter().map(String::as_str).filter(|p| sim.executable().locate(p).is_some()).collect();
+        paths.iter().map(String::as_str).filter(|p| sim.trace_cost(p).is_ok()).collect();
     let _ = sim.set_trace(&valid, TRACE_CAPACITY);
 }
 

@@ -159,6 +159,8 @@ pub struct AppState {
     pub marking_before_last: StoredValue<Option<(u64, Vec<u32>)>>,
     /// Virtual nanoseconds owed to the run loop but not yet scanned (less than one cycle).
     pending_ns: StoredValue<f64>,
+    /// How many scans the run loop runs between clock readings (adapted to scan time).
+    batch: StoredValue<u64>,
 }
 
 impl AppState {
@@ -192,6 +194,7 @@ impl AppState {
             running_places: StoredValue::new(None),
             marking_before_last: StoredValue::new(None),
             pending_ns: StoredValue::new(0.0),
+            batch: StoredValue::new(1),
         };
         state.open_initial_project();
         state.watch_other_tabs();

@@ -13,6 +13,12 @@ use plc_core::sim::{ScanOutcome, SimState, Simulator};
 
 use super::{AppState, Notice, RunMode, Speed};
 
+/// The wall time one batch of scans aims at, in milliseconds.
+const BATCH_MS: f64 = 1.0;
+
+/// The most scans in one batch.
+const MAX_BATCH: u64 = 4096;
+
 fn perf_now() -> f64 {
     web_sys::window().and_then(|w| w.performance()).map_or(0.0, |p| p.now())
 }
@@ -37,6 +43,25 @@ impl AppState {
             .with_value(|p| p.as_ref().map(|p| (sim.scan_count(), marking_of(sim, p))));
         self.marking_before_last.set_value(before);
         sim.run_scans(1)
+    }
+
+    /// Runs a batch of `n` scans and sizes the next batch from how long it took, so that a
+    /// batch stays near [`BATCH_MS`] of wall time: many cheap scans per clock reading, and
+    /// one scan at a time when scans are slow (the frame's budget is checked between
+    /// batches, so a slow program cannot hold the page for more than about one scan).
+    fn timed_batch(&self, sim: &mut Simulator, n: u64) -> ScanOutcome {
+        let start = perf_now();
+        let outcome = self.scan_batch(sim, n);
+        let took = perf_now() - start;
+        let next = if took > 2.0 * BATCH_MS {
+            n / 2
+        } else if took < BATCH_MS / 2.0 {
+            n * 2
+        } else {
+            n
+        };
+        self.batch.set_value(next.clamp(1, MAX_BATCH));
+        outcome
     }
 
     fn after_outcome(&self, outcome: ScanOutcome) {
@@ -158,8 +183,8 @@ impl AppState {
                     self.pending_ns.set_value(owed - scans * cycle);
                     let mut left = scans as u64;
                     while left > 0 && perf_now() < budget_end {
-                        let n = left.min(64);
-                        outcome = self.scan_batch(sim, n);
+                        let n = left.min(self.batch.get_value());
+                        outcome = self.timed_batch(sim, n);
                         left -= n;
                         if outcome != ScanOutcome::Completed {
                             break;
@@ -168,7 +193,7 @@ impl AppState {
                 }
                 Speed::Max => {
                     while perf_now() < budget_end {
-                        outcome = self.scan_batch(sim, 256);
+                        outcome = self.timed_batch(sim, self.batch.get_value());
                         if outcome != ScanOutcome::Completed {
                             break;
                         }

@@ -3,11 +3,7 @@
 //! state-machine component covers. Computed by the core when the panel is opened.
 
 use leptos::prelude::*;
-use plc_core::petri::{analyze, build, NetAnalysis, PetriPou, PtNet};
-
-/// Markings the panel explores at most (the CLI's default is larger; this keeps the page
-/// responsive).
-const BUDGET: usize = 20_000;
+use plc_core::petri::{analyze, build, panel_budget, NetAnalysis, PetriPou, PtNet};
 
 fn verdict(v: Option<bool>) -> (&'static str, &'static str) {
     match v {
@@ -105,7 +101,7 @@ pub fn AnalysisPanel(pou: Memo<Option<PetriPou>>) -> impl IntoView {
         }
         pou.with(|p| match p.as_ref().map(|p| build(&p.net)) {
             Some(Ok(net)) => {
-                let a = analyze(&net, BUDGET);
+                let a = analyze(&net, panel_budget(net.places()));
                 summary(&net, &a).into_any()
             }
             Some(Err(_)) => {
