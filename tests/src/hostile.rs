@@ -19,6 +19,13 @@ pub enum Outcome {
     },
     /// The file is refused when opened, with a message containing this text.
     Refused(&'static str),
+    /// The PLC stops with a FAULT at this 1-based line whose message contains the text.
+    Faults {
+        /// The line of the faulting statement.
+        line: u32,
+        /// Part of the message.
+        text: &'static str,
+    },
     /// The program runs and `var` ends with this JSON value.
     Runs {
         /// The variable.
@@ -88,6 +95,16 @@ fn wide_sfc(n: usize) -> String {
         s += &format!("TRANSITION FROM X{i} TO Start := TRUE; END_TRANSITION\n");
     }
     s + "END_PROGRAM\n"
+}
+
+/// A CASE of `n` labels 0, 2, 4, … and a last range overlapping the one before it.
+fn wide_case(n: usize) -> String {
+    let mut src = String::from("PROGRAM Main VAR x, y : DINT; END_VAR\nCASE x OF\n");
+    for k in 0..n {
+        src.push_str(&format!("{}: y := {k};\n", 2 * k));
+    }
+    src.push_str(&format!("{}..{}: y := 0;\nEND_CASE;\nEND_PROGRAM\n", 2 * n - 3, 2 * n - 1));
+    src
 }
 
 fn deep_xml(depth: usize) -> String {
@@ -164,6 +181,48 @@ pub fn all() -> Vec<Hostile> {
             outcome: Outcome::Runs { var: "finished", value: true.into() },
         },
         Hostile {
+            name: "an array whose size overflows 64 bits",
+            text: "PROGRAM Main VAR a : ARRAY[-9223372036854775808..9223372036854775807] OF LINT;\n\
+                   b : LINT; i : LINT; END_VAR a[i] := 7; END_PROGRAM"
+                .to_string(),
+            outcome: error("E0170", 1),
+        },
+        Hostile {
+            name: "a CASE of 50,000 labels with one overlap at the end",
+            text: wide_case(50_000),
+            outcome: error("E0166", 50_003),
+        },
+        Hostile {
+            name: "a loop of whole-array copies",
+            text: "PROGRAM Main VAR a, b : ARRAY[1..262144] OF LINT; n : DINT; END_VAR\n\
+                   WHILE TRUE DO a := b; n := n + 1; END_WHILE; END_PROGRAM"
+                .to_string(),
+            outcome: Outcome::Faults { line: 2, text: "watchdog" },
+        },
+        Hostile {
+            name: "a loop of FIND on 60,000-character strings",
+            text: format!(
+                "PROGRAM Main VAR s : STRING[65535] := '{}';\n\
+                 t : STRING[65535] := '{}b'; k : DINT; END_VAR\n\
+                 WHILE TRUE DO k := FIND(s, t); END_WHILE; END_PROGRAM",
+                "a".repeat(60_000),
+                "a".repeat(30_000)
+            ),
+            outcome: Outcome::Faults { line: 3, text: "watchdog" },
+        },
+        Hostile {
+            name: "a project file with a cycle time of 0 ms",
+            text: r#"{"schema":1,"name":"p","source":"PROGRAM Main END_PROGRAM","settings":{"cycle_ms":0}}"#
+                .to_string(),
+            outcome: Outcome::Refused("1 to 60000 ms"),
+        },
+        Hostile {
+            name: "a project file with a cycle time that overflows the clock",
+            text: r#"{"schema":1,"name":"p","source":"PROGRAM Main END_PROGRAM","settings":{"cycle_ms":18446744073709551615}}"#
+                .to_string(),
+            outcome: Outcome::Refused("1 to 60000 ms"),
+        },
+        Hostile {
             name: "PLCopen XML nested 200,000 deep",
             text: deep_xml(200_000),
             outcome: Outcome::Refused("nested more than 200 deep at line 1"),
@@ -179,7 +238,7 @@ pub fn all() -> Vec<Hostile> {
 /// Opens `text` as the CLI does (`plc run FILE`) and runs it for 3 scans.
 fn run(text: &str) -> Result<RunReport, String> {
     let options = RunOptions { cycles: 3, ..Default::default() };
-    if text.starts_with("<?xml") {
+    if text.starts_with("<?xml") || text.starts_with('{') {
         let opened = open_text("hostile", text).map_err(|e| e.to_string())?;
         return Ok(run_project(&opened.project, &options));
     }
@@ -197,6 +256,10 @@ pub fn check_all() -> Vec<String> {
                     && r.diagnostics.iter().any(|d| d.code == *code && d.line == *line)
             }
             (Outcome::Refused(text), Err(e)) => e.contains(text),
+            (Outcome::Faults { line, text }, Ok(r)) => {
+                r.status == RunStatus::Fault
+                    && r.fault.as_ref().is_some_and(|f| f.line == *line && f.message.contains(text))
+            }
             (Outcome::Runs { var, value }, Ok(r)) => {
                 r.status == RunStatus::Ok && r.vars.get(*var) == Some(value)
             }

@@ -61,7 +61,7 @@ impl fmt::Display for Fault {
             Fault::ForStepZero => f.write_str("FOR loop step is zero: the loop would never end"),
             Fault::Watchdog { budget } => write!(
                 f,
-                "watchdog: the scan ran more than {budget} instructions (an endless loop?)"
+                "watchdog: the scan did more than {budget} units of work (an instruction, 8 array cells or 8 string bytes each): an endless loop?"
             ),
             Fault::CallDepth => f.write_str("calls are nested too deeply"),
             Fault::BadConversion { text, target } => {
