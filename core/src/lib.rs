@@ -37,6 +37,7 @@ pub mod export;
 pub mod ladder;
 pub mod limits;
 pub mod open;
+pub mod order;
 pub mod petri;
 pub mod plcopen;
 pub mod pnml;

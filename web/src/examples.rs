@@ -1,10 +1,17 @@
-//! The shipped examples (`examples/*.st` and `*.plcproj.json`, embedded at build time by
-//! `build.rs`): their menu titles, and opening one as a new project.
+//! The shipped examples (`examples/*.st` and `*.plcproj.json`): the menu, listed at build
+//! time by `build.rs`, and opening one as a new project. The files are copied next to the
+//! page (`examples/` in `dist/`) and fetched when chosen.
 
-use plc_core::open::open_text;
+use plc_core::open::open_plain;
 use plc_core::project::Project;
+use wasm_bindgen::JsCast;
+use wasm_bindgen_futures::JsFuture;
 
-mod files {
+mod naming {
+    #![allow(dead_code)]
+    include!("examples/naming.rs");
+}
+mod list {
     include!(concat!(env!("OUT_DIR"), "/examples.rs"));
 }
 
@@ -14,69 +21,45 @@ pub struct Example {
     /// Its file name in `examples/`.
     pub file: &'static str,
     /// What the menu shows.
-    pub title: String,
-    /// Ladder projects first, then ST, then Petri nets.
-    rank: u8,
+    pub title: &'static str,
 }
 
-/// The file name without `.plcproj.json` or `.st`.
-fn stem(file: &str) -> &str {
-    file.strip_suffix(".plcproj.json").or_else(|| file.strip_suffix(".st")).unwrap_or(file)
-}
-
-/// A file stem as words: `sfc-weighing` → `SFC weighing`.
-fn humanise(stem: &str) -> String {
-    let words: Vec<String> = stem
-        .split(['-', '_'])
-        .filter(|w| !w.is_empty())
-        .enumerate()
-        .map(|(i, w)| match w.to_ascii_lowercase().as_str() {
-            "sfc" | "st" | "ld" | "plc" => w.to_ascii_uppercase(),
-            _ if i == 0 => {
-                let mut c = w.chars();
-                c.next().map(|f| f.to_uppercase().chain(c).collect()).unwrap_or_default()
-            }
-            _ => w.to_string(),
-        })
-        .collect();
-    words.join(" ")
-}
-
-/// The menu title and rank of an example file.
-pub fn describe(file: &'static str, text: &str) -> Example {
-    match Project::from_file(text) {
-        Ok(p) if file.ends_with(".json") => {
-            let rank = if !p.ladder.is_empty() {
-                0
-            } else if !p.petri.is_empty() {
-                2
-            } else {
-                1
-            };
-            Example { file, title: p.name, rank }
-        }
-        _ => Example { file, title: format!("{} (ST)", humanise(stem(file))), rank: 1 },
-    }
-}
-
-/// Every shipped example, in menu order.
+/// Every shipped example, in menu order (ladder projects, ST, then Petri nets).
 pub fn examples() -> Vec<Example> {
-    let mut list: Vec<Example> = files::FILES.iter().map(|(f, t)| describe(f, t)).collect();
-    list.sort_by(|a, b| a.rank.cmp(&b.rank).then_with(|| a.title.cmp(&b.title)));
-    list
+    list::EXAMPLES.iter().map(|&(file, title, _)| Example { file, title }).collect()
 }
 
-/// The example `file` as a new project.
-pub fn open(file: &str) -> Result<Project, String> {
-    let (name, text) = files::FILES
-        .iter()
-        .find(|(f, _)| *f == file)
-        .ok_or_else(|| format!("there is no example {file}"))?;
-    let mut project = open_text(&humanise(stem(name)), text).map_err(|e| e.to_string())?.project;
+/// The example `file` (its text) as a new project.
+pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
+    let name = naming::humanise(naming::stem(file));
+    let mut project = open_plain(&name, text)
+        .map_err(|e| e.to_string())?
+        .ok_or_else(|| format!("{file} is not a project file or ST"))?
+        .project;
     if project.name.trim().is_empty() {
-        project.name = humanise(stem(name));
+        project.name = name;
     }
     Ok(project)
+}
+
+/// Fetches the example `file` from the site and opens it as a new project.
+pub async fn open(file: &str) -> Result<Project, String> {
+    if !list::EXAMPLES.iter().any(|(f, _, _)| *f == file) {
+        return Err(format!("there is no example {file}"));
+    }
+    let fail = |_| format!("could not load the example {file} from the site");
+    let window = web_sys::window().ok_or("no window")?;
+    let response: web_sys::Response =
+        JsFuture::from(window.fetch_with_str(&format!("examples/{file}")))
+            .await
+            .map_err(fail)?
+            .dyn_into()
+            .map_err(|_| fail(wasm_bindgen::JsValue::NULL))?;
+    if !response.ok() {
+        return Err(format!("could not load the example {file} (HTTP {})", response.status()));
+    }
+    let text = JsFuture::from(response.text().map_err(fail)?).await.map_err(fail)?;
+    project_of(file, &text.as_string().unwrap_or_default())
 }
 
 #[cfg(test)]

@@ -201,7 +201,7 @@ pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError
         });
         retain_ranges(&mut exe.lay, p, g, addr, &mut ranges)?;
     }
-    ranges.sort_unstable();
+    crate::order::sort(&mut ranges);
     let mut merged: Vec<(u32, u32)> = Vec::new();
     for (s, n) in ranges {
         match merged.last_mut() {

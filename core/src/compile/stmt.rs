@@ -343,7 +343,7 @@ fn build_table(mut ranges: Vec<(i64, i64, u32)>, covered: i128, default: u32) ->
         return CaseTable::Dense { low: lo, targets, default };
     }
     // Sorted, overlaps resolved in favour of the earlier arm (smaller target).
-    ranges.sort_by_key(|r| (r.0, r.2));
+    crate::order::sort_by_key(&mut ranges, |r| (r.0, r.2));
     let mut out: Vec<(i64, i64, u32)> = Vec::with_capacity(ranges.len());
     for (a, b, t) in ranges {
         match out.last() {

@@ -22,7 +22,7 @@ pub(crate) fn mark_trusted(exe: &mut Executable, kinds: &[PouKind]) {
     for (k, &entry) in exe.conditions.iter().enumerate() {
         starts.push((entry as usize, Owner::Condition(k)));
     }
-    starts.sort_by_key(|s| s.0);
+    crate::order::sort_by_key(&mut starts, |s| s.0);
     let image = exe.out.init.len();
     let code_len = exe.out.code.len();
     exe.condition_trusted = vec![false; exe.conditions.len()];

@@ -123,7 +123,7 @@ fn input_values<'a>(b: &'a Block, wired: &[Option<String>]) -> Vec<(&'a str, Str
         n.get(..2).filter(|p| p.eq_ignore_ascii_case("IN")).and_then(|_| n[2..].parse().ok())
     };
     if v.iter().all(|(n, _)| number(n).is_some()) {
-        v.sort_by_key(|(n, _)| number(n));
+        crate::order::sort_by_key(&mut v, |(n, _)| number(n));
     }
     v
 }

@@ -174,7 +174,7 @@ impl<'a> Network<'a> {
             .map(|&(_, v)| v)
             .filter(|&v| v < n && !edges.iter().any(|&(u, _)| u == v))
             .collect();
-        ends.sort_unstable();
+        crate::order::sort(&mut ends);
         ends.dedup();
         sinks.extend(ends);
         for sink in sinks {
@@ -207,7 +207,7 @@ impl<'a> Network<'a> {
     fn stuck_node(&self, mut edges: Vec<(usize, usize)>, sink: usize) -> Option<usize> {
         loop {
             let before = edges.len();
-            edges.sort_unstable();
+            crate::order::sort(&mut edges);
             edges.dedup();
             let mut changed = edges.len() != before;
             let mut inner: Vec<usize> = edges
@@ -215,7 +215,7 @@ impl<'a> Network<'a> {
                 .flat_map(|&(u, v)| [u, v])
                 .filter(|&x| x != RAIL && x != sink)
                 .collect();
-            inner.sort_unstable();
+            crate::order::sort(&mut inner);
             inner.dedup();
             for x in inner {
                 let ins: Vec<usize> = (0..edges.len()).filter(|&i| edges[i].1 == x).collect();

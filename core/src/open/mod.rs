@@ -69,30 +69,38 @@ pub fn file_kind(text: &str) -> FileKind {
     }
 }
 
-/// Opens `text` as a project. `name` names the project when the file has no name of its
-/// own (ST text: usually the file name without its extension).
-pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
+/// Opens a project file or ST text without the XML importers, so that a program that links
+/// only this (the web page) stays small; `Ok(None)` for PLCopen XML and PNML, which need
+/// [`open_text`] (the web page runs it in a worker, loaded when a file needs it).
+pub fn open_plain(name: &str, text: &str) -> Result<Option<Opened>, OpenError> {
     let kind = file_kind(text);
-    let (project, warnings) = match kind {
-        FileKind::Project => (Project::from_file(text).map_err(OpenError::Project)?, Vec::new()),
-        FileKind::Pnml => {
-            let pou = crate::pnml::import(text).map_err(OpenError::Pnml)?;
-            let mut project = Project::new(pou.name.clone());
-            project.source.clear();
-            project.petri.push(pou);
-            (project, Vec::new())
-        }
-        FileKind::Plcopen => {
-            let import = crate::plcopen::import(text).map_err(OpenError::Plcopen)?;
-            (import.project, import.warnings)
-        }
+    let project = match kind {
+        FileKind::Project => Project::from_file(text).map_err(OpenError::Project)?,
         FileKind::St => {
             let mut project = Project::new(name);
             project.source = text.to_string();
-            (project, Vec::new())
+            project
         }
+        FileKind::Plcopen | FileKind::Pnml => return Ok(None),
     };
-    Ok(Opened { project, kind, warnings })
+    Ok(Some(Opened { project, kind, warnings: Vec::new() }))
+}
+
+/// Opens `text` as a project. `name` names the project when the file has no name of its
+/// own (ST text: usually the file name without its extension).
+pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
+    if let Some(opened) = open_plain(name, text)? {
+        return Ok(opened);
+    }
+    if file_kind(text) == FileKind::Pnml {
+        let pou = crate::pnml::import(text).map_err(OpenError::Pnml)?;
+        let mut project = Project::new(pou.name.clone());
+        project.source.clear();
+        project.petri.push(pou);
+        return Ok(Opened { project, kind: FileKind::Pnml, warnings: Vec::new() });
+    }
+    let import = crate::plcopen::import(text).map_err(OpenError::Plcopen)?;
+    Ok(Opened { project: import.project, kind: FileKind::Plcopen, warnings: import.warnings })
 }
 
 #[cfg(test)]

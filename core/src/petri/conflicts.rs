@@ -188,7 +188,7 @@ pub fn mutually_exclusive(g1: &str, g2: &str) -> bool {
         .iter()
         .map(|ks| {
             let mut v: Vec<i128> = ks.iter().flat_map(|&k| [k - 1, k, k + 1]).collect();
-            v.sort_unstable();
+            crate::order::sort(&mut v);
             v.dedup();
             v
         })

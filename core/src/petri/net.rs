@@ -197,7 +197,7 @@ pub fn build(net: &Net) -> Result<PtNet, Vec<PetriDiagnostic>> {
         list[t].push((p, arc.weight));
     }
     for list in pre.iter_mut().chain(post.iter_mut()) {
-        list.sort_unstable();
+        crate::order::sort(list);
     }
     check_macro_places(net, &place_index, &mut diags);
     if !diags.is_empty() {

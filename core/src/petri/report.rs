@@ -30,7 +30,7 @@ fn net_conflicts(model: &Net, net: &PtNet) -> Vec<Conflict> {
     let mut out = Vec::new();
     for p in 0..net.places() {
         let mut ts = net.outputs_of_place(p);
-        ts.sort_by_key(|&t| (model.transitions[t].priority, t));
+        crate::order::sort_by_key(&mut ts, |&t| (model.transitions[t].priority, t));
         for (i, &a) in ts.iter().enumerate() {
             for &b in &ts[i + 1..] {
                 let exclusive =

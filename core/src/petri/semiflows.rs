@@ -231,7 +231,7 @@ pub fn minimal_semiflows(matrix: &SparseMatrix) -> Semiflows {
         }
         rows = prune(zero, new, n);
     }
-    let mut flows: Vec<Semiflow> = rows
+    let flows: Vec<Semiflow> = rows
         .into_iter()
         .filter(|r| !r.flow.is_empty())
         .map(|r| {
@@ -242,7 +242,10 @@ pub fn minimal_semiflows(matrix: &SparseMatrix) -> Semiflows {
             y
         })
         .collect();
-    flows.sort_by_cached_key(|f| (f.iter().map(|&x| x == 0).collect::<Vec<_>>(), f.clone()));
+    let mut keyed: Vec<(Vec<bool>, Semiflow)> =
+        flows.into_iter().map(|f| (f.iter().map(|&x| x == 0).collect(), f)).collect();
+    crate::order::sort_by(&mut keyed, |a, b| a.cmp(b));
+    let mut flows: Vec<Semiflow> = keyed.into_iter().map(|(_, f)| f).collect();
     flows.retain(|f| is_semiflow(matrix, f));
     Semiflows { flows, complete }
 }

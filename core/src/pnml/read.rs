@@ -300,7 +300,7 @@ fn default_labels(places: &mut [Place]) {
     all.extend(numbers.iter().flatten());
     let distinct = {
         let mut s = all.clone();
-        s.sort_unstable();
+        crate::order::sort(&mut s);
         s.dedup();
         s.len() == all.len()
     };

@@ -145,7 +145,7 @@ impl Executable {
     pub fn statement_spans(&self, pou: PouId) -> Vec<Span> {
         let mut v: Vec<Span> =
             self.out.debug.iter().filter(|e| e.pou == pou).map(|e| e.span).collect();
-        v.sort_by_key(|s| (s.start, s.end));
+        crate::order::sort_by_key(&mut v, |s| (s.start, s.end));
         v.dedup();
         v
     }

@@ -95,29 +95,94 @@ impl Project {
         }
     }
 
-    /// The project as a project file (pretty JSON).
+    /// The project as a project file (pretty JSON, as `serde_json::to_string_pretty`
+    /// writes it). Written compact and then indented: share links write it compact too,
+    /// so the web app carries one copy of the writer instead of two.
     pub fn to_file(&self) -> String {
-        serde_json::to_string_pretty(self).unwrap_or_default()
+        indent_json(&serde_json::to_string(self).unwrap_or_default())
     }
 
     /// Reads a project file, migrating older schemas.
+    ///
+    /// The text is read twice, first for its schema version alone and then as a whole, both
+    /// straight from the text: a detour through `serde_json::Value` would compile every
+    /// model type's reader a second time (about 12 KB of the web app's download).
     pub fn from_file(text: &str) -> Result<Project, ProjectError> {
-        let value: serde_json::Value =
-            serde_json::from_str(text).map_err(|e| ProjectError::NotJson(e.to_string()))?;
-        let schema = value
-            .get("schema")
-            .and_then(serde_json::Value::as_u64)
-            .ok_or(ProjectError::NotAProject)?;
+        /// Only the schema version (every other field is skipped).
+        #[derive(Deserialize)]
+        struct Header {
+            schema: Option<u64>,
+        }
+        let header: Header = serde_json::from_str(text).map_err(|e| match e.classify() {
+            serde_json::error::Category::Data => ProjectError::NotAProject,
+            _ => ProjectError::NotJson(e.to_string()),
+        })?;
+        let schema = header.schema.ok_or(ProjectError::NotAProject)?;
         if schema > SCHEMA_VERSION as u64 {
             return Err(ProjectError::TooNew(schema));
         }
         let mut project: Project =
-            serde_json::from_value(value).map_err(|e| ProjectError::Invalid(e.to_string()))?;
+            serde_json::from_str(text).map_err(|e| ProjectError::Invalid(e.to_string()))?;
         crate::limits::cycle_ns(project.settings.cycle_ms)
             .map_err(|e| ProjectError::Invalid(format!("settings.cycle_ms: {e}")))?;
         project.schema = SCHEMA_VERSION;
         Ok(project)
     }
+}
+
+/// Indents compact JSON text the way `serde_json::to_string_pretty` does: two spaces per
+/// level, `": "` after keys, one element per line, `[]` and `{}` when empty.
+fn indent_json(compact: &str) -> String {
+    let mut out = String::with_capacity(compact.len() * 2);
+    let mut depth = 0usize;
+    let mut in_string = false;
+    let mut escaped = false;
+    let mut chars = compact.chars().peekable();
+    let newline = |out: &mut String, depth: usize| {
+        out.push('\n');
+        out.extend(std::iter::repeat_n("  ", depth));
+    };
+    while let Some(c) = chars.next() {
+        if in_string {
+            out.push(c);
+            match c {
+                _ if escaped => escaped = false,
+                '\\' => escaped = true,
+                '"' => in_string = false,
+                _ => {}
+            }
+            continue;
+        }
+        match c {
+            '"' => {
+                in_string = true;
+                out.push(c);
+            }
+            '{' | '[' => {
+                out.push(c);
+                let close = if c == '{' { '}' } else { ']' };
+                if chars.peek() == Some(&close) {
+                    out.push(close);
+                    chars.next();
+                } else {
+                    depth += 1;
+                    newline(&mut out, depth);
+                }
+            }
+            '}' | ']' => {
+                depth = depth.saturating_sub(1);
+                newline(&mut out, depth);
+                out.push(c);
+            }
+            ',' => {
+                out.push(c);
+                newline(&mut out, depth);
+            }
+            ':' => out.push_str(": "),
+            _ => out.push(c),
+        }
+    }
+    out
 }
 
 /// Why a project file could not be read.

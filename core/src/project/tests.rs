@@ -66,3 +66,21 @@ fn a_cycle_time_out_of_range_is_refused_with_its_field() {
         assert!(e.to_string().contains("1 to 60000 ms"), "{e}");
     }
 }
+
+#[test]
+fn project_files_are_indented_exactly_as_serde_json_pretty_prints() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
+    let mut seen = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.to_string_lossy().ends_with(".plcproj.json") {
+            let p = Project::from_file(&std::fs::read_to_string(&path).unwrap()).unwrap();
+            assert_eq!(p.to_file(), serde_json::to_string_pretty(&p).unwrap(), "{path:?}");
+            seen += 1;
+        }
+    }
+    assert!(seen >= 4);
+    let mut odd = Project::new("quote \" brace { [ ] } colon : comma , \\ end");
+    odd.source = "x := '\"';\n(* {a: [1, 2]} *)".into();
+    assert_eq!(odd.to_file(), serde_json::to_string_pretty(&odd).unwrap());
+}

@@ -45,7 +45,7 @@ pub fn analyze(source: &str) -> Analysis {
     diagnostics.extend(sfc.diagnostics.iter().cloned());
     let (program, more) = check::check_with_prelude(&file);
     diagnostics.extend(sfc.reword(more));
-    diagnostics.sort_by_key(|d| (d.span.start, d.span.end));
+    crate::order::sort_by_key(&mut diagnostics, |d| (d.span.start, d.span.end));
     let program = if has_errors(&diagnostics) { None } else { program };
     Analysis { program, diagnostics }
 }

@@ -139,7 +139,7 @@ fn step_times(chart: &Chart) -> Vec<Stmt> {
 fn test_order(chart: &Chart) -> Vec<usize> {
     let mut order: Vec<usize> =
         (0..chart.transitions.len()).filter(|&t| chart.transitions[t].valid).collect();
-    order.sort_by_key(|&t| {
+    crate::order::sort_by_key(&mut order, |&t| {
         let p = chart.transitions[t].ast.priority.map(|(p, _)| p);
         (p.is_none(), p, t)
     });

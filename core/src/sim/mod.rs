@@ -410,7 +410,7 @@ impl Simulator {
                 inside.then_some(arm)
             })
             .collect();
-        out.sort_by_key(|s| s.start);
+        crate::order::sort_by_key(&mut out, |s| s.start);
         out.dedup();
         out
     }

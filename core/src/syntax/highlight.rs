@@ -186,7 +186,7 @@ pub fn highlight_spans(source: &str) -> Vec<(Span, TokenClass)> {
             spans.push((c.span, TokenClass::Comment));
         }
     }
-    spans.sort_by_key(|(s, _)| (s.start, s.end));
+    crate::order::sort_by_key(&mut spans, |(s, _)| (s.start, s.end));
     // Pragmas `{ … }` are dropped by the lexer: colour any gap that starts with `{`.
     let mut out = Vec::with_capacity(spans.len());
     let mut pos = 0usize;

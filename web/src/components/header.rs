@@ -4,12 +4,12 @@
 use leptos::ev;
 use leptos::html;
 use leptos::prelude::*;
-use plc_core::open::{open_text, FileKind};
 use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
 use crate::examples;
+use crate::import::import_text;
 use crate::state::AppState;
 
 /// The first free "Untitled N" name.
@@ -32,18 +32,13 @@ async fn import_file(state: AppState, file: web_sys::File) {
         }
     };
     let stem = name.split('.').next().filter(|s| !s.is_empty()).unwrap_or("Imported");
-    match open_text(stem, &text) {
+    match import_text(stem, &text).await {
         Ok(opened) => {
             let pname = opened.project.name.clone();
             if !state.add_and_open(opened.project) {
                 return; // the banner says it is open but not saved
             }
-            let kind = match opened.kind {
-                FileKind::Project => "the project file",
-                FileKind::Plcopen => "PLCopen XML",
-                FileKind::Pnml => "PNML",
-                FileKind::St => "Structured Text",
-            };
+            let kind = opened.kind;
             let mut text = format!("Imported “{pname}” from {name} ({kind}).");
             if !opened.warnings.is_empty() {
                 text.push_str(&format!(" Notes: {}", opened.warnings.join("; ")));
@@ -199,15 +194,17 @@ pub fn Header() -> impl IntoView {
                             if file.is_empty() {
                                 return;
                             }
-                            match examples::open(&file) {
-                                Ok(p) => {
-                                    let title = p.name.clone();
-                                    if state.add_and_open(p) {
-                                        state.info(format!("Opened the example “{title}” as a new project."));
+                            leptos::task::spawn_local(async move {
+                                match examples::open(&file).await {
+                                    Ok(p) => {
+                                        let title = p.name.clone();
+                                        if state.add_and_open(p) {
+                                            state.info(format!("Opened the example “{title}” as a new project."));
+                                        }
                                     }
+                                    Err(e) => state.error(format!("Could not open the example: {e}")),
                                 }
-                                Err(e) => state.error(format!("Could not open the example: {e}")),
-                            }
+                            });
                         }>
                         <option value="" selected=true>"Open example…"</option>
                         {examples::examples().into_iter().map(|e| view! {

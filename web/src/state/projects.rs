@@ -72,7 +72,11 @@ impl AppState {
             Ok(list) => self.projects.set(list),
             Err(e) => self.error(e.to_string()),
         }
-        self.damaged.set(store.damaged().unwrap_or_default().into_iter().collect());
+        let mut damaged = std::collections::BTreeMap::new();
+        for (id, reason) in store.damaged().unwrap_or_default() {
+            damaged.insert(id, reason);
+        }
+        self.damaged.set(damaged);
     }
 
     /// Opens what the page starts with: a share link in the URL fragment (as a new

@@ -108,7 +108,7 @@ impl Ctx<'_> {
         let mut ts: Vec<usize> = (0..self.net.transitions())
             .filter(|&t| self.touch[t].first().is_some_and(|&(d, q, _)| d == c && q == p))
             .collect();
-        ts.sort_by_key(|&t| (self.pou.net.transitions[t].priority, t));
+        crate::order::sort_by_key(&mut ts, |&t| (self.pou.net.transitions[t].priority, t));
         ts
     }
 
@@ -226,7 +226,7 @@ pub fn generate(
             }
         }
         for list in &mut w {
-            list.sort_unstable();
+            crate::order::sort(list);
         }
         w
     });

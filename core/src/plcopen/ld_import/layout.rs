@@ -113,7 +113,7 @@ pub(super) fn reduce(
                 continue;
             }
             changed = true;
-            g.sort_by(|x, y| parts.min_y(x).total_cmp(&parts.min_y(y)));
+            crate::order::sort_by(&mut g, |x, y| parts.min_y(x).total_cmp(&parts.min_y(y)));
             let mut flat = Vec::new();
             for sp in g {
                 match sp {

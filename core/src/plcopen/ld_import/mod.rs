@@ -121,7 +121,7 @@ pub(crate) fn import_ld(
         .into_values()
         .map(|g| (g.iter().map(|&i| els[i].y).fold(f64::INFINITY, f64::min), g))
         .collect();
-    networks.sort_by(|a, b| a.0.total_cmp(&b.0));
+    crate::order::sort_by(&mut networks, |a, b| a.0.total_cmp(&b.0));
     order_by_data(&mut networks, &sorted.data);
 
     let mut rungs = Vec::new();
@@ -483,7 +483,7 @@ fn wire_input(
             Some((r + wired_row(grid, bb, kk)?, *c))
         })
         .collect();
-    pins.sort_unstable();
+    crate::order::sort(&mut pins);
     let job = PinJob { node_pos: &node_pos, rail: g.s, pins };
     let limit = grid.cells.len() + layout::tree_height(&tree, parts) + 1;
     for top in rb + 1..=limit {

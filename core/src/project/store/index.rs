@@ -86,18 +86,15 @@ pub(super) fn read<B: StorageBackend + ?Sized>(
     }
 }
 
-/// The projects and the layout of an index's text.
+/// The projects and the layout of an index's text (read straight from the text, as
+/// `Project::from_file` does, for the same reason).
 fn parse(text: &str) -> Result<(Vec<ProjectSummary>, u32), ()> {
-    let value: serde_json::Value = serde_json::from_str(text).map_err(|_| ())?;
-    let (projects, layout) = match value {
-        serde_json::Value::Array(_) => (value, 1),
-        serde_json::Value::Object(mut map) => {
-            let layout = map.get("layout").and_then(serde_json::Value::as_u64).ok_or(())?;
-            (map.remove("projects").ok_or(())?, u32::try_from(layout).map_err(|_| ())?)
-        }
-        _ => return Err(()),
+    let (mut projects, layout) = if text.trim_start().starts_with('[') {
+        (serde_json::from_str::<Vec<ProjectSummary>>(text).map_err(|_| ())?, 1)
+    } else {
+        let file: IndexFile = serde_json::from_str(text).map_err(|_| ())?;
+        (file.projects, file.layout)
     };
-    let mut projects: Vec<ProjectSummary> = serde_json::from_value(projects).map_err(|_| ())?;
     let mut seen = std::collections::BTreeSet::new();
     projects.retain(|p| seen.insert(p.id.clone()));
     Ok((projects, layout))

@@ -143,7 +143,9 @@ impl<B: StorageBackend> ProjectStore<B> {
     /// project keys in storage (see [`ProjectStore::index_damage`]).
     pub fn list(&self) -> Result<Vec<ProjectSummary>, StoreError> {
         let mut list = self.read_index()?.index.projects;
-        list.sort_by(|a, b| b.modified_ms.cmp(&a.modified_ms).then(a.name.cmp(&b.name)));
+        crate::order::sort_by(&mut list, |a, b| {
+            b.modified_ms.cmp(&a.modified_ms).then(a.name.cmp(&b.name))
+        });
         Ok(list)
     }
 

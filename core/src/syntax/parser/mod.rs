@@ -84,7 +84,7 @@ impl<'a> Parser<'a> {
     }
 
     fn finish(mut self) -> Vec<Diagnostic> {
-        self.diags.sort_by_key(|d| (d.span.start, d.span.end));
+        crate::order::sort_by_key(&mut self.diags, |d| (d.span.start, d.span.end));
         self.diags
     }
 

@@ -242,7 +242,7 @@ pub fn highlight_html(text: &str, marks: &[Mark]) -> String {
         cuts.push(p.start);
     }
     cuts.retain(|&c| text.is_char_boundary(c));
-    cuts.sort_unstable();
+    plc_core::order::sort(&mut cuts);
     cuts.dedup();
 
     let mut out = String::with_capacity(text.len() * 2 + 64);

@@ -74,7 +74,7 @@ pub fn CodePanel(
     let branches = Memo::new(move |_| {
         let mut b: Vec<(u32, u32)> =
             code.with(|c| active.get().iter().map(|&l| branch_lines(c, l)).collect());
-        b.sort_unstable();
+        plc_core::order::sort(&mut b);
         b.dedup();
         b
     });

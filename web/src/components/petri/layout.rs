@@ -139,7 +139,7 @@ fn order_by(layer: &mut [usize], neighbours: &[Vec<usize>], reference: &[usize])
             (key, i, v)
         })
         .collect();
-    keyed.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    plc_core::order::sort_by(&mut keyed, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
     for (slot, (_, _, v)) in layer.iter_mut().zip(keyed) {
         *slot = v;
     }

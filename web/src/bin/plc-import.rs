@@ -1,0 +1,67 @@
+//! The import worker: opens PLCopen XML and PNML files off the page's own module.
+//!
+//! The XML importers are about a tenth of the engine; the page loads this worker (its own
+//! small wasm module, built by Trunk as `plc-import_loader.js`) only when a user imports
+//! such a file, so the first page load stays within its size budget. It says `"ready"`
+//! once loaded, then answers each message `[file stem, text]` with a JSON string: `{"project": <project file>, "kind":
+//! "PLCopen XML" | "PNML" | …, "warnings": [...]}` or `{"error": "..."}`.
+
+use plc_core::open::{open_text, FileKind};
+use wasm_bindgen::closure::Closure;
+use wasm_bindgen::{JsCast, JsValue};
+
+/// The reply to one request.
+fn reply(stem: &str, text: &str) -> String {
+    let value = match open_text(stem, text) {
+        Ok(opened) => {
+            let kind = match opened.kind {
+                FileKind::Project => "the project file",
+                FileKind::Plcopen => "PLCopen XML",
+                FileKind::Pnml => "PNML",
+                FileKind::St => "Structured Text",
+            };
+            serde_json::json!({
+                "project": opened.project.to_file(),
+                "kind": kind,
+                "warnings": opened.warnings,
+            })
+        }
+        Err(e) => serde_json::json!({ "error": e.to_string() }),
+    };
+    value.to_string()
+}
+
+fn main() {
+    console_error_panic_hook::set_once();
+    let scope: web_sys::DedicatedWorkerGlobalScope = js_sys::global().unchecked_into();
+    let answer = scope.clone();
+    let on_message =
+        Closure::<dyn Fn(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
+            let request = js_sys::Array::from(&ev.data());
+            let stem = request.get(0).as_string().unwrap_or_default();
+            let text = request.get(1).as_string().unwrap_or_default();
+            let _ = answer.post_message(&JsValue::from_str(&reply(&stem, &text)));
+        });
+    scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
+    on_message.forget();
+    // Ready: the page sends the file only now.
+    let _ = scope.post_message(&JsValue::from_str("ready"));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::reply;
+
+    #[test]
+    fn answers_with_the_project_or_the_error() {
+        let pnml = r#"<?xml version="1.0"?><pnml xmlns="http://www.pnml.org/version-2009/grammar/pnml">
+            <net id="n" type="http://www.pnml.org/version-2009/grammar/ptnet"><name><text>Net</text></name>
+            <page id="g"><place id="a"><initialMarking><text>1</text></initialMarking></place></page></net></pnml>"#;
+        let ok: serde_json::Value = serde_json::from_str(&reply("x", pnml)).unwrap_or_default();
+        assert_eq!(ok["kind"], "PNML");
+        assert!(ok["project"].as_str().is_some_and(|p| p.contains("\"petri\"")), "{ok}");
+        let bad: serde_json::Value =
+            serde_json::from_str(&reply("x", "<?xml version=\"1.0\"?><nope")).unwrap_or_default();
+        assert!(bad["error"].as_str().is_some_and(|e| !e.is_empty()), "{bad}");
+    }
+}

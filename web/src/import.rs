@@ -1,0 +1,121 @@
+//! Opening a file the user imports: project files and ST text here, PLCopen XML and PNML
+//! in the import worker (`src/bin/plc-import.rs`), which the page loads only then.
+
+use plc_core::open::{open_plain, FileKind};
+use plc_core::project::Project;
+use wasm_bindgen::closure::Closure;
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_futures::JsFuture;
+
+/// The worker's loader script, next to `index.html` (Trunk names it after the binary).
+const WORKER_SCRIPT: &str = "./plc-import_loader.js";
+
+/// A file opened as a project.
+pub struct Imported {
+    /// The project.
+    pub project: Project,
+    /// What the file was read as, for the user ("PLCopen XML").
+    pub kind: String,
+    /// What the import skipped or changed.
+    pub warnings: Vec<String>,
+}
+
+fn kind_name(kind: FileKind) -> &'static str {
+    match kind {
+        FileKind::Project => "the project file",
+        FileKind::Plcopen => "PLCopen XML",
+        FileKind::Pnml => "PNML",
+        FileKind::St => "Structured Text",
+    }
+}
+
+/// Opens `text` (a file named `stem` without its extension) as a project.
+pub async fn import_text(stem: &str, text: &str) -> Result<Imported, String> {
+    match open_plain(stem, text) {
+        Ok(Some(opened)) => Ok(Imported {
+            project: opened.project,
+            kind: kind_name(opened.kind).to_string(),
+            warnings: opened.warnings,
+        }),
+        Ok(None) => in_worker(stem, text).await,
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// The next message `worker` sends (or its error, as a rejection).
+fn next_message(worker: &web_sys::Worker) -> JsFuture {
+    let promise = js_sys::Promise::new(&mut |resolve, reject| {
+        let on_message = Closure::once_into_js(move |ev: web_sys::MessageEvent| {
+            let _ = resolve.call1(&JsValue::NULL, &ev.data());
+        });
+        let on_error = Closure::once_into_js(move |ev: web_sys::Event| {
+            let _ = reject.call1(&JsValue::NULL, &ev);
+        });
+        worker.set_onmessage(Some(on_message.unchecked_ref()));
+        worker.set_onerror(Some(on_error.unchecked_ref()));
+    });
+    JsFuture::from(promise)
+}
+
+/// Runs the import worker on one file and reads its answer. The worker says when it is
+/// ready (its module loads asynchronously; a message sent before would be lost).
+async fn in_worker(stem: &str, text: &str) -> Result<Imported, String> {
+    let worker = web_sys::Worker::new(WORKER_SCRIPT)
+        .map_err(|e| format!("the importer could not start ({e:?})"))?;
+    let stopped = |_| "the importer stopped (the file may be too large or damaged)".to_string();
+    let answer = async {
+        next_message(&worker).await.map_err(|_| "the importer could not start".to_string())?;
+        let reply = next_message(&worker);
+        let request = js_sys::Array::of2(&JsValue::from_str(stem), &JsValue::from_str(text));
+        worker
+            .post_message(&request)
+            .map_err(|e| format!("the importer did not take the file ({e:?})"))?;
+        reply.await.map_err(stopped).map(|v| v.as_string().unwrap_or_default())
+    }
+    .await;
+    worker.terminate();
+    read_reply(&answer?)
+}
+
+/// The worker's answer.
+#[derive(serde::Deserialize)]
+struct Reply {
+    #[serde(default)]
+    error: Option<String>,
+    #[serde(default)]
+    project: String,
+    #[serde(default)]
+    kind: String,
+    #[serde(default)]
+    warnings: Vec<String>,
+}
+
+/// Reads the worker's JSON answer.
+fn read_reply(reply: &str) -> Result<Imported, String> {
+    let reply: Reply =
+        serde_json::from_str(reply).map_err(|_| "the importer gave no answer".to_string())?;
+    if let Some(error) = reply.error {
+        return Err(error);
+    }
+    let project = Project::from_file(&reply.project).map_err(|e| e.to_string())?;
+    Ok(Imported { project, kind: reply.kind, warnings: reply.warnings })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn replies_are_read_or_refused() {
+        let p = Project::new("Net");
+        let ok = serde_json::json!({"project": p.to_file(), "kind": "PNML", "warnings": ["w"]});
+        let read = read_reply(&ok.to_string()).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!((read.project.name.as_str(), read.kind.as_str()), ("Net", "PNML"));
+        assert_eq!(read.warnings, ["w"]);
+        assert_eq!(
+            read_reply(r#"{"error": "bad XML at 1:2"}"#).err().as_deref(),
+            Some("bad XML at 1:2")
+        );
+        assert!(read_reply("not json").is_err());
+    }
+}
