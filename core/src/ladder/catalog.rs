@@ -96,6 +96,11 @@ pub struct BlockType {
 }
 
 impl BlockType {
+    /// Whether the type is a FUNCTION_BLOCK (its uses need an instance variable).
+    pub fn is_function_block(&self) -> bool {
+        self.kind == BlockKind::FunctionBlock
+    }
+
     /// The input named `name` (any case).
     pub fn input(&self, name: &str) -> Option<&Param> {
         self.inputs.iter().find(|p| p.name.eq_ignore_ascii_case(name.trim()))
@@ -166,6 +171,20 @@ impl Catalog {
             }
         }
         c
+    }
+
+    /// The names of the project's own FUNCTION and FUNCTION_BLOCK types (not the standard
+    /// ones), sorted.
+    pub fn user_block_names(&self) -> Vec<String> {
+        let standard = Catalog::standard();
+        let mut names: Vec<String> = self
+            .blocks
+            .values()
+            .filter(|b| standard.block(&b.name).is_none())
+            .map(|b| b.name.clone())
+            .collect();
+        crate::order::sort(&mut names);
+        names
     }
 
     /// Adds the types, globals and FUNCTION / FUNCTION_BLOCK signatures of an ST text.

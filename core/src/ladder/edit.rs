@@ -532,6 +532,37 @@ impl LadderPou {
     }
 }
 
+/// `declarations` with `name : ty;` added at the end of the first `VAR` block (or
+/// `section`, e.g. `VAR_INPUT`), one being appended when there is none; unchanged when
+/// `name` is declared already.
+pub fn declare(declarations: &str, section: &str, name: &str, ty: &str) -> String {
+    if declares(declarations, name) {
+        return declarations.to_string();
+    }
+    let line = format!("    {name} : {ty};\n");
+    let mut out = String::with_capacity(declarations.len() + line.len());
+    let mut inside = false;
+    let mut done = false;
+    for l in declarations.split_inclusive('\n') {
+        let word = l.split_whitespace().next().unwrap_or_default().to_ascii_uppercase();
+        if !done && inside && word.starts_with("END_VAR") {
+            out.push_str(&line);
+            done = true;
+        }
+        if !done && word == section.to_ascii_uppercase() {
+            inside = true;
+        }
+        out.push_str(l);
+    }
+    if !done {
+        if !out.is_empty() && !out.ends_with('\n') {
+            out.push('\n');
+        }
+        out.push_str(&format!("{section}\n{line}END_VAR\n"));
+    }
+    out
+}
+
 /// Whether `declarations` declares `name` (a word followed by `:` or `,`).
 fn declares(declarations: &str, name: &str) -> bool {
     let lower = declarations.to_ascii_lowercase();

@@ -11,16 +11,7 @@ use super::net::PtNet;
 use crate::diagnostics::{Code, Diagnostic, LineIndex};
 use crate::syntax::{self, Item};
 
-/// Whether `name` is an IEC identifier (letters, digits, single underscores, not starting
-/// with a digit, not ending with an underscore).
-pub fn is_identifier(name: &str) -> bool {
-    let mut chars = name.chars();
-    let Some(first) = chars.next() else { return false };
-    (first.is_ascii_alphabetic() || first == '_')
-        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-        && !name.contains("__")
-        && !name.ends_with('_')
-}
+pub use crate::syntax::is_identifier;
 
 fn position(text: &str, offset: u32, part: TextPart) -> TextPosition {
     let loc = LineIndex::new(text).location(offset.min(text.len() as u32));

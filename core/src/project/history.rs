@@ -86,6 +86,13 @@ impl<S> History<S> {
         }
     }
 
+    /// Takes back the last recorded step without keeping anything for redo: the edit it
+    /// recorded was cancelled (Escape in an operand box), so the state before it returns.
+    pub fn cancel(&mut self) -> Option<S> {
+        self.open_group = None;
+        self.past.pop()
+    }
+
     /// Whether there is a step to undo.
     pub fn can_undo(&self) -> bool {
         !self.past.is_empty()

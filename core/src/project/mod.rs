@@ -7,10 +7,12 @@
 
 mod codec;
 mod history;
+mod pous;
 mod store;
 
 pub use codec::{decode_share, encode_share, ShareError, SHARE_PREFIX};
 pub use history::{History, DEFAULT_HISTORY_LIMIT};
+pub use pous::PouError;
 pub use store::{
     MemoryBackend, Opened, ProjectStore, ProjectSummary, StorageBackend, StoreError, STORE_LAYOUT,
 };

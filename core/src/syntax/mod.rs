@@ -28,3 +28,14 @@ pub fn parse(source: &str) -> (SourceFile, Vec<Diagnostic>) {
 pub fn parse_expression(source: &str) -> Result<Expr, Vec<Diagnostic>> {
     parser::parse_single_expression(source)
 }
+
+/// Whether `name` is an IEC identifier (letters, digits, single underscores, not starting
+/// with a digit, not ending with an underscore).
+pub fn is_identifier(name: &str) -> bool {
+    let mut chars = name.chars();
+    let Some(first) = chars.next() else { return false };
+    (first.is_ascii_alphabetic() || first == '_')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && !name.contains("__")
+        && !name.ends_with('_')
+}

@@ -5,6 +5,7 @@
 //! and caret survive switching; ladder and net views are built when selected.
 
 use leptos::prelude::*;
+use plc_core::ladder::LadderPouKind;
 
 use crate::components::editor::Editor;
 use crate::components::ladder::LadderView;
@@ -95,8 +96,72 @@ fn Navigator() -> impl IntoView {
                         </button>
                     }
                 }).collect_view()}
+                <NewLadderPou/>
             </nav>
         }
+    }
+}
+
+/// `New ladder POU`: a small dialog (name, kind, Create) that adds an empty ladder POU to
+/// the project and shows it.
+#[component]
+fn NewLadderPou() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let open = RwSignal::new(false);
+    let name = RwSignal::new(String::new());
+    let kind = RwSignal::new(LadderPouKind::Program);
+    let problem = RwSignal::new(None::<String>);
+    let create = move || {
+        let text = name.get_untracked().trim().to_string();
+        let mut project = state.project.get_untracked();
+        match project.add_ladder_pou(&text, kind.get_untracked()) {
+            Ok(()) => {
+                if kind.get_untracked() == LadderPouKind::Program
+                    && project.settings.program.is_none()
+                    && state.running.get_untracked().is_none()
+                {
+                    project.settings.program = Some(text.clone());
+                }
+                state.project.set(project);
+                state.save();
+                state.check_now();
+                state.view.set(PouView::Ladder(text));
+                open.set(false);
+                name.set(String::new());
+                problem.set(None);
+            }
+            Err(e) => problem.set(Some(e.to_string())),
+        }
+    };
+    view! {
+        <button class="pou-tab pou-new" on:click=move |_| { open.update(|o| *o = !*o); problem.set(None); }
+            aria-expanded=move || if open.get() { "true" } else { "false" }>"New ladder POU"</button>
+        {move || open.get().then(|| view! {
+            <div class="pou-dialog" role="dialog" aria-label="New ladder POU">
+                <label class="field">
+                    <span>"POU name"</span>
+                    <input type="text" aria-label="POU name" prop:value=move || name.get()
+                        spellcheck="false" autofocus
+                        on:input=move |ev| name.set(event_target_value(&ev))
+                        on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
+                            "Enter" => { ev.prevent_default(); create(); }
+                            "Escape" => open.set(false),
+                            _ => {}
+                        }/>
+                </label>
+                <label class="field">
+                    <span>"POU kind"</span>
+                    <select aria-label="POU kind" on:change=move |ev| kind.set(
+                        if event_target_value(&ev) == "FUNCTION_BLOCK" { LadderPouKind::FunctionBlock } else { LadderPouKind::Program })>
+                        <option value="PROGRAM" selected=true>"PROGRAM"</option>
+                        <option value="FUNCTION_BLOCK">"FUNCTION_BLOCK"</option>
+                    </select>
+                </label>
+                <button on:click=move |_| create()>"Create"</button>
+                <button on:click=move |_| open.set(false)>"Cancel"</button>
+                {move || problem.get().map(|p| view! { <p class="field-error" aria-live="polite">{p}</p> })}
+            </div>
+        })}
     }
 }
 

@@ -339,3 +339,14 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn declarations_get_new_variables_in_the_right_block() {
+    let text = "VAR_INPUT\n    Start : BOOL;\nEND_VAR\nVAR\nEND_VAR\n";
+    let one = declare(text, "VAR", "T1", "TON");
+    assert_eq!(one, "VAR_INPUT\n    Start : BOOL;\nEND_VAR\nVAR\n    T1 : TON;\nEND_VAR\n");
+    assert_eq!(declare(&one, "VAR", "t1", "TON"), one, "declared already");
+    let out = declare(&one, "VAR_OUTPUT", "Lamp", "BOOL");
+    assert!(out.ends_with("VAR_OUTPUT\n    Lamp : BOOL;\nEND_VAR\n"), "{out}");
+    assert_eq!(declare("", "VAR", "x", "INT"), "VAR\n    x : INT;\nEND_VAR\n");
+}

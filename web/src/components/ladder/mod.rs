@@ -1,19 +1,24 @@
-//! The ladder view: a ladder POU's rungs drawn in SVG by hand (read-only until the ladder
-//! editor exists), live while its PROGRAM runs — power flow from the hidden `LdPow_*`
+//! The ladder view and editor: a ladder POU's rungs drawn in SVG by hand over an ARIA grid
+//! of cells that selects, takes palette tools, keys and operands (`editor.rs` maps them to
+//! the core's edits), live while its PROGRAM runs — power flow from the hidden `LdPow_*`
 //! variables, contact and coil states, block values — or as the POU's readable ST view.
 
 mod draw;
+mod editor;
 pub mod geometry;
 mod live;
 
 use leptos::prelude::*;
 use plc_core::build::Site;
-use plc_core::ladder::{st_view_pou, LadderPou, LadderPouKind};
+use plc_core::ladder::{
+    describe_cell, st_view_pou, CellRef, Element, LadderPou, LadderPouKind, PinKind,
+};
 
 use crate::components::editor::text::highlight_html;
 use crate::state::AppState;
 use draw::{rung_svg, RungCtx};
-use geometry::NodePower;
+use editor::{LadderEditor, RungAction, Tool, STANDARD_BLOCKS};
+use geometry::{rung_geometry, NodePower};
 use live::{LadderLive, Probes};
 
 /// Scrolls the element with `id` into view.
@@ -41,6 +46,119 @@ fn live_status(state: AppState, pou: &LadderPou) -> Option<String> {
     }
 }
 
+/// The grid of a rung's cells over its drawing: one `gridcell` per cell, named by its
+/// place and content, selected by click, focus or arrow keys, taking keys and double-clicks.
+fn rung_grid(
+    editor: LadderEditor,
+    rung: &plc_core::ladder::Rung,
+    index: usize,
+    live: Memo<Option<LadderLive>>,
+) -> impl IntoView {
+    let geo = rung_geometry(rung);
+    let pct = |v: f64, of: f64| if of > 0.0 { v / of * 100.0 } else { 0.0 };
+    let rows = (0..rung.rows())
+        .map(|row| {
+            let cells = rung.cells[row]
+                .iter()
+                .enumerate()
+                .map(|(col, cell)| {
+                    let at = CellRef::new(index, row, col);
+                    let (x0, x1) = geo.col_span(col);
+                    let style = format!(
+                        "left:{:.3}%;top:{:.3}%;width:{:.3}%;height:{:.3}%",
+                        pct(x0, geo.width),
+                        pct(row as f64 * geo.row_h, geo.height),
+                        pct(x1 - x0, geo.width),
+                        pct(geo.row_h, geo.height)
+                    );
+                    let label = format!(
+                        "Rung {}, row {}, column {}: {}",
+                        index + 1,
+                        row + 1,
+                        col + 1,
+                        describe_cell(cell)
+                    );
+                    let selected = move || editor.selected.get() == Some(at);
+                    let tabindex = move || {
+                        let sel = editor.selected.get();
+                        if sel == Some(at) || (sel.is_none() && at == CellRef::default()) {
+                            "0"
+                        } else {
+                            "-1"
+                        }
+                    };
+                    let power = move || {
+                        live.with(|l| {
+                            l.as_ref().map(|l| if l.powered(index, row, col) { "on" } else { "off" })
+                        })
+                    };
+                    view! {
+                        <div role="gridcell" class="ld-cell" id=editor.cell_id(at) style=style
+                            aria-label=label tabindex=tabindex
+                            aria-selected=move || if selected() { "true" } else { "false" }
+                            data-power=power
+                            on:click=move |_| editor.selected.set(Some(at))
+                            on:focus=move |_| {
+                                if editor.selected.get_untracked() != Some(at) {
+                                    editor.selected.set(Some(at));
+                                }
+                            }
+                            on:dblclick=move |_| editor.edit_operand(at)
+                            on:keydown=move |ev: leptos::ev::KeyboardEvent| {
+                                let ctrl = ev.ctrl_key() || ev.meta_key();
+                                if !ev.alt_key() && editor.key(at, &ev.key(), ctrl, ev.shift_key()) {
+                                    ev.prevent_default();
+                                }
+                            }></div>
+                    }
+                })
+                .collect_view();
+            view! { <div role="row" class="ld-grid-row">{cells}</div> }
+        })
+        .collect_view();
+    let operand_box = move || {
+        let (at, _) = editor.operand_at.get().filter(|(c, _)| c.rung == index)?;
+        let (x0, x1) = geo.col_span(at.col);
+        let style = format!(
+            "left:{:.3}%;top:{:.3}%;width:{:.3}%",
+            pct(x0, geo.width),
+            pct(at.row as f64 * geo.row_h, geo.height),
+            pct((x1 - x0).max(120.0), geo.width)
+        );
+        // Focused as soon as it is in the page, before the next key arrives.
+        let input = NodeRef::<leptos::html::Input>::new();
+        input.on_load(|el| {
+            let _ = el.focus();
+            el.select();
+        });
+        Some(view! {
+            <input class="ld-operand-box mono" type="text" aria-label="Operand" style=style node_ref=input
+                prop:value=move || editor.operand_text.get_untracked() spellcheck="false"
+                on:input=move |ev| editor.operand_text.set(event_target_value(&ev))
+                on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
+                    "Enter" => { ev.prevent_default(); editor.commit_operand(); }
+                    "Escape" => { ev.prevent_default(); editor.cancel_operand(); }
+                    _ => {}
+                }
+                on:blur=move |ev| {
+                    // A redraw of the rungs removes the box (and draws it again): only a
+                    // blur of a box still in the page commits.
+                    use wasm_bindgen::JsCast;
+                    let input = ev.target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
+                    request_animation_frame(move || {
+                        if input.is_some_and(|n| n.is_connected()) && editor.operand_at.get_untracked().is_some() {
+                            editor.commit_operand();
+                        }
+                    });
+                }/>
+        })
+    };
+    view! {
+        <div class="ld-grid" role="grid" aria-label=format!("Rung {} cells", index + 1)>{rows}</div>
+        {operand_box}
+    }
+}
+
 /// One rung: its number, label and comment above its drawing.
 #[component]
 fn RungView(
@@ -48,6 +166,7 @@ fn RungView(
     index: usize,
     pou: String,
     live: Memo<Option<LadderLive>>,
+    editor: LadderEditor,
 ) -> impl IntoView {
     let state = expect_context::<AppState>();
     let shared = StoredValue::new(rung.clone());
@@ -68,7 +187,12 @@ fn RungView(
                 })}
                 <span class="ld-comment">{rung.comment.clone()}</span>
             </div>
-            <div class="ld-scroll">{rung_svg(ctx, &rung, &pou)}</div>
+            <div class="ld-scroll">
+                <div class="ld-canvas">
+                    {rung_svg(ctx, &rung, &pou)}
+                    {rung_grid(editor, &rung, index, live)}
+                </div>
+            </div>
         </div>
     }
 }
@@ -96,6 +220,7 @@ pub fn LadderView(name: String) -> impl IntoView {
         probes.with(|pr| pr.as_ref().and_then(|pr| state.with_sim(|s| LadderLive::read(s, pr))))
     });
     let show_st = RwSignal::new(false);
+    let editor = LadderEditor::new(state, &name);
 
     // A clicked problem or a fault: scroll its rung into view.
     let this = name.clone();
@@ -130,7 +255,7 @@ pub fn LadderView(name: String) -> impl IntoView {
             .into_iter()
             .enumerate()
             .map(|(index, rung)| {
-                view! { <RungView rung=rung index=index pou=pou_name.clone() live=live/> }
+                view! { <RungView rung=rung index=index pou=pou_name.clone() live=live editor=editor/> }
             })
             .collect_view()
             .into_any()
@@ -151,7 +276,124 @@ pub fn LadderView(name: String) -> impl IntoView {
                     on:click=move |_| show_st.update(|s| *s = !*s)>"ST view"</button>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
+            <details class="ld-decls" open=pou.with_untracked(|p| p.as_ref().is_some_and(|p| p.rungs.iter().all(|r| r.cells.iter().flatten().all(|c| c.element == Element::Empty))))>
+                <summary>"Declarations"</summary>
+                <textarea class="mono ld-decl-text" aria-label="Declarations" spellcheck="false" rows="6"
+                    prop:value=move || pou.with(|p| p.as_ref().map(|p| p.declarations.clone()).unwrap_or_default())
+                    on:change=move |ev| {
+                        editor.apply(&plc_core::ladder::LadderEdit::SetDeclarations { text: event_target_value(&ev) }, None);
+                    }></textarea>
+            </details>
+            <Toolbar editor=editor/>
+            <PinBoxes editor=editor pou=pou/>
             <div class="ld-rungs">{body}</div>
         </section>
+    }
+}
+
+/// The ladder toolbar: undo/redo, the rung and grid actions, and the palette.
+#[component]
+fn Toolbar(editor: LadderEditor) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let user_blocks = Memo::new(move |_| state.project.with(|p| p.catalog().user_block_names()));
+    let tool_button = move |tool: Tool, title: String| {
+        let label = tool.label();
+        view! {
+            <button class="ld-tool" title=title on:click=move |_| editor.use_tool(&tool, None)>{label}</button>
+        }
+    };
+    view! {
+        <div class="ld-toolbar" role="toolbar" aria-label="Rungs">
+            <button on:click=move |_| editor.undo() disabled=move || !editor.can_undo()
+                title="Undo (Ctrl+Z)">"Undo"</button>
+            <button on:click=move |_| editor.redo() disabled=move || !editor.can_redo()
+                title="Redo (Ctrl+Shift+Z)">"Redo"</button>
+            {RungAction::all().into_iter().map(|(action, label)| view! {
+                <button on:click=move |_| editor.rung_action(action)>{label}</button>
+            }).collect_view()}
+        </div>
+        <div class="ld-palette" role="toolbar" aria-label="Palette">
+            {Tool::elements().into_iter().map(|t| {
+                let title = format!("Put a {} into the selected cell", t.label().to_lowercase());
+                tool_button(t, title)
+            }).collect_view()}
+            {STANDARD_BLOCKS.iter().map(|b| tool_button(Tool::Block(b.to_string()), format!("Put a {b} block into the selected cell"))).collect_view()}
+            {move || user_blocks.get().into_iter().map(|b| {
+                let title = format!("Put a {b} block into the selected cell");
+                tool_button(Tool::Block(b), title)
+            }).collect_view()}
+        </div>
+    }
+}
+
+/// The pin boxes of the selected block: `PIN of INSTANCE` (`PT of T1`), or for a function
+/// `PIN of TYPE at rung R`.
+#[component]
+fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    move || {
+        let at = editor.selected.get()?;
+        let block = pou.with(|p| {
+            let cell = p.as_ref()?.rungs.get(at.rung)?.cell(at.row, at.col)?;
+            match &cell.element {
+                Element::Block(b) => Some(b.clone()),
+                _ => None,
+            }
+        })?;
+        let catalog = state.project.with_untracked(|p| p.catalog());
+        let ty = catalog.block(&block.type_name)?.clone();
+        let owner = match &block.instance {
+            Some(i) => i.clone(),
+            None => format!("{} at rung {}", block.type_name, at.rung + 1),
+        };
+        let power_in = block.power_input().to_string();
+        let power_out = block.power_output().to_string();
+        let pins: Vec<(PinKind, String, String)> = ty
+            .inputs
+            .iter()
+            .filter(|p| {
+                !p.name.eq_ignore_ascii_case(&power_in) && !p.name.eq_ignore_ascii_case("EN")
+            })
+            .map(|p| {
+                let bound = block.inputs.iter().find(|b| b.name.eq_ignore_ascii_case(&p.name));
+                (
+                    PinKind::Input,
+                    p.name.clone(),
+                    bound.map(|b| b.operand.clone()).unwrap_or_default(),
+                )
+            })
+            .chain(
+                ty.outputs
+                    .iter()
+                    .filter(|p| {
+                        !p.name.eq_ignore_ascii_case(&power_out)
+                            && !p.name.eq_ignore_ascii_case("ENO")
+                    })
+                    .map(|p| {
+                        let bound =
+                            block.outputs.iter().find(|b| b.name.eq_ignore_ascii_case(&p.name));
+                        (
+                            PinKind::Output,
+                            p.name.clone(),
+                            bound.map(|b| b.operand.clone()).unwrap_or_default(),
+                        )
+                    }),
+            )
+            .collect();
+        Some(view! {
+            <div class="ld-pins" role="group" aria-label=format!("Pins of {owner}")>
+                {pins.into_iter().map(|(kind, pin, value)| {
+                    let label = format!("{pin} of {owner}");
+                    let name = pin.clone();
+                    view! {
+                        <label class="field">
+                            <span>{label.clone()}</span>
+                            <input class="mono" type="text" aria-label=label prop:value=value spellcheck="false"
+                                on:change=move |ev| editor.set_pin(at, kind, &name, &event_target_value(&ev))/>
+                        </label>
+                    }
+                }).collect_view()}
+            </div>
+        })
     }
 }

@@ -1,0 +1,156 @@
+// The ladder editor (issue 13): a student builds rungs in a new project with the palette,
+// keys and the operand box, runs them, undoes and redoes, and finds them after a reload.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { fileURLToPath } from 'node:url';
+import path from 'node:path';
+import { startServer } from './server.mjs';
+import { launch } from './browser.mjs';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+let server;
+let browser;
+
+before(async () => {
+  server = await startServer(path.join(root, 'dist'));
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+async function openApp(context) {
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(server.url);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  return { page, errors };
+}
+
+/** Adds a ladder PROGRAM named `name` with `declarations` and shows it. */
+async function newLadderProgram(page, name, declarations) {
+  await page.getByRole('button', { name: 'New ladder POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill(name);
+  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
+  await page.getByRole('button', { name: 'Create' }).click();
+  const view = page.getByRole('region', { name: `Ladder diagram ${name}` });
+  await view.waitFor();
+  const decls = view.getByRole('textbox', { name: 'Declarations' });
+  await decls.fill(declarations);
+  await decls.press('Tab');
+  return view;
+}
+
+const cell = (view, rung, row, col) =>
+  view.getByRole('gridcell', { name: new RegExp(`^Rung ${rung}, row ${row}, column ${col}: `) });
+
+/** Puts a palette element into a cell by clicking both, then types its operand. */
+async function place(page, view, [rung, row, col], tool, operand) {
+  await cell(view, rung, row, col).click();
+  await view.getByRole('button', { name: tool, exact: true }).click();
+  if (operand !== undefined) {
+    const box = view.getByRole('textbox', { name: 'Operand' });
+    await box.fill(operand);
+    await box.press('Enter');
+  }
+}
+
+const LATCH_DECLS = `VAR_INPUT
+    Start : BOOL;
+    Stop : BOOL;
+END_VAR
+VAR_OUTPUT
+    Motor : BOOL;
+END_VAR
+`;
+
+test('a start/stop latch built with the palette in a new project runs, undoes, redoes and survives a reload', async () => {
+  const context = await browser.newContext();
+  const { page, errors } = await openApp(context);
+  const view = await newLadderProgram(page, 'Latch', LATCH_DECLS);
+  await place(page, view, [1, 1, 1], 'NO contact', 'Start');
+  await place(page, view, [1, 1, 2], 'NC contact', 'Stop');
+  await place(page, view, [1, 1, 3], 'Coil', 'Motor');
+  await place(page, view, [1, 2, 1], 'NO contact', 'Motor');
+  await place(page, view, [1, 1, 2], 'Link down');
+  await cell(view, 1, 1, 2).and(page.getByRole('gridcell', { name: 'NC contact Stop, linked down' })).waitFor();
+  assert.equal(await cell(view, 1, 1, 3).getAttribute('aria-selected'), 'false');
+  assert.equal(await cell(view, 1, 1, 2).getAttribute('aria-selected'), 'true');
+
+  // Undo takes back the link, then the Motor contact; redo puts both back.
+  await view.getByRole('button', { name: 'Undo' }).click();
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: NC contact Stop' }).waitFor();
+  await page.keyboard.press('Control+z');
+  await view.getByRole('gridcell', { name: 'Rung 1, row 2, column 1: empty' }).waitFor();
+  await page.keyboard.press('Control+Shift+Z');
+  await view.getByRole('button', { name: 'Redo' }).click();
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: NC contact Stop, linked down' }).waitFor();
+  await view.getByRole('gridcell', { name: 'Rung 1, row 2, column 1: NO contact Motor' }).waitFor();
+
+  // Run it: the ladder PROGRAM is chosen under Simulation.
+  await page.waitForTimeout(700);
+  await page.getByRole('combobox', { name: 'Program to run' }).selectOption('Latch');
+  await page.getByRole('button', { name: 'Run', exact: true }).click();
+  await view.locator('[role="gridcell"][data-power]').first().waitFor();
+  assert.equal(await cell(view, 1, 1, 3).getAttribute('data-power'), 'off');
+  await page.getByRole('img', { name: 'Motor: OFF', exact: true }).waitFor();
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
+  await page.getByRole('img', { name: 'Motor: ON', exact: true }).waitFor({ timeout: 5000 });
+  await view.locator('[role="gridcell"][data-power="on"]').first().waitFor();
+  assert.equal(await cell(view, 1, 1, 3).getAttribute('data-power'), 'on');
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).uncheck();
+  await page.waitForTimeout(300);
+  await page.getByRole('img', { name: 'Motor: ON', exact: true }).waitFor();
+  assert.equal(await cell(view, 1, 2, 1).getAttribute('data-power'), 'on', 'the Motor contact holds');
+  await page.getByRole('checkbox', { name: 'Stop', exact: true }).check();
+  await page.getByRole('img', { name: 'Motor: OFF', exact: true }).waitFor({ timeout: 5000 });
+  await page.screenshot({ path: path.join(root, 'docs/screenshots/ladder-editor.png'), fullPage: true });
+
+  // A reload finds the rungs as they were.
+  await page.reload();
+  await page.getByRole('button', { name: 'Ladder diagram Latch' }).click();
+  await page.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: NC contact Stop, linked down' }).waitFor();
+  await page.getByRole('gridcell', { name: 'Rung 1, row 1, column 3: coil Motor' }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('keys alone build a rung, Escape takes a placement back, and a block gets an instance and pins', async () => {
+  const context = await browser.newContext();
+  const { page, errors } = await openApp(context);
+  const view = await newLadderProgram(page, 'Delay', 'VAR_INPUT\n    Go : BOOL;\nEND_VAR\nVAR_OUTPUT\n    Lamp : BOOL;\nEND_VAR\n');
+  await cell(view, 1, 1, 1).focus();
+  await page.keyboard.press('c');
+  await page.keyboard.type('Go');
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('o');
+  await page.keyboard.press('Escape');
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: empty' }).waitFor();
+  await view.getByRole('button', { name: 'TON', exact: true }).click();
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: TON T1' }).waitFor();
+  const pt = view.getByRole('textbox', { name: 'PT of T1' });
+  assert.equal(await pt.inputValue(), 'T#1s', 'a timer starts with a preset');
+  await pt.fill('T#2s');
+  await pt.press('Tab');
+  assert.match(await view.getByRole('textbox', { name: 'Declarations' }).inputValue(), /T1 : TON;/);
+  await cell(view, 1, 1, 3).click();
+  await page.keyboard.press('o');
+  await page.keyboard.type('Lamp');
+  await page.keyboard.press('Enter');
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 3: coil Lamp' }).waitFor();
+  // Step the clock: Lamp comes on after 2 s, not before.
+  await page.waitForTimeout(700);
+  await page.getByRole('combobox', { name: 'Program to run' }).selectOption('Delay');
+  await page.getByRole('checkbox', { name: 'Go', exact: true }).check();
+  await page.getByRole('spinbutton', { name: 'Scans per step' }).fill('199');
+  await page.getByRole('button', { name: 'Step N' }).click();
+  await page.getByRole('img', { name: 'Lamp: OFF', exact: true }).waitFor();
+  await page.getByRole('spinbutton', { name: 'Scans per step' }).fill('2');
+  await page.getByRole('button', { name: 'Step N' }).click();
+  await page.getByRole('img', { name: 'Lamp: ON', exact: true }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});

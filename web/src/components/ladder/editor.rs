@@ -1,0 +1,590 @@
+//! Editing a ladder POU in the page: the selected cell, the palette, keys, the operand box
+//! and undo/redo. Every change is a [`LadderEdit`] of the core applied to the POU in the
+//! project; this module only maps gestures to edits and keeps whole states for undo.
+
+use leptos::prelude::*;
+use plc_core::ladder::{
+    declare, Block, CellRef, CoilKind, ContactKind, Element, LadderEdit, LadderPou, PinKind, Rung,
+    DEFAULT_COLUMNS, DEFAULT_ROWS,
+};
+use plc_core::project::History;
+
+use crate::state::AppState;
+
+/// How long after the last edit the project is checked and saved.
+const CHECK_DELAY: std::time::Duration = std::time::Duration::from_millis(300);
+
+/// The history group of a placement and the operand typed for it (one undo step).
+const PLACE_GROUP: &str = "place-operand";
+
+/// The standard blocks of the palette, in order.
+pub const STANDARD_BLOCKS: &[&str] = &[
+    "TON", "TOF", "TP", "CTU", "CTD", "CTUD", "R_TRIG", "F_TRIG", "SR", "RS", "GT", "GE", "EQ",
+    "NE", "LE", "LT", "MOVE", "ADD", "SUB", "MUL", "DIV",
+];
+
+/// What a palette button or key puts into a cell.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Tool {
+    /// A contact of this kind.
+    Contact(ContactKind),
+    /// A coil of this kind.
+    Coil(CoilKind),
+    /// A horizontal wire.
+    Wire,
+    /// Toggles the vertical link.
+    LinkDown,
+    /// A jump.
+    Jump,
+    /// A return.
+    Return,
+    /// A block of this type.
+    Block(String),
+}
+
+impl Tool {
+    /// The palette button's accessible name.
+    pub fn label(&self) -> String {
+        match self {
+            Tool::Contact(ContactKind::NormallyOpen) => "NO contact".into(),
+            Tool::Contact(ContactKind::NormallyClosed) => "NC contact".into(),
+            Tool::Contact(ContactKind::Rising) => "Rising edge contact".into(),
+            Tool::Contact(ContactKind::Falling) => "Falling edge contact".into(),
+            Tool::Coil(CoilKind::Normal) => "Coil".into(),
+            Tool::Coil(CoilKind::Negated) => "Negated coil".into(),
+            Tool::Coil(CoilKind::Set) => "Set coil".into(),
+            Tool::Coil(CoilKind::Reset) => "Reset coil".into(),
+            Tool::Coil(CoilKind::Rising) => "Rising edge coil".into(),
+            Tool::Coil(CoilKind::Falling) => "Falling edge coil".into(),
+            Tool::Wire => "Wire".into(),
+            Tool::LinkDown => "Link down".into(),
+            Tool::Jump => "Jump".into(),
+            Tool::Return => "Return".into(),
+            Tool::Block(t) => t.clone(),
+        }
+    }
+
+    /// The element tools of the palette (blocks come after them).
+    pub fn elements() -> Vec<Tool> {
+        vec![
+            Tool::Contact(ContactKind::NormallyOpen),
+            Tool::Contact(ContactKind::NormallyClosed),
+            Tool::Contact(ContactKind::Rising),
+            Tool::Contact(ContactKind::Falling),
+            Tool::Coil(CoilKind::Normal),
+            Tool::Coil(CoilKind::Negated),
+            Tool::Coil(CoilKind::Set),
+            Tool::Coil(CoilKind::Reset),
+            Tool::Wire,
+            Tool::LinkDown,
+            Tool::Jump,
+            Tool::Return,
+        ]
+    }
+
+    /// The tool of a key pressed on a cell (`c` NO contact, `n` NC contact, `o` coil, `s`
+    /// set coil, `r` reset coil, `w` wire, `l` link down).
+    pub fn of_key(key: &str) -> Option<Tool> {
+        Some(match key {
+            "c" => Tool::Contact(ContactKind::NormallyOpen),
+            "n" => Tool::Contact(ContactKind::NormallyClosed),
+            "o" => Tool::Coil(CoilKind::Normal),
+            "s" => Tool::Coil(CoilKind::Set),
+            "r" => Tool::Coil(CoilKind::Reset),
+            "w" => Tool::Wire,
+            "l" => Tool::LinkDown,
+            _ => return None,
+        })
+    }
+
+    /// Whether the element it places has an operand to type.
+    fn asks_operand(&self) -> bool {
+        matches!(self, Tool::Contact(_) | Tool::Coil(_) | Tool::Jump)
+    }
+}
+
+/// The prefix of a new instance of block type `type_name` (`T` for timers, …).
+fn instance_prefix(type_name: &str) -> String {
+    match type_name.to_ascii_uppercase().as_str() {
+        "TON" | "TOF" | "TP" | "RTO" => "T".into(),
+        "CTU" | "CTD" | "CTUD" => "C".into(),
+        "R_TRIG" => "RT".into(),
+        "F_TRIG" => "FT".into(),
+        "SR" | "RS" => "FF".into(),
+        other => other.chars().filter(|c| c.is_ascii_alphanumeric()).collect(),
+    }
+}
+
+/// Sensible operands for a new block's pins: a preset time for timers, a preset count for
+/// counters.
+fn default_pins(type_name: &str) -> Vec<(&'static str, &'static str)> {
+    match type_name.to_ascii_uppercase().as_str() {
+        "TON" | "TOF" | "TP" => vec![("PT", "T#1s")],
+        "CTU" | "CTD" | "CTUD" => vec![("PV", "10")],
+        _ => Vec::new(),
+    }
+}
+
+/// What undo restores: the POU and the selected cell.
+type Snapshot = (LadderPou, Option<CellRef>);
+
+/// The editing state of one ladder view (all handles, so it is `Copy`).
+#[derive(Clone, Copy)]
+pub struct LadderEditor {
+    state: AppState,
+    name: StoredValue<String>,
+    /// The selected cell.
+    pub selected: RwSignal<Option<CellRef>>,
+    /// The cell whose operand box is open, and whether the box belongs to a placement (so
+    /// Escape takes the placement back).
+    pub operand_at: RwSignal<Option<(CellRef, bool)>>,
+    /// The text in the operand box (kept here so that a redraw of the rungs keeps it).
+    pub operand_text: RwSignal<String>,
+    history: StoredValue<History<Snapshot>>,
+    /// Bumped on every edit, undo and redo (the toolbar reads it).
+    pub version: RwSignal<u64>,
+    generation: StoredValue<u64>,
+    clipboard: StoredValue<Option<Rung>>,
+}
+
+impl LadderEditor {
+    /// An editor of the ladder POU `name`.
+    pub fn new(state: AppState, name: &str) -> Self {
+        LadderEditor {
+            state,
+            name: StoredValue::new(name.to_string()),
+            selected: RwSignal::new(None),
+            operand_at: RwSignal::new(None),
+            operand_text: RwSignal::new(String::new()),
+            history: StoredValue::new(History::default()),
+            version: RwSignal::new(0),
+            generation: StoredValue::new(0),
+            clipboard: StoredValue::new(None),
+        }
+    }
+
+    /// The POU as it is now.
+    pub fn pou(&self) -> Option<LadderPou> {
+        let name = self.name.get_value();
+        self.state.project.with_untracked(|p| p.ladder.iter().find(|l| l.name == name).cloned())
+    }
+
+    fn replace(&self, pou: LadderPou) {
+        let name = self.name.get_value();
+        self.state.project.update(|p| {
+            if let Some(l) = p.ladder.iter_mut().find(|l| l.name == name) {
+                *l = pou;
+            }
+        });
+        self.version.update(|v| *v += 1);
+        self.schedule_check();
+    }
+
+    /// Checks and saves the project a moment after the last edit (as the ST editor does).
+    fn schedule_check(&self) {
+        self.generation.update_value(|g| *g += 1);
+        let generation = self.generation.get_value();
+        let ed = *self;
+        set_timeout(
+            move || {
+                if ed.generation.try_get_value() == Some(generation) {
+                    ed.state.check_now();
+                    ed.state.save();
+                }
+            },
+            CHECK_DELAY,
+        );
+    }
+
+    /// Applies `edit` as one undo step (or joins the open `group`); shows why when it
+    /// cannot be made. Returns whether it was applied.
+    pub fn apply(&self, edit: &LadderEdit, group: Option<&str>) -> bool {
+        let Some(pou) = self.pou() else { return false };
+        match pou.apply(edit) {
+            Ok(next) => {
+                let before = (pou, self.selected.get_untracked());
+                self.history.update_value(|h| match group {
+                    Some(g) => h.record_grouped(before, g),
+                    None => h.record(before),
+                });
+                self.replace(next);
+                true
+            }
+            Err(e) => {
+                self.state.error(format!("Not changed: {e}."));
+                false
+            }
+        }
+    }
+
+    fn restore(&self, (pou, selected): Snapshot) {
+        self.replace(pou);
+        self.selected.set(selected);
+        self.operand_at.set(None);
+        self.focus_selected();
+    }
+
+    /// Undoes the last step.
+    pub fn undo(&self) {
+        let Some(current) = self.pou() else { return };
+        let mut result = None;
+        self.history.update_value(|h| {
+            result = h.undo((current.clone(), self.selected.get_untracked())).ok();
+        });
+        if let Some(s) = result {
+            self.restore(s);
+        }
+    }
+
+    /// Redoes the last undone step.
+    pub fn redo(&self) {
+        let Some(current) = self.pou() else { return };
+        let mut result = None;
+        self.history.update_value(|h| {
+            result = h.redo((current.clone(), self.selected.get_untracked())).ok();
+        });
+        if let Some(s) = result {
+            self.restore(s);
+        }
+    }
+
+    /// Whether there is a step to undo (tracks edits).
+    pub fn can_undo(&self) -> bool {
+        self.version.track();
+        self.history.with_value(History::can_undo)
+    }
+
+    /// Whether there is a step to redo (tracks edits).
+    pub fn can_redo(&self) -> bool {
+        self.version.track();
+        self.history.with_value(History::can_redo)
+    }
+
+    /// The id of a cell's element in the page.
+    pub fn cell_id(&self, at: CellRef) -> String {
+        format!("ld-cell-{}-{}-{}-{}", self.name.get_value(), at.rung, at.row, at.col)
+    }
+
+    /// Moves the focus to the selected cell (roving tabindex): as soon as the rungs are
+    /// drawn (a microtask, before the next key arrives), and again on the next frame in
+    /// case a redraw replaced the cell.
+    pub fn focus_selected(&self) {
+        let Some(at) = self.selected.get_untracked() else { return };
+        let id = self.cell_id(at);
+        let focus = move |id: &str| {
+            use wasm_bindgen::JsCast;
+            let document = web_sys::window().and_then(|w| w.document());
+            let el = document
+                .as_ref()
+                .and_then(|d| d.get_element_by_id(id))
+                .and_then(|e| e.dyn_into::<web_sys::HtmlElement>().ok());
+            let operand_open = document
+                .and_then(|d| d.active_element())
+                .is_some_and(|a| a.class_list().contains("ld-operand-box"));
+            if let Some(el) = el.filter(|_| !operand_open) {
+                let _ = el.focus();
+            }
+        };
+        let again = id.clone();
+        wasm_bindgen_futures::spawn_local(async move { focus(&id) });
+        request_animation_frame(move || focus(&again));
+    }
+
+    /// Moves the selection by rows and columns, from rung to rung at the edges.
+    pub fn move_selection(&self, rows: isize, cols: isize) {
+        let Some(pou) = self.pou() else { return };
+        let at = self.selected.get_untracked().unwrap_or_default();
+        let Some(rung) = pou.rungs.get(at.rung) else { return };
+        let col = (at.col as isize + cols).clamp(0, rung.columns() as isize - 1) as usize;
+        let row = at.row as isize + rows;
+        let next = if row < 0 {
+            match at.rung.checked_sub(1).and_then(|r| pou.rungs.get(r).map(|g| (r, g))) {
+                Some((r, g)) => CellRef::new(r, g.rows() - 1, col.min(g.columns() - 1)),
+                None => CellRef { row: 0, col, ..at },
+            }
+        } else if row as usize >= rung.rows() {
+            match pou.rungs.get(at.rung + 1) {
+                Some(g) => CellRef::new(at.rung + 1, 0, col.min(g.columns() - 1)),
+                None => CellRef { row: rung.rows() - 1, col, ..at },
+            }
+        } else {
+            CellRef { row: row as usize, col, ..at }
+        };
+        self.selected.set(Some(next));
+        self.focus_selected();
+    }
+
+    /// The selected cell, or the first one (and says so) when none is.
+    fn target(&self) -> CellRef {
+        match self.selected.get_untracked() {
+            Some(at) => at,
+            None => {
+                let at = CellRef::default();
+                self.selected.set(Some(at));
+                at
+            }
+        }
+    }
+
+    /// Uses a palette tool on `at` (the selected cell when `None`).
+    pub fn use_tool(&self, tool: &Tool, at: Option<CellRef>) {
+        let at = at.unwrap_or_else(|| self.target());
+        self.selected.set(Some(at));
+        let element = match tool {
+            Tool::Contact(kind) => Element::Contact { kind: *kind, operand: String::new() },
+            Tool::Coil(kind) => Element::Coil { kind: *kind, operand: String::new() },
+            Tool::Wire => Element::Wire,
+            Tool::Jump => Element::Jump { label: String::new() },
+            Tool::Return => Element::Return,
+            Tool::LinkDown => {
+                self.apply(&LadderEdit::ToggleLinkDown { at }, None);
+                self.focus_selected();
+                return;
+            }
+            Tool::Block(type_name) => {
+                self.place_block(type_name, at);
+                return;
+            }
+        };
+        let asks = tool.asks_operand();
+        self.history.update_value(History::close_group);
+        let group = asks.then_some(PLACE_GROUP);
+        if self.apply(&LadderEdit::Place { at, element }, group) && asks {
+            self.operand_text.set(String::new());
+            self.operand_at.set(Some((at, true)));
+        } else {
+            self.focus_selected();
+        }
+    }
+
+    /// Places a block of `type_name` at `at` with a fresh instance (declared for the user)
+    /// and default pins, as one undo step.
+    fn place_block(&self, type_name: &str, at: CellRef) {
+        let Some(pou) = self.pou() else { return };
+        let catalog = self.state.project.with_untracked(|p| p.catalog());
+        let is_fb = catalog.block(type_name).is_some_and(|b| b.is_function_block());
+        let instance = is_fb.then(|| pou.fresh_instance(&instance_prefix(type_name)));
+        let mut block = Block::new(type_name, instance.as_deref());
+        for (pin, operand) in default_pins(type_name) {
+            block.inputs.push(plc_core::ladder::Pin::operand(pin, operand));
+        }
+        let mut edits = vec![LadderEdit::Place { at, element: Element::Block(block) }];
+        if let Some(i) = &instance {
+            edits.push(LadderEdit::SetDeclarations {
+                text: declare(&pou.declarations, "VAR", i, type_name),
+            });
+        }
+        self.apply_all(&edits);
+        self.focus_selected();
+    }
+
+    /// Applies several edits as one undo step (all or none).
+    pub fn apply_all(&self, edits: &[LadderEdit]) -> bool {
+        let Some(pou) = self.pou() else { return false };
+        let mut next = pou.clone();
+        for e in edits {
+            match next.apply(e) {
+                Ok(p) => next = p,
+                Err(e) => {
+                    self.state.error(format!("Not changed: {e}."));
+                    return false;
+                }
+            }
+        }
+        let before = (pou, self.selected.get_untracked());
+        self.history.update_value(|h| h.record(before));
+        self.replace(next);
+        true
+    }
+
+    /// Commits the operand box: the operand joins the placement's undo step.
+    pub fn commit_operand(&self) {
+        let text = self.operand_text.get_untracked();
+        let text = text.as_str();
+        let Some((at, placed)) = self.operand_at.get_untracked() else { return };
+        self.operand_at.set(None);
+        let group = placed.then_some(PLACE_GROUP);
+        self.apply(&LadderEdit::SetOperand { at, operand: text.to_string() }, group);
+        self.history.update_value(History::close_group);
+        self.focus_selected();
+    }
+
+    /// Closes the operand box; a placement it belonged to is taken back.
+    pub fn cancel_operand(&self) {
+        let Some((_, placed)) = self.operand_at.get_untracked() else { return };
+        self.operand_at.set(None);
+        if placed {
+            let mut before = None;
+            self.history.update_value(|h| before = h.cancel());
+            if let Some(s) = before {
+                self.restore(s);
+            }
+        }
+        self.focus_selected();
+    }
+
+    /// Opens the operand box on an element that has an operand.
+    pub fn edit_operand(&self, at: CellRef) {
+        let has = self.pou().is_some_and(|p| {
+            p.rungs.get(at.rung).and_then(|r| r.cell(at.row, at.col)).is_some_and(|c| {
+                matches!(
+                    c.element,
+                    Element::Contact { .. } | Element::Coil { .. } | Element::Jump { .. }
+                )
+            })
+        });
+        if has {
+            self.history.update_value(History::close_group);
+            let current = self.pou().and_then(|p| {
+                p.rungs.get(at.rung).and_then(|r| r.cell(at.row, at.col)).map(|c| {
+                    match &c.element {
+                        Element::Contact { operand, .. } | Element::Coil { operand, .. } => {
+                            operand.clone()
+                        }
+                        Element::Jump { label } => label.clone(),
+                        _ => String::new(),
+                    }
+                })
+            });
+            self.operand_text.set(current.unwrap_or_default());
+            self.operand_at.set(Some((at, false)));
+        }
+    }
+
+    /// A key pressed on a grid cell; true when it was used.
+    pub fn key(&self, at: CellRef, key: &str, ctrl: bool, shift: bool) -> bool {
+        match (key, ctrl) {
+            ("ArrowUp", false) => self.move_selection(-1, 0),
+            ("ArrowDown", false) => self.move_selection(1, 0),
+            ("ArrowLeft", false) => self.move_selection(0, -1),
+            ("ArrowRight", false) => self.move_selection(0, 1),
+            ("Delete" | "Backspace", false) => {
+                self.apply(&LadderEdit::Clear { at }, None);
+            }
+            ("Enter" | "F2", false) => self.edit_operand(at),
+            ("z" | "Z", true) if !shift => self.undo(),
+            ("z" | "Z", true) | ("y" | "Y", true) => self.redo(),
+            ("c", true) => {
+                let rung = self.pou().and_then(|p| p.rungs.get(at.rung).cloned());
+                self.clipboard.set_value(rung);
+                self.state.info(format!(
+                    "Rung {} copied: Ctrl+V pastes it below the selected rung.",
+                    at.rung + 1
+                ));
+            }
+            ("v", true) => {
+                if let Some(rung) = self.clipboard.get_value() {
+                    self.apply(&LadderEdit::InsertRung { index: at.rung + 1, rung }, None);
+                }
+            }
+            (k, false) => match Tool::of_key(k) {
+                Some(tool) => self.use_tool(&tool, Some(at)),
+                None => return false,
+            },
+            _ => return false,
+        }
+        true
+    }
+
+    /// A rung toolbar action on the selected cell's rung.
+    pub fn rung_action(&self, action: RungAction) {
+        let at = self.target();
+        let rows = self.pou().and_then(|p| p.rungs.get(at.rung).map(Rung::rows)).unwrap_or(0);
+        let edit = match action {
+            RungAction::Add => LadderEdit::InsertRung {
+                index: at.rung + 1,
+                rung: Rung::new(DEFAULT_ROWS, DEFAULT_COLUMNS),
+            },
+            RungAction::Delete => LadderEdit::DeleteRung { index: at.rung },
+            RungAction::Up => {
+                if at.rung == 0 {
+                    return;
+                }
+                LadderEdit::MoveRung { from: at.rung, to: at.rung - 1 }
+            }
+            RungAction::Down => LadderEdit::MoveRung { from: at.rung, to: at.rung + 1 },
+            RungAction::InsertRow => LadderEdit::InsertRow { rung: at.rung, row: at.row },
+            RungAction::DeleteRow => LadderEdit::DeleteRow { rung: at.rung, row: at.row },
+            RungAction::InsertColumn => LadderEdit::InsertColumn { rung: at.rung, col: at.col },
+            RungAction::DeleteColumn => LadderEdit::DeleteColumn { rung: at.rung, col: at.col },
+        };
+        if !self.apply(&edit, None) {
+            return;
+        }
+        let count = self.pou().map_or(0, |p| p.rungs.len());
+        let next = match action {
+            RungAction::Add => CellRef::new(at.rung + 1, 0, 0),
+            RungAction::Delete => CellRef::new(at.rung.min(count.saturating_sub(1)), 0, 0),
+            RungAction::Up => CellRef { rung: at.rung - 1, ..at },
+            RungAction::Down => CellRef { rung: at.rung + 1, ..at },
+            RungAction::DeleteRow => CellRef { row: at.row.min(rows.saturating_sub(2)), ..at },
+            _ => at,
+        };
+        self.selected.set(Some(next));
+        self.focus_selected();
+    }
+
+    /// Binds a block pin (the pin boxes under a selected block).
+    pub fn set_pin(&self, at: CellRef, kind: PinKind, pin: &str, operand: &str) {
+        self.apply(
+            &LadderEdit::SetPin { at, kind, pin: pin.to_string(), operand: operand.to_string() },
+            None,
+        );
+    }
+}
+
+/// The rung toolbar's actions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RungAction {
+    /// `Add rung` below the selected one.
+    Add,
+    /// `Delete rung`.
+    Delete,
+    /// `Move rung up`.
+    Up,
+    /// `Move rung down`.
+    Down,
+    /// `Insert row` at the selected row.
+    InsertRow,
+    /// `Delete row`.
+    DeleteRow,
+    /// `Insert column` at the selected column.
+    InsertColumn,
+    /// `Delete column`.
+    DeleteColumn,
+}
+
+impl RungAction {
+    /// Every action with its button text (the accessible name).
+    pub fn all() -> [(RungAction, &'static str); 8] {
+        [
+            (RungAction::Add, "Add rung"),
+            (RungAction::Delete, "Delete rung"),
+            (RungAction::Up, "Move rung up"),
+            (RungAction::Down, "Move rung down"),
+            (RungAction::InsertRow, "Insert row"),
+            (RungAction::DeleteRow, "Delete row"),
+            (RungAction::InsertColumn, "Insert column"),
+            (RungAction::DeleteColumn, "Delete column"),
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn keys_and_labels_match_the_issue() {
+        assert_eq!(Tool::of_key("c").map(|t| t.label()).as_deref(), Some("NO contact"));
+        assert_eq!(Tool::of_key("n").map(|t| t.label()).as_deref(), Some("NC contact"));
+        assert_eq!(Tool::of_key("o").map(|t| t.label()).as_deref(), Some("Coil"));
+        assert_eq!(Tool::of_key("l").map(|t| t.label()).as_deref(), Some("Link down"));
+        assert_eq!(Tool::of_key("x"), None);
+        let labels: Vec<String> = Tool::elements().iter().map(Tool::label).collect();
+        assert!(labels.contains(&"Falling edge contact".to_string()));
+        assert_eq!(instance_prefix("TON"), "T");
+        assert_eq!(instance_prefix("CTUD"), "C");
+        assert_eq!(default_pins("tp"), vec![("PT", "T#1s")]);
+    }
+}
