@@ -46,10 +46,19 @@ async function newLadderProgram(page, name, declarations) {
 const cell = (view, rung, row, col) =>
   view.getByRole('gridcell', { name: new RegExp(`^Rung ${rung}, row ${row}, column ${col}: `) });
 
-/** Puts a palette element into a cell by clicking both, then types its operand. */
+/** Drags with the mouse (pointer events) from the middle of one element to another's. */
+async function drag(page, from, to) {
+  const a = await from.boundingBox();
+  const b = await to.boundingBox();
+  await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
+  await page.mouse.up();
+}
+
+/** Drags a palette element onto a cell, then types its operand. */
 async function place(page, view, [rung, row, col], tool, operand) {
-  await cell(view, rung, row, col).click();
-  await view.getByRole('button', { name: tool, exact: true }).click();
+  await drag(page, view.getByRole('button', { name: tool, exact: true }), cell(view, rung, row, col));
   if (operand !== undefined) {
     const box = view.getByRole('textbox', { name: 'Operand' });
     await box.fill(operand);
@@ -66,7 +75,7 @@ VAR_OUTPUT
 END_VAR
 `;
 
-test('a start/stop latch built with the palette in a new project runs, undoes, redoes and survives a reload', async () => {
+test('a start/stop latch dragged from the palette in a new project runs, undoes, redoes and survives a reload', async () => {
   const context = await browser.newContext();
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Latch', LATCH_DECLS);
@@ -78,6 +87,11 @@ test('a start/stop latch built with the palette in a new project runs, undoes, r
   await cell(view, 1, 1, 2).and(page.getByRole('gridcell', { name: 'NC contact Stop, linked down' })).waitFor();
   assert.equal(await cell(view, 1, 1, 3).getAttribute('aria-selected'), 'false');
   assert.equal(await cell(view, 1, 1, 2).getAttribute('aria-selected'), 'true');
+  // A placed element is dragged to another cell, and the move undone.
+  await drag(page, cell(view, 1, 1, 3), cell(view, 1, 1, 5));
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 5: coil Motor' }).waitFor();
+  await view.getByRole('button', { name: 'Undo' }).click();
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 3: coil Motor' }).waitFor();
 
   // Undo takes back the link, then the Motor contact; redo puts both back.
   await view.getByRole('button', { name: 'Undo' }).click();
@@ -108,11 +122,21 @@ test('a start/stop latch built with the palette in a new project runs, undoes, r
   await page.getByRole('img', { name: 'Motor: OFF', exact: true }).waitFor({ timeout: 5000 });
   await page.screenshot({ path: path.join(root, 'docs/screenshots/ladder-editor.png'), fullPage: true });
 
-  // A reload finds the rungs as they were.
+  // A reload finds the rungs as they were; so does a fresh browser opening the share link.
   await page.reload();
   await page.getByRole('button', { name: 'Ladder diagram Latch' }).click();
   await page.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: NC contact Stop, linked down' }).waitFor();
   await page.getByRole('gridcell', { name: 'Rung 1, row 1, column 3: coil Motor' }).waitFor();
+  const names = await page.getByRole('gridcell').evaluateAll((cells) => cells.map((c) => c.getAttribute('aria-label')));
+  await page.getByRole('button', { name: 'Share' }).click();
+  const link = await page.getByRole('textbox', { name: 'Share link' }).inputValue();
+  const other = await browser.newContext();
+  const shared = await other.newPage();
+  await shared.goto(link);
+  await shared.getByRole('button', { name: 'Ladder diagram Latch' }).click();
+  await shared.getByRole('gridcell', { name: 'Rung 1, row 1, column 3: coil Motor' }).waitFor();
+  assert.deepEqual(await shared.getByRole('gridcell').evaluateAll((cells) => cells.map((c) => c.getAttribute('aria-label'))), names);
+  await other.close();
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -151,6 +175,57 @@ test('keys alone build a rung, Escape takes a placement back, and a block gets a
   await page.getByRole('spinbutton', { name: 'Scans per step' }).fill('2');
   await page.getByRole('button', { name: 'Step N' }).click();
   await page.getByRole('img', { name: 'Lamp: ON', exact: true }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('twenty mixed edits undo one by one to the exact earlier grids and redo to the last', async () => {
+  const context = await browser.newContext();
+  const { page, errors } = await openApp(context);
+  const view = await newLadderProgram(page, 'Mixed', 'VAR\n    a, b, c, q : BOOL;\nEND_VAR\n');
+  const grid = () => view.getByRole('gridcell').evaluateAll((cells) => cells.map((c) => c.getAttribute('aria-label')).join('|'));
+  const snapshots = [await grid()];
+  const keys = [
+    ['c', 'a'], ['ArrowRight'], ['n', 'b'], ['ArrowRight'], ['o', 'q'], ['ArrowDown'], ['w'],
+    ['ArrowLeft'], ['l'], ['ArrowLeft'], ['c', 'c'], ['Delete'], ['s', 'q'], ['r', 'q'],
+    ['ArrowDown'], ['w'], ['ArrowRight'], ['n', 'c'],
+  ];
+  await cell(view, 1, 1, 1).focus();
+  for (const [key, operand] of keys) {
+    await page.keyboard.press(key);
+    if (operand) {
+      await page.keyboard.type(operand);
+      await page.keyboard.press('Enter');
+    }
+    if (!key.startsWith('Arrow')) {
+      const now = await grid();
+      assert.notEqual(now, snapshots[snapshots.length - 1], `the key ${key} changed the rung`);
+      snapshots.push(now);
+    }
+  }
+  // Rung and grid buttons until there are twenty edits (a button that changes nothing here,
+  // such as Move rung up on the first rung, is no edit).
+  for (const action of ['Add rung', 'Insert row', 'Insert column', 'Delete column', 'Move rung up', 'Delete row', 'Add rung', 'Delete rung', 'Move rung down', 'Insert row', 'Insert column']) {
+    if (snapshots.length > 20) break;
+    await view.getByRole('button', { name: action, exact: true }).click();
+    const now = await grid();
+    if (now !== snapshots[snapshots.length - 1]) snapshots.push(now);
+  }
+  assert.equal(snapshots.length, 21, 'twenty edits');
+  for (let i = snapshots.length - 2; i >= 0; i--) {
+    await view.getByRole('button', { name: 'Undo' }).click();
+    assert.equal(await grid(), snapshots[i], `after undoing back to step ${i}`);
+  }
+  // The one step before them typed the declarations; then nothing is left to undo.
+  await view.getByRole('button', { name: 'Undo' }).click();
+  assert.equal(await grid(), snapshots[0]);
+  assert.equal(await view.getByRole('button', { name: 'Undo' }).isDisabled(), true);
+  await view.getByRole('button', { name: 'Redo' }).click();
+  for (let i = 1; i < snapshots.length; i++) {
+    await view.getByRole('button', { name: 'Redo' }).click();
+    assert.equal(await grid(), snapshots[i], `after redoing step ${i}`);
+  }
+  assert.equal(await view.getByRole('button', { name: 'Redo' }).isDisabled(), true);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -125,6 +125,43 @@ fn default_pins(type_name: &str) -> Vec<(&'static str, &'static str)> {
     }
 }
 
+/// What is being dragged: a palette tool, or the element of a cell.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DragSource {
+    /// A palette tool.
+    Tool(Tool),
+    /// The element in this cell (moved, or copied with Alt or Ctrl).
+    Cell(CellRef),
+}
+
+/// A drag with the pointer (mouse, pen or touch) in progress.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Drag {
+    /// What is dragged.
+    pub source: DragSource,
+    /// Where the pointer went down.
+    start: (f64, f64),
+    /// Where it is now.
+    pub at: (f64, f64),
+    /// Whether it has moved far enough to be a drag (not a click).
+    pub moved: bool,
+    /// The cell under the pointer, and whether the element may go there.
+    pub target: Option<(CellRef, bool)>,
+}
+
+/// How far (CSS pixels) the pointer moves before a press becomes a drag.
+const DRAG_THRESHOLD: f64 = 5.0;
+
+/// The cell a grid cell element stands for (`data-at="rung-row-col"`).
+fn cell_at_point(x: f64, y: f64) -> Option<CellRef> {
+    let document = web_sys::window()?.document()?;
+    let el = document.element_from_point(x as f32, y as f32)?;
+    let cell = el.closest("[role=gridcell][data-at]").ok()??;
+    let at = cell.get_attribute("data-at")?;
+    let mut parts = at.split('-').map(|p| p.parse::<usize>().ok());
+    Some(CellRef::new(parts.next()??, parts.next()??, parts.next()??))
+}
+
 /// What undo restores: the POU and the selected cell.
 type Snapshot = (LadderPou, Option<CellRef>);
 
@@ -145,6 +182,8 @@ pub struct LadderEditor {
     pub version: RwSignal<u64>,
     generation: StoredValue<u64>,
     clipboard: StoredValue<Option<Rung>>,
+    /// The drag in progress.
+    pub drag: RwSignal<Option<Drag>>,
 }
 
 impl LadderEditor {
@@ -160,6 +199,7 @@ impl LadderEditor {
             version: RwSignal::new(0),
             generation: StoredValue::new(0),
             clipboard: StoredValue::new(None),
+            drag: RwSignal::new(None),
         }
     }
 
@@ -460,6 +500,7 @@ impl LadderEditor {
             ("ArrowRight", false) => self.move_selection(0, 1),
             ("Delete" | "Backspace", false) => {
                 self.apply(&LadderEdit::Clear { at }, None);
+                self.focus_selected();
             }
             ("Enter" | "F2", false) => self.edit_operand(at),
             ("z" | "Z", true) if !shift => self.undo(),
@@ -475,6 +516,7 @@ impl LadderEditor {
             ("v", true) => {
                 if let Some(rung) = self.clipboard.get_value() {
                     self.apply(&LadderEdit::InsertRung { index: at.rung + 1, rung }, None);
+                    self.focus_selected();
                 }
             }
             (k, false) => match Tool::of_key(k) {
@@ -484,6 +526,80 @@ impl LadderEditor {
             _ => return false,
         }
         true
+    }
+
+    /// The edit a drop of `source` on `to` makes.
+    fn drop_edit(&self, source: &DragSource, to: CellRef, copy: bool) -> Option<LadderEdit> {
+        Some(match source {
+            DragSource::Cell(from) if copy => LadderEdit::Copy { from: *from, to },
+            DragSource::Cell(from) => LadderEdit::Move { from: *from, to },
+            DragSource::Tool(Tool::LinkDown) => LadderEdit::ToggleLinkDown { at: to },
+            DragSource::Tool(Tool::Block(t)) => {
+                LadderEdit::Place { at: to, element: Element::Block(Block::new(t, None)) }
+            }
+            DragSource::Tool(_) => LadderEdit::Place { at: to, element: Element::Wire },
+        })
+    }
+
+    /// A pointer went down on a palette tool or a placed element: a drag may start.
+    pub fn press(&self, source: DragSource, ev: &web_sys::PointerEvent) {
+        if ev.button() != 0 {
+            return;
+        }
+        if let DragSource::Cell(at) = &source {
+            let empty = self.pou().is_none_or(|p| {
+                p.rungs
+                    .get(at.rung)
+                    .and_then(|r| r.cell(at.row, at.col))
+                    .is_none_or(|c| c.element == Element::Empty)
+            });
+            if empty {
+                return;
+            }
+        }
+        let at = (f64::from(ev.client_x()), f64::from(ev.client_y()));
+        self.drag.set(Some(Drag { source, start: at, at, moved: false, target: None }));
+    }
+
+    /// The pointer moved: follows it and shows whether the cell under it takes the drop.
+    pub fn pointer_move(&self, x: f64, y: f64) {
+        let Some(mut drag) = self.drag.get_untracked() else { return };
+        drag.at = (x, y);
+        drag.moved |= (x - drag.start.0).hypot(y - drag.start.1) > DRAG_THRESHOLD;
+        drag.target = cell_at_point(x, y).map(|to| {
+            let ok = self
+                .drop_edit(&drag.source, to, false)
+                .zip(self.pou())
+                .is_some_and(|(edit, pou)| pou.apply(&edit).is_ok());
+            (to, ok)
+        });
+        self.drag.set(Some(drag));
+    }
+
+    /// The pointer went up: a drag drops on the cell under it (a press that did not move is
+    /// left to the click).
+    pub fn release(&self, x: f64, y: f64, copy: bool) {
+        let Some(drag) = self.drag.get_untracked() else { return };
+        self.drag.set(None);
+        if !drag.moved {
+            return;
+        }
+        let Some(to) = cell_at_point(x, y) else { return };
+        match &drag.source {
+            DragSource::Tool(tool) => self.use_tool(tool, Some(to)),
+            DragSource::Cell(from) => {
+                let edit = if copy {
+                    LadderEdit::Copy { from: *from, to }
+                } else {
+                    LadderEdit::Move { from: *from, to }
+                };
+                self.history.update_value(History::close_group);
+                if self.apply(&edit, None) {
+                    self.selected.set(Some(to));
+                    self.focus_selected();
+                }
+            }
+        }
     }
 
     /// A rung toolbar action on the selected cell's rung.

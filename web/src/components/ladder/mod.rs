@@ -17,7 +17,7 @@ use plc_core::ladder::{
 use crate::components::editor::text::highlight_html;
 use crate::state::AppState;
 use draw::{rung_svg, RungCtx};
-use editor::{LadderEditor, RungAction, Tool, STANDARD_BLOCKS};
+use editor::{DragSource, LadderEditor, RungAction, Tool, STANDARD_BLOCKS};
 use geometry::{rung_geometry, NodePower};
 use live::{LadderLive, Probes};
 
@@ -56,6 +56,12 @@ fn rung_grid(
 ) -> impl IntoView {
     let geo = rung_geometry(rung);
     let pct = |v: f64, of: f64| if of > 0.0 { v / of * 100.0 } else { 0.0 };
+    // Selectors: a change of the selection or of the drop target wakes the two cells it
+    // concerns, not every cell of the POU.
+    let selection = Selector::new(move || editor.selected.get());
+    let drop_target = Selector::new(move || {
+        editor.drag.with(|d| d.as_ref().filter(|d| d.moved).and_then(|d| d.target))
+    });
     let rows = (0..rung.rows())
         .map(|row| {
             let cells = rung.cells[row]
@@ -78,10 +84,13 @@ fn rung_grid(
                         col + 1,
                         describe_cell(cell)
                     );
-                    let selected = move || editor.selected.get() == Some(at);
+                    let is_selected = selection.clone();
+                    let selected = move || is_selected.selected(&Some(at));
+                    let first = selection.clone();
+                    let tab_selected = selection.clone();
                     let tabindex = move || {
-                        let sel = editor.selected.get();
-                        if sel == Some(at) || (sel.is_none() && at == CellRef::default()) {
+                        let none = at == CellRef::default() && first.selected(&None);
+                        if tab_selected.selected(&Some(at)) || none {
                             "0"
                         } else {
                             "-1"
@@ -92,8 +101,14 @@ fn rung_grid(
                             l.as_ref().map(|l| if l.powered(index, row, col) { "on" } else { "off" })
                         })
                     };
+                    let drop_ok = drop_target.clone();
+                    let drop_bad = drop_target.clone();
                     view! {
                         <div role="gridcell" class="ld-cell" id=editor.cell_id(at) style=style
+                            data-at=format!("{index}-{row}-{col}")
+                            class:ld-drop-ok=move || drop_ok.selected(&Some((at, true)))
+                            class:ld-drop-bad=move || drop_bad.selected(&Some((at, false)))
+                            on:pointerdown=move |ev: leptos::ev::PointerEvent| editor.press(DragSource::Cell(at), &ev)
                             aria-label=label tabindex=tabindex
                             aria-selected=move || if selected() { "true" } else { "false" }
                             data-power=power
@@ -205,7 +220,23 @@ pub fn LadderView(name: String) -> impl IntoView {
     let pou = Memo::new(move |_| {
         state.project.with(|p| p.ladder.iter().find(|l| l.name == key).cloned())
     });
-    let probes = Memo::new(move |_| pou.with(|p| p.as_ref().map(Probes::of)));
+    // What to read from the simulator: worked out only while this POU runs (it lowers the
+    // whole POU, too slow to redo on every edit of a large one that is not running).
+    let runs_here = Memo::new(move |_| {
+        let running = state.running.get();
+        pou.with(|p| {
+            p.as_ref().is_some_and(|p| {
+                p.kind == LadderPouKind::Program
+                    && running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&p.name))
+            })
+        })
+    });
+    let probes = Memo::new(move |_| {
+        if !runs_here.get() {
+            return None;
+        }
+        pou.with(|p| p.as_ref().map(Probes::of))
+    });
     let live = Memo::new(move |_| {
         let running = state.running.get();
         let runs = pou.with(|p| {
@@ -221,6 +252,41 @@ pub fn LadderView(name: String) -> impl IntoView {
     });
     let show_st = RwSignal::new(false);
     let editor = LadderEditor::new(state, &name);
+    // Drags follow the pointer anywhere in the window and drop on the cell under it.
+    let moves = window_event_listener(leptos::ev::pointermove, move |ev| {
+        if editor.drag.with_untracked(Option::is_some) {
+            editor.pointer_move(f64::from(ev.client_x()), f64::from(ev.client_y()));
+        }
+    });
+    let ups = window_event_listener(leptos::ev::pointerup, move |ev| {
+        editor.release(
+            f64::from(ev.client_x()),
+            f64::from(ev.client_y()),
+            ev.ctrl_key() || ev.alt_key(),
+        );
+    });
+    let cancels = window_event_listener(leptos::ev::pointercancel, move |_| editor.drag.set(None));
+    on_cleanup(move || {
+        moves.remove();
+        ups.remove();
+        cancels.remove();
+    });
+    let ghost = move || {
+        let d = editor.drag.get().filter(|d| d.moved)?;
+        let label = match &d.source {
+            DragSource::Tool(t) => t.label(),
+            DragSource::Cell(at) => editor
+                .pou()
+                .and_then(|p| {
+                    p.rungs.get(at.rung).and_then(|r| r.cell(at.row, at.col)).map(describe_cell)
+                })
+                .unwrap_or_default(),
+        };
+        Some(view! {
+            <div class="ld-ghost" aria-hidden="true"
+                style=format!("left:{}px;top:{}px", d.at.0 + 10.0, d.at.1 + 10.0)>{label}</div>
+        })
+    };
 
     // A clicked problem or a fault: scroll its rung into view.
     let this = name.clone();
@@ -235,12 +301,15 @@ pub fn LadderView(name: String) -> impl IntoView {
         }
     });
 
+    let exists = Memo::new(move |_| pou.with(Option::is_some));
+    let name_for_rungs = name.clone();
     let body = move || {
-        let Some(p) = pou.get() else {
+        if !exists.get() {
             return view! { <p class="muted">"This ladder POU is no longer in the project."</p> }
                 .into_any();
-        };
+        }
         if show_st.get() {
+            let Some(p) = pou.get() else { return ().into_any() };
             let html = highlight_html(&st_view_pou(&p), &[]);
             return view! {
                 <pre class="code-view" aria-label=format!("{} as Structured Text", p.name)>
@@ -249,16 +318,44 @@ pub fn LadderView(name: String) -> impl IntoView {
             }
             .into_any();
         }
-        state.diagnostics.track();
-        let pou_name = p.name.clone();
-        p.rungs
-            .into_iter()
-            .enumerate()
-            .map(|(index, rung)| {
-                view! { <RungView rung=rung index=index pou=pou_name.clone() live=live editor=editor/> }
-            })
-            .collect_view()
-            .into_any()
+        // Each rung is drawn again only when it, or the problems marked on it, changed: an
+        // edit in a POU of a hundred rungs redraws one.
+        let pou_name = name_for_rungs.clone();
+        let keyed = move || {
+            let Some(p) = pou.get() else { return Vec::new() };
+            let marks = state.diagnostics.with(|ds| {
+                ds.iter()
+                    .filter_map(|d| match &d.site {
+                        Site::Ladder { pou, cell } if pou.eq_ignore_ascii_case(&p.name) => {
+                            Some((cell.map(|c| c.0), format!("{}{}{}", d.code, d.message, d.error)))
+                        }
+                        _ => None,
+                    })
+                    .collect::<Vec<_>>()
+            });
+            p.rungs
+                .into_iter()
+                .enumerate()
+                .map(|(index, rung)| {
+                    use std::hash::{Hash, Hasher};
+                    let mut h = std::collections::hash_map::DefaultHasher::new();
+                    format!("{rung:?}").hash(&mut h);
+                    for (r, m) in &marks {
+                        if r.is_none_or(|r| r == index) {
+                            m.hash(&mut h);
+                        }
+                    }
+                    (index, h.finish(), rung)
+                })
+                .collect::<Vec<_>>()
+        };
+        view! {
+            <For each=keyed key=|(index, hash, _)| (*index, *hash)
+                children=move |(index, _, rung)| view! {
+                    <RungView rung=rung index=index pou=pou_name.clone() live=live editor=editor/>
+                }/>
+        }
+        .into_any()
     };
     let status = move || pou.with(|p| p.as_ref().and_then(|p| live_status(state, p)));
     view! {
@@ -285,6 +382,7 @@ pub fn LadderView(name: String) -> impl IntoView {
                     }></textarea>
             </details>
             <Toolbar editor=editor/>
+            {ghost}
             <PinBoxes editor=editor pou=pou/>
             <div class="ld-rungs">{body}</div>
         </section>
@@ -298,8 +396,10 @@ fn Toolbar(editor: LadderEditor) -> impl IntoView {
     let user_blocks = Memo::new(move |_| state.project.with(|p| p.catalog().user_block_names()));
     let tool_button = move |tool: Tool, title: String| {
         let label = tool.label();
+        let dragged = tool.clone();
         view! {
-            <button class="ld-tool" title=title on:click=move |_| editor.use_tool(&tool, None)>{label}</button>
+            <button class="ld-tool" title=title on:click=move |_| editor.use_tool(&tool, None)
+                on:pointerdown=move |ev: leptos::ev::PointerEvent| editor.press(DragSource::Tool(dragged.clone()), &ev)>{label}</button>
         }
     };
     view! {
