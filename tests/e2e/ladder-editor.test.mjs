@@ -229,3 +229,32 @@ test('twenty mixed edits undo one by one to the exact earlier grids and redo to 
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('an undeclared operand is declared from its problem with the type its use implies', async () => {
+  const context = await browser.newContext();
+  const { page, errors } = await openApp(context);
+  await page.getByRole('button', { name: 'New ladder POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill('Fresh');
+  await page.getByRole('button', { name: 'Create' }).click();
+  const view = page.getByRole('region', { name: 'Ladder diagram Fresh' });
+  await view.waitFor();
+  await cell(view, 1, 1, 1).click();
+  await page.keyboard.press('c');
+  await page.keyboard.type('Button');
+  await page.keyboard.press('Enter');
+  await page.keyboard.press('ArrowRight');
+  await page.keyboard.press('o');
+  await page.keyboard.type('Light');
+  await page.keyboard.press('Enter');
+  await page.getByRole('button', { name: 'Declare Button' }).click();
+  await page.getByRole('button', { name: 'Declare Light' }).click();
+  const decls = await view.getByRole('textbox', { name: 'Declarations' }).inputValue();
+  assert.match(decls, /VAR_INPUT\s+Button : BOOL;\s+END_VAR/);
+  assert.match(decls, /VAR_OUTPUT\s+Light : BOOL;\s+END_VAR/);
+  await page.getByText('No problems found.').waitFor();
+  // The declaration is an edit of the POU: undo takes it back.
+  await view.getByRole('button', { name: 'Undo' }).click();
+  await page.getByRole('button', { name: 'Declare Light' }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -563,6 +563,33 @@ pub fn declare(declarations: &str, section: &str, name: &str, ty: &str) -> Strin
     out
 }
 
+/// How to declare `name`, used undeclared at `at` (the fix offered for E0418): the section
+/// and type its use implies — a contact's operand is a `VAR_INPUT` BOOL (a switch in the
+/// I/O panel), a coil's a `VAR_OUTPUT` BOOL (a lamp), a block's instance a `VAR` of the
+/// block's type. `None` when the use implies no type (a block pin, an expression).
+pub fn implied_declaration(
+    pou: &LadderPou,
+    at: CellRef,
+    name: &str,
+) -> Option<(&'static str, String)> {
+    let cell = pou.rungs.get(at.rung)?.cell(at.row, at.col)?;
+    let root = |operand: &str| {
+        let head: String =
+            operand.trim().chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
+        head.eq_ignore_ascii_case(name) && head.len() == operand.trim().len()
+    };
+    match &cell.element {
+        Element::Contact { operand, .. } if root(operand) => Some(("VAR_INPUT", "BOOL".into())),
+        Element::Coil { operand, .. } if root(operand) => Some(("VAR_OUTPUT", "BOOL".into())),
+        Element::Block(b)
+            if b.instance.as_deref().is_some_and(|i| i.eq_ignore_ascii_case(name)) =>
+        {
+            Some(("VAR", b.type_name.clone()))
+        }
+        _ => None,
+    }
+}
+
 /// Whether `declarations` declares `name` (a word followed by `:` or `,`).
 fn declares(declarations: &str, name: &str) -> bool {
     let lower = declarations.to_ascii_lowercase();

@@ -12,7 +12,9 @@ pub mod validate;
 mod walk;
 
 pub use catalog::Catalog;
-pub use edit::{declare, describe_cell, CellRef, EditError, LadderEdit, PinKind};
+pub use edit::{
+    declare, describe_cell, implied_declaration, CellRef, EditError, LadderEdit, PinKind,
+};
 pub use lower::{is_hidden_name, lower, power_map, power_var, LineMap, LoweredPou};
 pub use model::*;
 pub use st_view::{st_view, st_view_pou};

@@ -38,6 +38,7 @@ pub fn Problems() -> impl IntoView {
                     let class = if d.error { "ed-problem ed-problem-err" } else { "ed-problem ed-problem-warn" };
                     let label = format!("{}  {}  {}", d.place_label(), d.code, d.message);
                     let site = d.site.clone();
+                    let fix = declare_fix(state, &d);
                     let help = format!("problems.html#{}", d.code);
                     let help_name = format!("Explain {}", d.code);
                     view! {
@@ -46,6 +47,15 @@ pub fn Problems() -> impl IntoView {
                                 on:click=move |_| state.reveal(&site)>
                                 {label}
                             </button>
+                            {fix.map(|(pou, section, name, ty)| {
+                                let label = format!("Declare {name}");
+                                view! {
+                                    <button class="ed-problem-fix" on:click=move |_| {
+                                        state.view.set(crate::state::PouView::Ladder(pou.clone()));
+                                        state.ladder_declare.update(|q| q.push((pou.clone(), section, name.clone(), ty.clone())));
+                                    }>{label}</button>
+                                }
+                            })}
                             <a class="ed-problem-help" href=help target="_blank" rel="noopener"
                                 aria-label=help_name.clone() title=help_name>"?"</a>
                         </li>
@@ -64,4 +74,24 @@ pub fn Problems() -> impl IntoView {
             {list}
         </section>
     }
+}
+
+/// The fix of an undeclared ladder operand (E0418): the POU, and the section, name and type
+/// its use implies.
+fn declare_fix(
+    state: AppState,
+    d: &crate::state::DiagView,
+) -> Option<(String, &'static str, String, String)> {
+    use plc_core::build::Site;
+    use plc_core::ladder::{implied_declaration, CellRef};
+    if d.code != "E0418" {
+        return None;
+    }
+    let Site::Ladder { pou, cell: Some((r, row, col)) } = &d.site else { return None };
+    let name = d.message.split('`').nth(1)?.to_string();
+    state.project.with_untracked(|p| {
+        let lp = p.ladder.iter().find(|l| l.name.eq_ignore_ascii_case(pou))?;
+        let (section, ty) = implied_declaration(lp, CellRef::new(*r, *row, *col), &name)?;
+        Some((lp.name.clone(), section, name.clone(), ty))
+    })
 }

@@ -138,6 +138,10 @@ pub struct AppState {
     pub notice: RwSignal<Option<Notice>>,
     /// The POU shown in the editor pane.
     pub view: RwSignal<PouView>,
+    /// Declarations asked for from outside a ladder POU's view (the problem list's
+    /// `Declare NAME`): (POU, section, name, type), queued; the view of that POU adds each
+    /// to the declarations it has then, through its editor, so each is one undo step.
+    pub ladder_declare: RwSignal<Vec<(String, &'static str, String, String)>>,
     /// A request to move the ST editor's cursor to (line, column).
     pub jump_to: RwSignal<Option<(u32, u32)>>,
     /// A ladder cell or net element to point out in its view (a clicked problem).
@@ -184,6 +188,7 @@ impl AppState {
             held: RwSignal::new(BTreeMap::new()),
             notice: RwSignal::new(None),
             view: RwSignal::new(PouView::St),
+            ladder_declare: RwSignal::new(Vec::new()),
             jump_to: RwSignal::new(None),
             focus: RwSignal::new(None),
             marked_line: RwSignal::new(None),

@@ -350,3 +350,25 @@ fn declarations_get_new_variables_in_the_right_block() {
     assert!(out.ends_with("VAR_OUTPUT\n    Lamp : BOOL;\nEND_VAR\n"), "{out}");
     assert_eq!(declare("", "VAR", "x", "INT"), "VAR\n    x : INT;\nEND_VAR\n");
 }
+
+#[test]
+fn an_undeclared_operand_implies_its_declaration() {
+    let pou = apply_all(
+        empty(1, 3),
+        &[
+            LadderEdit::Place { at: at(0, 0, 0), element: no("Start") },
+            LadderEdit::Place { at: at(0, 0, 1), element: ton("T1", 1) },
+            LadderEdit::Place { at: at(0, 0, 2), element: coil("Lamp") },
+        ],
+    );
+    assert_eq!(implied_declaration(&pou, at(0, 0, 0), "start"), Some(("VAR_INPUT", "BOOL".into())));
+    assert_eq!(implied_declaration(&pou, at(0, 0, 1), "T1"), Some(("VAR", "TON".into())));
+    assert_eq!(implied_declaration(&pou, at(0, 0, 2), "Lamp"), Some(("VAR_OUTPUT", "BOOL".into())));
+    assert_eq!(implied_declaration(&pou, at(0, 0, 2), "Other"), None);
+    let member = empty(1, 1).apply(&LadderEdit::Place { at: at(0, 0, 0), element: no("T1.Q") });
+    assert_eq!(
+        implied_declaration(&member.unwrap(), at(0, 0, 0), "T1"),
+        None,
+        "a member implies no type"
+    );
+}

@@ -271,6 +271,24 @@ pub fn LadderView(name: String) -> impl IntoView {
         ups.remove();
         cancels.remove();
     });
+    // Declarations asked for from the problem list (Declare NAME) are added here, each an
+    // edit of the declarations as they are then.
+    let this_pou = name.clone();
+    Effect::new(move |_| {
+        let mine: Vec<_> = state.ladder_declare.with(|q| {
+            q.iter().filter(|(p, ..)| p.eq_ignore_ascii_case(&this_pou)).cloned().collect()
+        });
+        if mine.is_empty() {
+            return;
+        }
+        state.ladder_declare.update(|q| q.retain(|(p, ..)| !p.eq_ignore_ascii_case(&this_pou)));
+        for (_, section, var, ty) in mine {
+            if let Some(current) = editor.pou() {
+                let text = plc_core::ladder::declare(&current.declarations, section, &var, &ty);
+                editor.apply(&plc_core::ladder::LadderEdit::SetDeclarations { text }, None);
+            }
+        }
+    });
     let ghost = move || {
         let d = editor.drag.get().filter(|d| d.moved)?;
         let label = match &d.source {
