@@ -149,7 +149,10 @@ test('imported project files, PLCopen XML and PNML carrying markup stay inert', 
   for (const rung of ladder.ladder[0].rungs) rung.comment = ALL;
   ladder.ladder[0].declarations = ladder.ladder[0].declarations.replace('(* start button *)', `(* ${PAYLOADS[3]} *)`);
   await importFile(page, `${PAYLOADS[4]}.plcproj.json`, JSON.stringify(ladder));
-  await page.getByText(ALL).first().waitFor();
+  // Rung comments are editable text boxes: the markup is their value, as typed.
+  const comment = page.getByRole('textbox', { name: 'Comment of rung 1' });
+  await comment.waitFor();
+  assert.equal(await comment.inputValue(), ALL);
   await assertInert(page, trouble);
 
   const petri = JSON.parse(await readFile(path.join(root, 'examples/weighing-sequential.plcproj.json'), 'utf8'));

@@ -153,7 +153,11 @@ test('keys alone build a rung, Escape takes a placement back, and a block gets a
   await page.keyboard.press('o');
   await page.keyboard.press('Escape');
   await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: empty' }).waitFor();
-  await view.getByRole('button', { name: 'TON', exact: true }).click();
+  // `b` opens the block picker; typing picks TON and Enter puts it into the cell.
+  await page.keyboard.press('b');
+  await view.getByRole('combobox', { name: 'Block type' }).waitFor();
+  await page.keyboard.type('TON');
+  await page.keyboard.press('Enter');
   await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: TON T1' }).waitFor();
   const pt = view.getByRole('textbox', { name: 'PT of T1' });
   assert.equal(await pt.inputValue(), 'T#1s', 'a timer starts with a preset');
@@ -165,6 +169,8 @@ test('keys alone build a rung, Escape takes a placement back, and a block gets a
   await page.keyboard.type('Lamp');
   await page.keyboard.press('Enter');
   await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 3: coil Lamp' }).waitFor();
+  await view.getByRole('textbox', { name: 'Comment of rung 1' }).fill('Lamp 2 s after Go');
+  await view.getByRole('textbox', { name: 'Comment of rung 1' }).press('Enter');
   // Step the clock: Lamp comes on after 2 s, not before.
   await page.waitForTimeout(700);
   await page.getByRole('combobox', { name: 'Program to run' }).selectOption('Delay');
@@ -175,6 +181,17 @@ test('keys alone build a rung, Escape takes a placement back, and a block gets a
   await page.getByRole('spinbutton', { name: 'Scans per step' }).fill('2');
   await page.getByRole('button', { name: 'Step N' }).click();
   await page.getByRole('img', { name: 'Lamp: ON', exact: true }).waitFor();
+  assert.equal(await view.getByRole('textbox', { name: 'Comment of rung 1' }).inputValue(), 'Lamp 2 s after Go');
+  // The POU is renamed, then deleted (after confirming).
+  await view.getByRole('button', { name: 'Rename POU' }).click();
+  await page.getByRole('textbox', { name: 'New POU name' }).fill('Timer');
+  await page.getByRole('textbox', { name: 'New POU name' }).press('Enter');
+  const renamed = page.getByRole('region', { name: 'Ladder diagram Timer' });
+  await renamed.waitFor();
+  page.once('dialog', (d) => d.accept());
+  await renamed.getByRole('button', { name: 'Delete POU' }).click();
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  assert.equal(await page.getByRole('button', { name: 'Ladder diagram Timer' }).count(), 0);
   assert.deepEqual(errors, []);
   await context.close();
 });

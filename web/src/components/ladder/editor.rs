@@ -184,6 +184,8 @@ pub struct LadderEditor {
     clipboard: StoredValue<Option<Rung>>,
     /// The drag in progress.
     pub drag: RwSignal<Option<Drag>>,
+    /// Whether the block picker (`b` on a cell) is open.
+    pub picker_open: RwSignal<bool>,
 }
 
 impl LadderEditor {
@@ -200,6 +202,7 @@ impl LadderEditor {
             generation: StoredValue::new(0),
             clipboard: StoredValue::new(None),
             drag: RwSignal::new(None),
+            picker_open: RwSignal::new(false),
         }
     }
 
@@ -503,6 +506,7 @@ impl LadderEditor {
                 self.focus_selected();
             }
             ("Enter" | "F2", false) => self.edit_operand(at),
+            ("b", false) => self.picker_open.set(true),
             ("z" | "Z", true) if !shift => self.undo(),
             ("z" | "Z", true) | ("y" | "Y", true) => self.redo(),
             ("c", true) => {
@@ -599,6 +603,16 @@ impl LadderEditor {
                     self.focus_selected();
                 }
             }
+        }
+    }
+
+    /// The block picker's choice (`None`: closed without one): the block goes into the
+    /// selected cell.
+    pub fn pick_block(&self, type_name: Option<String>) {
+        self.picker_open.set(false);
+        match type_name.filter(|t| !t.is_empty()) {
+            Some(t) => self.use_tool(&Tool::Block(t), None),
+            None => self.focus_selected(),
         }
     }
 

@@ -200,7 +200,11 @@ fn RungView(
                 {rung.label.clone().filter(|l| !l.trim().is_empty()).map(|l| view! {
                     <span class="ld-label">{format!("{l}:")}</span>
                 })}
-                <span class="ld-comment">{rung.comment.clone()}</span>
+                <input class="ld-comment" type="text" aria-label=format!("Comment of rung {}", index + 1)
+                    placeholder="Rung comment" prop:value=rung.comment.clone()
+                    on:change=move |ev| {
+                        editor.apply(&plc_core::ladder::LadderEdit::SetComment { rung: index, text: event_target_value(&ev) }, None);
+                    }/>
             </div>
             <div class="ld-scroll">
                 <div class="ld-canvas">
@@ -407,10 +411,54 @@ pub fn LadderView(name: String) -> impl IntoView {
     }
 }
 
-/// The ladder toolbar: undo/redo, the rung and grid actions, and the palette.
+/// The ladder toolbar: undo/redo, the rung and grid actions, the POU's rename and delete,
+/// the palette and the block picker (`b` on a cell).
 #[component]
 fn Toolbar(editor: LadderEditor) -> impl IntoView {
     let state = expect_context::<AppState>();
+    let renaming = RwSignal::new(false);
+    let rename = move |text: String| {
+        renaming.set(false);
+        let Some(old) = editor.pou().map(|p| p.name) else { return };
+        let mut project = state.project.get_untracked();
+        match project.rename_ladder_pou(&old, &text) {
+            Ok(()) => {
+                let new = text.trim().to_string();
+                state.project.set(project);
+                state.view.set(crate::state::PouView::Ladder(new));
+                state.save();
+                state.check_now();
+            }
+            Err(e) => state.error(format!("Not renamed: {e}.")),
+        }
+    };
+    let delete = move |_| {
+        let Some(name) = editor.pou().map(|p| p.name) else { return };
+        let ok = web_sys::window()
+            .and_then(|w| {
+                w.confirm_with_message(&format!(
+                    "Delete the ladder POU “{name}”? Undo cannot bring it back."
+                ))
+                .ok()
+            })
+            .unwrap_or(false);
+        if !ok {
+            return;
+        }
+        let mut project = state.project.get_untracked();
+        if project.delete_ladder_pou(&name).is_ok() {
+            state.project.set(project);
+            state.view.set(crate::state::PouView::St);
+            state.save();
+            state.check_now();
+            state.info(format!("Deleted the ladder POU “{name}”."));
+        }
+    };
+    let all_blocks = Memo::new(move |_| {
+        let mut list: Vec<String> = STANDARD_BLOCKS.iter().map(|b| b.to_string()).collect();
+        list.extend(state.project.with(|p| p.catalog().user_block_names()));
+        list
+    });
     let user_blocks = Memo::new(move |_| state.project.with(|p| p.catalog().user_block_names()));
     let tool_button = move |tool: Tool, title: String| {
         let label = tool.label();
@@ -429,7 +477,40 @@ fn Toolbar(editor: LadderEditor) -> impl IntoView {
             {RungAction::all().into_iter().map(|(action, label)| view! {
                 <button on:click=move |_| editor.rung_action(action)>{label}</button>
             }).collect_view()}
+            {move || if renaming.get() {
+                view! {
+                    <input type="text" aria-label="New POU name" autofocus
+                        prop:value=editor.pou().map(|p| p.name).unwrap_or_default()
+                        on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
+                            "Enter" => { ev.prevent_default(); rename(event_target_value(&ev)); }
+                            "Escape" => renaming.set(false),
+                            _ => {}
+                        }/>
+                }.into_any()
+            } else {
+                view! { <button on:click=move |_| renaming.set(true)>"Rename POU"</button> }.into_any()
+            }}
+            <button on:click=delete>"Delete POU"</button>
         </div>
+        {move || editor.picker_open.get().then(|| {
+            let picker = NodeRef::<leptos::html::Select>::new();
+            picker.on_load(|el| { let _ = el.focus(); });
+            view! {
+                <label class="field ld-picker">
+                    <span>"Block type"</span>
+                    <select aria-label="Block type" node_ref=picker
+                        on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
+                            "Enter" => { ev.prevent_default(); editor.pick_block(Some(event_target_value(&ev))); }
+                            "Escape" => { ev.prevent_default(); editor.pick_block(None); }
+                            _ => {}
+                        }
+                        on:change=move |ev| editor.pick_block(Some(event_target_value(&ev)))>
+                        <option value="" selected=true>"Choose a block…"</option>
+                        {all_blocks.get().into_iter().map(|b| view! { <option value=b.clone()>{b.clone()}</option> }).collect_view()}
+                    </select>
+                </label>
+            }
+        })}
         <div class="ld-palette" role="toolbar" aria-label="Palette">
             {Tool::elements().into_iter().map(|t| {
                 let title = format!("Put a {} into the selected cell", t.label().to_lowercase());
