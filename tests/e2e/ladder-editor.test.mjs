@@ -103,6 +103,13 @@ test('a start/stop latch dragged from the palette in a new project runs, undoes,
   await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: NC contact Stop, linked down' }).waitFor();
   await view.getByRole('gridcell', { name: 'Rung 1, row 2, column 1: NO contact Motor' }).waitFor();
 
+  // The ST beside the rungs: the selected rung's line is lit.
+  const side = view.getByRole('complementary', { name: 'ST beside the rungs of Latch' });
+  const line = side.locator('.ld-st-line', { hasText: 'Motor := (Start OR Motor) AND NOT Stop;' });
+  await line.waitFor();
+  await cell(view, 1, 1, 1).click();
+  assert.match(await line.getAttribute('class'), /\blit\b/);
+
   // Run it: the ladder PROGRAM is chosen under Simulation.
   await page.waitForTimeout(700);
   await page.getByRole('combobox', { name: 'Program to run' }).selectOption('Latch');

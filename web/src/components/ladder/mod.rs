@@ -361,7 +361,8 @@ pub fn LadderView(name: String) -> impl IntoView {
                 .map(|(index, rung)| {
                     use std::hash::{Hash, Hasher};
                     let mut h = std::collections::hash_map::DefaultHasher::new();
-                    format!("{rung:?}").hash(&mut h);
+                    // (its JSON: the writer is in the page already, a Debug format would add code)
+                    serde_json::to_string(&rung).unwrap_or_default().hash(&mut h);
                     for (r, m) in &marks {
                         if r.is_none_or(|r| r == index) {
                             m.hash(&mut h);
@@ -406,7 +407,10 @@ pub fn LadderView(name: String) -> impl IntoView {
             <Toolbar editor=editor/>
             {ghost}
             <PinBoxes editor=editor pou=pou/>
-            <div class="ld-rungs">{body}</div>
+            <div class="ld-body">
+                <div class="ld-rungs">{body}</div>
+                <StBeside editor=editor pou=pou/>
+            </div>
         </section>
     }
 }
@@ -593,6 +597,53 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
                     }
                 }).collect_view()}
             </div>
+        })
+    }
+}
+
+/// The POU as readable ST beside the rungs (on screens at least 1,100 px wide; below that
+/// the ST view button shows it instead of the rungs): the selected rung's lines are lit,
+/// and clicking a line selects its rung.
+#[component]
+fn StBeside(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView {
+    let view = Memo::new(move |_| {
+        pou.with(|p| {
+            p.as_ref().map(|p| {
+                let (body, map) = plc_core::ladder::st_view(p);
+                let lines: Vec<(String, Option<usize>)> = body
+                    .lines()
+                    .enumerate()
+                    .map(|(i, l)| {
+                        let rung =
+                            map.iter().find(|(line, _)| *line as usize == i + 1).map(|(_, r)| *r);
+                        (l.to_string(), rung)
+                    })
+                    .collect();
+                (p.name.clone(), lines)
+            })
+        })
+    });
+    let selected_rung = Memo::new(move |_| editor.selected.get().map(|c| c.rung));
+    move || {
+        let (name, lines) = view.get()?;
+        Some(view! {
+            <aside class="ld-st-side" aria-label=format!("ST beside the rungs of {name}")>
+                <pre class="code-view">
+                    {lines.into_iter().map(|(text, rung)| {
+                        let html = highlight_html(&text, &[]);
+                        let lit = move || rung.is_some() && selected_rung.get() == rung;
+                        view! {
+                            <div class="ld-st-line" class:lit=lit
+                                on:click=move |_| if let Some(r) = rung {
+                                    editor.selected.set(Some(CellRef::new(r, 0, 0)));
+                                    editor.focus_selected();
+                                }>
+                                <code inner_html=html></code>
+                            </div>
+                        }
+                    }).collect_view()}
+                </pre>
+            </aside>
         })
     }
 }
