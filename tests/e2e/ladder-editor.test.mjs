@@ -4,6 +4,10 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
+import { readFile, writeFile, mkdtemp } from 'node:fs/promises';
+import { existsSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import os from 'node:os';
 import { startServer } from './server.mjs';
 import { launch } from './browser.mjs';
 
@@ -144,6 +148,20 @@ test('a start/stop latch dragged from the palette in a new project runs, undoes,
   await shared.getByRole('gridcell', { name: 'Rung 1, row 1, column 3: coil Motor' }).waitFor();
   assert.deepEqual(await shared.getByRole('gridcell').evaluateAll((cells) => cells.map((c) => c.getAttribute('aria-label'))), names);
   await other.close();
+
+  // Exported as PLCopen XML, the rungs read back: `plc run` runs the ladder PROGRAM.
+  const download = page.waitForEvent('download');
+  await page.getByRole('button', { name: 'Export PLCopen XML' }).click();
+  const xml = await readFile(await (await download).path(), 'utf8');
+  assert.match(xml, /<project xmlns="http:\/\/www\.plcopen\.org\/xml\/tc6_0201"/);
+  assert.match(xml, /<pou name="Latch" pouType="program">/);
+  const plc = path.join(root, 'target/debug/plc');
+  if (existsSync(plc)) {
+    const file = path.join(await mkdtemp(path.join(os.tmpdir(), 'plc-')), 'latch.xml');
+    await writeFile(file, xml);
+    const out = execFileSync(plc, ['run', file, '--program', 'Latch', '--cycles', '2', '--set', 'Start=TRUE', '--json']).toString();
+    assert.equal(JSON.parse(out).vars.Motor, true, out);
+  }
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -57,24 +57,45 @@ fn next_message(worker: &web_sys::Worker) -> JsFuture {
     JsFuture::from(promise)
 }
 
-/// Runs the import worker on one file and reads its answer. The worker says when it is
-/// ready (its module loads asynchronously; a message sent before would be lost).
+/// The project as PLCopen XML (TC6 0201), written by the worker (the exporter lives there
+/// with the importers, off the first load).
+pub async fn plcopen_xml(project: &Project) -> Result<String, String> {
+    let request = js_sys::Array::of3(
+        &JsValue::from_str("export-plcopen"),
+        &JsValue::from_str(""),
+        &JsValue::from_str(&project.to_file()),
+    );
+    let reply: Reply = serde_json::from_str(&ask_worker(&request).await?)
+        .map_err(|_| "the exporter gave no answer".to_string())?;
+    match reply.error {
+        Some(e) => Err(e),
+        None => Ok(reply.xml),
+    }
+}
+
+/// Runs the import worker on one file and reads its answer.
 async fn in_worker(stem: &str, text: &str) -> Result<Imported, String> {
+    let request = js_sys::Array::of2(&JsValue::from_str(stem), &JsValue::from_str(text));
+    read_reply(&ask_worker(&request).await?)
+}
+
+/// Sends `request` to a fresh worker and returns its answer. The worker says when it is
+/// ready (its module loads asynchronously; a message sent before would be lost).
+async fn ask_worker(request: &js_sys::Array) -> Result<String, String> {
     let worker = web_sys::Worker::new(WORKER_SCRIPT)
         .map_err(|e| format!("the importer could not start ({e:?})"))?;
     let stopped = |_| "the importer stopped (the file may be too large or damaged)".to_string();
     let answer = async {
         next_message(&worker).await.map_err(|_| "the importer could not start".to_string())?;
         let reply = next_message(&worker);
-        let request = js_sys::Array::of2(&JsValue::from_str(stem), &JsValue::from_str(text));
         worker
-            .post_message(&request)
+            .post_message(request)
             .map_err(|e| format!("the importer did not take the file ({e:?})"))?;
         reply.await.map_err(stopped).map(|v| v.as_string().unwrap_or_default())
     }
     .await;
     worker.terminate();
-    read_reply(&answer?)
+    answer
 }
 
 /// The worker's answer.
@@ -88,6 +109,8 @@ struct Reply {
     kind: String,
     #[serde(default)]
     warnings: Vec<String>,
+    #[serde(default)]
+    xml: String,
 }
 
 /// Reads the worker's JSON answer.

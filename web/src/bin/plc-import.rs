@@ -3,10 +3,12 @@
 //! The XML importers are about a tenth of the engine; the page loads this worker (its own
 //! small wasm module, built by Trunk as `plc-import_loader.js`) only when a user imports
 //! such a file, so the first page load stays within its size budget. It says `"ready"`
-//! once loaded, then answers each message `[file stem, text]` with a JSON string: `{"project": <project file>, "kind":
+//! once loaded, then answers each message `[file stem, text]` with a JSON string (and a
+//! message `["export-plcopen", "", project file]` with `{"xml": ...}`): `{"project": <project file>, "kind":
 //! "PLCopen XML" | "PNML" | …, "warnings": [...]}` or `{"error": "..."}`.
 
 use plc_core::open::{open_text, FileKind};
+use plc_core::project::Project;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 
@@ -31,6 +33,15 @@ fn reply(stem: &str, text: &str) -> String {
     value.to_string()
 }
 
+/// The reply to an export request: the project file as PLCopen XML.
+fn export_reply(project_file: &str) -> String {
+    let value = match Project::from_file(project_file) {
+        Ok(project) => serde_json::json!({ "xml": plc_core::plcopen::export(&project) }),
+        Err(e) => serde_json::json!({ "error": e.to_string() }),
+    };
+    value.to_string()
+}
+
 fn main() {
     console_error_panic_hook::set_once();
     let scope: web_sys::DedicatedWorkerGlobalScope = js_sys::global().unchecked_into();
@@ -38,9 +49,14 @@ fn main() {
     let on_message =
         Closure::<dyn Fn(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
             let request = js_sys::Array::from(&ev.data());
-            let stem = request.get(0).as_string().unwrap_or_default();
-            let text = request.get(1).as_string().unwrap_or_default();
-            let _ = answer.post_message(&JsValue::from_str(&reply(&stem, &text)));
+            let first = request.get(0).as_string().unwrap_or_default();
+            let second = request.get(1).as_string().unwrap_or_default();
+            let answer_text = if request.length() == 3 && first == "export-plcopen" {
+                export_reply(&request.get(2).as_string().unwrap_or_default())
+            } else {
+                reply(&first, &second)
+            };
+            let _ = answer.post_message(&JsValue::from_str(&answer_text));
         });
     scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
     on_message.forget();
@@ -63,5 +79,9 @@ mod tests {
         let bad: serde_json::Value =
             serde_json::from_str(&reply("x", "<?xml version=\"1.0\"?><nope")).unwrap_or_default();
         assert!(bad["error"].as_str().is_some_and(|e| !e.is_empty()), "{bad}");
+        let xml: serde_json::Value =
+            serde_json::from_str(&super::export_reply(&super::Project::new("P").to_file()))
+                .unwrap_or_default();
+        assert!(xml["xml"].as_str().is_some_and(|x| x.contains("tc6_0201")), "{xml}");
     }
 }

@@ -118,6 +118,21 @@ pub fn Header() -> impl IntoView {
         }
     };
     let export = move |_| state.export_project();
+    let export_xml = move |_| {
+        let project = state.project.get_untracked();
+        leptos::task::spawn_local(async move {
+            match crate::import::plcopen_xml(&project).await {
+                Ok(xml) => {
+                    let name = crate::state::project_file_name(&project.name)
+                        .replace(".plcproj.json", ".xml");
+                    if let Err(e) = crate::download::download(&name, "application/xml", &xml) {
+                        state.error(e);
+                    }
+                }
+                Err(e) => state.error(format!("Could not export PLCopen XML: {e}")),
+            }
+        });
+    };
     let on_file = move |_| {
         let Some(input) = file_input.get_untracked() else { return };
         let file = input.files().and_then(|f| f.get(0));
@@ -215,6 +230,7 @@ pub fn Header() -> impl IntoView {
                 <button on:click=move |_| state.duplicate()>"Duplicate"</button>
                 <button on:click=delete>"Delete"</button>
                 <button on:click=export title="Download the project file">"Export"</button>
+                <button on:click=export_xml title="Download the project as PLCopen XML (OpenPLC Editor, Beremiz, CODESYS)">"Export PLCopen XML"</button>
                 <button on:click=move |_| { if let Some(i) = file_input.get_untracked() { i.click(); } }
                     title="Open a project file, PLCopen XML, PNML or ST file as a new project">"Import"</button>
                 <input type="file" class="visually-hidden" tabindex="-1" node_ref=file_input

@@ -41,7 +41,7 @@ fn store() -> ProjectStore<LocalStorage> {
 }
 
 /// A file name for a project: its name without characters file systems refuse.
-fn project_file_name(name: &str) -> String {
+pub fn project_file_name(name: &str) -> String {
     let clean: String = name
         .trim()
         .chars()
