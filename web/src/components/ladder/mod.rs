@@ -131,6 +131,24 @@ fn rung_grid(
             view! { <div role="row" class="ld-grid-row">{cells}</div> }
         })
         .collect_view();
+    // A redraw of this rung replaces its cells: when that took the focus away from the
+    // selected cell (it is on the page body now), give it back to the new cell.
+    Effect::new(move |_| {
+        let Some(at) = editor.selected.get_untracked().filter(|a| a.rung == index) else { return };
+        let document = web_sys::window().and_then(|w| w.document());
+        let lost = document.as_ref().is_some_and(|d| {
+            d.active_element().is_none_or(|a| a.tag_name().eq_ignore_ascii_case("body"))
+        });
+        if lost {
+            use wasm_bindgen::JsCast;
+            let el = document
+                .and_then(|d| d.get_element_by_id(&editor.cell_id(at)))
+                .and_then(|e| e.dyn_into::<web_sys::HtmlElement>().ok());
+            if let Some(el) = el {
+                let _ = el.focus();
+            }
+        }
+    });
     let operand_box = move || {
         let (at, _) = editor.operand_at.get().filter(|(c, _)| c.rung == index)?;
         let (x0, x1) = geo.col_span(at.col);
