@@ -1,7 +1,7 @@
 //! Opening a file the user imports: project files and ST text here, PLCopen XML and PNML
 //! in the import worker (`src/bin/plc-import.rs`), which the page loads only then.
 
-use plc_core::open::{open_plain, FileKind};
+use plc_core::open::open_plain;
 use plc_core::project::Project;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
@@ -20,21 +20,12 @@ pub struct Imported {
     pub warnings: Vec<String>,
 }
 
-fn kind_name(kind: FileKind) -> &'static str {
-    match kind {
-        FileKind::Project => "the project file",
-        FileKind::Plcopen => "PLCopen XML",
-        FileKind::Pnml => "PNML",
-        FileKind::St => "Structured Text",
-    }
-}
-
 /// Opens `text` (a file named `stem` without its extension) as a project.
 pub async fn import_text(stem: &str, text: &str) -> Result<Imported, String> {
     match open_plain(stem, text) {
         Ok(Some(opened)) => Ok(Imported {
             project: opened.project,
-            kind: kind_name(opened.kind).to_string(),
+            kind: opened.kind.description().to_string(),
             warnings: opened.warnings,
         }),
         Ok(None) => in_worker(stem, text).await,

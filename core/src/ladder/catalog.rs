@@ -289,17 +289,12 @@ impl Catalog {
     /// and the project's globals.
     pub fn scope(&self, declarations: &str) -> Scope {
         let mut scope = self.globals.clone();
-        let text = format!("FUNCTION_BLOCK X__\n{declarations}\nEND_FUNCTION_BLOCK\n");
-        let (file, _) = syntax::parse(&text);
-        for item in &file.items {
-            let Item::Pou(p) = item else { continue };
-            for b in &p.var_blocks {
-                for d in &b.decls {
-                    let Some(k) = key_of(&d.ty) else { continue };
-                    let k = self.resolve(k);
-                    for n in &d.names {
-                        scope.insert(n.key(), k.clone());
-                    }
+        for b in declaration_blocks(declarations) {
+            for d in &b.decls {
+                let Some(k) = key_of(&d.ty) else { continue };
+                let k = self.resolve(k);
+                for n in &d.names {
+                    scope.insert(n.key(), k.clone());
                 }
             }
         }
@@ -386,6 +381,30 @@ impl Catalog {
 }
 
 /// The type key of a declared type (strings without their length, subranges as their base).
+/// The variable blocks of a ladder POU's declarations text (parsed inside a stand-in POU).
+fn declaration_blocks(declarations: &str) -> Vec<crate::syntax::ast::VarBlock> {
+    let text = format!("FUNCTION_BLOCK X__\n{declarations}\nEND_FUNCTION_BLOCK\n");
+    let (file, _) = syntax::parse(&text);
+    file.items
+        .into_iter()
+        .filter_map(|item| match item {
+            Item::Pou(p) => Some(p.var_blocks),
+            _ => None,
+        })
+        .flatten()
+        .collect()
+}
+
+/// Every name a ladder POU's declarations text declares, whatever its type.
+pub(crate) fn declared_names(declarations: &str) -> Vec<String> {
+    declaration_blocks(declarations)
+        .into_iter()
+        .flat_map(|b| b.decls)
+        .flat_map(|d| d.names)
+        .map(|n| n.name)
+        .collect()
+}
+
 fn key_of(t: &TypeRef) -> Option<TypeKey> {
     Some(match t {
         TypeRef::Named(id) => match Elem::from_name(&id.key()) {

@@ -360,6 +360,11 @@ impl LadderPou {
         self.rungs.get_mut(index).ok_or(EditError::NoSuchRung(index))
     }
 
+    /// The cell at `at`, if the POU has it.
+    pub fn cell(&self, at: CellRef) -> Option<&Cell> {
+        self.rungs.get(at.rung)?.cell(at.row, at.col)
+    }
+
     fn cell_at(&self, at: CellRef) -> Result<&Cell, EditError> {
         let rung = self.rungs.get(at.rung).ok_or(EditError::NoSuchRung(at.rung))?;
         rung.cell(at.row, at.col).ok_or(EditError::OutsideGrid(at))
@@ -572,7 +577,7 @@ pub fn implied_declaration(
     at: CellRef,
     name: &str,
 ) -> Option<(&'static str, String)> {
-    let cell = pou.rungs.get(at.rung)?.cell(at.row, at.col)?;
+    let cell = pou.cell(at)?;
     let root = |operand: &str| {
         let head: String =
             operand.trim().chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '_').collect();
@@ -590,16 +595,9 @@ pub fn implied_declaration(
     }
 }
 
-/// Whether `declarations` declares `name` (a word followed by `:` or `,`).
+/// Whether `declarations` declares `name` (read by the parser, as the checker reads it).
 fn declares(declarations: &str, name: &str) -> bool {
-    let lower = declarations.to_ascii_lowercase();
-    let name = name.to_ascii_lowercase();
-    lower.match_indices(&name).any(|(i, _)| {
-        let before = lower[..i].chars().next_back();
-        let after = lower[i + name.len()..].trim_start().chars().next();
-        !before.is_some_and(|c| c.is_ascii_alphanumeric() || c == '_')
-            && matches!(after, Some(':' | ','))
-    })
+    super::catalog::declared_names(declarations).iter().any(|n| n.eq_ignore_ascii_case(name))
 }
 
 /// Binds (or with an empty operand, unbinds) `pin` of `block`.

@@ -123,6 +123,18 @@ pub enum Element {
     Return,
 }
 
+impl Element {
+    /// The text a user types for the element: a contact's or coil's operand, a jump's
+    /// label; `None` for elements without one.
+    pub fn operand(&self) -> Option<&str> {
+        match self {
+            Element::Contact { operand, .. } | Element::Coil { operand, .. } => Some(operand),
+            Element::Jump { label } => Some(label),
+            _ => None,
+        }
+    }
+}
+
 /// Contact kinds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub enum ContactKind {

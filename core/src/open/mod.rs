@@ -19,6 +19,18 @@ pub enum FileKind {
     St,
 }
 
+impl FileKind {
+    /// What the file was read as, for a message (“Imported … from x.xml (PLCopen XML)”).
+    pub fn description(self) -> &'static str {
+        match self {
+            FileKind::Project => "the project file",
+            FileKind::Plcopen => "PLCopen XML",
+            FileKind::Pnml => "PNML",
+            FileKind::St => "Structured Text",
+        }
+    }
+}
+
 /// A file opened as a project.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Opened {

@@ -7,7 +7,7 @@
 //! message `["export-plcopen", "", project file]` with `{"xml": ...}`): `{"project": <project file>, "kind":
 //! "PLCopen XML" | "PNML" | …, "warnings": [...]}` or `{"error": "..."}`.
 
-use plc_core::open::{open_text, FileKind};
+use plc_core::open::open_text;
 use plc_core::project::Project;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
@@ -16,12 +16,7 @@ use wasm_bindgen::{JsCast, JsValue};
 fn reply(stem: &str, text: &str) -> String {
     let value = match open_text(stem, text) {
         Ok(opened) => {
-            let kind = match opened.kind {
-                FileKind::Project => "the project file",
-                FileKind::Plcopen => "PLCopen XML",
-                FileKind::Pnml => "PNML",
-                FileKind::St => "Structured Text",
-            };
+            let kind = opened.kind.description();
             serde_json::json!({
                 "project": opened.project.to_file(),
                 "kind": kind,

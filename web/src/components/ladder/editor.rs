@@ -468,28 +468,12 @@ impl LadderEditor {
 
     /// Opens the operand box on an element that has an operand.
     pub fn edit_operand(&self, at: CellRef) {
-        let has = self.pou().is_some_and(|p| {
-            p.rungs.get(at.rung).and_then(|r| r.cell(at.row, at.col)).is_some_and(|c| {
-                matches!(
-                    c.element,
-                    Element::Contact { .. } | Element::Coil { .. } | Element::Jump { .. }
-                )
-            })
-        });
-        if has {
+        let current = self
+            .pou()
+            .and_then(|p| p.cell(at).and_then(|c| c.element.operand().map(str::to_string)));
+        if let Some(current) = current {
             self.history.update_value(History::close_group);
-            let current = self.pou().and_then(|p| {
-                p.rungs.get(at.rung).and_then(|r| r.cell(at.row, at.col)).map(|c| {
-                    match &c.element {
-                        Element::Contact { operand, .. } | Element::Coil { operand, .. } => {
-                            operand.clone()
-                        }
-                        Element::Jump { label } => label.clone(),
-                        _ => String::new(),
-                    }
-                })
-            });
-            self.operand_text.set(current.unwrap_or_default());
+            self.operand_text.set(current);
             self.operand_at.set(Some((at, false)));
         }
     }
@@ -551,12 +535,8 @@ impl LadderEditor {
             return;
         }
         if let DragSource::Cell(at) = &source {
-            let empty = self.pou().is_none_or(|p| {
-                p.rungs
-                    .get(at.rung)
-                    .and_then(|r| r.cell(at.row, at.col))
-                    .is_none_or(|c| c.element == Element::Empty)
-            });
+            let empty =
+                self.pou().is_none_or(|p| p.cell(*at).is_none_or(|c| c.element == Element::Empty));
             if empty {
                 return;
             }

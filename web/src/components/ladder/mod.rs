@@ -315,12 +315,9 @@ pub fn LadderView(name: String) -> impl IntoView {
         let d = editor.drag.get().filter(|d| d.moved)?;
         let label = match &d.source {
             DragSource::Tool(t) => t.label(),
-            DragSource::Cell(at) => editor
-                .pou()
-                .and_then(|p| {
-                    p.rungs.get(at.rung).and_then(|r| r.cell(at.row, at.col)).map(describe_cell)
-                })
-                .unwrap_or_default(),
+            DragSource::Cell(at) => {
+                editor.pou().and_then(|p| p.cell(*at).map(describe_cell)).unwrap_or_default()
+            }
         };
         Some(view! {
             <div class="ld-ghost" aria-hidden="true"
@@ -555,7 +552,7 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
     move || {
         let at = editor.selected.get()?;
         let block = pou.with(|p| {
-            let cell = p.as_ref()?.rungs.get(at.rung)?.cell(at.row, at.col)?;
+            let cell = p.as_ref()?.cell(at)?;
             match &cell.element {
                 Element::Block(b) => Some(b.clone()),
                 _ => None,
