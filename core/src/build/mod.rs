@@ -42,6 +42,15 @@ pub enum Site {
         /// The cell.
         cell: Option<(usize, usize, usize)>,
     },
+    /// The declarations of a ladder POU: 1-based line and column inside its text.
+    Declarations {
+        /// The POU's name.
+        pou: String,
+        /// 1-based line.
+        line: u32,
+        /// 1-based column (characters).
+        column: u32,
+    },
     /// A Petri net POU, and the element (with the position inside its text) when known.
     Petri {
         /// The POU's name.
@@ -66,6 +75,9 @@ impl Site {
             Site::Ladder { pou, cell: None } | Site::Petri { pou, element: None, .. } => {
                 Some(format!("POU {pou}"))
             }
+            Site::Declarations { pou, line, column } => {
+                Some(format!("POU {pou}, declarations line {line}, column {column}"))
+            }
             Site::Petri { pou, element: Some(e), at } => {
                 Some(crate::petri::describe(pou, e, at.as_ref()))
             }
@@ -75,7 +87,9 @@ impl Site {
     /// The POU a site belongs to (ladder and Petri net sites).
     pub fn pou(&self) -> Option<&str> {
         match self {
-            Site::Ladder { pou, .. } | Site::Petri { pou, .. } => Some(pou),
+            Site::Ladder { pou, .. } | Site::Declarations { pou, .. } | Site::Petri { pou, .. } => {
+                Some(pou)
+            }
             Site::Project | Site::St { .. } => None,
         }
     }
@@ -188,6 +202,7 @@ fn site_in(source: &ProjectSource, index: &LineIndex<'_>, span: Span) -> Site {
     match source.map.origin_at(loc.line, loc.column) {
         Origin::St(line) => Site::St { line, column: loc.column, span },
         Origin::Ladder(pou, cell) => Site::Ladder { pou, cell },
+        Origin::Declarations(pou, line) => Site::Declarations { pou, line, column: loc.column },
         Origin::Petri(pou, None) => Site::Petri { pou, element: None, at: None },
         Origin::Petri(pou, Some((element, at))) => Site::Petri { pou, element: Some(element), at },
     }

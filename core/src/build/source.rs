@@ -34,8 +34,10 @@ pub enum Origin {
     /// A line of the ST source (1-based).
     St(u32),
     /// A ladder POU: its name and the 0-based `(rung, row, column)` when the line comes
-    /// from a cell (`None` for declarations and generated framing).
+    /// from a cell (`None` for generated framing).
     Ladder(String, Option<(usize, usize, usize)>),
+    /// The declarations of a ladder POU: its name and the 1-based line inside them.
+    Declarations(String, u32),
     /// A Petri net POU: its name, and the net element (with the position inside its guard
     /// or actions) when the line comes from one.
     Petri(String, Option<(NetElement, Option<TextPosition>)>),
@@ -57,7 +59,12 @@ impl SourceMap {
         }
         match self.segments.iter().rev().find(|s| s.first_line <= line) {
             Some(s) => {
-                Origin::Ladder(s.pou.clone(), s.lowered.cell_of_line(line + 1 - s.first_line))
+                let inside = line + 1 - s.first_line;
+                let decls = &s.lowered.declaration_lines;
+                if decls.contains(&inside) {
+                    return Origin::Declarations(s.pou.clone(), inside + 1 - decls.start);
+                }
+                Origin::Ladder(s.pou.clone(), s.lowered.cell_of_line(inside))
             }
             None => Origin::St(line),
         }
@@ -88,6 +95,9 @@ impl SourceMap {
                 format!("POU {pou}, rung {}, row {}, column {}: {message}", r + 1, row + 1, c + 1),
             ),
             Origin::Ladder(pou, None) => (None, format!("POU {pou}: {message}")),
+            Origin::Declarations(pou, l) => {
+                (None, format!("POU {pou}, declarations line {l}: {message}"))
+            }
         }
     }
 }

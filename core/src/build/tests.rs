@@ -92,6 +92,19 @@ fn st_errors_inside_a_ladder_pou_point_at_the_cell() {
 }
 
 #[test]
+fn problems_in_a_ladder_pous_declarations_point_at_their_line_and_column() {
+    // `TONN` is no type: the checker's line of the lowered POU maps back into the
+    // declarations text, where the declarations editor marks it.
+    let decls = "VAR_INPUT Start : BOOL; END_VAR\nVAR\n  T1 : TONN;\nEND_VAR\nVAR_OUTPUT Motor : BOOL; END_VAR";
+    let mut p = project("");
+    p.ladder.push(ladder("Latch", "Motor", decls));
+    let b = build_project(&p);
+    let d = b.diagnostics.iter().find(|d| d.is_error()).unwrap();
+    assert_eq!(d.site, Site::Declarations { pou: "Latch".into(), line: 3, column: 8 }, "{d:?}");
+    assert!(d.located_message().starts_with("POU Latch, declarations line 3, column 8: "));
+}
+
+#[test]
 fn petri_errors_are_located_at_the_element() {
     let mut p = project("");
     p.petri.push(looping("n + 1", ""));

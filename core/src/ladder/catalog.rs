@@ -143,6 +143,29 @@ pub struct Catalog {
     structs: HashMap<String, Vec<Param>>,
     enumerators: Vec<String>,
     globals: HashMap<String, TypeKey>,
+    global_vars: Vec<Variable>,
+}
+
+/// A variable a POU can name, as it is declared (for the operand box's completion).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variable {
+    /// The name as declared.
+    pub name: String,
+    /// Its type (aliases and subranges resolved).
+    pub ty: TypeKey,
+    /// The section it is declared in (`VAR_GLOBAL` for the project's globals).
+    pub section: VarSection,
+    /// Declared `CONSTANT`: cannot be written.
+    pub constant: bool,
+    /// Its `AT` address (`%IX0.0`).
+    pub address: Option<crate::syntax::ast::DirectAddress>,
+}
+
+impl Variable {
+    /// Whether a rung may write it (a coil, an output pin): not an input, not a constant.
+    pub fn writable(&self) -> bool {
+        !self.constant && self.section != VarSection::Input
+    }
 }
 
 /// The variables a POU can name, with their types (upper-case keys).
@@ -219,13 +242,9 @@ impl Catalog {
         for item in &file.items {
             match item {
                 Item::Globals(block) => {
-                    for d in &block.decls {
-                        for n in &d.names {
-                            if let Some(k) = key_of(&d.ty) {
-                                let k = self.resolve(k);
-                                self.globals.insert(n.key(), k);
-                            }
-                        }
+                    for v in self.variables_of(block) {
+                        self.globals.insert(v.name.to_ascii_uppercase(), v.ty.clone());
+                        self.global_vars.push(v);
                     }
                 }
                 Item::Pou(p) if p.kind != PouKind::Program => {
@@ -299,6 +318,37 @@ impl Catalog {
             }
         }
         scope
+    }
+
+    /// The variables a POU with these declarations can name, as declared: its own in
+    /// declaration order, then the project's globals it does not hide.
+    pub fn variables(&self, declarations: &str) -> Vec<Variable> {
+        let mut list: Vec<Variable> =
+            declaration_blocks(declarations).iter().flat_map(|b| self.variables_of(b)).collect();
+        for g in &self.global_vars {
+            if !list.iter().any(|v| v.name.eq_ignore_ascii_case(&g.name)) {
+                list.push(g.clone());
+            }
+        }
+        list
+    }
+
+    fn variables_of(&self, block: &crate::syntax::ast::VarBlock) -> Vec<Variable> {
+        let mut list = Vec::new();
+        for d in &block.decls {
+            let Some(k) = key_of(&d.ty) else { continue };
+            let ty = self.resolve(k);
+            for n in &d.names {
+                list.push(Variable {
+                    name: n.name.clone(),
+                    ty: ty.clone(),
+                    section: block.section,
+                    constant: block.constant,
+                    address: d.location.clone(),
+                });
+            }
+        }
+        list
     }
 
     /// Whether `name` is an enumerator of a declared enumeration.

@@ -3,6 +3,7 @@
 
 mod blocks;
 pub(crate) mod catalog;
+pub mod complete;
 pub mod edit;
 pub mod lower;
 pub(crate) mod model;
@@ -11,7 +12,8 @@ pub mod st_view;
 pub mod validate;
 mod walk;
 
-pub use catalog::Catalog;
+pub use catalog::{Catalog, Variable};
+pub use complete::{operand_choices, OperandChoice};
 pub use edit::{
     declare, describe_cell, implied_declaration, CellRef, EditError, LadderEdit, PinKind,
 };

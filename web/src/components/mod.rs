@@ -1,5 +1,6 @@
 //! The page's components, one file per panel.
 
+pub mod code_field;
 pub mod controls;
 pub mod editor;
 pub mod header;

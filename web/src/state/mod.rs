@@ -18,6 +18,9 @@ pub use check::DiagView;
 pub use projects::{note_panic, project_file_name};
 pub use run::marking_of;
 
+/// How long after the last edit of a diagram the project is checked and saved.
+const CHECK_DELAY: std::time::Duration = std::time::Duration::from_millis(300);
+
 /// How many samples the timeline keeps (the oldest are dropped).
 pub const TRACE_CAPACITY: usize = 20_000;
 
@@ -165,6 +168,8 @@ pub struct AppState {
     pending_ns: StoredValue<f64>,
     /// How many scans the run loop runs between clock readings (adapted to scan time).
     batch: StoredValue<u64>,
+    /// Generation of the pending debounced check (see [`AppState::check_soon`]).
+    check_generation: StoredValue<u64>,
 }
 
 impl AppState {
@@ -200,10 +205,28 @@ impl AppState {
             marking_before_last: StoredValue::new(None),
             pending_ns: StoredValue::new(0.0),
             batch: StoredValue::new(1),
+            check_generation: StoredValue::new(0),
         };
         state.open_initial_project();
         state.watch_other_tabs();
         state
+    }
+
+    /// Checks and saves the project a moment after the last call (the diagram editors call
+    /// it after every edit, as the ST editor checks after a pause in typing).
+    pub fn check_soon(&self) {
+        self.check_generation.update_value(|g| *g += 1);
+        let generation = self.check_generation.get_value();
+        let state = *self;
+        set_timeout(
+            move || {
+                if state.check_generation.try_get_value() == Some(generation) {
+                    state.check_now();
+                    state.save();
+                }
+            },
+            CHECK_DELAY,
+        );
     }
 
     /// Shows an error in the banner.
@@ -255,7 +278,7 @@ impl AppState {
                 self.view.set(PouView::St);
                 self.jump_to.set(Some((*line, *column)));
             }
-            Site::Ladder { pou, .. } => {
+            Site::Ladder { pou, .. } | Site::Declarations { pou, .. } => {
                 self.view.set(PouView::Ladder(pou.clone()));
                 self.focus.set(Some(site.clone()));
             }

@@ -11,9 +11,6 @@ use plc_core::project::History;
 
 use crate::state::AppState;
 
-/// How long after the last edit the project is checked and saved.
-const CHECK_DELAY: std::time::Duration = std::time::Duration::from_millis(300);
-
 /// The history group of a placement and the operand typed for it (one undo step).
 const PLACE_GROUP: &str = "place-operand";
 
@@ -147,6 +144,8 @@ pub struct Drag {
     pub moved: bool,
     /// The cell under the pointer, and whether the element may go there.
     pub target: Option<(CellRef, bool)>,
+    /// How many rows the dragged element covers (a block's height; 1 for the rest).
+    pub footprint: usize,
 }
 
 /// How far (CSS pixels) the pointer moves before a press becomes a drag.
@@ -177,10 +176,11 @@ pub struct LadderEditor {
     pub operand_at: RwSignal<Option<(CellRef, bool)>>,
     /// The text in the operand box (kept here so that a redraw of the rungs keeps it).
     pub operand_text: RwSignal<String>,
+    /// The highlighted choice of the operand box's list (arrow keys move it).
+    pub choice_active: RwSignal<Option<usize>>,
     history: StoredValue<History<Snapshot>>,
     /// Bumped on every edit, undo and redo (the toolbar reads it).
     pub version: RwSignal<u64>,
-    generation: StoredValue<u64>,
     clipboard: StoredValue<Option<Rung>>,
     /// The drag in progress.
     pub drag: RwSignal<Option<Drag>>,
@@ -197,9 +197,9 @@ impl LadderEditor {
             selected: RwSignal::new(None),
             operand_at: RwSignal::new(None),
             operand_text: RwSignal::new(String::new()),
+            choice_active: RwSignal::new(None),
             history: StoredValue::new(History::default()),
             version: RwSignal::new(0),
-            generation: StoredValue::new(0),
             clipboard: StoredValue::new(None),
             drag: RwSignal::new(None),
             picker_open: RwSignal::new(false),
@@ -220,23 +220,7 @@ impl LadderEditor {
             }
         });
         self.version.update(|v| *v += 1);
-        self.schedule_check();
-    }
-
-    /// Checks and saves the project a moment after the last edit (as the ST editor does).
-    fn schedule_check(&self) {
-        self.generation.update_value(|g| *g += 1);
-        let generation = self.generation.get_value();
-        let ed = *self;
-        set_timeout(
-            move || {
-                if ed.generation.try_get_value() == Some(generation) {
-                    ed.state.check_now();
-                    ed.state.save();
-                }
-            },
-            CHECK_DELAY,
-        );
+        self.state.check_soon();
     }
 
     /// Applies `edit` as one undo step (or joins the open `group`); shows why when it
@@ -244,6 +228,8 @@ impl LadderEditor {
     pub fn apply(&self, edit: &LadderEdit, group: Option<&str>) -> bool {
         let Some(pou) = self.pou() else { return false };
         match pou.apply(edit) {
+            // An edit that changes nothing (the same operand again) is no undo step.
+            Ok(next) if next == pou => true,
             Ok(next) => {
                 let before = (pou, self.selected.get_untracked());
                 self.history.update_value(|h| match group {
@@ -265,6 +251,12 @@ impl LadderEditor {
         self.selected.set(selected);
         self.operand_at.set(None);
         self.focus_selected();
+    }
+
+    /// Ends the open group of edits (typing in the declarations): the next edit is a step
+    /// of its own.
+    pub fn close_group(&self) {
+        self.history.update_value(History::close_group);
     }
 
     /// Undoes the last step.
@@ -446,16 +438,39 @@ impl LadderEditor {
         let text = text.as_str();
         let Some((at, placed)) = self.operand_at.get_untracked() else { return };
         self.operand_at.set(None);
+        self.choice_active.set(None);
         let group = placed.then_some(PLACE_GROUP);
         self.apply(&LadderEdit::SetOperand { at, operand: text.to_string() }, group);
         self.history.update_value(History::close_group);
         self.focus_selected();
     }
 
+    /// What the operand box offers for what is typed in it: the POU's variables, globals,
+    /// instance outputs and addresses of the right type, or the rung labels for a jump.
+    pub fn operand_choices(&self) -> Memo<Vec<plc_core::ladder::OperandChoice>> {
+        let ed = *self;
+        Memo::new(move |_| {
+            let Some((at, _)) = ed.operand_at.get() else { return Vec::new() };
+            let typed = ed.operand_text.get();
+            let Some(pou) = ed.pou() else { return Vec::new() };
+            let Some(element) = pou.cell(at).map(|c| c.element.clone()) else { return Vec::new() };
+            let catalog = ed.state.project.with_untracked(|p| p.catalog());
+            plc_core::ladder::operand_choices(&catalog, &pou, &element, &typed)
+        })
+    }
+
+    /// Takes a choice of the operand box's list as the operand.
+    pub fn take_choice(&self, text: &str) {
+        self.operand_text.set(text.to_string());
+        self.choice_active.set(None);
+        self.commit_operand();
+    }
+
     /// Closes the operand box; a placement it belonged to is taken back.
     pub fn cancel_operand(&self) {
         let Some((_, placed)) = self.operand_at.get_untracked() else { return };
         self.operand_at.set(None);
+        self.choice_active.set(None);
         if placed {
             let mut before = None;
             self.history.update_value(|h| before = h.cancel());
@@ -466,11 +481,26 @@ impl LadderEditor {
         self.focus_selected();
     }
 
-    /// Opens the operand box on an element that has an operand.
+    /// Opens the operand box on an element that has an operand; on a block, puts the focus
+    /// into its first pin box (Enter or Escape there comes back to the cell).
     pub fn edit_operand(&self, at: CellRef) {
-        let current = self
-            .pou()
-            .and_then(|p| p.cell(at).and_then(|c| c.element.operand().map(str::to_string)));
+        let cell = self.pou().and_then(|p| p.cell(at).cloned());
+        if matches!(cell.as_ref().map(|c| &c.element), Some(Element::Block(_) | Element::Covered)) {
+            self.selected.set(Some(at));
+            request_animation_frame(|| {
+                use wasm_bindgen::JsCast;
+                let first = web_sys::window()
+                    .and_then(|w| w.document())
+                    .and_then(|d| d.query_selector(".ld-pins input").ok().flatten())
+                    .and_then(|e| e.dyn_into::<web_sys::HtmlInputElement>().ok());
+                if let Some(el) = first {
+                    let _ = el.focus();
+                    el.select();
+                }
+            });
+            return;
+        }
+        let current = cell.and_then(|c| c.element.operand().map(str::to_string));
         if let Some(current) = current {
             self.history.update_value(History::close_group);
             self.operand_text.set(current);
@@ -534,15 +564,17 @@ impl LadderEditor {
         if ev.button() != 0 {
             return;
         }
+        let mut footprint = 1;
         if let DragSource::Cell(at) = &source {
-            let empty =
-                self.pou().is_none_or(|p| p.cell(*at).is_none_or(|c| c.element == Element::Empty));
-            if empty {
-                return;
+            let element = self.pou().and_then(|p| p.cell(*at).map(|c| c.element.clone()));
+            match element {
+                None | Some(Element::Empty | Element::Covered) => return,
+                Some(Element::Block(b)) => footprint = b.height.max(1) as usize,
+                Some(_) => {}
             }
         }
         let at = (f64::from(ev.client_x()), f64::from(ev.client_y()));
-        self.drag.set(Some(Drag { source, start: at, at, moved: false, target: None }));
+        self.drag.set(Some(Drag { source, start: at, at, moved: false, target: None, footprint }));
     }
 
     /// The pointer moved: follows it and shows whether the cell under it takes the drop.

@@ -3,6 +3,7 @@
 //! the core's edits), live while its PROGRAM runs — power flow from the hidden `LdPow_*`
 //! variables, contact and coil states, block values — or as the POU's readable ST view.
 
+mod declarations;
 mod draw;
 mod editor;
 pub mod geometry;
@@ -16,6 +17,7 @@ use plc_core::ladder::{
 
 use crate::components::editor::text::highlight_html;
 use crate::state::AppState;
+use declarations::DeclarationsEditor;
 use draw::{rung_svg, RungCtx};
 use editor::{DragSource, LadderEditor, RungAction, Tool, STANDARD_BLOCKS};
 use geometry::{rung_geometry, NodePower};
@@ -29,14 +31,19 @@ pub(crate) fn scroll_to(id: &str) {
     }
 }
 
-/// What the header says about live values.
-fn live_status(state: AppState, pou: &LadderPou) -> Option<String> {
+/// What the header says about live values (`instance`: the function block instance shown).
+fn live_status(state: AppState, pou: &LadderPou, instance: Option<String>) -> Option<String> {
+    let running = state.running.get();
     if pou.kind == LadderPouKind::FunctionBlock {
-        return Some(
-            "A function block runs inside its instances: shown without live values.".into(),
-        );
+        return Some(match (running, instance) {
+            (Some(r), Some(i)) => format!("Live values of instance {i} in PROGRAM {r}."),
+            (Some(r), None) => {
+                format!("PROGRAM {r} has no instance of {}: shown without live values.", pou.name)
+            }
+            (None, _) => "Not running: the project has errors or no PROGRAM.".into(),
+        });
     }
-    match state.running.get() {
+    match running {
         Some(r) if r.eq_ignore_ascii_case(&pou.name) => None,
         Some(r) => Some(format!(
             "The simulator runs PROGRAM {r}: choose {} under Simulation to see this one live.",
@@ -59,9 +66,22 @@ fn rung_grid(
     // Selectors: a change of the selection or of the drop target wakes the two cells it
     // concerns, not every cell of the POU.
     let selection = Selector::new(move || editor.selected.get());
-    let drop_target = Selector::new(move || {
-        editor.drag.with(|d| d.as_ref().filter(|d| d.moved).and_then(|d| d.target))
+    // Where a drag would drop in this rung: (row, column, rows covered, allowed). A block
+    // shows its whole footprint.
+    let drop_here = Memo::new(move |_| {
+        editor.drag.with(|d| {
+            let d = d.as_ref().filter(|d| d.moved)?;
+            let (at, ok) = d.target.filter(|(c, _)| c.rung == index)?;
+            Some((at.row, at.col, d.footprint, ok))
+        })
     });
+    let dropped_on = move |row: usize, col: usize, ok: bool| {
+        drop_here.with(|t| {
+            t.is_some_and(|(r, c, h, allowed)| {
+                allowed == ok && c == col && (r..r + h).contains(&row)
+            })
+        })
+    };
     let rows = (0..rung.rows())
         .map(|row| {
             let cells = rung.cells[row]
@@ -101,13 +121,11 @@ fn rung_grid(
                             l.as_ref().map(|l| if l.powered(index, row, col) { "on" } else { "off" })
                         })
                     };
-                    let drop_ok = drop_target.clone();
-                    let drop_bad = drop_target.clone();
                     view! {
                         <div role="gridcell" class="ld-cell" id=editor.cell_id(at) style=style
                             data-at=format!("{index}-{row}-{col}")
-                            class:ld-drop-ok=move || drop_ok.selected(&Some((at, true)))
-                            class:ld-drop-bad=move || drop_bad.selected(&Some((at, false)))
+                            class:ld-drop-ok=move || dropped_on(row, col, true)
+                            class:ld-drop-bad=move || dropped_on(row, col, false)
                             on:pointerdown=move |ev: leptos::ev::PointerEvent| editor.press(DragSource::Cell(at), &ev)
                             aria-label=label tabindex=tabindex
                             aria-selected=move || if selected() { "true" } else { "false" }
@@ -164,26 +182,83 @@ fn rung_grid(
             let _ = el.focus();
             el.select();
         });
-        Some(view! {
-            <input class="ld-operand-box mono" type="text" aria-label="Operand" style=style node_ref=input
-                prop:value=move || editor.operand_text.get_untracked() spellcheck="false"
-                on:input=move |ev| editor.operand_text.set(event_target_value(&ev))
-                on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
-                    "Enter" => { ev.prevent_default(); editor.commit_operand(); }
-                    "Escape" => { ev.prevent_default(); editor.cancel_operand(); }
-                    _ => {}
-                }
-                on:blur=move |ev| {
-                    // A redraw of the rungs removes the box (and draws it again): only a
-                    // blur of a box still in the page commits.
-                    use wasm_bindgen::JsCast;
-                    let input = ev.target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
-                    request_animation_frame(move || {
-                        if input.is_some_and(|n| n.is_connected()) && editor.operand_at.get_untracked().is_some() {
-                            editor.commit_operand();
+        let choices = editor.operand_choices();
+        let active = editor.choice_active;
+        let active_id = move || active.get().map(|i| format!("ld-choice-{i}"));
+        let list = move || {
+            let list = choices.get();
+            (!list.is_empty()).then(|| view! {
+                <ul class="ld-choices" id="ld-operand-choices" role="listbox" aria-label="Operand choices">
+                    {list.into_iter().enumerate().map(|(i, c)| {
+                        let text = c.text.clone();
+                        view! {
+                            <li role="option" id=format!("ld-choice-{i}")
+                                aria-selected=move || if active.get() == Some(i) { "true" } else { "false" }
+                                on:pointerdown=move |ev: leptos::ev::PointerEvent| ev.prevent_default()
+                                on:click=move |_| editor.take_choice(&text)>
+                                <span class="mono">{c.text}</span>
+                                <span class="ld-choice-detail">{c.detail}</span>
+                            </li>
                         }
-                    });
-                }/>
+                    }).collect_view()}
+                </ul>
+            })
+        };
+        Some(view! {
+            <div class="ld-operand" style=style>
+                <input class="ld-operand-box mono" type="text" aria-label="Operand" node_ref=input
+                    aria-autocomplete="list" aria-controls="ld-operand-choices"
+                    aria-activedescendant=active_id autocomplete="off"
+                    prop:value=move || editor.operand_text.get_untracked() spellcheck="false"
+                    on:input=move |ev| {
+                        editor.operand_text.set(event_target_value(&ev));
+                        active.set(None);
+                    }
+                    on:keydown=move |ev: leptos::ev::KeyboardEvent| {
+                        let count = choices.with_untracked(Vec::len);
+                        let chosen = active.get_untracked()
+                            .and_then(|i| choices.with_untracked(|c| c.get(i).map(|c| c.text.clone())));
+                        match ev.key().as_str() {
+                            "ArrowDown" if count > 0 => {
+                                ev.prevent_default();
+                                active.set(Some(active.get_untracked().map_or(0, |i| (i + 1) % count)));
+                            }
+                            "ArrowUp" if count > 0 => {
+                                ev.prevent_default();
+                                active.set(Some(active.get_untracked().map_or(count - 1, |i| (i + count - 1) % count)));
+                            }
+                            "Tab" if chosen.is_some() => {
+                                ev.prevent_default();
+                                if let (Some(text), Some(el)) = (chosen, input.get_untracked()) {
+                                    el.set_value(&text);
+                                    editor.operand_text.set(text);
+                                    active.set(None);
+                                }
+                            }
+                            "Enter" => {
+                                ev.prevent_default();
+                                match chosen {
+                                    Some(text) => editor.take_choice(&text),
+                                    None => editor.commit_operand(),
+                                }
+                            }
+                            "Escape" => { ev.prevent_default(); editor.cancel_operand(); }
+                            _ => {}
+                        }
+                    }
+                    on:blur=move |ev| {
+                        // A redraw of the rungs removes the box (and draws it again): only a
+                        // blur of a box still in the page commits.
+                        use wasm_bindgen::JsCast;
+                        let input = ev.target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
+                        request_animation_frame(move || {
+                            if input.is_some_and(|n| n.is_connected()) && editor.operand_at.get_untracked().is_some() {
+                                editor.commit_operand();
+                            }
+                        });
+                    }/>
+                {list}
+            </div>
         })
     };
     view! {
@@ -203,6 +278,11 @@ fn RungView(
 ) -> impl IntoView {
     let state = expect_context::<AppState>();
     let shared = StoredValue::new(rung.clone());
+    // This rung's part of the live state: its cells and drawing subscribe to it, not to
+    // the whole POU's (thousands of subscribers to one source made every change cost
+    // time squared in their number).
+    let values = live::rung_values(&rung);
+    let live = Memo::new(move |_| live.with(|l| l.as_ref().map(|l| l.slice(index, &values))));
     let nodes = Memo::new(move |_| {
         live.with(|l| {
             l.as_ref().map(|l| {
@@ -215,9 +295,14 @@ fn RungView(
         <div class="ld-rung" id=format!("ld-rung-{index}")>
             <div class="ld-rung-head">
                 <span class="ld-rung-no">{index + 1}</span>
-                {rung.label.clone().filter(|l| !l.trim().is_empty()).map(|l| view! {
-                    <span class="ld-label">{format!("{l}:")}</span>
-                })}
+                <input class="ld-label-box mono" type="text" aria-label=format!("Label of rung {}", index + 1)
+                    placeholder="Label" title="A label jumps can go to" spellcheck="false"
+                    prop:value=rung.label.clone().unwrap_or_default()
+                    on:change=move |ev| {
+                        let text = event_target_value(&ev).trim().to_string();
+                        let label = (!text.is_empty()).then_some(text);
+                        editor.apply(&plc_core::ladder::LadderEdit::SetLabel { rung: index, label }, None);
+                    }/>
                 <input class="ld-comment" type="text" aria-label=format!("Comment of rung {}", index + 1)
                     placeholder="Rung comment" prop:value=rung.comment.clone()
                     on:change=move |ev| {
@@ -242,17 +327,32 @@ pub fn LadderView(name: String) -> impl IntoView {
     let pou = Memo::new(move |_| {
         state.project.with(|p| p.ladder.iter().find(|l| l.name == key).cloned())
     });
-    // What to read from the simulator: worked out only while this POU runs (it lowers the
-    // whole POU, too slow to redo on every edit of a large one that is not running).
+    // Whether this POU can be live: the PROGRAM the simulator runs, or a function block
+    // (live in its first instance, when the running program has one).
     let runs_here = Memo::new(move |_| {
         let running = state.running.get();
         pou.with(|p| {
-            p.as_ref().is_some_and(|p| {
-                p.kind == LadderPouKind::Program
-                    && running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&p.name))
+            p.as_ref().is_some_and(|p| match p.kind {
+                LadderPouKind::Program => {
+                    running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&p.name))
+                }
+                LadderPouKind::FunctionBlock => running.is_some(),
             })
         })
     });
+    let fb_name = Memo::new(move |_| {
+        pou.with(|p| {
+            p.as_ref().filter(|p| p.kind == LadderPouKind::FunctionBlock).map(|p| p.name.clone())
+        })
+    });
+    // The instance whose values a function block POU shows (re-read on every scan, as the
+    // program may have been rebuilt; a memo, so an unchanged answer wakes nothing).
+    let instance = Memo::new(move |_| {
+        let fb = fb_name.get()?;
+        state.with_sim(|s| live::first_instance(s, &fb)).flatten()
+    });
+    // What to read from the simulator: worked out only while this POU runs (it lowers the
+    // whole POU, too slow to redo on every edit of a large one that is not running).
     let probes = Memo::new(move |_| {
         if !runs_here.get() {
             return None;
@@ -260,20 +360,26 @@ pub fn LadderView(name: String) -> impl IntoView {
         pou.with(|p| p.as_ref().map(Probes::of))
     });
     let live = Memo::new(move |_| {
-        let running = state.running.get();
-        let runs = pou.with(|p| {
-            p.as_ref().is_some_and(|p| {
-                p.kind == LadderPouKind::Program
-                    && running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&p.name))
-            })
-        });
-        if !runs {
+        if !runs_here.get() {
             return None;
         }
-        probes.with(|pr| pr.as_ref().and_then(|pr| state.with_sim(|s| LadderLive::read(s, pr))))
+        let inst = instance.get();
+        if fb_name.with(Option::is_some) && inst.is_none() {
+            return None;
+        }
+        probes.with(|pr| {
+            pr.as_ref().and_then(|pr| state.with_sim(|s| LadderLive::read(s, pr, inst.as_deref())))
+        })
     });
     let show_st = RwSignal::new(false);
     let editor = LadderEditor::new(state, &name);
+    // The declarations start open in a POU without elements yet (there is nothing else
+    // to read), closed otherwise.
+    let decls_open = RwSignal::new(pou.with_untracked(|p| {
+        p.as_ref().is_some_and(|p| {
+            p.rungs.iter().all(|r| r.cells.iter().flatten().all(|c| c.element == Element::Empty))
+        })
+    }));
     // Drags follow the pointer anywhere in the window and drop on the cell under it.
     let moves = window_event_listener(leptos::ev::pointermove, move |ev| {
         if editor.drag.with_untracked(Option::is_some) {
@@ -395,7 +501,8 @@ pub fn LadderView(name: String) -> impl IntoView {
         }
         .into_any()
     };
-    let status = move || pou.with(|p| p.as_ref().and_then(|p| live_status(state, p)));
+    let status =
+        move || pou.with(|p| p.as_ref().and_then(|p| live_status(state, p, instance.get())));
     view! {
         <section class="panel ladder-view" aria-label=format!("Ladder diagram {name}")>
             <div class="ed-toolbar">
@@ -411,14 +518,7 @@ pub fn LadderView(name: String) -> impl IntoView {
                     on:click=move |_| show_st.update(|s| *s = !*s)>"ST view"</button>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
-            <details class="ld-decls" open=pou.with_untracked(|p| p.as_ref().is_some_and(|p| p.rungs.iter().all(|r| r.cells.iter().flatten().all(|c| c.element == Element::Empty))))>
-                <summary>"Declarations"</summary>
-                <textarea class="mono ld-decl-text" aria-label="Declarations" spellcheck="false" rows="6"
-                    prop:value=move || pou.with(|p| p.as_ref().map(|p| p.declarations.clone()).unwrap_or_default())
-                    on:change=move |ev| {
-                        editor.apply(&plc_core::ladder::LadderEdit::SetDeclarations { text: event_target_value(&ev) }, None);
-                    }></textarea>
-            </details>
+            <DeclarationsEditor editor=editor pou=pou open=decls_open/>
             <Toolbar editor=editor/>
             {ghost}
             <PinBoxes editor=editor pou=pou/>
@@ -514,6 +614,9 @@ fn Toolbar(editor: LadderEditor) -> impl IntoView {
         {move || editor.picker_open.get().then(|| {
             let picker = NodeRef::<leptos::html::Select>::new();
             picker.on_load(|el| { let _ = el.focus(); });
+            // Typing in the list moves its choice (and fires change) letter by letter: a
+            // block typed by name is taken on Enter; a choice made with the mouse at once.
+            let typing = StoredValue::new(false);
             view! {
                 <label class="field ld-picker">
                     <span>"Block type"</span>
@@ -521,9 +624,9 @@ fn Toolbar(editor: LadderEditor) -> impl IntoView {
                         on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
                             "Enter" => { ev.prevent_default(); editor.pick_block(Some(event_target_value(&ev))); }
                             "Escape" => { ev.prevent_default(); editor.pick_block(None); }
-                            _ => {}
+                            _ => typing.set_value(true),
                         }
-                        on:change=move |ev| editor.pick_block(Some(event_target_value(&ev)))>
+                        on:change=move |ev| if !typing.get_value() { editor.pick_block(Some(event_target_value(&ev))) }>
                         <option value="" selected=true>"Choose a block…"</option>
                         {all_blocks.get().into_iter().map(|b| view! { <option value=b.clone()>{b.clone()}</option> }).collect_view()}
                     </select>
@@ -598,19 +701,63 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
                     }),
             )
             .collect();
-        Some(view! {
-            <div class="ld-pins" role="group" aria-label=format!("Pins of {owner}")>
-                {pins.into_iter().map(|(kind, pin, value)| {
+        let height = block.height;
+        let height_label = format!("Height of {owner}");
+        // Enter and Escape give the focus back to the cell; leaving a changed box commits it
+        // (its change event), so Escape first puts back what the box held.
+        let back_to_cell = move |ev: leptos::ev::KeyboardEvent, original: &str| {
+            let key = ev.key();
+            if key == "Escape" {
+                use wasm_bindgen::JsCast;
+                let input =
+                    ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok());
+                if let Some(input) = input {
+                    input.set_value(original);
+                }
+            }
+            if key == "Enter" || key == "Escape" {
+                ev.prevent_default();
+                editor.focus_selected();
+            }
+        };
+        let pins = pins.into_iter().map(|(kind, pin, value)| {
                     let label = format!("{pin} of {owner}");
                     let name = pin.clone();
+                    let original = value.clone();
                     view! {
                         <label class="field">
                             <span>{label.clone()}</span>
                             <input class="mono" type="text" aria-label=label prop:value=value spellcheck="false"
+                                on:keydown=move |ev| back_to_cell(ev, &original)
                                 on:change=move |ev| editor.set_pin(at, kind, &name, &event_target_value(&ev))/>
                         </label>
                     }
-                }).collect_view()}
+                }).collect_view();
+        Some(view! {
+            <div class="ld-pins" role="group" aria-label=format!("Pins of {owner}")>
+                {pins}
+                <label class="field">
+                    <span>{height_label.clone()}</span>
+                    <input type="number" min="1" max="16" aria-label=height_label prop:value=height.to_string()
+                        on:keydown=move |ev| back_to_cell(ev, &height.to_string())
+                        on:change=move |ev| {
+                            let done = match event_target_value(&ev).trim().parse::<u32>() {
+                                Ok(h) if h >= 1 => editor.apply(&plc_core::ladder::LadderEdit::ResizeBlock { at, height: h }, None),
+                                _ => {
+                                    state.error("Not changed: a block's height is a whole number of rows, at least 1.");
+                                    false
+                                }
+                            };
+                            if !done {
+                                // The box shows the height the block still has.
+                                use wasm_bindgen::JsCast;
+                                if let Some(el) = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok()) {
+                                    el.set_value(&height.to_string());
+                                }
+                            }
+                        }/>
+                </label>
+
             </div>
         })
     }
