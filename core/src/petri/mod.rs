@@ -13,6 +13,7 @@ pub(crate) mod codegen;
 pub(crate) mod components;
 pub(crate) mod conflicts;
 mod diagnostic;
+pub mod edit;
 pub(crate) mod model;
 pub(crate) mod net;
 pub(crate) mod reach;
@@ -25,6 +26,7 @@ pub use codegen::{
 };
 pub use components::ProcessPlan;
 pub use diagnostic::{has_errors, NetElement, PetriDiagnostic, TextPart, TextPosition};
+pub use edit::{ElementKind, NetEdit, NetEditError};
 pub use model::*;
 pub use net::{build, Marking, PtNet};
 pub use report::{conflicts, text_report, Conflict};

@@ -1,4 +1,4 @@
-//! Adding, renaming and deleting the ladder POUs of a project: the project-level edits of
+//! Adding, renaming and deleting the ladder and Petri net POUs of a project: the project-level edits of
 //! the POU navigator. Each is checked (a valid, unused name) and applies whole or not at
 //! all, so an editor can keep whole projects in a [`History`](super::History).
 
@@ -6,6 +6,7 @@ use std::fmt;
 
 use super::Project;
 use crate::ladder::{LadderPou, LadderPouKind, Rung, DEFAULT_COLUMNS, DEFAULT_ROWS};
+use crate::petri::{GenerationOptions, Net, PetriPou};
 use crate::syntax::{self, Item};
 
 /// Why a POU edit cannot be made.
@@ -18,6 +19,8 @@ pub enum PouError {
     Taken(String),
     /// No ladder POU has that name.
     NoSuchPou(String),
+    /// No Petri net POU has that name.
+    NoSuchNet(String),
 }
 
 impl fmt::Display for PouError {
@@ -29,6 +32,7 @@ impl fmt::Display for PouError {
             ),
             PouError::Taken(n) => write!(f, "the project already has a POU named {n}"),
             PouError::NoSuchPou(n) => write!(f, "the project has no ladder POU named {n}"),
+            PouError::NoSuchNet(n) => write!(f, "the project has no Petri net POU named {n}"),
         }
     }
 }
@@ -81,9 +85,7 @@ impl Project {
         let new = new.trim();
         let index = self.ladder_index(old)?;
         self.check_new_name(new, Some(old))?;
-        if self.settings.program.as_deref().is_some_and(|p| p.eq_ignore_ascii_case(old)) {
-            self.settings.program = Some(new.to_string());
-        }
+        self.program_renamed(old, new);
         self.ladder[index].name = new.to_string();
         Ok(())
     }
@@ -92,10 +94,63 @@ impl Project {
     pub fn delete_ladder_pou(&mut self, name: &str) -> Result<(), PouError> {
         let index = self.ladder_index(name)?;
         self.ladder.remove(index);
+        self.program_deleted(name);
+        Ok(())
+    }
+
+    /// Adds a Petri net PROGRAM named `name` with an empty net and empty input and output
+    /// declarations.
+    pub fn add_petri_pou(&mut self, name: &str) -> Result<(), PouError> {
+        let name = name.trim();
+        self.check_new_name(name, None)?;
+        self.petri.push(PetriPou {
+            name: name.to_string(),
+            declarations: "VAR_INPUT\nEND_VAR\nVAR_OUTPUT\nEND_VAR\n".to_string(),
+            prologue: String::new(),
+            epilogue: String::new(),
+            net: Net::default(),
+            options: GenerationOptions::default(),
+        });
+        Ok(())
+    }
+
+    /// Renames a Petri net POU (the program chosen to run follows it).
+    pub fn rename_petri_pou(&mut self, old: &str, new: &str) -> Result<(), PouError> {
+        let new = new.trim();
+        let index = self.petri_index(old)?;
+        self.check_new_name(new, Some(old))?;
+        self.program_renamed(old, new);
+        self.petri[index].name = new.to_string();
+        Ok(())
+    }
+
+    /// Deletes a Petri net POU.
+    pub fn delete_petri_pou(&mut self, name: &str) -> Result<(), PouError> {
+        let index = self.petri_index(name)?;
+        self.petri.remove(index);
+        self.program_deleted(name);
+        Ok(())
+    }
+
+    /// The program chosen to run follows a rename of its POU.
+    fn program_renamed(&mut self, old: &str, new: &str) {
+        if self.settings.program.as_deref().is_some_and(|p| p.eq_ignore_ascii_case(old)) {
+            self.settings.program = Some(new.to_string());
+        }
+    }
+
+    /// A deleted POU is no longer the program chosen to run.
+    fn program_deleted(&mut self, name: &str) {
         if self.settings.program.as_deref().is_some_and(|p| p.eq_ignore_ascii_case(name)) {
             self.settings.program = None;
         }
-        Ok(())
+    }
+
+    fn petri_index(&self, name: &str) -> Result<usize, PouError> {
+        self.petri
+            .iter()
+            .position(|l| l.name.eq_ignore_ascii_case(name))
+            .ok_or_else(|| PouError::NoSuchNet(name.to_string()))
     }
 
     fn ladder_index(&self, name: &str) -> Result<usize, PouError> {
@@ -145,5 +200,24 @@ mod tests {
         p.delete_ladder_pou("line1").unwrap();
         assert!(p.ladder.is_empty() && p.settings.program.is_none());
         assert_eq!(p.delete_ladder_pou("x"), Err(PouError::NoSuchPou("x".into())));
+    }
+
+    #[test]
+    fn petri_net_pous_are_added_renamed_and_deleted_with_checked_names() {
+        let mut p = Project::new("p");
+        p.add_petri_pou("Cycle").unwrap();
+        assert!(p.petri[0].net.places.is_empty());
+        assert_eq!(p.add_petri_pou("cycle"), Err(PouError::Taken("cycle".into())));
+        assert_eq!(p.add_petri_pou("Main"), Err(PouError::Taken("Main".into())), "the ST PROGRAM");
+        p.settings.program = Some("Cycle".into());
+        p.rename_petri_pou("CYCLE", "Loop").unwrap();
+        assert_eq!(
+            (p.petri[0].name.as_str(), p.settings.program.as_deref()),
+            ("Loop", Some("Loop"))
+        );
+        assert_eq!(p.rename_petri_pou("Loop", "a b"), Err(PouError::NotAName("a b".into())));
+        p.delete_petri_pou("loop").unwrap();
+        assert!(p.petri.is_empty() && p.settings.program.is_none());
+        assert_eq!(p.delete_petri_pou("Loop"), Err(PouError::NoSuchNet("Loop".into())));
     }
 }
