@@ -96,17 +96,19 @@ fn Navigator() -> impl IntoView {
                         </button>
                     }
                 }).collect_view()}
-                <NewLadderPou/>
+                <NewPou petri=false/>
+                <NewPou petri=true/>
             </nav>
         }
     }
 }
 
-/// `New ladder POU`: a small dialog (name, kind, Create) that adds an empty ladder POU to
-/// the project and shows it.
+/// `New ladder POU` (name, kind, Create) or `New Petri net POU` (name, Create): a small
+/// dialog that adds an empty POU to the project and shows it.
 #[component]
-fn NewLadderPou() -> impl IntoView {
+fn NewPou(petri: bool) -> impl IntoView {
     let state = expect_context::<AppState>();
+    let title = if petri { "New Petri net POU" } else { "New ladder POU" };
     let open = RwSignal::new(false);
     let name = RwSignal::new(String::new());
     let kind = RwSignal::new(LadderPouKind::Program);
@@ -114,9 +116,15 @@ fn NewLadderPou() -> impl IntoView {
     let create = move || {
         let text = name.get_untracked().trim().to_string();
         let mut project = state.project.get_untracked();
-        match project.add_ladder_pou(&text, kind.get_untracked()) {
+        let program = petri || kind.get_untracked() == LadderPouKind::Program;
+        let added = if petri {
+            project.add_petri_pou(&text)
+        } else {
+            project.add_ladder_pou(&text, kind.get_untracked())
+        };
+        match added {
             Ok(()) => {
-                if kind.get_untracked() == LadderPouKind::Program
+                if program
                     && project.settings.program.is_none()
                     && state.running.get_untracked().is_none()
                 {
@@ -125,7 +133,7 @@ fn NewLadderPou() -> impl IntoView {
                 state.project.set(project);
                 state.save();
                 state.check_now();
-                state.view.set(PouView::Ladder(text));
+                state.view.set(if petri { PouView::Petri(text) } else { PouView::Ladder(text) });
                 open.set(false);
                 name.set(String::new());
                 problem.set(None);
@@ -135,9 +143,9 @@ fn NewLadderPou() -> impl IntoView {
     };
     view! {
         <button class="pou-tab pou-new" on:click=move |_| { open.update(|o| *o = !*o); problem.set(None); }
-            aria-expanded=move || if open.get() { "true" } else { "false" }>"New ladder POU"</button>
+            aria-expanded=move || if open.get() { "true" } else { "false" }>{title}</button>
         {move || open.get().then(|| view! {
-            <div class="pou-dialog" role="dialog" aria-label="New ladder POU">
+            <div class="pou-dialog" role="dialog" aria-label=title>
                 <label class="field">
                     <span>"POU name"</span>
                     <input type="text" aria-label="POU name" prop:value=move || name.get()
@@ -149,14 +157,16 @@ fn NewLadderPou() -> impl IntoView {
                             _ => {}
                         }/>
                 </label>
-                <label class="field">
-                    <span>"POU kind"</span>
-                    <select aria-label="POU kind" on:change=move |ev| kind.set(
-                        if event_target_value(&ev) == "FUNCTION_BLOCK" { LadderPouKind::FunctionBlock } else { LadderPouKind::Program })>
-                        <option value="PROGRAM" selected=true>"PROGRAM"</option>
-                        <option value="FUNCTION_BLOCK">"FUNCTION_BLOCK"</option>
-                    </select>
-                </label>
+                {(!petri).then(|| view! {
+                    <label class="field">
+                        <span>"POU kind"</span>
+                        <select aria-label="POU kind" on:change=move |ev| kind.set(
+                            if event_target_value(&ev) == "FUNCTION_BLOCK" { LadderPouKind::FunctionBlock } else { LadderPouKind::Program })>
+                            <option value="PROGRAM" selected=true>"PROGRAM"</option>
+                            <option value="FUNCTION_BLOCK">"FUNCTION_BLOCK"</option>
+                        </select>
+                    </label>
+                })}
                 <button on:click=move |_| create()>"Create"</button>
                 <button on:click=move |_| open.set(false)>"Cancel"</button>
                 {move || problem.get().map(|p| view! { <p class="field-error" aria-live="polite">{p}</p> })}

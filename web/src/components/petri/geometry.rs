@@ -180,5 +180,15 @@ pub fn view_box(points: &[Point], extra: &[(f64, f64, f64, f64)]) -> (f64, f64, 
     (x0, y0, x1 - x0, y1 - y0)
 }
 
+/// The editing canvas around a drawing's box: it takes in the origin and at least 640 × 400
+/// units, with room right of and below the net to add elements.
+pub fn canvas_box((x, y, w, h): (f64, f64, f64, f64)) -> (f64, f64, f64, f64) {
+    let x0 = x.min(0.0);
+    let y0 = y.min(0.0);
+    let x1 = (x + w + 160.0).max(640.0);
+    let y1 = (y + h + 120.0).max(400.0);
+    (x0, y0, x1 - x0, y1 - y0)
+}
+
 #[cfg(test)]
 mod tests;

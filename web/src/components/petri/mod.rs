@@ -1,15 +1,18 @@
-//! The Petri net view: a net POU drawn in SVG by hand (read-only until the net editor
-//! exists) at its stored positions or laid out automatically; while its PROGRAM runs,
-//! tokens come from the step variables through the place map and the transitions that
+//! The Petri net view and editor: a net POU drawn in SVG by hand at its stored positions
+//! (or laid out automatically until the first edit), edited with the canvas tools, keys and
+//! the properties panel (`editor.rs` maps them to the core's net edits); while its PROGRAM
+//! runs, tokens come from the step variables through the place map and the transitions that
 //! fired on the last scan (and the enabled ones) are lit. Beside it the generated CASE OF
 //! code with the active branches lit; below, the analysis summary.
 
 mod analysis;
 mod code;
 mod details;
+mod editor;
 pub mod geometry;
 pub mod layout;
 pub mod live;
+mod props;
 
 use leptos::prelude::*;
 use plc_core::build::Site;
@@ -20,8 +23,12 @@ use crate::state::{marking_of, AppState, RunMode};
 use analysis::AnalysisPanel;
 use code::CodePanel;
 use details::ElementDetails;
-use geometry::{arc_line, bar_of, label_box, label_on_left, macro_box, view_box, Bar, PLACE_R};
+use editor::{NetEditor, NetTool, Selection};
+use geometry::{
+    arc_line, bar_of, canvas_box, label_box, label_on_left, macro_box, view_box, Bar, PLACE_R,
+};
 use layout::{layout, NetLayout, Point};
+use props::Properties;
 
 /// Characters of a guard shown beside its transition.
 const GUARD_CHARS: usize = 26;
@@ -40,6 +47,9 @@ struct NetCtx {
     tokens: Memo<Vec<u32>>,
     fired: Memo<Vec<bool>>,
     enabled: Memo<Vec<bool>>,
+    /// Whether the simulator runs this net (transitions then say enabled / fired).
+    runs: Memo<bool>,
+    editor: NetEditor,
 }
 
 impl NetCtx {
@@ -63,9 +73,45 @@ impl NetCtx {
         })
     }
 
-    fn select(&self, element: NetElement) {
-        let pou = self.name.get_value();
-        self.state.focus.set(Some(Site::Petri { pou, element: Some(element), at: None }));
+    fn is_selected(&self, id: &str) -> bool {
+        self.editor.selected.with(|s| matches!(s, Some(Selection::Element(e)) if e == id))
+    }
+
+    /// The handlers every place and transition has: pressed, focused, keys.
+    fn press(&self, id: &str, c: Point, ev: &web_sys::PointerEvent) {
+        ev.stop_propagation();
+        self.editor.press(Some(id.to_string()), Some(c), ev);
+    }
+
+    fn focus(&self, id: &str) {
+        let now = Some(Selection::Element(id.to_string()));
+        if self.editor.selected.get_untracked() != now {
+            self.editor.selected.set(now);
+        }
+    }
+
+    fn key(&self, id: &str, c: Point, ev: &web_sys::KeyboardEvent) {
+        let (dx, dy) = match ev.key().as_str() {
+            "ArrowLeft" => (-1.0, 0.0),
+            "ArrowRight" => (1.0, 0.0),
+            "ArrowUp" => (0.0, -1.0),
+            "ArrowDown" => (0.0, 1.0),
+            "Enter" => {
+                ev.prevent_default();
+                self.focus(id);
+                props::focus_first_field();
+                return;
+            }
+            key => {
+                if self.editor.key(key, ev.ctrl_key() || ev.meta_key(), ev.shift_key()) {
+                    ev.prevent_default();
+                }
+                return;
+            }
+        };
+        ev.prevent_default();
+        self.focus(id);
+        self.editor.nudge(id, c, dx, dy);
     }
 }
 
@@ -112,18 +158,26 @@ fn place_view(
             format!("\n{}", place.actions.trim())
         }
     );
+    let (pid, kid, sid) = (id.clone(), id.clone(), id.clone());
+    let place_id = id.clone();
+    let label_name = shown.clone();
     view! {
         <g class="pn-place" class:marked=move || { tokens() > 0 }
             class:has-err=move || el.with_value(|e| ctx.problem(e)) == Some(true)
             class:has-warn=move || el.with_value(|e| ctx.problem(e)) == Some(false)
             class:focused=move || el.with_value(|e| ctx.is(ctx.state.focus.get(), e))
             class:faulted=move || el.with_value(|e| ctx.is(ctx.state.fault_site.get(), e))
-            id=dom_id("place", &id) data-id=id.clone() role="img"
+            class:selected=move || ctx.is_selected(&sid)
+            class:arc-from=move || ctx.editor.arc_from.with(|a| a.as_deref() == Some(id.as_str()))
+            id=ctx.editor.element_dom_id(&place.id) data-id=place.id.clone() role="button" tabindex="0"
+            data-tokens=move || tokens().to_string()
             aria-label=move || {
                 let n = tokens();
-                format!("Place {id}: {n} token{}", if n == 1 { "" } else { "s" })
+                format!("Place {label_name}: {n} token{}", if n == 1 { "" } else { "s" })
             }
-            on:click=move |_| ctx.select(el.get_value())>
+            on:pointerdown=move |ev: leptos::ev::PointerEvent| ctx.press(&pid, c, &ev)
+            on:focus=move |_| ctx.focus(&place_id)
+            on:keydown=move |ev: leptos::ev::KeyboardEvent| ctx.key(&kid, c, &ev)>
             <title>{title}</title>
             <circle class="pn-circle" cx=c.x cy=c.y r=PLACE_R/>
             {move || token_dots(tokens(), c)}
@@ -155,17 +209,32 @@ fn transition_view(
     let (label_x, anchor) =
         if label_left { (c.x - hw - 6.0, "end") } else { (c.x + hw + 6.0, "start") };
     let id = t.id.clone();
+    let (pid, kid, sid, fid) = (id.clone(), id.clone(), id.clone(), id.clone());
+    let label_name = shown.clone();
     view! {
         <g class="pn-transition" class:fired=fired class:enabled=enabled
             class:has-err=move || el.with_value(|e| ctx.problem(e)) == Some(true)
             class:has-warn=move || el.with_value(|e| ctx.problem(e)) == Some(false)
             class:focused=move || el.with_value(|e| ctx.is(ctx.state.focus.get(), e))
             class:faulted=move || el.with_value(|e| ctx.is(ctx.state.fault_site.get(), e))
-            id=dom_id("transition", &id) data-id=id.clone() role="img"
-            aria-label=move || format!(
-                "Transition {id}{}", if fired() { ": fired" } else if enabled() { ": enabled" } else { "" }
-            )
-            on:click=move |_| ctx.select(el.get_value())>
+            class:selected=move || ctx.is_selected(&sid)
+            class:arc-from=move || ctx.editor.arc_from.with(|a| a.as_deref() == Some(id.as_str()))
+            id=ctx.editor.element_dom_id(&t.id) data-id=t.id.clone() role="button" tabindex="0"
+            aria-label=move || {
+                let mut label = format!("Transition {label_name}");
+                if ctx.runs.get() {
+                    if enabled() {
+                        label.push_str(", enabled");
+                    }
+                    if fired() {
+                        label.push_str(", fired");
+                    }
+                }
+                label
+            }
+            on:pointerdown=move |ev: leptos::ev::PointerEvent| ctx.press(&pid, c, &ev)
+            on:focus=move |_| ctx.focus(&fid)
+            on:keydown=move |ev: leptos::ev::KeyboardEvent| ctx.key(&kid, c, &ev)>
             <title>{title}</title>
             <rect class="pn-hit" x=c.x - hw - 4.0 y=c.y - hh - 4.0 width=2.0 * hw + 8.0 height=2.0 * hh + 8.0/>
             <rect class="pn-bar" x=c.x - hw y=c.y - hh width=2.0 * hw height=2.0 * hh rx="1.5"/>
@@ -219,8 +288,19 @@ fn net_svg(
                 let (mx, my) = ((s.x + e.x) / 2.0, (s.y + e.y) / 2.0);
                 view! { <text class="pn-weight" x=mx + 5.0 y=my - 4.0>{a.weight}</text> }
             });
+            let this = Selection::Arc(a.from.clone(), a.to.clone());
+            let pressed = this.clone();
+            let selected = move || ctx.editor.selected.with(|s| s.as_ref() == Some(&this));
             Some(view! {
-                <line class="pn-arc" x1=s.x y1=s.y x2=e.x y2=e.y marker-end="url(#pn-arrow)"/>
+                <line class="pn-arc" class:selected=selected x1=s.x y1=s.y x2=e.x y2=e.y marker-end="url(#pn-arrow)"/>
+                <line class="pn-arc-hit" x1=s.x y1=s.y x2=e.x y2=e.y data-arc="1"
+                    role="button" aria-label=format!("Arc from {} to {}", a.from, a.to)
+                    on:pointerdown=move |ev: leptos::ev::PointerEvent| {
+                        ev.stop_propagation();
+                        if ctx.editor.tool.get_untracked() == NetTool::Select {
+                            ctx.editor.selected.set(Some(pressed.clone()));
+                        }
+                    }/>
                 {weight}
             })
         })
@@ -257,14 +337,27 @@ fn net_svg(
             }
         })
         .collect_view();
-    let places = (0..net.places.len())
-        .map(|i| place_view(ctx, pou, compiled, i, lay.places[i]))
-        .collect_view();
     let left: Vec<bool> = (0..net.transitions.len())
         .map(|j| label_on_left(lay.transitions[j], bars[j].half().0, &lay.places))
         .collect();
-    let transitions = (0..net.transitions.len())
-        .map(|j| transition_view(ctx, pou, j, lay.transitions[j], bars[j], left[j]))
+    // Places and transitions in reading order (top to bottom, left to right): the order
+    // Tab visits them in.
+    let mut order: Vec<(Point, bool, usize)> = (0..net.places.len())
+        .map(|i| (lay.places[i], true, i))
+        .chain((0..net.transitions.len()).map(|j| (lay.transitions[j], false, j)))
+        .collect();
+    plc_core::order::sort_by(&mut order, |a, b| {
+        a.0.y.total_cmp(&b.0.y).then(a.0.x.total_cmp(&b.0.x))
+    });
+    let elements = order
+        .into_iter()
+        .map(|(c, is_place, k)| {
+            if is_place {
+                place_view(ctx, pou, compiled, k, c)
+            } else {
+                transition_view(ctx, pou, k, c, bars[k], left[k])
+            }
+        })
         .collect_view();
     let points: Vec<Point> = lay.places.iter().chain(&lay.transitions).copied().collect();
     let mut extra: Vec<(f64, f64, f64, f64)> = boxes.iter().map(|&(_, b)| b).collect();
@@ -273,10 +366,26 @@ fn net_svg(
             .filter(|&j| left[j])
             .map(|j| label_box(lay.transitions[j], bars[j].half().0, true)),
     );
-    let (vx, vy, vw, vh) = view_box(&points, &extra);
+    let (vx, vy, vw, vh) = canvas_box(view_box(&points, &extra));
+    let zoom = ctx.editor.zoom;
+    let editor = ctx.editor;
     view! {
-        <svg class="pn-svg" viewBox=format!("{vx} {vy} {vw} {vh}") width=vw height=vh
-            role="group" aria-label=format!("Petri net {}", pou.name)>
+        <svg class="pn-svg" viewBox=format!("{vx} {vy} {vw} {vh}")
+            width=move || vw * zoom.get() height=move || vh * zoom.get()
+            id=ctx.editor.canvas_id() role="group" aria-label="Net canvas"
+            class:tool-add=move || matches!(editor.tool.get(), NetTool::Place | NetTool::Transition)
+            class:tool-arc=move || editor.tool.get() == NetTool::Arc
+            on:pointerdown=move |ev: leptos::ev::PointerEvent| {
+                // Presses on elements and arcs are theirs.
+                use wasm_bindgen::JsCast;
+                let on_element = ev.target()
+                    .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+                    .and_then(|e| e.closest("[data-id], [data-arc]").ok().flatten())
+                    .is_some();
+                if !on_element {
+                    editor.press(None, None, &ev);
+                }
+            }>
             <defs>
                 <marker id="pn-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7"
                     markerHeight="7" orient="auto-start-reverse">
@@ -285,8 +394,7 @@ fn net_svg(
             </defs>
             {macros}
             {arcs}
-            {places}
-            {transitions}
+            {elements}
         </svg>
     }
 }
@@ -345,9 +453,47 @@ pub fn PetriView(name: String) -> impl IntoView {
             _ => last,
         }
     });
-    let ctx = NetCtx { state, name: StoredValue::new(name.clone()), tokens, fired, enabled };
-    let net_layout =
-        Memo::new(move |_| pou.with(|p| p.as_ref().map(|p| layout(&p.net)).unwrap_or_default()));
+    let editor = NetEditor::new(state, &name);
+    let ctx = NetCtx {
+        state,
+        name: StoredValue::new(name.clone()),
+        tokens,
+        fired,
+        enabled,
+        runs,
+        editor,
+    };
+    // Where each element is drawn: its position, or where a drag holds it now.
+    let moving = Memo::new(move |_| editor.moving());
+    let net_layout = Memo::new(move |_| {
+        let mut lay = pou.with(|p| p.as_ref().map(|p| layout(&p.net)).unwrap_or_default());
+        if let Some((id, at)) = moving.get() {
+            pou.with(|p| {
+                let Some(p) = p.as_ref() else { return };
+                if let Some(i) = p.net.places.iter().position(|q| q.id == id) {
+                    lay.places[i] = at;
+                } else if let Some(j) = p.net.transitions.iter().position(|t| t.id == id) {
+                    lay.transitions[j] = at;
+                }
+            });
+        }
+        lay
+    });
+    // Drags follow the pointer anywhere in the window.
+    let moves = window_event_listener(leptos::ev::pointermove, move |ev| {
+        if editor.drag.with_untracked(Option::is_some) {
+            editor.pointer_move(f64::from(ev.client_x()), f64::from(ev.client_y()));
+        }
+    });
+    let ups = window_event_listener(leptos::ev::pointerup, move |ev| {
+        editor.release(f64::from(ev.client_x()), f64::from(ev.client_y()));
+    });
+    let cancels = window_event_listener(leptos::ev::pointercancel, move |_| editor.drag.set(None));
+    on_cleanup(move || {
+        moves.remove();
+        ups.remove();
+        cancels.remove();
+    });
 
     // A clicked problem or a fault: bring the element into view.
     let this = name.clone();
@@ -403,6 +549,12 @@ pub fn PetriView(name: String) -> impl IntoView {
                 <span class="pou-title">{name.clone()}</span>
                 {layout_note}
                 <span class="ed-spacer"></span>
+                <PouActions editor=editor/>
+            </div>
+            <NetToolbar editor=editor/>
+            <props::NetDeclarations editor=editor pou=pou/>
+            <div class="ed-toolbar">
+                <span class="ed-spacer"></span>
                 <span class="pn-legend small-text" aria-hidden="true">
                     <span class="lg lg-token"></span>"token "
                     <span class="lg lg-fired"></span>"fired on the last scan "
@@ -411,14 +563,126 @@ pub fn PetriView(name: String) -> impl IntoView {
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             <div class="pn-body">
-                <div class="pn-net">{drawing}</div>
+                <div class="pn-net" tabindex="-1" on:keydown=move |ev: leptos::ev::KeyboardEvent| {
+                    // Keys the elements did not take (Escape, undo) on the canvas.
+                    if !ev.default_prevented() && editor.key(&ev.key(), ev.ctrl_key() || ev.meta_key(), ev.shift_key()) {
+                        ev.prevent_default();
+                    }
+                }>{drawing}</div>
                 <div class="pn-code">
                     <h3>"Generated CASE OF code"</h3>
                     <CodePanel code=code active=active/>
                 </div>
             </div>
+            <Properties editor=editor pou=pou/>
             <ElementDetails pou=pou name=ctx.name/>
             <AnalysisPanel pou=pou/>
         </section>
+    }
+}
+
+/// The canvas toolbar: the tools (toggle buttons), undo and redo, zoom.
+#[component]
+fn NetToolbar(editor: NetEditor) -> impl IntoView {
+    let zoom_by = move |f: f64| editor.zoom.update(|z| *z = (*z * f).clamp(0.25, 4.0));
+    let fit = move |_| {
+        let svg = web_sys::window()
+            .and_then(|w| w.document())
+            .and_then(|d| d.get_element_by_id(&editor.canvas_id()));
+        let Some(svg) = svg else { return };
+        let Some(holder) = svg.closest(".pn-net").ok().flatten() else { return };
+        let vb: Vec<f64> = svg
+            .get_attribute("viewBox")
+            .unwrap_or_default()
+            .split_whitespace()
+            .filter_map(|v| v.parse().ok())
+            .collect();
+        if let [_, _, w, h] = vb[..] {
+            let fit = (f64::from(holder.client_width()) / w)
+                .min(f64::from(holder.client_height().max(200)) / h);
+            editor.zoom.set(fit.clamp(0.25, 4.0));
+        }
+    };
+    view! {
+        <div class="pn-toolbar" role="toolbar" aria-label="Net tools">
+            {NetTool::all().into_iter().map(|(tool, label)| view! {
+                <button class="pn-tool" aria-pressed=move || if editor.tool.get() == tool { "true" } else { "false" }
+                    on:click=move |_| editor.choose(tool)>{label}</button>
+            }).collect_view()}
+            <span class="pn-sep"></span>
+            <button on:click=move |_| editor.undo() disabled=move || !editor.can_undo()
+                title="Undo (Ctrl+Z)">"Undo"</button>
+            <button on:click=move |_| editor.redo() disabled=move || !editor.can_redo()
+                title="Redo (Ctrl+Shift+Z)">"Redo"</button>
+            <span class="pn-sep"></span>
+            <button on:click=move |_| zoom_by(1.25)>"Zoom in"</button>
+            <button on:click=move |_| zoom_by(0.8)>"Zoom out"</button>
+            <button on:click=fit>"Fit"</button>
+            {move || (editor.tool.get() == NetTool::Arc).then(|| view! {
+                <span class="muted small-text">{move || match editor.arc_from.get() {
+                    Some(from) => format!("Arc from {from}: click a place or transition of the other kind."),
+                    None => "Press on a place or transition and release on one of the other kind.".to_string(),
+                }}</span>
+            })}
+        </div>
+    }
+}
+
+/// Rename and delete the net POU.
+#[component]
+fn PouActions(editor: NetEditor) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let renaming = RwSignal::new(false);
+    let rename = move |text: String| {
+        renaming.set(false);
+        let Some(old) = editor.pou().map(|p| p.name) else { return };
+        let mut project = state.project.get_untracked();
+        match project.rename_petri_pou(&old, &text) {
+            Ok(()) => {
+                state.project.set(project);
+                state.view.set(crate::state::PouView::Petri(text.trim().to_string()));
+                state.save();
+                state.check_now();
+            }
+            Err(e) => state.error(format!("Not renamed: {e}.")),
+        }
+    };
+    let delete = move |_| {
+        let Some(name) = editor.pou().map(|p| p.name) else { return };
+        let ok = web_sys::window()
+            .and_then(|w| {
+                w.confirm_with_message(&format!(
+                    "Delete the Petri net POU “{name}”? Undo cannot bring it back."
+                ))
+                .ok()
+            })
+            .unwrap_or(false);
+        if !ok {
+            return;
+        }
+        let mut project = state.project.get_untracked();
+        if project.delete_petri_pou(&name).is_ok() {
+            state.project.set(project);
+            state.view.set(crate::state::PouView::St);
+            state.save();
+            state.check_now();
+            state.info(format!("Deleted the Petri net POU “{name}”."));
+        }
+    };
+    view! {
+        {move || if renaming.get() {
+            view! {
+                <input type="text" aria-label="New POU name" autofocus
+                    prop:value=editor.pou().map(|p| p.name).unwrap_or_default()
+                    on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
+                        "Enter" => { ev.prevent_default(); rename(event_target_value(&ev)); }
+                        "Escape" => renaming.set(false),
+                        _ => {}
+                    }/>
+            }.into_any()
+        } else {
+            view! { <button on:click=move |_| renaming.set(true)>"Rename POU"</button> }.into_any()
+        }}
+        <button on:click=delete>"Delete POU"</button>
     }
 }
