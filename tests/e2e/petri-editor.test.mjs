@@ -5,6 +5,9 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
+import { readFile } from 'node:fs/promises';
+import { existsSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
 import { startServer } from './server.mjs';
 import { launch } from './browser.mjs';
 
@@ -28,8 +31,10 @@ async function at(canvas, x, y) {
   return { x: box.x + ((x - vx) * box.width) / vw, y: box.y + ((y - vy) * box.height) / vh };
 }
 
+/** The middle of a place's circle or a transition's bar (not of its label). */
 async function centre(locator) {
-  const b = await locator.boundingBox();
+  const shape = locator.locator('.pn-circle, .pn-hit');
+  const b = await ((await shape.count()) > 0 ? shape.first() : locator).boundingBox();
   return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
 }
 
@@ -72,6 +77,7 @@ test('a three-place cycle drawn in a new project generates CASE code, runs scan 
   // Arcs: press on one element and release on the other, or click one and then the other.
   await tool('Arc').click();
   const join = async (a, b, clicks) => {
+    const arcs = await view.locator('.pn-arc').count();
     const from = await centre(a);
     const to = await centre(b);
     if (clicks) {
@@ -83,6 +89,9 @@ test('a three-place cycle drawn in a new project generates CASE code, runs scan 
       await page.mouse.move(to.x, to.y, { steps: 6 });
       await page.mouse.up();
     }
+    // The arc is drawn before the next one is started, as a person waits to see it.
+    // (attached: a horizontal line has no height, which Playwright counts as invisible)
+    await view.locator('.pn-arc').nth(arcs).waitFor({ state: 'attached' });
   };
   await join(place('P1'), transition('T1'), false);
   await join(transition('T1'), place('P2'), true);
@@ -124,8 +133,17 @@ test('a three-place cycle drawn in a new project generates CASE code, runs scan 
   assert.deepEqual(await tokens(), ['1', '0', '0'], 'T1 waits for Go');
   assert.equal(await transition('T1').getAttribute('aria-label'), 'Transition T1, enabled', 'marked, waiting for its guard');
   await page.getByRole('checkbox', { name: 'Go', exact: true }).check();
+  // The firing sends tokens along T1's arcs (seen by an observer, as they fly for 260 ms).
+  await page.evaluate(() => {
+    window.__flew = [];
+    new MutationObserver(() => {
+      for (const c of document.querySelectorAll('.pn-flying')) window.__flew.push(c.getAttribute('cx') + ',' + c.getAttribute('cy'));
+    }).observe(document.querySelector('.pn-net'), { subtree: true, childList: true });
+  });
   await step();
   assert.deepEqual(await tokens(), ['0', '1', '0'], 'Go fires T1');
+  await page.waitForFunction(() => window.__flew.length >= 2);
+  assert.deepEqual([...new Set(await page.evaluate(() => window.__flew))].sort(), ['100,100', '200,100'], 'from P1 into T1, from T1 out to P2');
   assert.equal(await transition('T1').getAttribute('aria-label'), 'Transition T1, fired');
   assert.equal(await place('P2').getAttribute('aria-label'), 'Place P2: 1 token');
   await step();
@@ -164,6 +182,120 @@ test('a three-place cycle drawn in a new project generates CASE code, runs scan 
   await place('P3').waitFor();
   assert.equal(await view.locator('.pn-arc').count(), 6);
   await page.screenshot({ path: path.join(root, 'docs/screenshots/petri-editor.png'), fullPage: true });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+async function openApp(context) {
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(server.url);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  return { page, errors };
+}
+
+test('the concurrent weighing net runs with two places marked at once and both branches lit', async () => {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+  const { page, errors } = await openApp(context);
+  await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: 'Weighing (concurrent Petri net)' });
+  const view = page.getByRole('region', { name: 'Petri net WeighingConcurrent' });
+  await view.waitFor();
+  const place = (id) => view.locator(`.pn-place[data-id="${id}"]`);
+  const step = page.getByRole('button', { name: 'Step', exact: true });
+  await step.click();
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
+  await step.click();
+  await place('A31').and(page.locator('[data-tokens="1"]')).waitFor();
+  assert.equal(await place('B41').getAttribute('data-tokens'), '1', 'the fork marks both branches');
+  assert.equal(await place('P1').getAttribute('aria-label'), 'Place P1: 0 tokens');
+  await step.click();
+  await page.waitForFunction(() => {
+    const lit = [...document.querySelectorAll('.code-active')].map((b) => b.dataset.text);
+    return lit.some((t) => /^31:/.test(t)) && lit.some((t) => /^41:/.test(t));
+  });
+  // Selecting a place marks its branch in the code; a click on a code line selects back.
+  await place('A31').click();
+  const marked = view.locator('.code-selected');
+  await marked.first().waitFor();
+  const first = Number(await marked.first().getAttribute('data-first'));
+  const line = view.locator('.code-lines');
+  const box = await line.boundingBox();
+  await page.mouse.click(box.x + 40, box.y + 6 + (first - 1) * 18 + 9);
+  assert.equal(await place('A31').getAttribute('class').then((c) => /\bselected\b/.test(c)), true);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+const PHILOSOPHERS = `<?xml version="1.0" encoding="UTF-8"?>
+<pnml xmlns="http://www.pnml.org/version-2009/grammar/pnml">
+<net id="n" type="http://www.pnml.org/version-2009/grammar/ptnet"><name><text>Philosophers</text></name><page id="g">
+${[['think0', 1, 60, 60], ['left0', 0, 60, 180], ['eat0', 0, 60, 300], ['think1', 1, 420, 60], ['left1', 0, 420, 180], ['eat1', 0, 420, 300], ['f0', 1, 240, 120], ['f1', 1, 240, 260]]
+    .map(([id, m, x, y]) => `<place id="${id}"><name><text>${id}</text></name><graphics><position x="${x}" y="${y}"/></graphics>${m ? '<initialMarking><text>1</text></initialMarking>' : ''}</place>`).join('\n')}
+${[['takeL0', 60, 120], ['takeR0', 60, 240], ['rel0', 150, 360], ['takeL1', 420, 120], ['takeR1', 420, 240], ['rel1', 330, 360]]
+    .map(([id, x, y]) => `<transition id="${id}"><name><text>${id}</text></name><graphics><position x="${x}" y="${y}"/></graphics></transition>`).join('\n')}
+${[['think0', 'takeL0'], ['f0', 'takeL0'], ['takeL0', 'left0'], ['left0', 'takeR0'], ['f1', 'takeR0'], ['takeR0', 'eat0'], ['eat0', 'rel0'], ['rel0', 'think0'], ['rel0', 'f0'], ['rel0', 'f1'],
+    ['think1', 'takeL1'], ['f1', 'takeL1'], ['takeL1', 'left1'], ['left1', 'takeR1'], ['f0', 'takeR1'], ['takeR1', 'eat1'], ['eat1', 'rel1'], ['rel1', 'think1'], ['rel1', 'f1'], ['rel1', 'f0']]
+    .map(([a, b], i) => `<arc id="a${i}" source="${a}" target="${b}"/>`).join('\n')}
+</page></net></pnml>`;
+
+test('the two-philosopher net shows its deadlock, plays its path, and exports PNML that plc reads back', async () => {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+  const { page, errors } = await openApp(context);
+  await page.getByLabel('Import project file').setInputFiles({ name: 'philosophers.pnml', mimeType: 'application/xml', buffer: Buffer.from(PHILOSOPHERS) });
+  const view = page.getByRole('region', { name: 'Petri net Philosophers' });
+  await view.waitFor();
+  const tokens = (id) => view.locator(`.pn-place[data-id="${id}"]`).getAttribute('data-tokens');
+  await view.locator('.pn-analysis summary').click();
+  const deadlock = view.getByRole('button', { name: '{left0, left1} after takeL0 → takeL1' });
+  await deadlock.click();
+  const play = view.getByRole('group', { name: 'Play the net' });
+  await play.getByText('Deadlock path: step 0 of 2.').waitFor();
+  assert.equal(await play.getByRole('button', { name: 'Previous' }).isDisabled(), true);
+  await play.getByRole('button', { name: 'Next' }).click();
+  await play.getByText('Deadlock path: step 1 of 2. Fired: takeL0.').waitFor();
+  assert.deepEqual([await tokens('think0'), await tokens('left0'), await tokens('f0')], ['0', '1', '0']);
+  await view.locator('.pn-transition[data-id="takeL0"].fired').waitFor();
+  await play.getByRole('button', { name: 'Next' }).click();
+  await play.getByText('Deadlock path: step 2 of 2. Fired: takeL0 → takeL1.').waitFor();
+  assert.deepEqual([await tokens('left0'), await tokens('left1'), await tokens('f0'), await tokens('f1')], ['1', '1', '0', '0']);
+  assert.equal(await play.getByRole('button', { name: 'Next' }).isDisabled(), true, 'nothing is enabled: the deadlock');
+  assert.equal(await view.locator('.pn-transition.enabled').count(), 0);
+  await play.getByRole('button', { name: 'Previous' }).click();
+  await play.getByText('Deadlock path: step 1 of 2. Fired: takeL0.').waitFor();
+  await play.getByRole('button', { name: 'Stop playing' }).click();
+  assert.equal(await tokens('think0'), '1', 'back to the initial marking');
+
+  // The token game: clicks fire enabled transitions, guards ignored; Reset marking.
+  await play.getByRole('button', { name: 'Token game' }).click();
+  await view.locator('.pn-transition[data-id="takeL1"] .pn-hit').click();
+  assert.equal(await tokens('left1'), '1');
+  await view.locator('.pn-transition[data-id="takeR1"] .pn-hit').click();
+  assert.deepEqual([await tokens('eat1'), await tokens('f0'), await tokens('f1')], ['1', '0', '0']);
+  await view.locator('.pn-transition[data-id="takeL0"] .pn-hit').click();
+  assert.equal(await tokens('think0'), '1', 'takeL0 is not enabled: its fork is in use');
+  await play.getByRole('button', { name: 'Reset marking' }).click();
+  assert.deepEqual([await tokens('think1'), await tokens('eat1')], ['1', '0']);
+  await play.getByRole('button', { name: 'Token game' }).click();
+
+  // Export PNML from the page; plc petri import reads the same net back.
+  const download = page.waitForEvent('download');
+  await view.getByRole('button', { name: 'Export PNML' }).click();
+  const file = await (await download).path();
+  const plc = path.join(root, 'target/debug/plc');
+  assert.ok(existsSync(plc), 'the plc binary is built by cargo test before the browser tests');
+  const project = JSON.parse(execFileSync(plc, ['petri', 'import', file]).toString());
+  const net = project.petri[0].net;
+  assert.deepEqual(net.places.map((p) => [p.id, p.tokens ?? 0, p.position.x, p.position.y]),
+    [['think0', 1, 60, 60], ['left0', 0, 60, 180], ['eat0', 0, 60, 300], ['think1', 1, 420, 60], ['left1', 0, 420, 180], ['eat1', 0, 420, 300], ['f0', 1, 240, 120], ['f1', 1, 240, 260]]);
+  assert.equal(net.transitions.length, 6);
+  assert.equal(net.arcs.length, 20);
+  const svgDownload = page.waitForEvent('download');
+  await view.getByRole('button', { name: 'Export SVG' }).click();
+  const svg = await readFile(await (await svgDownload).path(), 'utf8');
+  assert.match(svg, /^<\?xml/);
+  assert.match(svg, /<svg[^>]*xmlns="http:\/\/www.w3.org\/2000\/svg"/);
+  assert.match(svg, /\.pn-circle/);
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -51,9 +51,18 @@ fn next_message(worker: &web_sys::Worker) -> JsFuture {
 /// The project as PLCopen XML (TC6 0201), written by the worker (the exporter lives there
 /// with the importers, off the first load).
 pub async fn plcopen_xml(project: &Project) -> Result<String, String> {
+    export_in_worker("export-plcopen", "", project).await
+}
+
+/// The Petri net POU `pou` of the project as PNML, written by the worker.
+pub async fn pnml(project: &Project, pou: &str) -> Result<String, String> {
+    export_in_worker("export-pnml", pou, project).await
+}
+
+async fn export_in_worker(what: &str, pou: &str, project: &Project) -> Result<String, String> {
     let request = js_sys::Array::of3(
-        &JsValue::from_str("export-plcopen"),
-        &JsValue::from_str(""),
+        &JsValue::from_str(what),
+        &JsValue::from_str(pou),
         &JsValue::from_str(&project.to_file()),
     );
     let reply: Reply = serde_json::from_str(&ask_worker(&request).await?)

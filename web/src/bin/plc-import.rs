@@ -3,9 +3,10 @@
 //! The XML importers are about a tenth of the engine; the page loads this worker (its own
 //! small wasm module, built by Trunk as `plc-import_loader.js`) only when a user imports
 //! such a file, so the first page load stays within its size budget. It says `"ready"`
-//! once loaded, then answers each message `[file stem, text]` with a JSON string (and a
-//! message `["export-plcopen", "", project file]` with `{"xml": ...}`): `{"project": <project file>, "kind":
-//! "PLCopen XML" | "PNML" | …, "warnings": [...]}` or `{"error": "..."}`.
+//! once loaded, then answers each message `[file stem, text]` with a JSON string
+//! `{"project": <project file>, "kind": "PLCopen XML" | "PNML" | …, "warnings": [...]}` or
+//! `{"error": "..."}`; the exports `["export-plcopen", "", project file]` and
+//! `["export-pnml", POU name, project file]` are answered with `{"xml": ...}`.
 
 use plc_core::open::open_text;
 use plc_core::project::Project;
@@ -28,9 +29,18 @@ fn reply(stem: &str, text: &str) -> String {
     value.to_string()
 }
 
-/// The reply to an export request: the project file as PLCopen XML.
-fn export_reply(project_file: &str) -> String {
+/// The reply to an export request: the project file as PLCopen XML (`what` is
+/// `export-plcopen`), or its Petri net POU `pou` as PNML (`export-pnml`).
+fn export_reply(what: &str, pou: &str, project_file: &str) -> String {
     let value = match Project::from_file(project_file) {
+        Ok(project) if what == "export-pnml" => {
+            match project.petri.iter().find(|p| p.name.eq_ignore_ascii_case(pou)) {
+                Some(net) => serde_json::json!({ "xml": plc_core::pnml::export(net) }),
+                None => {
+                    serde_json::json!({ "error": format!("the project has no Petri net POU named {pou}") })
+                }
+            }
+        }
         Ok(project) => serde_json::json!({ "xml": plc_core::plcopen::export(&project) }),
         Err(e) => serde_json::json!({ "error": e.to_string() }),
     };
@@ -46,8 +56,9 @@ fn main() {
             let request = js_sys::Array::from(&ev.data());
             let first = request.get(0).as_string().unwrap_or_default();
             let second = request.get(1).as_string().unwrap_or_default();
-            let answer_text = if request.length() == 3 && first == "export-plcopen" {
-                export_reply(&request.get(2).as_string().unwrap_or_default())
+            let export = matches!(first.as_str(), "export-plcopen" | "export-pnml");
+            let answer_text = if request.length() == 3 && export {
+                export_reply(&first, &second, &request.get(2).as_string().unwrap_or_default())
             } else {
                 reply(&first, &second)
             };
@@ -74,9 +85,19 @@ mod tests {
         let bad: serde_json::Value =
             serde_json::from_str(&reply("x", "<?xml version=\"1.0\"?><nope")).unwrap_or_default();
         assert!(bad["error"].as_str().is_some_and(|e| !e.is_empty()), "{bad}");
+        let mut project = super::Project::new("P");
         let xml: serde_json::Value =
-            serde_json::from_str(&super::export_reply(&super::Project::new("P").to_file()))
+            serde_json::from_str(&super::export_reply("export-plcopen", "", &project.to_file()))
                 .unwrap_or_default();
         assert!(xml["xml"].as_str().is_some_and(|x| x.contains("tc6_0201")), "{xml}");
+        let _ = project.add_petri_pou("Cycle");
+        let pnml: serde_json::Value =
+            serde_json::from_str(&super::export_reply("export-pnml", "cycle", &project.to_file()))
+                .unwrap_or_default();
+        assert!(pnml["xml"].as_str().is_some_and(|x| x.contains("<pnml")), "{pnml}");
+        let none: serde_json::Value =
+            serde_json::from_str(&super::export_reply("export-pnml", "Nope", &project.to_file()))
+                .unwrap_or_default();
+        assert!(none["error"].as_str().is_some_and(|e| e.contains("Nope")), "{none}");
     }
 }

@@ -1,9 +1,12 @@
 //! The analysis summary of a net (guards ignored): safe, bounded, live, reversible, the
 //! deadlocks with the firing sequence that reaches each, dead transitions and places no
-//! state-machine component covers. Computed by the core when the panel is opened.
+//! state-machine component covers. Computed by the core when the panel is opened; a
+//! deadlock is a button that plays its firing sequence on the net.
 
 use leptos::prelude::*;
 use plc_core::petri::{analyze, build, panel_budget, NetAnalysis, PetriPou, PtNet};
+
+use super::play::Play;
 
 fn verdict(v: Option<bool>) -> (&'static str, &'static str) {
     match v {
@@ -30,7 +33,7 @@ fn marking_text(net: &PtNet, marking: &[u32]) -> String {
     format!("{{{}}}", names.join(", "))
 }
 
-fn summary(net: &PtNet, a: &NetAnalysis) -> impl IntoView {
+fn summary(net: &PtNet, a: &NetAnalysis, play: RwSignal<Option<Play>>) -> impl IntoView {
     let deadlock_free = if !a.deadlocks.is_empty() {
         Some(false)
     } else if a.complete && a.bounded == Some(true) {
@@ -53,8 +56,14 @@ fn summary(net: &PtNet, a: &NetAnalysis) -> impl IntoView {
             let path: Vec<String> = d.path.iter().map(|&i| t(i)).collect();
             let path =
                 if path.is_empty() { "at the start".to_string() } else { path.join(" → ") };
+            let steps = d.path.clone();
             view! {
-                <li>{format!("{} after {path}", marking_text(net, &d.marking))}</li>
+                <li>
+                    <button class="link" title="Play the firing sequence on the net, one transition per step"
+                        on:click=move |_| play.set(Some(Play { path: steps.clone(), step: 0, game: false }))>
+                        {format!("{} after {path}", marking_text(net, &d.marking))}
+                    </button>
+                </li>
             }
         })
         .collect_view();
@@ -93,7 +102,7 @@ fn summary(net: &PtNet, a: &NetAnalysis) -> impl IntoView {
 
 /// The collapsible analysis panel of a net.
 #[component]
-pub fn AnalysisPanel(pou: Memo<Option<PetriPou>>) -> impl IntoView {
+pub fn AnalysisPanel(pou: Memo<Option<PetriPou>>, play: RwSignal<Option<Play>>) -> impl IntoView {
     let open = RwSignal::new(false);
     let body = move || {
         if !open.get() {
@@ -102,7 +111,7 @@ pub fn AnalysisPanel(pou: Memo<Option<PetriPou>>) -> impl IntoView {
         pou.with(|p| match p.as_ref().map(|p| build(&p.net)) {
             Some(Ok(net)) => {
                 let a = analyze(&net, panel_budget(net.places()));
-                summary(&net, &a).into_any()
+                summary(&net, &a, play).into_any()
             }
             Some(Err(_)) => {
                 view! { <p class="muted">"Fix the net's errors (see Problems) to analyse it."</p> }

@@ -1,5 +1,6 @@
 //! The generated CASE OF program beside the net: read-only, highlighted like the ST editor,
-//! with the branch each process took on the last scan lit (and scrolled into view).
+//! with the branch each process took on the last scan lit (and scrolled into view), the
+//! selected element's lines marked, and a click on a line reported (to select its element).
 
 use std::collections::BTreeMap;
 
@@ -66,6 +67,12 @@ pub fn CodePanel(
     code: Signal<String>,
     /// The lines of the first statements of the active branches.
     active: Signal<Vec<u32>>,
+    /// Line ranges to mark as the selected element's (first and last, 1-based).
+    #[prop(optional)]
+    marked: Option<Signal<Vec<(u32, u32)>>>,
+    /// Called with the 1-based line a click landed on.
+    #[prop(optional)]
+    on_line: Option<Callback<u32>>,
 ) -> impl IntoView {
     let frame = NodeRef::<html::Div>::new();
     let html = Memo::new(move |_| code.with(|c| highlight_html(c, &[])));
@@ -106,10 +113,38 @@ pub fn CodePanel(
             })
             .collect_view()
     };
+    let selected_bands = move || {
+        marked
+            .map(|m| m.get())
+            .unwrap_or_default()
+            .into_iter()
+            .map(|(first, last)| {
+                let top = PAD_PX + (first as f64 - 1.0) * LINE_PX;
+                let height = (last.max(first) - first + 1) as f64 * LINE_PX;
+                view! {
+                    <div class="code-selected" data-first=first data-last=last
+                        style=format!("top: {top}px; height: {height}px")></div>
+                }
+            })
+            .collect_view()
+    };
+    let click = move |ev: leptos::ev::MouseEvent| {
+        let Some(on_line) = on_line else { return };
+        use wasm_bindgen::JsCast;
+        let Some(pre) = ev.current_target().and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+        else {
+            return;
+        };
+        let y = f64::from(ev.client_y()) - pre.get_bounding_client_rect().top() - PAD_PX;
+        if y >= 0.0 {
+            on_line.run((y / LINE_PX) as u32 + 1);
+        }
+    };
     view! {
         <div class="code-frame" node_ref=frame>
             <div class="ed-gutter code-gutter" aria-hidden="true" inner_html=move || gutter.get()></div>
-            <pre class="code-view code-lines" aria-label="Generated CASE OF code">
+            <pre class="code-view code-lines" aria-label="Generated CASE OF code" on:click=click>
+                {selected_bands}
                 {bands}
                 <code inner_html=move || html.get()></code>
             </pre>

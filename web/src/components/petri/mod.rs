@@ -12,11 +12,12 @@ mod editor;
 pub mod geometry;
 pub mod layout;
 pub mod live;
+mod play;
 mod props;
 
 use leptos::prelude::*;
 use plc_core::build::Site;
-use plc_core::petri::{compile, Compiled, NetElement, PetriPou};
+use plc_core::petri::{build, compile, Compiled, NetElement, PetriPou, PtNet};
 
 use crate::components::ladder::{geometry::clip, scroll_to};
 use crate::state::{marking_of, AppState, RunMode};
@@ -28,15 +29,14 @@ use geometry::{
     arc_line, bar_of, canvas_box, label_box, label_on_left, macro_box, view_box, Bar, PLACE_R,
 };
 use layout::{layout, NetLayout, Point};
+use play::{Play, PlayControls};
 use props::Properties;
+
+/// How long a firing's tokens travel (into the bar, then out), in milliseconds.
+const FLY_MS: u64 = 260;
 
 /// Characters of a guard shown beside its transition.
 const GUARD_CHARS: usize = 26;
-
-/// The element id used in the page for a net element.
-fn dom_id(kind: &str, id: &str) -> String {
-    format!("pn-{kind}-{id}")
-}
 
 /// Everything the drawing's reactive parts share.
 #[derive(Clone, Copy)]
@@ -50,6 +50,13 @@ struct NetCtx {
     /// Whether the simulator runs this net (transitions then say enabled / fired).
     runs: Memo<bool>,
     editor: NetEditor,
+    /// The token game or a deadlock's path being played.
+    play: RwSignal<Option<Play>>,
+    /// The net as a place/transition net (for the token game).
+    pt: Memo<Option<PtNet>>,
+    /// Tokens travelling along the arcs of the transitions that just fired (an animation
+    /// number, so each firing starts its own, and which transitions).
+    flying: RwSignal<Option<(u64, Vec<bool>)>>,
 }
 
 impl NetCtx {
@@ -77,9 +84,26 @@ impl NetCtx {
         self.editor.selected.with(|s| matches!(s, Some(Selection::Element(e)) if e == id))
     }
 
-    /// The handlers every place and transition has: pressed, focused, keys.
+    /// The handlers every place and transition has: pressed, focused, keys. In the token
+    /// game a press on a transition fires it.
     fn press(&self, id: &str, c: Point, ev: &web_sys::PointerEvent) {
         ev.stop_propagation();
+        if self.play.with_untracked(|p| p.as_ref().is_some_and(|p| p.game)) {
+            let fired = self.pt.with_untracked(|net| {
+                let net = net.as_ref()?;
+                let t = net.transition_names.iter().position(|n| n == id)?;
+                let mut fired = false;
+                self.play.update(|p| {
+                    if let Some(p) = p {
+                        fired = p.fire(net, t);
+                    }
+                });
+                Some(fired)
+            });
+            if fired.is_some() {
+                return;
+            }
+        }
         self.editor.press(Some(id.to_string()), Some(c), ev);
     }
 
@@ -288,6 +312,26 @@ fn net_svg(
                 let (mx, my) = ((s.x + e.x) / 2.0, (s.y + e.y) / 2.0);
                 view! { <text class="pn-weight" x=mx + 5.0 y=my - 4.0>{a.weight}</text> }
             });
+            // A firing sends a token from each input place into the bar, then from the
+            // bar to each output place (half the animation each).
+            let (start, end) = if place_first {
+                (lay.places[p], lay.transitions[t])
+            } else {
+                (lay.transitions[t], lay.places[p])
+            };
+            let delay = if place_first { 0 } else { FLY_MS / 2 };
+            let fly = move || {
+                ctx.flying.with(|f| {
+                    let (run, fired) = f.as_ref()?;
+                    fired.get(t).copied().unwrap_or(false).then(|| view! {
+                        <circle class="pn-flying" r="5" cx=start.x cy=start.y data-run=*run
+                            style=format!(
+                                "--dx:{:.1}px;--dy:{:.1}px;animation-delay:{delay}ms;animation-duration:{}ms",
+                                end.x - start.x, end.y - start.y, FLY_MS / 2
+                            )/>
+                    })
+                })
+            };
             let this = Selection::Arc(a.from.clone(), a.to.clone());
             let pressed = this.clone();
             let selected = move || ctx.editor.selected.with(|s| s.as_ref() == Some(&this));
@@ -302,6 +346,7 @@ fn net_svg(
                         }
                     }/>
                 {weight}
+                {fly}
             })
         })
         .collect_view();
@@ -419,12 +464,19 @@ pub fn PetriView(name: String) -> impl IntoView {
             state.with_sim(|s| marking_of(s, map))
         })
     });
-    let tokens = Memo::new(move |_| match live_marking.get() {
-        Some(m) => m,
-        None => pou.with(|p| {
-            p.as_ref().map(|p| p.net.places.iter().map(|q| q.tokens).collect()).unwrap_or_default()
-        }),
-    });
+    let play: RwSignal<Option<Play>> = RwSignal::new(None);
+    let pt = Memo::new(move |_| pou.with(|p| p.as_ref().and_then(|p| build(&p.net).ok())));
+    let played =
+        Memo::new(move |_| play.with(|g| pt.with(|n| Some(g.as_ref()?.marking(n.as_ref()?)))));
+    let tokens =
+        Memo::new(move |_| match played.get().map(|(m, _)| m).or_else(|| live_marking.get()) {
+            Some(m) => m,
+            None => pou.with(|p| {
+                p.as_ref()
+                    .map(|p| p.net.places.iter().map(|q| q.tokens).collect())
+                    .unwrap_or_default()
+            }),
+        });
     let enabled = Memo::new(move |_| {
         compiled.with(|c| {
             c.as_ref().map(|c| tokens.with(|m| live::enabled(&c.net.pre, m))).unwrap_or_default()
@@ -434,6 +486,10 @@ pub fn PetriView(name: String) -> impl IntoView {
     // few milliseconds); when stepping, exactly the last scan's firings are lit.
     let held_fired: StoredValue<Option<(Vec<u32>, Vec<bool>)>> = StoredValue::new(None);
     let fired = Memo::new(move |_| {
+        if let Some((_, last)) = played.get() {
+            let n = pt.with(|n| n.as_ref().map_or(0, PtNet::transitions));
+            return (0..n).map(|t| Some(t) == last).collect();
+        }
         let Some(now) = live_marking.get() else { return Vec::new() };
         let scans = state.with_sim(|s| s.scan_count()).unwrap_or(0);
         let before = state.marking_before_last.get_value();
@@ -462,7 +518,44 @@ pub fn PetriView(name: String) -> impl IntoView {
         enabled,
         runs,
         editor,
+        play,
+        pt,
+        flying: RwSignal::new(None),
     };
+    // Each firing animates its tokens; a firing that comes while the last animation still
+    // runs (the simulator is faster than the eye) is shown without one.
+    let flying = ctx.flying;
+    let last_run = StoredValue::new((0u64, f64::NEG_INFINITY));
+    Effect::new(move |_| {
+        let now_fired = fired.get();
+        if !now_fired.iter().any(|&f| f) {
+            return;
+        }
+        let (run, started) = last_run.get_value();
+        let now = js_sys::Date::now();
+        if now - started < FLY_MS as f64 {
+            return;
+        }
+        let run = run + 1;
+        last_run.set_value((run, now));
+        flying.set(Some((run, now_fired)));
+        set_timeout(
+            move || {
+                if flying.with_untracked(|f| f.as_ref().is_some_and(|(r, _)| *r == run)) {
+                    flying.set(None);
+                }
+            },
+            std::time::Duration::from_millis(FLY_MS + 60),
+        );
+    });
+    // An edit ends what was being played (its path may no longer exist).
+    Effect::new(move |previous: Option<u64>| {
+        let now = editor.version.get();
+        if previous.is_some_and(|p| p != now) {
+            play.set(None);
+        }
+        now
+    });
     // Where each element is drawn: its position, or where a drag holds it now.
     let moving = Memo::new(move |_| editor.moving());
     let net_layout = Memo::new(move |_| {
@@ -502,8 +595,9 @@ pub fn PetriView(name: String) -> impl IntoView {
             if let Site::Petri { pou, element: Some(e), .. } = site {
                 if pou.eq_ignore_ascii_case(&this) {
                     match e {
-                        NetElement::Place(id) => scroll_to(&dom_id("place", &id)),
-                        NetElement::Transition(id) => scroll_to(&dom_id("transition", &id)),
+                        NetElement::Place(id) | NetElement::Transition(id) => {
+                            scroll_to(&editor.element_dom_id(&id))
+                        }
                         _ => {}
                     }
                 }
@@ -519,6 +613,9 @@ pub fn PetriView(name: String) -> impl IntoView {
         compiled.with(|c| net_layout.with(|l| net_svg(ctx, &p, c.as_ref(), l).into_any()))
     };
     let status = move || {
+        if play.with(Option::is_some) {
+            return None;
+        }
         if runs.get() {
             return None;
         }
@@ -542,6 +639,49 @@ pub fn PetriView(name: String) -> impl IntoView {
             l.iter().filter(|(p, _)| p.eq_ignore_ascii_case(&key)).map(|(_, line)| *line).collect()
         })
     });
+    // The selected element's lines in the code (a place: its whole CASE branch; a
+    // transition: its guard test), and a click on a line selects the element behind it.
+    let marked = Signal::derive(move || {
+        let Some(Selection::Element(id)) = editor.selected.get() else { return Vec::new() };
+        compiled.with(|c| {
+            let Some(c) = c.as_ref() else { return Vec::new() };
+            let is_it = |e: &NetElement| match e {
+                NetElement::Place(p) | NetElement::Transition(p) => *p == id,
+                _ => false,
+            };
+            let lines: Vec<u32> = c
+                .generated
+                .lines
+                .iter()
+                .enumerate()
+                .filter(|(_, src)| src.as_ref().is_some_and(|s| is_it(&s.element)))
+                .map(|(i, _)| i as u32 + 1)
+                .collect();
+            let mut ranges: Vec<(u32, u32)> = Vec::new();
+            for l in lines {
+                match ranges.last_mut() {
+                    Some(r) if r.1 + 1 == l => r.1 = l,
+                    _ => ranges.push((l, l)),
+                }
+            }
+            let is_place = c.generated.place_map.places.iter().any(|p| p.id == id);
+            if let (true, Some(&(first, _))) = (is_place, ranges.first()) {
+                let branch = code::branch_lines(&c.generated.st, first);
+                ranges.retain(|r| r.1 < branch.0 || r.0 > branch.1);
+                ranges.push(branch);
+            }
+            ranges
+        })
+    });
+    let on_line = Callback::new(move |line: u32| {
+        let element = compiled.with_untracked(|c| {
+            c.as_ref()?.generated.lines.get(line as usize - 1)?.as_ref().map(|s| s.element.clone())
+        });
+        if let Some(NetElement::Place(id) | NetElement::Transition(id)) = element {
+            editor.selected.set(Some(Selection::Element(id)));
+            editor.focus_selected();
+        }
+    });
     view! {
         <section class="panel petri-view" aria-label=format!("Petri net {name}")>
             <div class="ed-toolbar">
@@ -551,7 +691,8 @@ pub fn PetriView(name: String) -> impl IntoView {
                 <span class="ed-spacer"></span>
                 <PouActions editor=editor/>
             </div>
-            <NetToolbar editor=editor/>
+            <NetToolbar editor=editor pou=pou/>
+            <PlayControls play=play net=pt/>
             <props::NetDeclarations editor=editor pou=pou/>
             <div class="ed-toolbar">
                 <span class="ed-spacer"></span>
@@ -563,7 +704,13 @@ pub fn PetriView(name: String) -> impl IntoView {
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             <div class="pn-body">
-                <div class="pn-net" tabindex="-1" on:keydown=move |ev: leptos::ev::KeyboardEvent| {
+                <div class="pn-net" tabindex="-1"
+                    on:wheel=move |ev: leptos::ev::WheelEvent| {
+                        ev.prevent_default();
+                        let f = if ev.delta_y() > 0.0 { 0.8 } else { 1.25 };
+                        editor.zoom.update(|z| *z = (*z * f).clamp(0.25, 4.0));
+                    }
+                    on:keydown=move |ev: leptos::ev::KeyboardEvent| {
                     // Keys the elements did not take (Escape, undo) on the canvas.
                     if !ev.default_prevented() && editor.key(&ev.key(), ev.ctrl_key() || ev.meta_key(), ev.shift_key()) {
                         ev.prevent_default();
@@ -571,19 +718,49 @@ pub fn PetriView(name: String) -> impl IntoView {
                 }>{drawing}</div>
                 <div class="pn-code">
                     <h3>"Generated CASE OF code"</h3>
-                    <CodePanel code=code active=active/>
+                    <CodePanel code=code active=active marked=marked on_line=on_line/>
                 </div>
             </div>
             <Properties editor=editor pou=pou/>
             <ElementDetails pou=pou name=ctx.name/>
-            <AnalysisPanel pou=pou/>
+            <AnalysisPanel pou=pou play=play/>
         </section>
     }
 }
 
 /// The canvas toolbar: the tools (toggle buttons), undo and redo, zoom.
 #[component]
-fn NetToolbar(editor: NetEditor) -> impl IntoView {
+fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let export_pnml = move |_| {
+        let Some(name) = pou.with_untracked(|p| p.as_ref().map(|p| p.name.clone())) else { return };
+        let project = state.project.get_untracked();
+        leptos::task::spawn_local(async move {
+            match crate::import::pnml(&project, &name).await {
+                Ok(xml) => {
+                    if let Err(e) =
+                        crate::download::download(&format!("{name}.pnml"), "application/xml", &xml)
+                    {
+                        state.error(e);
+                    }
+                }
+                Err(e) => state.error(format!("The net could not be exported: {e}.")),
+            }
+        });
+    };
+    let export_svg = move |_| {
+        let Some(name) = pou.with_untracked(|p| p.as_ref().map(|p| p.name.clone())) else { return };
+        match canvas_svg(&editor.canvas_id()) {
+            Some(text) => {
+                if let Err(e) =
+                    crate::download::download(&format!("{name}.svg"), "image/svg+xml", &text)
+                {
+                    state.error(e);
+                }
+            }
+            None => state.error("The net could not be exported: it is not drawn."),
+        }
+    };
     let zoom_by = move |f: f64| editor.zoom.update(|z| *z = (*z * f).clamp(0.25, 4.0));
     let fit = move |_| {
         let svg = web_sys::window()
@@ -618,13 +795,18 @@ fn NetToolbar(editor: NetEditor) -> impl IntoView {
             <button on:click=move |_| zoom_by(1.25)>"Zoom in"</button>
             <button on:click=move |_| zoom_by(0.8)>"Zoom out"</button>
             <button on:click=fit>"Fit"</button>
-            {move || (editor.tool.get() == NetTool::Arc).then(|| view! {
-                <span class="muted small-text">{move || match editor.arc_from.get() {
-                    Some(from) => format!("Arc from {from}: click a place or transition of the other kind."),
-                    None => "Press on a place or transition and release on one of the other kind.".to_string(),
-                }}</span>
-            })}
+            <span class="pn-sep"></span>
+            <button on:click=export_pnml title="The net as PNML, for plc petri import and other Petri net tools">"Export PNML"</button>
+            <button on:click=export_svg title="The net as drawn, as an SVG picture">"Export SVG"</button>
         </div>
+        // One line whatever it says, so the canvas never moves under a gesture.
+        <p class="pn-hint muted small-text" role="status">{move || match (editor.tool.get(), editor.arc_from.get()) {
+            (NetTool::Arc, Some(from)) => format!("Arc from {from}: click a place or transition of the other kind (Escape to stop)."),
+            (NetTool::Arc, None) => "Press on a place or transition and release on one of the other kind.".to_string(),
+            (NetTool::Place, _) => "Click on the canvas to add a place.".to_string(),
+            (NetTool::Transition, _) => "Click on the canvas to add a transition.".to_string(),
+            (NetTool::Select, _) => "Drag an element to move it, the canvas to pan; arrow keys move, Enter edits, Delete removes.".to_string(),
+        }}</p>
     }
 }
 
@@ -685,4 +867,40 @@ fn PouActions(editor: NetEditor) -> impl IntoView {
         }}
         <button on:click=delete>"Delete POU"</button>
     }
+}
+
+/// The drawn net as a standalone SVG file: its markup with the page's net styles inside
+/// (the drawing is styled by class), without the page's interaction attributes.
+fn canvas_svg(id: &str) -> Option<String> {
+    use wasm_bindgen::JsCast;
+    let document = web_sys::window()?.document()?;
+    let svg = document.get_element_by_id(id)?.clone_node_with_deep(true).ok()?;
+    let svg: web_sys::Element = svg.dyn_into().ok()?;
+    for attr in ["id", "tabindex", "style", "role"] {
+        let _ = svg.remove_attribute(attr);
+    }
+    let _ = svg.set_attribute("xmlns", "http://www.w3.org/2000/svg");
+    let mut css = String::new();
+    let sheets = js_sys::Reflect::get(&document, &"styleSheets".into()).ok()?;
+    for sheet in js_sys::try_iter(&sheets).ok()??.flatten() {
+        // A sheet from another origin cannot be read: skipped.
+        let Ok(rules) = js_sys::Reflect::get(&sheet, &"cssRules".into()) else { continue };
+        let Ok(Some(rules)) = js_sys::try_iter(&rules) else { continue };
+        for rule in rules.flatten() {
+            let text = js_sys::Reflect::get(&rule, &"cssText".into())
+                .ok()
+                .and_then(|t| t.as_string())
+                .unwrap_or_default();
+            if text.contains(".pn-") && !text.contains(":focus") {
+                css.push_str(&text);
+                css.push('\n');
+            }
+        }
+    }
+    let style = document.create_element_ns(Some("http://www.w3.org/2000/svg"), "style").ok()?;
+    style.set_text_content(Some(&format!(
+        "text {{ font-family: monospace; font-size: 12px; }}\n{css}"
+    )));
+    let _ = svg.insert_before(&style, svg.first_child().as_ref());
+    Some(format!("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n{}", svg.outer_html()))
 }
