@@ -45,7 +45,7 @@ pub mod program;
 pub mod project;
 pub mod run;
 pub mod semantic;
-pub(crate) mod sfc;
+pub mod sfc;
 pub mod sim;
 pub mod syntax;
 pub(crate) mod values;

@@ -299,3 +299,25 @@ test('the two-philosopher net shows its deadlock, plays its path, and exports PN
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('a textual SFC program gets a chart with its steps and conditions, and its active step is lit while it runs', async () => {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+  const { page, errors } = await openApp(context);
+  await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: 'SFC weighing (ST)' });
+  await page.getByRole('button', { name: 'SFC chart SfcWeighing' }).click();
+  const view = page.getByRole('region', { name: 'SFC chart SfcWeighing' });
+  const chart = view.getByRole('group', { name: 'SFC chart SfcWeighing' });
+  await chart.waitFor();
+  const steps = await chart.locator('.sfc-step').evaluateAll((gs) => gs.map((g) => g.dataset.step));
+  assert.deepEqual(steps, ['Ready', 'Alarm', 'Filling', 'Settling', 'Discharging']);
+  await chart.getByRole('img', { name: 'Transition Start AND NOT Fault' }).waitFor();
+  await page.getByRole('button', { name: 'Step', exact: true }).click();
+  await chart.getByRole('img', { name: 'Initial step Ready, active' }).waitFor();
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
+  await page.getByRole('button', { name: 'Step', exact: true }).click();
+  await chart.getByRole('img', { name: 'Step Filling, active' }).waitFor();
+  assert.equal(await chart.getByRole('img', { name: 'Initial step Ready' }).count(), 1, 'Ready is no longer active');
+  await page.screenshot({ path: path.join(root, 'docs/screenshots/sfc-chart.png'), fullPage: true });
+  assert.deepEqual(errors, []);
+  await context.close();
+});

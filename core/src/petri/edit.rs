@@ -76,6 +76,13 @@ pub enum NetEdit {
         /// Tokens in the initial marking.
         tokens: u32,
     },
+    /// Sets a place's capacity (`None`: unlimited).
+    SetCapacity {
+        /// The place.
+        id: String,
+        /// At most this many tokens.
+        capacity: Option<u32>,
+    },
     /// Sets a place's actions (ST statements run while it is marked).
     SetActions {
         /// The place.
@@ -144,6 +151,8 @@ pub enum NetEditError {
     LabelTaken(i64, String),
     /// The element is not of the kind the edit is for (a guard on a place).
     WrongKind(String, &'static str),
+    /// A place would start with more tokens than its capacity: (place, tokens, capacity).
+    OverCapacity(String, u32, u32),
 }
 
 impl fmt::Display for NetEditError {
@@ -163,6 +172,9 @@ impl fmt::Display for NetEditError {
             NetEditError::ZeroWeight => write!(f, "an arc's weight is at least 1"),
             NetEditError::LabelTaken(l, id) => write!(f, "place {id} has the CASE label {l}"),
             NetEditError::WrongKind(id, what) => write!(f, "{id} is not {what}"),
+            NetEditError::OverCapacity(id, tokens, cap) => {
+                write!(f, "place {id} cannot start with {tokens} tokens: its capacity is {cap}")
+            }
         }
     }
 }
@@ -352,7 +364,18 @@ impl PetriPou {
                 self.place_mut(id)?.label = *label;
             }
             NetEdit::SetTokens { id, tokens } => {
-                self.place_mut(id)?.tokens = *tokens;
+                let place = self.place_mut(id)?;
+                if let Some(c) = place.capacity.filter(|c| tokens > c) {
+                    return Err(NetEditError::OverCapacity(id.clone(), *tokens, c));
+                }
+                place.tokens = *tokens;
+            }
+            NetEdit::SetCapacity { id, capacity } => {
+                let place = self.place_mut(id)?;
+                if let Some(c) = capacity.filter(|c| *c < place.tokens) {
+                    return Err(NetEditError::OverCapacity(id.clone(), place.tokens, c));
+                }
+                place.capacity = *capacity;
             }
             NetEdit::SetActions { id, text } => {
                 self.place_mut(id)?.actions = text.clone();

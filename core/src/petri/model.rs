@@ -78,6 +78,12 @@ pub struct Place {
     /// Tokens in the initial marking.
     #[serde(default)]
     pub tokens: u32,
+    /// At most this many tokens (`None`: unlimited). A transition that would put more
+    /// into the place is not enabled. The CASE OF code gives each place of a process one
+    /// token at most, so a capacity of 1 or more changes nothing in it; the analysis and
+    /// the token game apply it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub capacity: Option<u32>,
     /// ST statements executed on every scan while the place is marked.
     #[serde(default)]
     pub actions: String,
@@ -215,6 +221,7 @@ impl Place {
             name: String::new(),
             label,
             tokens,
+            capacity: None,
             actions: String::new(),
             position: None,
             comment: String::new(),

@@ -27,6 +27,8 @@ pub struct PtNet {
     pub post: Vec<Vec<(usize, u32)>>,
     /// The initial marking.
     pub initial: Marking,
+    /// Per place: at most this many tokens (`None`: unlimited).
+    pub capacity: Vec<Option<u32>>,
 }
 
 impl PtNet {
@@ -40,9 +42,15 @@ impl PtNet {
         self.transition_names.len()
     }
 
-    /// Whether transition `t` is enabled in marking `m`.
+    /// Whether transition `t` is enabled in marking `m`: every input place holds the arc's
+    /// weight, and no output place would go over its capacity.
     pub fn enabled(&self, m: &[u32], t: usize) -> bool {
         self.pre[t].iter().all(|&(p, w)| m[p] >= w)
+            && self.post[t].iter().all(|&(p, w)| {
+                let Some(cap) = self.capacity.get(p).copied().flatten() else { return true };
+                let taken = self.pre[t].iter().find(|&&(q, _)| q == p).map_or(0, |&(_, v)| v);
+                u64::from(m[p]) - u64::from(taken) + u64::from(w) <= u64::from(cap)
+            })
     }
 
     /// The marking after firing transition `t` (which must be enabled) in `m`. Token counts
@@ -211,6 +219,7 @@ pub fn build(net: &Net) -> Result<PtNet, Vec<PetriDiagnostic>> {
         pre,
         post,
         initial: net.places.iter().map(|p| p.tokens).collect(),
+        capacity: net.places.iter().map(|p| p.capacity).collect(),
     })
 }
 

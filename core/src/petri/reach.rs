@@ -86,7 +86,7 @@ pub fn explore_with(net: &PtNet, budget: usize, conservative: bool) -> ReachGrap
             }
             let mut target = net.fire(&m, t);
             if !conservative {
-                accelerate(&g, here, &mut target);
+                accelerate(&g, here, &mut target, &net.capacity);
             }
             let to = match index.get(&target) {
                 Some(&to) => to,
@@ -109,11 +109,19 @@ pub fn explore_with(net: &PtNet, budget: usize, conservative: bool) -> ReachGrap
 }
 
 /// Karp–Miller acceleration: places that grew past an ancestor that `target` covers get ω.
-fn accelerate(g: &ReachGraph, from: usize, target: &mut Marking) {
+/// An ancestor whose covering grew a place with a capacity is passed over: that growth
+/// cannot be repeated without bound (the capacity stops it), and the places are explored
+/// one marking at a time instead.
+fn accelerate(g: &ReachGraph, from: usize, target: &mut Marking, capacity: &[Option<u32>]) {
     let mut node = Some(from);
     while let Some(a) = node {
         let ancestor = &g.markings[a];
-        if ancestor != target && covered_by(ancestor, target) {
+        let capped_grew = target
+            .iter()
+            .zip(ancestor)
+            .zip(capacity.iter().chain(std::iter::repeat(&None)))
+            .any(|((x, y), c)| x > y && c.is_some());
+        if ancestor != target && !capped_grew && covered_by(ancestor, target) {
             for (x, &y) in target.iter_mut().zip(ancestor) {
                 if *x > y {
                     *x = OMEGA;

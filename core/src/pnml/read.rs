@@ -171,6 +171,10 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
             name: e.annotation("name").unwrap_or("").trim().to_string(),
             label,
             tokens,
+            capacity: match text_of(tool, "capacity") {
+                t if t.trim().is_empty() => None,
+                t => Some(r.number(e, &t, "the capacity")?),
+            },
             actions: text_of(tool, "actions"),
             position: r.position(e)?,
             comment: text_of(tool, "comment"),

@@ -91,6 +91,9 @@ pub fn export(pou: &PetriPou) -> String {
         }
         let _ = writeln!(s, "        <toolspecific tool=\"{TOOL}\" version=\"1\">");
         let _ = writeln!(s, "          <label>{}</label>", p.label);
+        if let Some(c) = p.capacity {
+            let _ = writeln!(s, "          <capacity>{c}</capacity>");
+        }
         text_element(&mut s, "          ", "actions", &p.actions);
         text_element(&mut s, "          ", "comment", &p.comment);
         s.push_str("        </toolspecific>\n      </place>\n");

@@ -19,6 +19,7 @@
 mod build;
 mod chart;
 mod lower;
+pub mod outline;
 mod structure;
 mod walk;
 

@@ -9,5 +9,6 @@ pub mod ladder;
 pub mod petri;
 pub mod pou_pane;
 pub mod problems;
+pub mod sfc;
 pub mod timeline;
 pub mod variables;

@@ -54,6 +54,13 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
             label: format!("Ladder diagram {}", l.name),
             errors: errors_in(Some(&l.name)),
         }));
+        items.extend(state.sfc_charts.get().into_iter().map(|name| NavItem {
+            view: PouView::Sfc(name.clone()),
+            badge: "SFC",
+            label: format!("SFC chart {name}"),
+            errors: 0,
+            name,
+        }));
         items.extend(p.petri.iter().map(|n| NavItem {
             view: PouView::Petri(n.name.clone()),
             badge: "PN",
@@ -189,6 +196,7 @@ pub fn PouPane() -> impl IntoView {
             PouView::St => ().into_any(),
             PouView::Ladder(name) => view! { <LadderView name=name/> }.into_any(),
             PouView::Petri(name) => view! { <PetriView name=name/> }.into_any(),
+            PouView::Sfc(name) => view! { <crate::components::sfc::SfcView name=name/> }.into_any(),
         }}
         <Problems/>
     }

@@ -76,6 +76,11 @@ impl AppState {
         let project = self.project.get_untracked();
         let build = build_project(&project);
         self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
+        let charts: Vec<String> =
+            plc_core::sfc::outline::outlines(&project.source).into_iter().map(|o| o.pou).collect();
+        if self.sfc_charts.with_untracked(|c| *c != charts) {
+            self.sfc_charts.set(charts);
+        }
         if build.has_errors() {
             return;
         }

@@ -55,6 +55,8 @@ pub enum PouView {
     Ladder(String),
     /// A Petri net POU, by name.
     Petri(String),
+    /// The chart of a POU of the ST source written as a textual SFC, by name.
+    Sfc(String),
 }
 
 /// A message for the user in the banner.
@@ -122,6 +124,8 @@ pub struct AppState {
     pub diagnostics: RwSignal<Vec<DiagView>>,
     /// The PROGRAMs of the last build that succeeded.
     pub programs: RwSignal<Vec<String>>,
+    /// The POUs of the ST source written as a textual SFC (as of the last check).
+    pub sfc_charts: RwSignal<Vec<String>>,
     /// The PROGRAM the simulator runs.
     pub running: RwSignal<Option<String>>,
     /// The simulator of the last project that built clean.
@@ -184,6 +188,7 @@ impl AppState {
             projects: RwSignal::new(Vec::new()),
             diagnostics: RwSignal::new(Vec::new()),
             programs: RwSignal::new(Vec::new()),
+            sfc_charts: RwSignal::new(Vec::new()),
             running: RwSignal::new(None),
             sim: StoredValue::new(None),
             sim_build: StoredValue::new(None),

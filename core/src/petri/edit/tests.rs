@@ -227,3 +227,41 @@ fn twenty_mixed_edits_undo_and_redo_to_the_exact_states() {
         assert_eq!(&current, expected);
     }
 }
+
+#[test]
+fn a_capacity_bounds_the_place_in_the_firing_rule_and_the_analysis() {
+    // T1 has no input place: it may always fire, filling P1, here up to its capacity of 2.
+    let pou = build(
+        empty("Fill"),
+        &[
+            NetEdit::AddPlace { id: "P1".into(), at: at(0.0, 0.0) },
+            NetEdit::AddTransition { id: "T1".into(), at: at(100.0, 0.0) },
+            arc("T1", "P1"),
+            NetEdit::SetCapacity { id: "P1".into(), capacity: Some(2) },
+        ],
+    );
+    let net = crate::petri::build(&pou.net).unwrap();
+    let mut m = net.initial.clone();
+    for expected in [1, 2] {
+        assert!(net.enabled(&m, 0));
+        m = net.fire(&m, 0);
+        assert_eq!(m, [expected]);
+    }
+    assert!(!net.enabled(&m, 0), "a third token would pass the capacity");
+    let a = crate::petri::analyze(&net, 1000);
+    assert_eq!((a.states, a.bounded), (3, Some(true)));
+    assert_eq!(
+        pou.apply(&NetEdit::SetTokens { id: "P1".into(), tokens: 3 }),
+        Err(NetEditError::OverCapacity("P1".into(), 3, 2))
+    );
+    let full = pou.apply(&NetEdit::SetTokens { id: "P1".into(), tokens: 2 }).unwrap();
+    assert_eq!(
+        full.apply(&NetEdit::SetCapacity { id: "P1".into(), capacity: Some(1) }),
+        Err(NetEditError::OverCapacity("P1".into(), 2, 1))
+    );
+    let unlimited = full.apply(&NetEdit::SetCapacity { id: "P1".into(), capacity: None }).unwrap();
+    assert!(crate::petri::build(&unlimited.net).unwrap().enabled(&[2], 0));
+    // PNML keeps it.
+    let back = crate::pnml::import(&crate::pnml::export(&pou)).unwrap();
+    assert_eq!(back.net.places[0].capacity, Some(2));
+}

@@ -477,9 +477,16 @@ pub fn PetriView(name: String) -> impl IntoView {
                     .unwrap_or_default()
             }),
         });
+    // Enabled by the marking (guards aside), capacities included.
     let enabled = Memo::new(move |_| {
-        compiled.with(|c| {
-            c.as_ref().map(|c| tokens.with(|m| live::enabled(&c.net.pre, m))).unwrap_or_default()
+        pt.with(|n| {
+            let Some(n) = n.as_ref() else { return Vec::new() };
+            tokens.with(|m| {
+                if m.len() != n.places() {
+                    return vec![false; n.transitions()];
+                }
+                (0..n.transitions()).map(|t| n.enabled(m, t)).collect()
+            })
         })
     });
     // While running, a firing stays lit until the marking changes again (a scan lasts a

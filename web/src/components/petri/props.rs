@@ -1,5 +1,5 @@
-//! The properties of the selected net element (`Name`, `Initial tokens`, `CASE label` and
-//! `Actions` of a place; `Name`, `Guard` and `Priority` of a transition; `Weight` of an
+//! The properties of the selected net element (`Name`, `Initial tokens`, `Capacity` (empty:
+//! unlimited), `CASE label` and `Actions` of a place; `Name`, `Guard` and `Priority` of a transition; `Weight` of an
 //! arc) and the net's declarations. Changes apply as you type, a moment after the last key,
 //! each field's typing one undo step; a value that cannot be taken is said beside it.
 
@@ -163,6 +163,15 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                             pou.with(|p| p.as_ref().and_then(place).map(|q| q.tokens.to_string()))
                                 .unwrap_or_default()
                         });
+                        let capacity = Signal::derive(move || {
+                            pou.with(|p| {
+                                p.as_ref()
+                                    .and_then(place)
+                                    .and_then(|q| q.capacity)
+                                    .map(|c| c.to_string())
+                            })
+                            .unwrap_or_default()
+                        });
                         let label = Signal::derive(move || {
                             pou.with(|p| p.as_ref().and_then(place).map(|q| q.label.to_string()))
                                 .unwrap_or_default()
@@ -186,6 +195,10 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                         view! {
                             {field(editor, "Initial tokens", format!("{id}.tokens"), "number", tokens, move |t| {
                                 Ok(NetEdit::SetTokens { id: sid.get_value(), tokens: number(t, "Initial tokens")? })
+                            })}
+                            {field(editor, "Capacity", format!("{id}.capacity"), "number", capacity, move |t| {
+                                let capacity = if t.trim().is_empty() { None } else { Some(number(t, "Capacity")?) };
+                                Ok(NetEdit::SetCapacity { id: sid.get_value(), capacity })
                             })}
                             {field(editor, "CASE label", format!("{id}.label"), "number", label, move |t| {
                                 let label = t.trim().parse::<i64>().map_err(|_| "a CASE label is a whole number".to_string())?;
