@@ -321,3 +321,45 @@ test('a textual SFC program gets a chart with its steps and conditions, and its 
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('touch and pen draw and move on the net canvas as the mouse does', async () => {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 }, hasTouch: true });
+  const { page, errors } = await openApp(context);
+  await page.getByRole('button', { name: 'New Petri net POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill('Touch');
+  await page.getByRole('button', { name: 'Create' }).click();
+  const view = page.getByRole('region', { name: 'Petri net Touch' });
+  await view.waitFor();
+  const canvas = view.getByRole('group', { name: 'Net canvas' });
+  const cdp = await context.newCDPSession(page);
+  const touch = async (points) => {
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [points[0]] });
+    for (const p of points.slice(1)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [p] });
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  };
+  const pen = async (points) => {
+    const send = (type, p) => cdp.send('Input.dispatchMouseEvent', { type, x: p.x, y: p.y, button: 'left', buttons: type === 'mouseReleased' ? 0 : 1, clickCount: 1, pointerType: 'pen' });
+    await send('mousePressed', points[0]);
+    for (const p of points.slice(1)) await send('mouseMoved', p);
+    await send('mouseReleased', points[points.length - 1]);
+  };
+  // A finger taps a place in, a pen a transition.
+  await view.getByRole('button', { name: 'Place', exact: true }).click();
+  await touch([await at(canvas, 100, 100)]);
+  await view.locator('.pn-place[data-id="P1"]').waitFor();
+  await view.getByRole('button', { name: 'Transition', exact: true }).click();
+  await pen([await at(canvas, 200, 100)]);
+  await view.locator('.pn-transition[data-id="T1"]').waitFor();
+  // The pen joins them with an arc; the finger drags the place down.
+  await view.getByRole('button', { name: 'Arc', exact: true }).click();
+  await pen([await centre(view.locator('.pn-place[data-id="P1"]')), await at(canvas, 150, 100), await centre(view.locator('.pn-transition[data-id="T1"]'))]);
+  await view.locator('.pn-arc').first().waitFor({ state: 'attached' });
+  await view.getByRole('button', { name: 'Select', exact: true }).click();
+  const from = await centre(view.locator('.pn-place[data-id="P1"]'));
+  const to = await at(canvas, 100, 240);
+  await touch(Array.from({ length: 8 }, (_, i) => ({ x: from.x + ((to.x - from.x) * i) / 7, y: from.y + ((to.y - from.y) * i) / 7 })));
+  await page.waitForFunction(() => document.querySelector('.pn-place[data-id="P1"] .pn-circle')?.getAttribute('cy') === '240');
+  assert.equal(await view.locator('.pn-place[data-id="P1"] .pn-circle').getAttribute('cx'), '100');
+  assert.deepEqual(errors, []);
+  await context.close();
+});

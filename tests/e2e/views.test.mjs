@@ -135,6 +135,9 @@ test('a ladder problem is listed at its rung, row and column, and clicking it sh
   const view = page.getByRole('region', { name: 'Ladder diagram Latch' });
   await view.locator('.ld-focus').waitFor();
   assert.equal(await view.locator('.ld-diag.err').count(), 1);
+  // The problem's cell is selected and holds the focus: keys act on it at once.
+  await view.getByRole('gridcell', { name: /^Rung 1, row 1, column 3: / }).and(page.locator('[aria-selected="true"]')).waitFor();
+  await page.waitForFunction(() => /^Rung 1, row 1, column 3: /.test(document.activeElement?.getAttribute('aria-label') ?? ''));
   assert.equal(await page.getByRole('button', { name: 'Ladder diagram Latch' }).getAttribute('aria-pressed'), 'true');
   await page.screenshot({ path: path.join(shots, 'ladder-problem.png'), fullPage: true });
   // Nothing of the previous project runs: its inputs and outputs are gone.

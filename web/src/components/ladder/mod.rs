@@ -435,10 +435,16 @@ pub fn LadderView(name: String) -> impl IntoView {
     let this = name.clone();
     Effect::new(move |_| {
         for site in [state.focus.get(), state.fault_site.get()].into_iter().flatten() {
-            if let Site::Ladder { pou, cell: Some((r, ..)) } = site {
+            if let Site::Ladder { pou, cell: Some((r, row, col)) } = site {
                 if pou.eq_ignore_ascii_case(&this) {
                     show_st.set(false);
                     scroll_to(&format!("ld-rung-{r}"));
+                    // The problem's cell becomes the selected one, with the focus.
+                    let at = CellRef::new(r, row, col);
+                    if editor.selected.get_untracked() != Some(at) {
+                        editor.selected.set(Some(at));
+                    }
+                    editor.focus_selected();
                 }
             }
         }
