@@ -73,6 +73,8 @@ test('a three-place cycle drawn in a new project generates CASE code, runs scan 
   for (const id of ['P1', 'P2', 'P3']) await place(id).waitFor();
   for (const id of ['T1', 'T2', 'T3']) await transition(id).waitFor();
   assert.equal(await place('P1').getAttribute('aria-label'), 'Place P1: 0 tokens');
+  // Without arcs there is no code yet, and the code column says why, naming the elements.
+  assert.match(await view.locator('.pn-no-code').textContent(), /^No code can be generated:.*Cycle, (place|transition) [PT]\d/);
 
   // Arcs: press on one element and release on the other, or click one and then the other.
   await tool('Arc').click();
@@ -119,6 +121,7 @@ test('a three-place cycle drawn in a new project generates CASE code, runs scan 
   // The generated CASE OF code, and the net runs scan by scan.
   const code = view.locator('.pn-code');
   await code.filter({ hasText: 'CASE' }).waitFor();
+  assert.equal(await view.locator('.pn-no-code').count(), 0);
   await code.filter({ hasText: 'Busy := TRUE;' }).waitFor();
   await page.getByText('No problems found.').waitFor();
   await page.getByRole('combobox', { name: 'Program to run' }).selectOption('Cycle');
@@ -247,6 +250,9 @@ test('the two-philosopher net shows its deadlock, plays its path, and exports PN
   await view.waitFor();
   const tokens = (id) => view.locator(`.pn-place[data-id="${id}"]`).getAttribute('data-tokens');
   await view.locator('.pn-analysis summary').click();
+  // Two philosophers reach for one fork: the code depends on priorities there.
+  const conflicts = view.getByRole('list', { name: 'Conflicts' });
+  await conflicts.getByText('takeL0 and takeR1 both take the token of f0: takeL0 is tested first (priority 0 against 0)').waitFor();
   const deadlock = view.getByRole('button', { name: '{left0, left1} after takeL0 → takeL1' });
   await deadlock.click();
   const play = view.getByRole('group', { name: 'Play the net' });

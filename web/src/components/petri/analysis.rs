@@ -4,7 +4,7 @@
 //! deadlock is a button that plays its firing sequence on the net.
 
 use leptos::prelude::*;
-use plc_core::petri::{analyze, build, panel_budget, NetAnalysis, PetriPou, PtNet};
+use plc_core::petri::{analyze, build, conflicts, panel_budget, NetAnalysis, PetriPou, PtNet};
 
 use super::play::Play;
 
@@ -31,6 +31,38 @@ fn marking_text(net: &PtNet, marking: &[u32]) -> String {
         })
         .collect();
     format!("{{{}}}", names.join(", "))
+}
+
+/// The conflicts that make the generated code depend on priorities: two transitions that
+/// take the token of one place, and guards that are not provably exclusive.
+fn conflict_list(pou: &PetriPou, net: &PtNet) -> impl IntoView {
+    let list: Vec<String> = conflicts(pou, net)
+        .into_iter()
+        .filter(|c| !c.exclusive)
+        .map(|c| {
+            format!(
+                "{} and {} both take the token of {}: {} is tested first (priority {} against {})",
+                net.transition_names[c.first],
+                net.transition_names[c.second],
+                net.place_names[c.place],
+                net.transition_names[c.first],
+                pou.net.transitions[c.first].priority,
+                pou.net.transitions[c.second].priority,
+            )
+        })
+        .collect();
+    view! {
+        <h3>"Conflicts"</h3>
+        {if list.is_empty() {
+            view! { <p class="small-text">"None: the generated code does not depend on priorities."</p> }.into_any()
+        } else {
+            view! {
+                <ul class="pn-conflicts small-text" aria-label="Conflicts">
+                    {list.into_iter().map(|c| view! { <li>{c}</li> }).collect_view()}
+                </ul>
+            }.into_any()
+        }}
+    }
 }
 
 fn summary(net: &PtNet, a: &NetAnalysis, play: RwSignal<Option<Play>>) -> impl IntoView {
@@ -111,7 +143,8 @@ pub fn AnalysisPanel(pou: Memo<Option<PetriPou>>, play: RwSignal<Option<Play>>) 
         pou.with(|p| match p.as_ref().map(|p| build(&p.net)) {
             Some(Ok(net)) => {
                 let a = analyze(&net, panel_budget(net.places()));
-                summary(&net, &a, play).into_any()
+                let pou = p.as_ref().map(|p| conflict_list(p, &net));
+                view! { {summary(&net, &a, play)} {pou} }.into_any()
             }
             Some(Err(_)) => {
                 view! { <p class="muted">"Fix the net's errors (see Problems) to analyse it."</p> }

@@ -637,6 +637,30 @@ pub fn PetriView(name: String) -> impl IntoView {
         <span class="muted small-text" title="The net has no stored positions">"laid out automatically"</span>
     })
     };
+    // Why no code can be generated, naming the element (the net's errors).
+    let no_code = Memo::new(move |_| {
+        if compiled.with(Option::is_some) {
+            return None;
+        }
+        pou.with(|p| {
+            let p = p.as_ref()?;
+            let errors = compile(p).err()?;
+            let reasons: Vec<String> = errors
+                .iter()
+                .filter(|d| d.is_error())
+                .map(|d| {
+                    let place = plc_core::petri::describe(&p.name, &d.element, d.at.as_ref());
+                    format!(
+                        "{}: {} [{}]",
+                        place.strip_prefix("POU ").unwrap_or(&place),
+                        d.message,
+                        d.code
+                    )
+                })
+                .collect();
+            (!reasons.is_empty()).then_some(reasons)
+        })
+    });
     let code = Signal::derive(move || {
         compiled.with(|c| c.as_ref().map(|c| c.generated.st.clone()).unwrap_or_default())
     });
@@ -725,6 +749,12 @@ pub fn PetriView(name: String) -> impl IntoView {
                 }>{drawing}</div>
                 <div class="pn-code">
                     <h3>"Generated CASE OF code"</h3>
+                    {move || no_code.get().map(|reasons| view! {
+                        <div class="pn-no-code" role="status">
+                            <p>"No code can be generated:"</p>
+                            <ul>{reasons.into_iter().map(|r| view! { <li>{r}</li> }).collect_view()}</ul>
+                        </div>
+                    })}
                     <CodePanel code=code active=active marked=marked on_line=on_line/>
                 </div>
             </div>
