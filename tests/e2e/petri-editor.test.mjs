@@ -108,8 +108,8 @@ test('a three-place cycle drawn in a new project generates CASE code, runs scan 
   // Properties: one token in P1, the guard Go on T1, an action in P2.
   await place('P1').click();
   const props = view.getByRole('group', { name: 'Properties' });
-  await props.getByRole('spinbutton', { name: 'Initial tokens' }).fill('1');
-  await props.getByRole('spinbutton', { name: 'Initial tokens' }).press('Tab');
+  await props.getByRole('textbox', { name: 'Initial tokens' }).fill('1');
+  await props.getByRole('textbox', { name: 'Initial tokens' }).press('Tab');
   await place('P1').and(page.locator('[data-tokens="1"]')).waitFor();
   await transition('T1').click();
   await props.getByRole('textbox', { name: 'Guard' }).fill('Go');

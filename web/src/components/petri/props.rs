@@ -57,7 +57,7 @@ fn field(
     editor: NetEditor,
     label: &'static str,
     group: String,
-    kind: &'static str,
+    numeric: bool,
     value: Signal<String>,
     edit: impl Fn(&str) -> Result<NetEdit, String> + Copy + Send + Sync + 'static,
 ) -> impl IntoView {
@@ -74,7 +74,9 @@ fn field(
     view! {
         <label class="field">
             <span>{label}</span>
-            <input type=kind aria-label=label spellcheck="false" min="0"
+            // Textboxes, numbers too (the issue names them so; inputmode brings the digits
+            // keyboard on phones).
+            <input type="text" inputmode=if numeric { "numeric" } else { "text" } aria-label=label spellcheck="false"
                 prop:value=move || value.get()
                 on:input=move |ev| {
                     let text = event_target_value(&ev);
@@ -149,7 +151,7 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                     .unwrap_or_default()
                 });
                 let name_field =
-                    field(editor, "Name", format!("{id}.name"), "text", name_of, move |t| {
+                    field(editor, "Name", format!("{id}.name"), false, name_of, move |t| {
                         Ok(NetEdit::SetName { id: sid.get_value(), name: t.to_string() })
                     });
                 let title = match kind {
@@ -193,14 +195,14 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                         });
                         let on_leave = Callback::new(move |()| editor.close_group());
                         view! {
-                            {field(editor, "Initial tokens", format!("{id}.tokens"), "number", tokens, move |t| {
+                            {field(editor, "Initial tokens", format!("{id}.tokens"), true, tokens, move |t| {
                                 Ok(NetEdit::SetTokens { id: sid.get_value(), tokens: number(t, "Initial tokens")? })
                             })}
-                            {field(editor, "Capacity", format!("{id}.capacity"), "number", capacity, move |t| {
+                            {field(editor, "Capacity", format!("{id}.capacity"), true, capacity, move |t| {
                                 let capacity = if t.trim().is_empty() { None } else { Some(number(t, "Capacity")?) };
                                 Ok(NetEdit::SetCapacity { id: sid.get_value(), capacity })
                             })}
-                            {field(editor, "CASE label", format!("{id}.label"), "number", label, move |t| {
+                            {field(editor, "CASE label", format!("{id}.label"), true, label, move |t| {
                                 let label = t.trim().parse::<i64>().map_err(|_| "a CASE label is a whole number".to_string())?;
                                 Ok(NetEdit::SetLabel { id: sid.get_value(), label })
                             })}
@@ -230,10 +232,10 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                                 .collect::<Vec<_>>()
                         };
                         view! {
-                            {field(editor, "Guard", format!("{id}.guard"), "text", guard, move |t| {
+                            {field(editor, "Guard", format!("{id}.guard"), false, guard, move |t| {
                                 Ok(NetEdit::SetGuard { id: sid.get_value(), text: t.to_string() })
                             })}
-                            {field(editor, "Priority", format!("{id}.priority"), "number", priority, move |t| {
+                            {field(editor, "Priority", format!("{id}.priority"), true, priority, move |t| {
                                 Ok(NetEdit::SetPriority { id: sid.get_value(), priority: number(t, "Priority")? })
                             })}
                             <ul class="pn-details-problems">
@@ -270,7 +272,7 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                 view! {
                     <h3>{format!("Arc from {from} to {to}")}</h3>
                     <div class="pn-prop-fields">
-                        {field(editor, "Weight", format!("{from}>{to}.weight"), "number", weight, move |t| {
+                        {field(editor, "Weight", format!("{from}>{to}.weight"), true, weight, move |t| {
                             let (from, to) = ends.get_value();
                             let weight = number(t, "Weight")?;
                             if weight == 0 {
