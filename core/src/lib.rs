@@ -33,6 +33,7 @@ pub mod bench;
 pub mod build;
 pub(crate) mod compile;
 pub mod diagnostics;
+pub mod exercise;
 pub mod export;
 pub mod ladder;
 pub mod limits;

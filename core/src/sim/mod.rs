@@ -41,6 +41,10 @@ pub struct FaultInfo {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct BreakpointId(pub u32);
 
+/// A compiled condition of [`Simulator::add_probe`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ProbeId(ConditionId);
+
 /// What the simulator is doing.
 #[derive(Debug, Clone, PartialEq)]
 pub enum SimState {
@@ -429,6 +433,22 @@ impl Simulator {
             was_true: false,
         });
         Ok(bp)
+    }
+
+    /// Compiles an ST boolean condition over the program's variables (`Up AND Down`,
+    /// `Level > 90`) into a probe that [`Simulator::probe`] evaluates between scans without
+    /// pausing anything: the grader's expectations.
+    pub fn add_probe(&mut self, condition: &str) -> Result<ProbeId, SimError> {
+        let expr = semantic::check_condition(&self.program, self.main_pou(), condition)
+            .map_err(SimError::BadCondition)?;
+        let id = self.exe.compile_condition(&self.program, &expr).map_err(SimError::Compile)?;
+        Ok(ProbeId(id))
+    }
+
+    /// The value of a probe now (a condition that faults, an index out of range, is false).
+    pub fn probe(&mut self, id: ProbeId) -> bool {
+        let sys = SysState { first_scan: false, time_ns: self.time_ns };
+        self.machine.eval_condition(&self.exe, id.0, sys, self.watchdog).unwrap_or_default()
     }
 
     /// Removes a breakpoint.

@@ -1,0 +1,365 @@
+//! The exercise file: one TOML file per exercise (`docs/exercises.md` describes it with a
+//! complete example). Read with the `toml` crate into these types, then checked: every
+//! duration reads, every expectation says exactly one thing. Errors name the line and
+//! column in the file, or the scenario and expectation they are about.
+
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// An exercise as its file gives it.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Exercise {
+    /// A short identifier (`latch`).
+    pub id: String,
+    /// The title.
+    pub title: String,
+    /// 1 (beginner) … 5 (advanced).
+    pub level: u8,
+    /// The languages a solution may use: `st`, `ld`, `petri`, `sfc`.
+    #[serde(default)]
+    pub languages: Vec<String>,
+    /// The task, in Markdown.
+    #[serde(default)]
+    pub statement: String,
+    /// The variables the solution must declare.
+    #[serde(default)]
+    pub interface: Vec<InterfaceVar>,
+    /// The scenarios that grade it.
+    #[serde(default, rename = "scenario")]
+    pub scenarios: Vec<Scenario>,
+}
+
+/// One variable of the interface.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InterfaceVar {
+    /// Its name.
+    pub name: String,
+    /// Its IEC type (`BOOL`, `INT`).
+    #[serde(rename = "type")]
+    pub ty: String,
+    /// `input` (VAR_INPUT) or `output` (VAR_OUTPUT).
+    pub direction: Direction,
+    /// What it means, in one line.
+    #[serde(default)]
+    pub meaning: String,
+}
+
+/// Whether an interface variable is an input or an output of the solution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Direction {
+    /// Set by the scenario (VAR_INPUT).
+    Input,
+    /// Checked by the scenario (VAR_OUTPUT).
+    Output,
+}
+
+/// A scenario: inputs set at times, expectations on the outputs.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scenario {
+    /// Its name, shown in the report.
+    pub name: String,
+    /// The PLC cycle (`10ms`, the default).
+    #[serde(default)]
+    pub cycle: Option<String>,
+    /// How long it runs (default: one cycle past the last time it mentions).
+    #[serde(default)]
+    pub duration: Option<String>,
+    /// Its share of the score (default 1).
+    #[serde(default = "one")]
+    pub weight: u32,
+    /// Shown when it fails.
+    #[serde(default)]
+    pub hint: Option<String>,
+    /// Inputs set at times.
+    #[serde(default, rename = "step")]
+    pub steps: Vec<Step>,
+    /// What must hold.
+    #[serde(default, rename = "expect")]
+    pub expectations: Vec<Expect>,
+}
+
+fn one() -> u32 {
+    1
+}
+
+/// Inputs set from a time on.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Step {
+    /// When (`1.5s`, `200ms`, `T#2s`).
+    pub at: String,
+    /// Input → value (a TOML boolean or number, or an IEC literal as a string).
+    pub set: BTreeMap<String, toml::Value>,
+}
+
+/// One expectation as written: exactly one of `that` (with `at`), `becomes`, `holds` (both
+/// with `from` and `to`), `never` and `always`, each a BOOL ST expression over the interface.
+#[derive(Debug, Clone, PartialEq, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Expect {
+    /// TRUE at time `at`.
+    pub that: Option<String>,
+    /// The time of `that`.
+    pub at: Option<String>,
+    /// Becomes TRUE (FALSE on one scan, TRUE on the next) between `from` and `to`, not
+    /// before.
+    pub becomes: Option<String>,
+    /// TRUE throughout `from` … `to`.
+    pub holds: Option<String>,
+    /// Never TRUE.
+    pub never: Option<String>,
+    /// Always TRUE.
+    pub always: Option<String>,
+    /// Start of the window of `becomes` and `holds`.
+    pub from: Option<String>,
+    /// End of the window.
+    pub to: Option<String>,
+}
+
+/// A checked expectation, times in nanoseconds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Expectation {
+    /// `condition` is TRUE at `at`.
+    At {
+        /// The condition.
+        condition: String,
+        /// When.
+        at: i64,
+    },
+    /// `condition` rises (FALSE on one scan, TRUE on the next) at a time in `from ..= to`,
+    /// and not before.
+    Becomes {
+        /// The condition.
+        condition: String,
+        /// Window start.
+        from: i64,
+        /// Window end.
+        to: i64,
+    },
+    /// `condition` is TRUE at every scan in `from ..= to`.
+    Holds {
+        /// The condition.
+        condition: String,
+        /// Window start.
+        from: i64,
+        /// Window end.
+        to: i64,
+    },
+    /// `condition` is TRUE at no scan.
+    Never {
+        /// The condition.
+        condition: String,
+    },
+    /// `condition` is TRUE at every scan.
+    Always {
+        /// The condition.
+        condition: String,
+    },
+}
+
+impl Expectation {
+    /// The condition it is about.
+    pub fn condition(&self) -> &str {
+        match self {
+            Expectation::At { condition, .. }
+            | Expectation::Becomes { condition, .. }
+            | Expectation::Holds { condition, .. }
+            | Expectation::Never { condition }
+            | Expectation::Always { condition } => condition,
+        }
+    }
+
+    /// How a report says it (`Lamp becomes TRUE between 1.9 s and 2.1 s`).
+    pub fn describe(&self) -> String {
+        let t = |ns: &i64| time_text(*ns);
+        match self {
+            Expectation::At { condition, at } => format!("{condition} is TRUE at {}", t(at)),
+            Expectation::Becomes { condition, from, to } => {
+                format!("{condition} becomes TRUE between {} and {}", t(from), t(to))
+            }
+            Expectation::Holds { condition, from, to } => {
+                format!("{condition} stays TRUE from {} to {}", t(from), t(to))
+            }
+            Expectation::Never { condition } => format!("{condition} is never TRUE"),
+            Expectation::Always { condition } => format!("{condition} is always TRUE"),
+        }
+    }
+}
+
+/// Why an exercise file cannot be used.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExerciseError {
+    /// The message, with its place (`line 4, column 7: …`, `scenario "Start": …`).
+    pub message: String,
+}
+
+impl fmt::Display for ExerciseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for ExerciseError {}
+
+/// Reads a duration: `1.5s`, `200ms`, `2min`, `1h`, or an IEC TIME literal (`T#1s500ms`).
+pub fn parse_duration(text: &str) -> Result<i64, String> {
+    let t = text.trim();
+    let iec = t.strip_prefix("T#").or_else(|| t.strip_prefix("t#"));
+    let iec = iec.or_else(|| t.strip_prefix("TIME#")).or_else(|| t.strip_prefix("time#"));
+    if let Some(rest) = iec {
+        let lit = crate::syntax::parse_expression(&format!("T#{rest}"))
+            .map_err(|_| format!("“{text}” is not a TIME literal"))?;
+        if let crate::syntax::ExprKind::Literal(l) = &lit.kind {
+            if let crate::syntax::ast::LiteralValue::Time(ns) = l.value {
+                return Ok(ns);
+            }
+        }
+        return Err(format!("“{text}” is not a TIME literal"));
+    }
+    let split = t.find(|c: char| !(c.is_ascii_digit() || c == '.')).unwrap_or(t.len());
+    let (number, unit) = t.split_at(split);
+    let value: f64 =
+        number.parse().map_err(|_| format!("“{text}” is not a duration (e.g. 1.5s, 200ms)"))?;
+    let scale = match unit.trim() {
+        "ns" => 1.0,
+        "us" | "µs" => 1e3,
+        "ms" => 1e6,
+        "s" => 1e9,
+        "min" | "m" => 60e9,
+        "h" => 3600e9,
+        _ => return Err(format!("“{text}” has no unit: write ms, s, min or h")),
+    };
+    let ns = value * scale;
+    if !ns.is_finite() || ns > i64::MAX as f64 / 2.0 {
+        return Err(format!("“{text}” is too long"));
+    }
+    Ok(ns.round() as i64)
+}
+
+/// A time for a report: seconds without trailing zeros (`1.9 s`, `2 s`, `0.05 s`).
+pub fn time_text(ns: i64) -> String {
+    let s = format!("{:.6}", ns as f64 / 1e9);
+    format!("{} s", s.trim_end_matches('0').trim_end_matches('.'))
+}
+
+/// 1-based line and column of byte `offset` in `text`.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+impl Exercise {
+    /// Reads an exercise file (TOML).
+    pub fn from_toml(text: &str) -> Result<Exercise, ExerciseError> {
+        let exercise: Exercise = toml::from_str(text).map_err(|e| {
+            let place = e.span().map(|s| line_column(text, s.start));
+            let message = e.message().to_string();
+            ExerciseError {
+                message: match place {
+                    Some((l, c)) => format!("line {l}, column {c}: {message}"),
+                    None => message,
+                },
+            }
+        })?;
+        if !(1..=5).contains(&exercise.level) {
+            return Err(ExerciseError { message: "level is 1 (beginner) to 5 (advanced)".into() });
+        }
+        for s in &exercise.scenarios {
+            s.expectations()?;
+            s.cycle_ns()?;
+            for step in &s.steps {
+                s.time(&step.at, "step")?;
+            }
+        }
+        Ok(exercise)
+    }
+}
+
+impl Scenario {
+    fn time(&self, text: &str, what: &str) -> Result<i64, ExerciseError> {
+        parse_duration(text).map_err(|m| ExerciseError {
+            message: format!("scenario “{}”, {what}: {m}", self.name),
+        })
+    }
+
+    /// The cycle time in nanoseconds (10 ms unless given).
+    pub fn cycle_ns(&self) -> Result<i64, ExerciseError> {
+        match &self.cycle {
+            None => Ok(10_000_000),
+            Some(c) => {
+                let ns = self.time(c, "cycle")?;
+                if ns <= 0 {
+                    return Err(ExerciseError {
+                        message: format!("scenario “{}”: the cycle is longer than 0", self.name),
+                    });
+                }
+                Ok(ns)
+            }
+        }
+    }
+
+    /// The checked expectations, in order.
+    pub fn expectations(&self) -> Result<Vec<Expectation>, ExerciseError> {
+        self.expectations
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                let fail = |m: &str| ExerciseError {
+                    message: format!("scenario “{}”, expectation {}: {m}", self.name, i + 1),
+                };
+                let time = |t: &Option<String>, what: &str| -> Result<i64, ExerciseError> {
+                    let t = t.as_deref().ok_or_else(|| fail(&format!("give `{what}`")))?;
+                    parse_duration(t).map_err(|m| fail(&m))
+                };
+                let given = [&e.that, &e.becomes, &e.holds, &e.never, &e.always]
+                    .iter()
+                    .filter(|x| x.is_some())
+                    .count();
+                if given != 1 {
+                    return Err(fail(
+                        "give exactly one of `that` (with `at`), `becomes`, `holds` (with `from` and `to`), `never`, `always`",
+                    ));
+                }
+                Ok(if let Some(c) = &e.that {
+                    Expectation::At { condition: c.clone(), at: time(&e.at, "at")? }
+                } else if let Some(c) = &e.becomes {
+                    let (from, to) = (time(&e.from, "from")?, time(&e.to, "to")?);
+                    Expectation::Becomes { condition: c.clone(), from, to }
+                } else if let Some(c) = &e.holds {
+                    let (from, to) = (time(&e.from, "from")?, time(&e.to, "to")?);
+                    Expectation::Holds { condition: c.clone(), from, to }
+                } else if let Some(c) = &e.never {
+                    Expectation::Never { condition: c.clone() }
+                } else {
+                    Expectation::Always { condition: e.always.clone().unwrap_or_default() }
+                })
+            })
+            .collect()
+    }
+
+    /// How long it runs: `duration`, or one cycle past the last time it mentions.
+    pub fn duration_ns(&self) -> Result<i64, ExerciseError> {
+        if let Some(d) = &self.duration {
+            return self.time(d, "duration");
+        }
+        let mut last = 0;
+        for s in &self.steps {
+            last = last.max(self.time(&s.at, "step")?);
+        }
+        for e in self.expectations()? {
+            last = last.max(match e {
+                Expectation::At { at, .. } => at,
+                Expectation::Becomes { to, .. } | Expectation::Holds { to, .. } => to,
+                Expectation::Never { .. } | Expectation::Always { .. } => 0,
+            });
+        }
+        Ok(last + self.cycle_ns()?)
+    }
+}

@@ -1,0 +1,174 @@
+#![allow(clippy::unwrap_used)]
+
+use super::*;
+use crate::project::Project;
+
+const LATCH: &str = r#"
+id = "latch"
+title = "Start/stop motor latch"
+level = 1
+languages = ["st", "ld"]
+statement = "Start starts the motor, Stop stops it; the motor keeps running when Start is released."
+
+[[interface]]
+name = "Start"
+type = "BOOL"
+direction = "input"
+meaning = "start button (NO)"
+
+[[interface]]
+name = "Stop"
+type = "BOOL"
+direction = "input"
+meaning = "stop button (NO here)"
+
+[[interface]]
+name = "Motor"
+type = "BOOL"
+direction = "output"
+meaning = "motor contactor"
+
+[[scenario]]
+name = "Start, release, stop"
+hint = "Does the motor hold itself when Start is released?"
+weight = 2
+step = [
+  { at = "0s", set = { Start = false, Stop = false } },
+  { at = "100ms", set = { Start = true } },
+  { at = "200ms", set = { Start = false } },
+  { at = "500ms", set = { Stop = true } },
+]
+expect = [
+  { holds = "NOT Motor", from = "0s", to = "90ms" },
+  { that = "Motor", at = "150ms" },
+  { holds = "Motor", from = "210ms", to = "490ms" },
+  { becomes = "NOT Motor", from = "500ms", to = "530ms" },
+]
+
+[[scenario]]
+name = "Both buttons"
+step = [ { at = "0s", set = { Start = true, Stop = true } } ]
+expect = [ { never = "Motor" } ]
+duration = "1s"
+"#;
+
+fn project(st: &str) -> Project {
+    let mut p = Project::new("submission");
+    p.source = st.into();
+    p
+}
+
+const GOOD: &str = "PROGRAM Main
+VAR_INPUT Start, Stop : BOOL; END_VAR
+VAR_OUTPUT Motor : BOOL; END_VAR
+Motor := (Start OR Motor) AND NOT Stop;
+END_PROGRAM
+";
+
+#[test]
+fn the_file_reads_with_its_scenarios_and_durations() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    assert_eq!((e.id.as_str(), e.level, e.interface.len(), e.scenarios.len()), ("latch", 1, 3, 2));
+    let x = e.scenarios[0].expectations().unwrap();
+    assert_eq!(x[1], Expectation::At { condition: "Motor".into(), at: 150_000_000 });
+    assert_eq!(x[3].describe(), "NOT Motor becomes TRUE between 0.5 s and 0.53 s");
+    assert_eq!(e.scenarios[0].duration_ns().unwrap(), 540_000_000);
+    assert_eq!(parse_duration("1.5s"), Ok(1_500_000_000));
+    assert_eq!(parse_duration("T#1s500ms"), Ok(1_500_000_000));
+    assert_eq!(parse_duration("2min"), Ok(120_000_000_000));
+    assert!(parse_duration("5").unwrap_err().contains("no unit"));
+}
+
+#[test]
+fn bad_files_say_where() {
+    let e = Exercise::from_toml("id = \"x\"\ntitle = 3\n").unwrap_err();
+    assert!(e.message.starts_with("line 2, column 9: "), "{e}");
+    let two = LATCH.replace("{ never = \"Motor\" }", "{ never = \"Motor\", always = \"Motor\" }");
+    let e = Exercise::from_toml(&two).unwrap_err();
+    assert!(
+        e.message.starts_with("scenario “Both buttons”, expectation 1: give exactly one"),
+        "{e}"
+    );
+    let e = Exercise::from_toml(&LATCH.replace("\"150ms\"", "\"150\"")).unwrap_err();
+    assert!(e.message.contains("“150” has no unit"), "{e}");
+}
+
+#[test]
+fn the_right_program_passes_every_scenario() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let r = grade(&e, &project(GOOD)).unwrap();
+    assert_eq!(r.error, None);
+    assert!(r.scenarios.iter().all(ScenarioReport::passed), "{r:#?}");
+    assert_eq!((r.score, r.total), (3, 3));
+}
+
+#[test]
+fn a_program_without_the_seal_in_fails_at_the_first_wrong_scan() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let wrong = GOOD.replace("(Start OR Motor)", "Start");
+    let r = grade(&e, &project(&wrong)).unwrap();
+    assert_eq!((r.score, r.total), (1, 3));
+    let s = &r.scenarios[0];
+    let f = s.failure.as_ref().unwrap();
+    assert_eq!(f.expected, "Motor stays TRUE from 0.21 s to 0.49 s");
+    // Start is released for the scan that ends at 0.21 s: the motor drops on that scan.
+    assert_eq!(f.actual, "Motor was FALSE at 0.21 s (scan 21)");
+    assert_eq!((f.scan, f.time_ns), (21, 210_000_000));
+    assert_eq!(s.hint.as_deref(), Some("Does the motor hold itself when Start is released?"));
+    let scans: Vec<u64> = f.window.iter().map(|w| w.scan).collect();
+    assert_eq!(scans, (16..=26).collect::<Vec<_>>());
+    let at_20 = &f.window[4];
+    assert_eq!(
+        at_20.values,
+        [
+            ("Start".into(), "TRUE".into()),
+            ("Stop".into(), "FALSE".into()),
+            ("Motor".into(), "TRUE".into())
+        ]
+    );
+    assert!(r.scenarios[1].passed());
+}
+
+#[test]
+fn broken_missing_and_faulting_programs_are_reported_with_their_place() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let r = grade(&e, &project(&GOOD.replace("NOT Stop", "NOT Stopp"))).unwrap();
+    let error = r.error.unwrap();
+    assert!(error.starts_with("the program does not build: line 4, column "), "{error}");
+    assert_eq!((r.score, r.total), (0, 3));
+    let r = grade(
+        &e,
+        &project(
+            &GOOD
+                .replace("Motor : BOOL", "Motr : BOOL")
+                .replace("Motor :=", "Motr :=")
+                .replace("OR Motor", "OR Motr"),
+        ),
+    )
+    .unwrap();
+    assert_eq!(
+        r.error.as_deref(),
+        Some("the program does not declare Motor (VAR_OUTPUT Motor : BOOL)")
+    );
+    let faulting = "PROGRAM Main
+VAR_INPUT Start, Stop : BOOL; END_VAR
+VAR_OUTPUT Motor : BOOL; END_VAR
+VAR a : ARRAY[1..2] OF INT; i : INT; END_VAR
+IF Start THEN i := 3; a[i] := 1; END_IF;
+END_PROGRAM
+";
+    let r = grade(&e, &project(faulting)).unwrap();
+    let f = r.scenarios[0].failure.as_ref().unwrap();
+    assert!(
+        f.actual.starts_with("the program stopped with a FAULT at line 5, column "),
+        "{}",
+        f.actual
+    );
+}
+
+#[test]
+fn grading_is_deterministic() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let wrong = GOOD.replace("(Start OR Motor)", "Start");
+    assert_eq!(grade(&e, &project(&wrong)).unwrap(), grade(&e, &project(&wrong)).unwrap());
+}
