@@ -134,7 +134,7 @@ fn broken_missing_and_faulting_programs_are_reported_with_their_place() {
     let e = Exercise::from_toml(LATCH).unwrap();
     let r = grade(&e, &project(&GOOD.replace("NOT Stop", "NOT Stopp"))).unwrap();
     let error = r.error.unwrap();
-    assert!(error.starts_with("the program does not build: line 4, column "), "{error}");
+    assert!(error.starts_with("the program does not build: line 4, column 35: "), "{error}");
     assert_eq!((r.score, r.total), (0, 3));
     let r = grade(
         &e,
