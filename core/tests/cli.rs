@@ -265,3 +265,51 @@ fn a_cycle_time_out_of_range_is_refused() {
     );
     assert!(json.diagnostics.iter().any(|d| d.code == "E0303"), "{:?}", json.diagnostics);
 }
+
+/// `plc grade`: the shipped latch exercise on a folder of a right, a wrong, a broken and
+/// an unreadable submission: one CSV row each, the batch never stopped.
+#[test]
+fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
+    let root = format!("{}/..", env!("CARGO_MANIFEST_DIR"));
+    let exercise = format!("{root}/exercises/latch.toml");
+    let reference =
+        std::fs::read_to_string(format!("{root}/exercises/latch.reference.st")).unwrap();
+    let dir = std::env::temp_dir().join(format!("plc-grade-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("a-right.st"), &reference).unwrap();
+    std::fs::write(dir.join("b-wrong.st"), reference.replace("(Start OR Motor)", "Start")).unwrap();
+    std::fs::write(dir.join("c-broken.st"), reference.replace("NOT Stop", "NOT Stopp")).unwrap();
+    std::fs::write(dir.join("d-unreadable.plcproj.json"), "{ \"schema\": 1, \"name\": ").unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["grade", &exercise, &dir.to_string_lossy(), "--format", "csv", "--jobs", "2"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "submission,score,total,passed,failed,error,first_failure");
+    assert_eq!(lines.len(), 5, "{text}");
+    assert!(lines[1].ends_with("a-right.st,3,3,2,0,,"), "{}", lines[1]);
+    assert!(
+        lines[2].ends_with(
+            "b-wrong.st,1,3,1,1,,\"Start, release, stop: Motor was FALSE at 0.21 s (scan 21)\""
+        ),
+        "{}",
+        lines[2]
+    );
+    assert!(
+        lines[3].contains("c-broken.st,0,3,0,0,\"the program does not build: line 10, column 35: `Stopp` is not declared [E0100]\""),
+        "{}",
+        lines[3]
+    );
+    assert!(lines[4].contains("d-unreadable.plcproj.json,,,,,"), "{}", lines[4]);
+    let json = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["grade", &exercise, &dir.join("b-wrong.st").to_string_lossy(), "--format", "json"])
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(v[0]["score"], 1);
+    assert_eq!(v[0]["scenarios"][0]["expected"], "Motor stays TRUE from 0.21 s to 0.49 s");
+    assert_eq!(v[0]["scenarios"][0]["scan"], 21);
+    assert_eq!(v[0]["scenarios"][0]["hint"], "Does the motor hold itself when Start is released?");
+}

@@ -1,6 +1,8 @@
 //! `plc`: the command line of the PLC trainer, for instructors, CI and benchmarks.
 //! It uses exactly the same core as the browser.
 
+#[path = "plc/grade.rs"]
+mod grade;
 #[path = "plc/petri.rs"]
 mod petri;
 
@@ -85,6 +87,24 @@ enum Command {
         plcopen: bool,
         /// The project file.
         project: PathBuf,
+    },
+    /// Grade submissions against an exercise: one row per submission (a project file, ST
+    /// file or PLCopen XML, or a folder of them), graded in parallel.
+    Grade {
+        /// The exercise file (TOML).
+        exercise: PathBuf,
+        /// The submissions: files, or folders of them.
+        #[arg(required = true)]
+        submissions: Vec<PathBuf>,
+        /// A file of hidden scenarios to add (the same form as an exercise file).
+        #[arg(long, value_name = "HIDDEN.toml")]
+        scenarios: Option<PathBuf>,
+        /// text, json or csv.
+        #[arg(long, value_enum, default_value_t = grade::Format::Text)]
+        format: grade::Format,
+        /// How many submissions are graded at once (default: the cores).
+        #[arg(long)]
+        jobs: Option<usize>,
     },
     /// Petri nets: analyse, generate CASE OF code, convert PNML.
     Petri {
@@ -343,6 +363,9 @@ fn main() -> ExitCode {
         Command::StView { project, pou } => st_view(&project, &pou),
         Command::Bench { json, quick, only } => bench(json, quick, &only),
         Command::Petri { command } => petri::run(command),
+        Command::Grade { exercise, submissions, scenarios, format, jobs } => {
+            grade::run(&exercise, &submissions, scenarios.as_deref(), format, jobs)
+        }
         Command::Import { file } => import(&file),
         Command::Export { plcopen: _, project } => export(&project),
     }

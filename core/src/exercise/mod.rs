@@ -6,8 +6,8 @@ mod format;
 mod grade;
 
 pub use format::{
-    parse_duration, time_text, Direction, Exercise, ExerciseError, Expect, Expectation,
-    InterfaceVar, Scenario, Step,
+    parse_duration, scenarios_from_toml, time_text, Direction, Exercise, ExerciseError, Expect,
+    Expectation, InterfaceVar, Scenario, Step,
 };
 pub use grade::{grade, Failure, Report, Sample, ScenarioReport};
 
