@@ -271,9 +271,9 @@ fn a_cycle_time_out_of_range_is_refused() {
 #[test]
 fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
     let root = format!("{}/..", env!("CARGO_MANIFEST_DIR"));
-    let exercise = format!("{root}/exercises/latch.toml");
+    let exercise = format!("{root}/exercises/latch/latch.toml");
     let reference =
-        std::fs::read_to_string(format!("{root}/exercises/latch.reference.st")).unwrap();
+        std::fs::read_to_string(format!("{root}/exercises/latch/reference.st")).unwrap();
     let dir = std::env::temp_dir().join(format!("plc-grade-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("a-right.st"), &reference).unwrap();
@@ -312,4 +312,49 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
     assert_eq!(v[0]["scenarios"][0]["expected"], "Motor stays TRUE from 0.21 s to 0.49 s");
     assert_eq!(v[0]["scenarios"][0]["scan"], 21);
     assert_eq!(v[0]["scenarios"][0]["hint"], "Does the motor hold itself when Start is released?");
+}
+
+/// Every shipped exercise validates: its reference passes, its starter fails, each mutant
+/// is caught with a located report (issue 15's CI check).
+#[test]
+fn every_shipped_exercise_validates() {
+    let root = format!("{}/../exercises", env!("CARGO_MANIFEST_DIR"));
+    let mut checked = 0;
+    for dir in std::fs::read_dir(&root).unwrap().flatten().filter(|d| d.path().is_dir()) {
+        let id = dir.file_name().to_string_lossy().into_owned();
+        let file = dir.path().join(format!("{id}.toml"));
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+            .args(["exercise", "validate", &file.to_string_lossy()])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout).into_owned();
+        assert!(out.status.success(), "{id}:\n{text}");
+        assert!(text.contains("reference: passes all"), "{id}:\n{text}");
+        assert!(
+            text.lines().filter(|l| l.starts_with("mutant ")).all(|l| l.contains(": caught: ")),
+            "{id}:\n{text}"
+        );
+        checked += 1;
+    }
+    assert!(checked >= 1);
+}
+
+/// `plc exercise new` writes a skeleton that validates, and never overwrites.
+#[test]
+fn a_new_exercise_skeleton_validates() {
+    let dir = std::env::temp_dir().join(format!("plc-new-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let plc = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap()
+    };
+    assert!(plc(&["exercise", "new", "blink"]).status.success());
+    let out = plc(&["exercise", "validate", "blink/blink.toml"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stdout));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("mutant inverted.st: caught: "));
+    let again = plc(&["exercise", "new", "blink"]);
+    assert_eq!(again.status.code(), Some(2), "an existing folder is left alone");
 }

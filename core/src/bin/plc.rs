@@ -106,6 +106,11 @@ enum Command {
         #[arg(long)]
         jobs: Option<usize>,
     },
+    /// Exercises: validate one (reference, starter, mutants), or write a skeleton.
+    Exercise {
+        #[command(subcommand)]
+        command: grade::ExerciseCommand,
+    },
     /// Petri nets: analyse, generate CASE OF code, convert PNML.
     Petri {
         #[command(subcommand)]
@@ -363,6 +368,7 @@ fn main() -> ExitCode {
         Command::StView { project, pou } => st_view(&project, &pou),
         Command::Bench { json, quick, only } => bench(json, quick, &only),
         Command::Petri { command } => petri::run(command),
+        Command::Exercise { command } => grade::exercise(command),
         Command::Grade { exercise, submissions, scenarios, format, jobs } => {
             grade::run(&exercise, &submissions, scenarios.as_deref(), format, jobs)
         }

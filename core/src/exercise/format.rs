@@ -23,6 +23,12 @@ pub struct Exercise {
     /// The task, in Markdown.
     #[serde(default)]
     pub statement: String,
+    /// The starter project: a file next to the exercise (project, ST or PLCopen XML).
+    #[serde(default)]
+    pub starter: Option<String>,
+    /// The reference solution: a file next to the exercise.
+    #[serde(default)]
+    pub reference: Option<String>,
     /// The variables the solution must declare.
     #[serde(default)]
     pub interface: Vec<InterfaceVar>,

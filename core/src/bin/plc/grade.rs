@@ -186,3 +186,190 @@ fn csv(rows: &[Row]) -> String {
     }
     out
 }
+
+/// `plc exercise …`.
+#[derive(clap::Subcommand)]
+pub enum ExerciseCommand {
+    /// Check an exercise: its reference passes every scenario (the hidden ones too when
+    /// given), its starter fails at least one, and every mutant in its folder's `mutants/`
+    /// fails at least one, with the first wrong output and its time.
+    Validate {
+        /// The exercise file (TOML).
+        exercise: PathBuf,
+        /// A file of hidden scenarios to add.
+        #[arg(long, value_name = "HIDDEN.toml")]
+        scenarios: Option<PathBuf>,
+    },
+    /// Write the skeleton of a new exercise in the folder ID (exercise file, starter,
+    /// reference, a mutant).
+    New {
+        /// The exercise's id (also its folder).
+        id: String,
+    },
+}
+
+/// Runs `plc exercise …`.
+pub fn exercise(command: ExerciseCommand) -> ExitCode {
+    match command {
+        ExerciseCommand::Validate { exercise, scenarios } => {
+            validate(&exercise, scenarios.as_deref())
+        }
+        ExerciseCommand::New { id } => new(&id),
+    }
+}
+
+/// The first failed scenario of a report, as a line (`“Start”: Motor was FALSE at …`).
+fn first_failure(r: &Report) -> Option<String> {
+    if let Some(e) = &r.error {
+        return Some(e.clone());
+    }
+    r.scenarios.iter().find_map(|s| {
+        s.failure.as_ref().map(|f| format!("“{}”: expected {}; {}", s.name, f.expected, f.actual))
+    })
+}
+
+fn validate(path: &Path, hidden: Option<&Path>) -> ExitCode {
+    let load = || -> Result<Exercise, String> {
+        let mut ex = Exercise::from_toml(&read(path)?)
+            .map_err(|e| format!("plc: {}: {e}", path.display()))?;
+        if let Some(h) = hidden {
+            let more =
+                scenarios_from_toml(&read(h)?).map_err(|e| format!("plc: {}: {e}", h.display()))?;
+            ex.scenarios.extend(more);
+        }
+        Ok(ex)
+    };
+    let ex = match load() {
+        Ok(ex) => ex,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(2);
+        }
+    };
+    let dir = path.parent().unwrap_or(Path::new("."));
+    let problems = std::cell::Cell::new(0u32);
+    let graded = |label: &str, file: &Path| -> Option<Report> {
+        match super::load_project(file).and_then(|p| grade(&ex, &p).map_err(|e| e.to_string())) {
+            Ok(r) => Some(r),
+            Err(e) => {
+                println!("{label}: cannot be graded: {e}");
+                problems.set(problems.get() + 1);
+                None
+            }
+        }
+    };
+    match &ex.reference {
+        None => {
+            println!("reference: missing (give `reference = \"FILE\"`)");
+            problems.set(problems.get() + 1);
+        }
+        Some(file) => {
+            if let Some(r) = graded("reference", &dir.join(file)) {
+                match first_failure(&r) {
+                    None => println!("reference: passes all {} scenarios", r.scenarios.len()),
+                    Some(f) => {
+                        println!("reference: FAILS {f}");
+                        problems.set(problems.get() + 1);
+                    }
+                }
+            }
+        }
+    }
+    if let Some(file) = &ex.starter {
+        if let Some(r) = graded("starter", &dir.join(file)) {
+            match first_failure(&r) {
+                Some(f) => println!("starter: fails, as it should: {f}"),
+                None => {
+                    println!("starter: PASSES every scenario (it should leave work to do)");
+                    problems.set(problems.get() + 1);
+                }
+            }
+        }
+    }
+    for mutant in expand(&[dir.join("mutants")]).iter().filter(|m| m.is_file()) {
+        let name = format!(
+            "mutant {}",
+            mutant.file_name().map_or(String::new(), |n| n.to_string_lossy().into_owned())
+        );
+        if let Some(r) = graded(&name, mutant) {
+            match first_failure(&r) {
+                Some(f) => println!("{name}: caught: {f}"),
+                None => {
+                    println!("{name}: NOT CAUGHT: it passes every scenario");
+                    problems.set(problems.get() + 1);
+                }
+            }
+        }
+    }
+    if problems.get() == 0 {
+        ExitCode::SUCCESS
+    } else {
+        println!("{} problem(s)", problems.get());
+        ExitCode::FAILURE
+    }
+}
+
+fn new(id: &str) -> ExitCode {
+    if !plc_core::syntax::is_identifier(id) {
+        eprintln!("plc: “{id}” is not an id: use letters, digits and underscores");
+        return ExitCode::from(2);
+    }
+    let dir = Path::new(id);
+    if dir.exists() {
+        eprintln!("plc: {id} exists already: nothing written");
+        return ExitCode::from(2);
+    }
+    let program = |body: &str| {
+        format!(
+            "PROGRAM Main\nVAR_INPUT\n    Start : BOOL;\nEND_VAR\nVAR_OUTPUT\n    Lamp : BOOL;\nEND_VAR\n{body}\nEND_PROGRAM\n"
+        )
+    };
+    let exercise = format!(
+        r#"id = "{id}"
+title = "The title"
+level = 1
+languages = ["st", "ld"]
+statement = """
+What the student builds, in Markdown.
+"""
+starter = "starter.st"
+reference = "reference.st"
+
+[[interface]]
+name = "Start"
+type = "BOOL"
+direction = "input"
+meaning = "a push button"
+
+[[interface]]
+name = "Lamp"
+type = "BOOL"
+direction = "output"
+meaning = "a lamp"
+
+[[scenario]]
+name = "The lamp follows the button"
+hint = "Is Lamp written from Start?"
+step = [ {{ at = "0s", set = {{ Start = false }} }}, {{ at = "100ms", set = {{ Start = true }} }} ]
+expect = [ {{ holds = "NOT Lamp", from = "0s", to = "90ms" }}, {{ that = "Lamp", at = "120ms" }} ]
+"#
+    );
+    let files = [
+        (dir.join(format!("{id}.toml")), exercise),
+        (dir.join("starter.st"), program("Lamp := FALSE;")),
+        (dir.join("reference.st"), program("Lamp := Start;")),
+        (dir.join("mutants").join("inverted.st"), program("Lamp := NOT Start;")),
+    ];
+    for (path, text) in &files {
+        if let Err(e) = path
+            .parent()
+            .map_or(Ok(()), std::fs::create_dir_all)
+            .and_then(|()| std::fs::write(path, text))
+        {
+            eprintln!("plc: {}: {e}", path.display());
+            return ExitCode::FAILURE;
+        }
+        println!("wrote {}", path.display());
+    }
+    ExitCode::SUCCESS
+}
