@@ -87,6 +87,45 @@ pub struct Scenario {
     /// What must hold.
     #[serde(default, rename = "expect")]
     pub expectations: Vec<Expect>,
+    /// Run this many times with input events drawn at random (`never` and `always`
+    /// expectations only): safety rules checked against many input histories.
+    #[serde(default)]
+    pub random: Option<Random>,
+    /// The inputs a random scenario drives, and how.
+    #[serde(default, rename = "input")]
+    pub inputs: Vec<RandomInput>,
+}
+
+/// How many random runs, from which seed (run `k` uses seed `seed + k`, so a failing run
+/// is replayed with `runs = 1` and its seed).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Random {
+    /// How many runs.
+    pub runs: u32,
+    /// The first run's seed.
+    pub seed: u64,
+}
+
+/// An input a random scenario drives: BOOL `pulse`s of a random length at random times, or
+/// a random `walk` of a number between two bounds.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RandomInput {
+    /// The input.
+    pub name: String,
+    /// Pulse lengths (and the gaps between pulses) between these two durations.
+    #[serde(default)]
+    pub pulse: Option<[String; 2]>,
+    /// The walk stays between these two values.
+    #[serde(default)]
+    pub walk: Option<[f64; 2]>,
+    /// The walk's largest step (default: a tenth of its range).
+    #[serde(default)]
+    pub step: Option<f64>,
+    /// How often the walk moves (default 100 ms).
+    #[serde(default)]
+    pub every: Option<String>,
 }
 
 fn one() -> u32 {
@@ -278,11 +317,7 @@ impl Exercise {
             return Err(ExerciseError { message: "level is 1 (beginner) to 5 (advanced)".into() });
         }
         for s in &exercise.scenarios {
-            s.expectations()?;
-            s.cycle_ns()?;
-            for step in &s.steps {
-                s.time(&step.at, "step")?;
-            }
+            s.check()?;
         }
         Ok(exercise)
     }
@@ -306,14 +341,62 @@ pub fn scenarios_from_toml(text: &str) -> Result<Vec<Scenario>, ExerciseError> {
         }
     })?;
     for s in &only.scenarios {
-        s.expectations()?;
-        s.cycle_ns()?;
+        s.check()?;
     }
     Ok(only.scenarios)
 }
 
 impl Scenario {
-    fn time(&self, text: &str, what: &str) -> Result<i64, ExerciseError> {
+    /// Checks everything a scenario says can be used.
+    fn check(&self) -> Result<(), ExerciseError> {
+        let expectations = self.expectations()?;
+        self.cycle_ns()?;
+        for step in &self.steps {
+            self.time(&step.at, "step")?;
+        }
+        let fail =
+            |m: String| ExerciseError { message: format!("scenario “{}”: {m}", self.name) };
+        if self.random.is_some() {
+            if self.duration.is_none() {
+                return Err(fail("a random scenario says how long it runs (`duration`)".into()));
+            }
+            let safety = expectations
+                .iter()
+                .all(|e| matches!(e, Expectation::Never { .. } | Expectation::Always { .. }));
+            if !safety {
+                return Err(fail("a random scenario checks only `never` and `always`".into()));
+            }
+            for i in &self.inputs {
+                match (&i.pulse, &i.walk) {
+                    (Some([a, b]), None) => {
+                        let (a, b) = (self.time(a, "pulse")?, self.time(b, "pulse")?);
+                        if a <= 0 || b < a {
+                            return Err(fail(format!(
+                                "input {}: the pulse range is wrong",
+                                i.name
+                            )));
+                        }
+                    }
+                    (None, Some([lo, hi])) if lo <= hi => {
+                        if let Some(e) = &i.every {
+                            self.time(e, "every")?;
+                        }
+                    }
+                    _ => {
+                        return Err(fail(format!(
+                            "input {}: give `pulse = [\"MIN\", \"MAX\"]` or `walk = [LOW, HIGH]`",
+                            i.name
+                        )))
+                    }
+                }
+            }
+        } else if !self.inputs.is_empty() {
+            return Err(fail("`input` drives random scenarios only: add `random`".into()));
+        }
+        Ok(())
+    }
+
+    pub(super) fn time(&self, text: &str, what: &str) -> Result<i64, ExerciseError> {
         parse_duration(text).map_err(|m| ExerciseError {
             message: format!("scenario “{}”, {what}: {m}", self.name),
         })

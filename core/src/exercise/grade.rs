@@ -126,21 +126,48 @@ pub fn grade(exercise: &Exercise, project: &Project) -> Result<Report, ExerciseE
     Ok(Report { error: None, scenarios, score, total })
 }
 
-/// A TOML value as the IEC literal the simulator takes.
-fn literal(v: &toml::Value) -> String {
-    match v {
-        toml::Value::Boolean(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
-        toml::Value::Integer(i) => i.to_string(),
-        toml::Value::Float(f) => format!("{f:?}"),
-        toml::Value::String(s) => s.clone(),
-        other => other.to_string(),
-    }
-}
+use super::random::Event;
 
-/// Runs one scenario; the first wrong expectation, if any.
+/// Runs one scenario; the first wrong expectation, if any. A random scenario runs its
+/// runs until one fails, then shrinks that run's events to a shortest failing list.
 fn run(
     exercise: &Exercise,
     s: &Scenario,
+    sim: Simulator,
+    build: &crate::build::ProjectBuild,
+) -> Result<Option<Failure>, ExerciseError> {
+    let Some(random) = s.random else {
+        return run_events(exercise, s, &super::random::step_events(s), sim, build);
+    };
+    for k in 0..random.runs {
+        let seed = random.seed.wrapping_add(u64::from(k));
+        let events = super::random::events(s, seed)?;
+        let Some(_) = run_events(exercise, s, &events, sim.clone(), build)? else { continue };
+        let shortest = super::random::shrink(events, |e| {
+            matches!(run_events(exercise, s, e, sim.clone(), build), Ok(Some(_)))
+        });
+        let Some(mut failure) = run_events(exercise, s, &shortest, sim.clone(), build)? else {
+            continue;
+        };
+        let list: Vec<String> = shortest
+            .iter()
+            .map(|(t, name, value)| format!("{} {name} := {value}", time_text(*t)))
+            .collect();
+        failure.actual = format!(
+            "{} — random run with seed {seed} (replay: random = {{ runs = 1, seed = {seed} }}); shortest failing events: {}",
+            failure.actual,
+            if list.is_empty() { "none".to_string() } else { list.join(", ") }
+        );
+        return Ok(Some(failure));
+    }
+    Ok(None)
+}
+
+/// Runs a scenario's expectations against a list of input events.
+fn run_events(
+    exercise: &Exercise,
+    s: &Scenario,
+    events: &[Event],
     mut sim: Simulator,
     build: &crate::build::ProjectBuild,
 ) -> Result<Option<Failure>, ExerciseError> {
@@ -148,11 +175,6 @@ fn run(
     let cycle = s.cycle_ns()?;
     let end = s.duration_ns()?;
     sim.set_cycle_ns(cycle);
-    let mut steps: Vec<(i64, &super::format::Step)> = Vec::new();
-    for step in &s.steps {
-        steps.push((super::format::parse_duration(&step.at).unwrap_or(0), step));
-    }
-    crate::order::sort_by_key(&mut steps, |(t, _)| *t);
     let mut probes: Vec<ProbeId> = Vec::new();
     for e in &expectations {
         match sim.add_probe(e.condition()) {
@@ -187,12 +209,11 @@ fn run(
             .collect(),
     };
     while sim.time_ns() < end && failure.is_none() {
-        while next_step < steps.len() && steps[next_step].0 <= sim.time_ns() {
-            for (name, value) in &steps[next_step].1.set {
-                sim.hold(name, &literal(value)).map_err(|e| ExerciseError {
-                    message: format!("scenario “{}”: {name} cannot be set: {e}", s.name),
-                })?;
-            }
+        while next_step < events.len() && events[next_step].0 <= sim.time_ns() {
+            let (_, name, value) = &events[next_step];
+            sim.hold(name, value).map_err(|e| ExerciseError {
+                message: format!("scenario “{}”: {name} cannot be set: {e}", s.name),
+            })?;
             next_step += 1;
         }
         if let ScanOutcome::Fault(info) = sim.scan() {

@@ -4,10 +4,11 @@
 
 mod format;
 mod grade;
+mod random;
 
 pub use format::{
     parse_duration, scenarios_from_toml, time_text, Direction, Exercise, ExerciseError, Expect,
-    Expectation, InterfaceVar, Scenario, Step,
+    Expectation, InterfaceVar, Random, RandomInput, Scenario, Step,
 };
 pub use grade::{grade, Failure, Report, Sample, ScenarioReport};
 

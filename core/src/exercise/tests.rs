@@ -172,3 +172,54 @@ fn grading_is_deterministic() {
     let wrong = GOOD.replace("(Start OR Motor)", "Start");
     assert_eq!(grade(&e, &project(&wrong)).unwrap(), grade(&e, &project(&wrong)).unwrap());
 }
+
+const REVERSING: &str = include_str!("../../../exercises/reversing/reversing.toml");
+
+#[test]
+fn a_random_scenario_finds_both_directions_on_and_gives_a_seed_that_replays_it() {
+    let e = Exercise::from_toml(REVERSING).unwrap();
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../exercises/reversing");
+    let read = |f: &str| std::fs::read_to_string(format!("{root}/{f}")).unwrap();
+    // The fixed scenario lets the classic bug pass; the random one catches it.
+    let r = grade(&e, &project(&read("mutants/no-interlock.st"))).unwrap();
+    assert!(r.scenarios[0].passed(), "{r:#?}");
+    let f = r.scenarios[1].failure.as_ref().unwrap();
+    assert_eq!(f.expected, "MotorFwd AND MotorRev is never TRUE");
+    assert!(f.actual.starts_with("MotorFwd AND MotorRev was TRUE at "), "{}", f.actual);
+    let seed: u64 = f
+        .actual
+        .split("random run with seed ")
+        .nth(1)
+        .unwrap()
+        .split(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let events = f.actual.split("shortest failing events: ").nth(1).unwrap();
+    assert!(events.contains("Fwd := TRUE") && events.contains("Rev := TRUE"), "{events}");
+    // Replayed alone with its seed, the run fails the same way.
+    let mut replay = e.clone();
+    replay.scenarios[1].random = Some(Random { runs: 1, seed });
+    let again = grade(&replay, &project(&read("mutants/no-interlock.st"))).unwrap();
+    assert_eq!(again.scenarios[1].failure.as_ref().unwrap().actual, f.actual);
+    // The interlocked reference survives every run.
+    assert!(grade(&e, &project(&read("reference.st")))
+        .unwrap()
+        .scenarios
+        .iter()
+        .all(ScenarioReport::passed));
+}
+
+#[test]
+fn random_scenarios_check_safety_rules_only_and_say_how_long_they_run() {
+    let no_duration = REVERSING.replace("duration = \"3s\"\n", "");
+    let e = Exercise::from_toml(&no_duration).unwrap_err();
+    assert!(e.message.contains("says how long it runs"), "{e}");
+    let at = REVERSING.replace(
+        "expect = [ { never = \"MotorFwd AND MotorRev\" } ]",
+        "expect = [ { that = \"MotorFwd\", at = \"1s\" } ]",
+    );
+    let e = Exercise::from_toml(&at).unwrap_err();
+    assert!(e.message.contains("only `never` and `always`"), "{e}");
+}
