@@ -169,6 +169,43 @@ pub fn CodeField(
     }
 }
 
+/// A POU's `Declarations`: a [`CodeField`] in a disclosure that says how many problems they
+/// have and opens when one of them is revealed (ladder and Petri net POUs alike).
+#[component]
+pub fn DeclarationsBox(
+    open: RwSignal<bool>,
+    text: Signal<String>,
+    on_commit: Callback<String>,
+    on_leave: Callback<()>,
+    problems: Signal<Vec<FieldProblem>>,
+    reveal: Signal<Option<(u32, u32)>>,
+) -> impl IntoView {
+    Effect::new(move |_| {
+        if reveal.get().is_some() {
+            open.set(true);
+        }
+    });
+    let count = move || problems.with(Vec::len);
+    view! {
+        <details class="ld-decls" prop:open=move || open.get()
+            on:toggle=move |ev| {
+                use wasm_bindgen::JsCast;
+                let now = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlDetailsElement>().ok()).is_some_and(|d| d.open());
+                if now != open.get_untracked() {
+                    open.set(now);
+                }
+            }>
+            <summary>"Declarations"
+                {move || (count() > 0).then(|| view! {
+                    <span class="ld-decl-count">{format!(" ({} problem{})", count(), if count() == 1 { "" } else { "s" })}</span>
+                })}
+            </summary>
+            <CodeField label="Declarations" text=text on_commit=on_commit on_leave=on_leave
+                problems=problems reveal=reveal/>
+        </details>
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

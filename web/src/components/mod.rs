@@ -7,6 +7,7 @@ pub mod header;
 pub mod io;
 pub mod ladder;
 pub mod petri;
+pub mod pou_actions;
 pub mod pou_pane;
 pub mod problems;
 pub mod sfc;

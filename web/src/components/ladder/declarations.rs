@@ -1,5 +1,5 @@
-//! The declarations of a ladder POU: a [`CodeField`] labelled `Declarations` in a
-//! disclosure that opens when a problem in them is revealed. Typing in a row is one
+//! The declarations of a ladder POU: the shared declarations box (a code field labelled
+//! `Declarations` in a disclosure that opens when a problem in them is revealed). Typing in a row is one
 //! `SetDeclarations` edit of the ladder editor (one undo step until the field is left).
 
 use leptos::prelude::*;
@@ -7,7 +7,7 @@ use plc_core::build::Site;
 use plc_core::ladder::{LadderEdit, LadderPou};
 
 use super::editor::LadderEditor;
-use crate::components::code_field::{CodeField, FieldProblem};
+use crate::components::code_field::{DeclarationsBox, FieldProblem};
 use crate::state::AppState;
 
 /// The history group that joins typing in the declarations into one undo step.
@@ -47,32 +47,12 @@ pub fn DeclarationsEditor(
         }
         _ => None,
     });
-    Effect::new(move |_| {
-        if reveal.get().is_some() {
-            open.set(true);
-        }
-    });
     let on_commit = Callback::new(move |text: String| {
         editor.apply(&LadderEdit::SetDeclarations { text }, Some(TYPING_GROUP));
     });
     let on_leave = Callback::new(move |()| editor.close_group());
-    let count = move || problems.with(Vec::len);
     view! {
-        <details class="ld-decls" prop:open=move || open.get()
-            on:toggle=move |ev| {
-                use wasm_bindgen::JsCast;
-                let now = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlDetailsElement>().ok()).is_some_and(|d| d.open());
-                if now != open.get_untracked() {
-                    open.set(now);
-                }
-            }>
-            <summary>"Declarations"
-                {move || (count() > 0).then(|| view! {
-                    <span class="ld-decl-count">{format!(" ({} problem{})", count(), if count() == 1 { "" } else { "s" })}</span>
-                })}
-            </summary>
-            <CodeField label="Declarations" text=text on_commit=on_commit on_leave=on_leave
-                problems=problems reveal=reveal/>
-        </details>
+        <DeclarationsBox open=open text=text on_commit=on_commit on_leave=on_leave
+            problems=problems reveal=reveal/>
     }
 }

@@ -16,6 +16,7 @@ use plc_core::ladder::{
 };
 
 use crate::components::editor::text::highlight_html;
+use crate::components::pou_actions::{DiagramKind, PouActions};
 use crate::state::AppState;
 use declarations::DeclarationsEditor;
 use draw::{rung_svg, RungCtx};
@@ -525,7 +526,7 @@ pub fn LadderView(name: String) -> impl IntoView {
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             <DeclarationsEditor editor=editor pou=pou open=decls_open/>
-            <Toolbar editor=editor/>
+            <Toolbar editor=editor name=name.clone()/>
             {ghost}
             <PinBoxes editor=editor pou=pou/>
             <div class="ld-body">
@@ -539,46 +540,8 @@ pub fn LadderView(name: String) -> impl IntoView {
 /// The ladder toolbar: undo/redo, the rung and grid actions, the POU's rename and delete,
 /// the palette and the block picker (`b` on a cell).
 #[component]
-fn Toolbar(editor: LadderEditor) -> impl IntoView {
+fn Toolbar(editor: LadderEditor, name: String) -> impl IntoView {
     let state = expect_context::<AppState>();
-    let renaming = RwSignal::new(false);
-    let rename = move |text: String| {
-        renaming.set(false);
-        let Some(old) = editor.pou().map(|p| p.name) else { return };
-        let mut project = state.project.get_untracked();
-        match project.rename_ladder_pou(&old, &text) {
-            Ok(()) => {
-                let new = text.trim().to_string();
-                state.project.set(project);
-                state.view.set(crate::state::PouView::Ladder(new));
-                state.save();
-                state.check_now();
-            }
-            Err(e) => state.error(format!("Not renamed: {e}.")),
-        }
-    };
-    let delete = move |_| {
-        let Some(name) = editor.pou().map(|p| p.name) else { return };
-        let ok = web_sys::window()
-            .and_then(|w| {
-                w.confirm_with_message(&format!(
-                    "Delete the ladder POU “{name}”? Undo cannot bring it back."
-                ))
-                .ok()
-            })
-            .unwrap_or(false);
-        if !ok {
-            return;
-        }
-        let mut project = state.project.get_untracked();
-        if project.delete_ladder_pou(&name).is_ok() {
-            state.project.set(project);
-            state.view.set(crate::state::PouView::St);
-            state.save();
-            state.check_now();
-            state.info(format!("Deleted the ladder POU “{name}”."));
-        }
-    };
     let all_blocks = Memo::new(move |_| {
         let mut list: Vec<String> = STANDARD_BLOCKS.iter().map(|b| b.to_string()).collect();
         list.extend(state.project.with(|p| p.catalog().user_block_names()));
@@ -602,20 +565,7 @@ fn Toolbar(editor: LadderEditor) -> impl IntoView {
             {RungAction::all().into_iter().map(|(action, label)| view! {
                 <button on:click=move |_| editor.rung_action(action)>{label}</button>
             }).collect_view()}
-            {move || if renaming.get() {
-                view! {
-                    <input type="text" aria-label="New POU name" autofocus
-                        prop:value=editor.pou().map(|p| p.name).unwrap_or_default()
-                        on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
-                            "Enter" => { ev.prevent_default(); rename(event_target_value(&ev)); }
-                            "Escape" => renaming.set(false),
-                            _ => {}
-                        }/>
-                }.into_any()
-            } else {
-                view! { <button on:click=move |_| renaming.set(true)>"Rename POU"</button> }.into_any()
-            }}
-            <button on:click=delete>"Delete POU"</button>
+            <PouActions kind=DiagramKind::Ladder name=name.clone()/>
         </div>
         {move || editor.picker_open.get().then(|| {
             let picker = NodeRef::<leptos::html::Select>::new();

@@ -20,6 +20,7 @@ use plc_core::build::Site;
 use plc_core::petri::{build, compile, Compiled, NetElement, PetriPou, PtNet};
 
 use crate::components::ladder::{geometry::clip, scroll_to};
+use crate::components::pou_actions::{DiagramKind, PouActions};
 use crate::state::{marking_of, AppState, RunMode};
 use analysis::AnalysisPanel;
 use code::CodePanel;
@@ -720,7 +721,7 @@ pub fn PetriView(name: String) -> impl IntoView {
                 <span class="pou-title">{name.clone()}</span>
                 {layout_note}
                 <span class="ed-spacer"></span>
-                <PouActions editor=editor/>
+                <PouActions kind=DiagramKind::Petri name=name.clone()/>
             </div>
             <NetToolbar editor=editor pou=pou/>
             <PlayControls play=play net=pt/>
@@ -844,65 +845,6 @@ fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
             (NetTool::Transition, _) => "Click on the canvas to add a transition.".to_string(),
             (NetTool::Select, _) => "Drag an element to move it, the canvas to pan; arrow keys move, Enter edits, Delete removes.".to_string(),
         }}</p>
-    }
-}
-
-/// Rename and delete the net POU.
-#[component]
-fn PouActions(editor: NetEditor) -> impl IntoView {
-    let state = expect_context::<AppState>();
-    let renaming = RwSignal::new(false);
-    let rename = move |text: String| {
-        renaming.set(false);
-        let Some(old) = editor.pou().map(|p| p.name) else { return };
-        let mut project = state.project.get_untracked();
-        match project.rename_petri_pou(&old, &text) {
-            Ok(()) => {
-                state.project.set(project);
-                state.view.set(crate::state::PouView::Petri(text.trim().to_string()));
-                state.save();
-                state.check_now();
-            }
-            Err(e) => state.error(format!("Not renamed: {e}.")),
-        }
-    };
-    let delete = move |_| {
-        let Some(name) = editor.pou().map(|p| p.name) else { return };
-        let ok = web_sys::window()
-            .and_then(|w| {
-                w.confirm_with_message(&format!(
-                    "Delete the Petri net POU “{name}”? Undo cannot bring it back."
-                ))
-                .ok()
-            })
-            .unwrap_or(false);
-        if !ok {
-            return;
-        }
-        let mut project = state.project.get_untracked();
-        if project.delete_petri_pou(&name).is_ok() {
-            state.project.set(project);
-            state.view.set(crate::state::PouView::St);
-            state.save();
-            state.check_now();
-            state.info(format!("Deleted the Petri net POU “{name}”."));
-        }
-    };
-    view! {
-        {move || if renaming.get() {
-            view! {
-                <input type="text" aria-label="New POU name" autofocus
-                    prop:value=editor.pou().map(|p| p.name).unwrap_or_default()
-                    on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
-                        "Enter" => { ev.prevent_default(); rename(event_target_value(&ev)); }
-                        "Escape" => renaming.set(false),
-                        _ => {}
-                    }/>
-            }.into_any()
-        } else {
-            view! { <button on:click=move |_| renaming.set(true)>"Rename POU"</button> }.into_any()
-        }}
-        <button on:click=delete>"Delete POU"</button>
     }
 }
 

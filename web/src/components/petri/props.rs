@@ -10,7 +10,7 @@ use plc_core::build::Site;
 use plc_core::petri::{NetEdit, NetElement, PetriPou, TextPart};
 
 use super::editor::{NetEditor, Selection};
-use crate::components::code_field::{CodeField, FieldProblem};
+use crate::components::code_field::{CodeField, DeclarationsBox, FieldProblem};
 use crate::state::AppState;
 
 /// Pause after the last key before a field's value is applied.
@@ -317,27 +317,12 @@ pub fn NetDeclarations(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl I
         }
         _ => None,
     });
-    Effect::new(move |_| {
-        if reveal.get().is_some() {
-            open.set(true);
-        }
-    });
     let on_commit = Callback::new(move |text: String| {
         editor.apply(&[NetEdit::SetDeclarations { text }], Some("declarations"));
     });
     let on_leave = Callback::new(move |()| editor.close_group());
     view! {
-        <details class="ld-decls" prop:open=move || open.get()
-            on:toggle=move |ev| {
-                use wasm_bindgen::JsCast;
-                let now = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlDetailsElement>().ok()).is_some_and(|d| d.open());
-                if now != open.get_untracked() {
-                    open.set(now);
-                }
-            }>
-            <summary>"Declarations"</summary>
-            <CodeField label="Declarations" text=text on_commit=on_commit on_leave=on_leave
-                problems=problems reveal=reveal/>
-        </details>
+        <DeclarationsBox open=open text=text on_commit=on_commit on_leave=on_leave
+            problems=problems reveal=reveal/>
     }
 }

@@ -1,0 +1,101 @@
+//! `Rename POU` and `Delete POU` (after confirming) in the toolbar of a diagram POU's view:
+//! the project-level edits of the core (`Project::rename_ladder_pou`, …), the same for
+//! ladder and Petri net POUs.
+
+use leptos::prelude::*;
+
+use crate::state::{AppState, PouView};
+
+/// Which kind of diagram POU the actions are for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DiagramKind {
+    /// A ladder POU.
+    Ladder,
+    /// A Petri net POU.
+    Petri,
+}
+
+impl DiagramKind {
+    fn words(self) -> &'static str {
+        match self {
+            DiagramKind::Ladder => "ladder POU",
+            DiagramKind::Petri => "Petri net POU",
+        }
+    }
+
+    fn view(self, name: String) -> PouView {
+        match self {
+            DiagramKind::Ladder => PouView::Ladder(name),
+            DiagramKind::Petri => PouView::Petri(name),
+        }
+    }
+}
+
+/// The two buttons for the POU `name` (a view is made anew when its POU is renamed).
+#[component]
+pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let name = StoredValue::new(name);
+    let renaming = RwSignal::new(false);
+    let rename = move |text: String| {
+        renaming.set(false);
+        let old = name.get_value();
+        let mut project = state.project.get_untracked();
+        let done = match kind {
+            DiagramKind::Ladder => project.rename_ladder_pou(&old, &text),
+            DiagramKind::Petri => project.rename_petri_pou(&old, &text),
+        };
+        match done {
+            Ok(()) => {
+                state.project.set(project);
+                state.view.set(kind.view(text.trim().to_string()));
+                state.save();
+                state.check_now();
+            }
+            Err(e) => state.error(format!("Not renamed: {e}.")),
+        }
+    };
+    let delete = move |_| {
+        let name = name.get_value();
+        let ok = web_sys::window()
+            .and_then(|w| {
+                w.confirm_with_message(&format!(
+                    "Delete the {} “{name}”? Undo cannot bring it back.",
+                    kind.words()
+                ))
+                .ok()
+            })
+            .unwrap_or(false);
+        if !ok {
+            return;
+        }
+        let mut project = state.project.get_untracked();
+        let done = match kind {
+            DiagramKind::Ladder => project.delete_ladder_pou(&name),
+            DiagramKind::Petri => project.delete_petri_pou(&name),
+        };
+        if done.is_ok() {
+            state.project.set(project);
+            state.view.set(PouView::St);
+            state.save();
+            state.check_now();
+            state.info(format!("Deleted the {} “{name}”.", kind.words()));
+        }
+    };
+    view! {
+        {move || if renaming.get() {
+            view! {
+                <input type="text" aria-label="New POU name" autofocus
+                    prop:value=name.get_value()
+                    on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
+                        "Enter" => { ev.prevent_default(); rename(event_target_value(&ev)); }
+                        "Escape" => renaming.set(false),
+                        _ => {}
+                    }/>
+            }.into_any()
+        } else {
+            view! { <button on:click=move |_| renaming.set(true)>"Rename POU"</button> }.into_any()
+        }}
+        <button on:click=delete>"Delete POU"</button>
+    }
+}
