@@ -742,12 +742,33 @@ fn StBeside(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
         })
     });
     let selected_rung = Memo::new(move |_| editor.selected.get().map(|c| c.rung));
+    let name = Memo::new(move |_| view.with(|v| v.as_ref().map(|(n, _)| n.clone())));
+    // Keyed by text, rung and which repeat of the two it is (not by position, which every
+    // inserted line shifts): an edit redraws the lines it changed, not all of them.
+    let lines = move || {
+        view.with(|v| {
+            let mut seen: std::collections::HashMap<(String, Option<usize>), usize> =
+                std::collections::HashMap::new();
+            v.as_ref()
+                .map(|(_, lines)| {
+                    lines
+                        .iter()
+                        .map(|(t, r)| {
+                            let n = seen.entry((t.clone(), *r)).or_insert(0);
+                            *n += 1;
+                            (*n, t.clone(), *r)
+                        })
+                        .collect()
+                })
+                .unwrap_or_else(Vec::new)
+        })
+    };
     move || {
-        let (name, lines) = view.get()?;
+        let name = name.get()?;
         Some(view! {
             <aside class="ld-st-side" aria-label=format!("ST beside the rungs of {name}")>
                 <pre class="code-view">
-                    {lines.into_iter().map(|(text, rung)| {
+                    <For each=lines key=|line| line.clone() children=move |(_, text, rung)| {
                         let html = highlight_html(&text, &[]);
                         let lit = move || rung.is_some() && selected_rung.get() == rung;
                         view! {
@@ -759,7 +780,7 @@ fn StBeside(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
                                 <code inner_html=html></code>
                             </div>
                         }
-                    }).collect_view()}
+                    }/>
                 </pre>
             </aside>
         })
