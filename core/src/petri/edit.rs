@@ -298,22 +298,7 @@ impl PetriPou {
                 }
                 self.net.arcs.push(Arc::new(from.clone(), to.clone()));
             }
-            NetEdit::Move { id, to } => {
-                let net = &mut self.net;
-                let position = net
-                    .places
-                    .iter_mut()
-                    .find(|p| p.id == *id)
-                    .map(|p| &mut p.position)
-                    .or_else(|| {
-                        net.transitions.iter_mut().find(|t| t.id == *id).map(|t| &mut t.position)
-                    })
-                    .or_else(|| {
-                        net.macro_places.iter_mut().find(|m| m.id == *id).map(|m| &mut m.position)
-                    })
-                    .ok_or_else(|| NetEditError::NoSuchElement(id.clone()))?;
-                *position = Some(*to);
-            }
+            NetEdit::Move { id, to } => *self.name_and_position(id)?.1 = Some(*to),
             NetEdit::Delete { id } => {
                 if self.kind_of(id).is_none() {
                     return Err(NetEditError::NoSuchElement(id.clone()));
@@ -339,20 +324,7 @@ impl PetriPou {
                 self.net.arcs.remove(i);
             }
             NetEdit::SetName { id, name } => {
-                let net = &mut self.net;
-                let slot = net
-                    .places
-                    .iter_mut()
-                    .find(|p| p.id == *id)
-                    .map(|p| &mut p.name)
-                    .or_else(|| {
-                        net.transitions.iter_mut().find(|t| t.id == *id).map(|t| &mut t.name)
-                    })
-                    .or_else(|| {
-                        net.macro_places.iter_mut().find(|m| m.id == *id).map(|m| &mut m.name)
-                    })
-                    .ok_or_else(|| NetEditError::NoSuchElement(id.clone()))?;
-                *slot = name.trim().to_string();
+                *self.name_and_position(id)?.0 = name.trim().to_string()
             }
             NetEdit::SetLabel { id, label } => {
                 self.require(id, ElementKind::Place)?;
@@ -405,6 +377,31 @@ impl PetriPou {
             NetEdit::SetDeclarations { text } => self.declarations = text.clone(),
         }
         Ok(())
+    }
+
+    /// The name and position of the place, transition or macro-place `id`.
+    fn name_and_position(
+        &mut self,
+        id: &str,
+    ) -> Result<(&mut String, &mut Option<Position>), NetEditError> {
+        let net = &mut self.net;
+        net.places
+            .iter_mut()
+            .find(|p| p.id == id)
+            .map(|p| (&mut p.name, &mut p.position))
+            .or_else(|| {
+                net.transitions
+                    .iter_mut()
+                    .find(|t| t.id == id)
+                    .map(|t| (&mut t.name, &mut t.position))
+            })
+            .or_else(|| {
+                net.macro_places
+                    .iter_mut()
+                    .find(|m| m.id == id)
+                    .map(|m| (&mut m.name, &mut m.position))
+            })
+            .ok_or_else(|| NetEditError::NoSuchElement(id.to_string()))
     }
 
     fn place_mut(&mut self, id: &str) -> Result<&mut Place, NetEditError> {
