@@ -99,3 +99,7 @@ pub const SEMIFLOW_ROW_LIMIT: usize = 20_000;
 /// The most situations (sets of active steps) explored per SFC chart by the structure
 /// check.
 pub const SFC_MAX_SITUATIONS: usize = 20_000;
+
+/// The most scans one exercise scenario may ask for, all its random runs together (a file
+/// asking for more, `duration = "1000h"`, is refused rather than left to run for hours).
+pub const EXERCISE_MAX_SCANS: i64 = 20_000_000;

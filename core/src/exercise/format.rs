@@ -356,6 +356,14 @@ impl Scenario {
         }
         let fail =
             |m: String| ExerciseError { message: format!("scenario “{}”: {m}", self.name) };
+        let runs = i64::from(self.random.map_or(1, |r| r.runs.max(1)));
+        let scans = (self.duration_ns()? / self.cycle_ns()?).saturating_add(1).saturating_mul(runs);
+        if scans > crate::limits::EXERCISE_MAX_SCANS {
+            return Err(fail(format!(
+                "it asks for {scans} scans, more than {} (shorten it, lengthen the cycle or make fewer runs)",
+                crate::limits::EXERCISE_MAX_SCANS
+            )));
+        }
         if self.random.is_some() {
             if self.duration.is_none() {
                 return Err(fail("a random scenario says how long it runs (`duration`)".into()));
