@@ -358,3 +358,31 @@ fn a_new_exercise_skeleton_validates() {
     let again = plc(&["exercise", "new", "blink"]);
     assert_eq!(again.status.code(), Some(2), "an existing folder is left alone");
 }
+
+/// `plc exercise link` packs the exercise file and its starter into a `#x=` fragment
+/// that the page reads back; the reference never travels.
+#[test]
+fn an_exercise_link_carries_the_file_and_the_starter_only() {
+    let root = format!("{}/../exercises/latch", env!("CARGO_MANIFEST_DIR"));
+    let out = plc(&[
+        "exercise",
+        "link",
+        &format!("{root}/latch.toml"),
+        "--base",
+        "https://t.example/plc/",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let url = stdout(&out);
+    let fragment =
+        url.trim().strip_prefix("https://t.example/plc/#").expect("base, then the fragment");
+    let (link, exercise) = plc_core::exercise::ExerciseLink::decode(fragment).unwrap();
+    assert_eq!(exercise.id, "latch");
+    assert_eq!(link.exercise, std::fs::read_to_string(format!("{root}/latch.toml")).unwrap());
+    let starter = link.starter.unwrap();
+    assert_eq!(starter.text, std::fs::read_to_string(format!("{root}/starter.st")).unwrap());
+    let reference = std::fs::read_to_string(format!("{root}/reference.st")).unwrap();
+    assert!(!serde_json::to_string(&link.exercise).unwrap().contains(reference.trim()));
+    let missing = plc(&["exercise", "link", "no-such.toml"]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("no-such.toml"));
+}

@@ -132,14 +132,29 @@ fn one() -> u32 {
     1
 }
 
-/// Inputs set from a time on.
+/// Inputs set from a time on, or a restart of the PLC at that time.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Step {
     /// When (`1.5s`, `200ms`, `T#2s`).
     pub at: String,
     /// Input → value (a TOML boolean or number, or an IEC literal as a string).
+    #[serde(default)]
     pub set: BTreeMap<String, toml::Value>,
+    /// A power cycle at `at`, before the inputs are set: `warm` (RETAIN variables keep
+    /// their values) or `cold` (everything back to its initial value). Held inputs stay.
+    #[serde(default)]
+    pub restart: Option<Restart>,
+}
+
+/// The kind of a restart a step asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Restart {
+    /// RETAIN variables keep their values.
+    Warm,
+    /// Every variable back to its initial value.
+    Cold,
 }
 
 /// One expectation as written: exactly one of `that` (with `at`), `becomes`, `holds` (both
@@ -216,6 +231,29 @@ impl Expectation {
             | Expectation::Holds { condition, .. }
             | Expectation::Never { condition }
             | Expectation::Always { condition } => condition,
+        }
+    }
+
+    /// What the condition should be on the scan that ends at `t` (ns) with cycle `cycle`:
+    /// `None` where any value is right. `that` is checked on the first scan ending at or
+    /// after its time; `becomes` is FALSE before its window and TRUE after it.
+    pub fn expected_at(&self, t: i64, cycle: i64) -> Option<bool> {
+        match self {
+            Expectation::At { at, .. } => {
+                (t >= *at && t < at.saturating_add(cycle)).then_some(true)
+            }
+            Expectation::Becomes { from, to, .. } => {
+                if t < *from {
+                    Some(false)
+                } else if t > *to {
+                    Some(true)
+                } else {
+                    None
+                }
+            }
+            Expectation::Holds { from, to, .. } => (t >= *from && t <= *to).then_some(true),
+            Expectation::Never { .. } => Some(false),
+            Expectation::Always { .. } => Some(true),
         }
     }
 
@@ -351,11 +389,17 @@ impl Scenario {
     fn check(&self) -> Result<(), ExerciseError> {
         let expectations = self.expectations()?;
         self.cycle_ns()?;
-        for step in &self.steps {
-            self.time(&step.at, "step")?;
-        }
         let fail =
             |m: String| ExerciseError { message: format!("scenario “{}”: {m}", self.name) };
+        for step in &self.steps {
+            self.time(&step.at, "step")?;
+            if step.set.is_empty() && step.restart.is_none() {
+                return Err(fail(format!(
+                    "the step at {} neither sets inputs (set = {{ … }}) nor restarts (restart = \"warm\" or \"cold\")",
+                    step.at
+                )));
+            }
+        }
         let runs = i64::from(self.random.map_or(1, |r| r.runs.max(1)));
         let scans = (self.duration_ns()? / self.cycle_ns()?).saturating_add(1).saturating_mul(runs);
         if scans > crate::limits::EXERCISE_MAX_SCANS {

@@ -4,30 +4,52 @@
 //! time and scan) and the interface's values on the scans around it — and a score out of
 //! the weights. Deterministic: the same submission gives the same report.
 
+use std::collections::VecDeque;
+
+use serde::Serialize;
+
 use crate::build::{build_project, Site};
 use crate::export::value_text;
 use crate::project::Project;
 use crate::sim::{ProbeId, ScanOutcome, Simulator};
 
 use super::format::{time_text, Direction, Exercise, ExerciseError, Expectation, Scenario};
+use super::random::RESTART;
 
-/// Scans shown before and after the first wrong one.
-const WINDOW: usize = 5;
+/// How much a report tells.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct GradeOptions {
+    /// Scans shown before and after the first wrong one (5 for the command line; the
+    /// page's timeline shows more).
+    pub window: usize,
+}
+
+impl Default for GradeOptions {
+    fn default() -> Self {
+        GradeOptions { window: 5 }
+    }
+}
 
 /// The interface's values after one scan.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Sample {
-    /// The scan (1-based).
+    /// The scan (1-based, counted across restarts).
     pub scan: u64,
-    /// The virtual time at its end, in nanoseconds.
+    /// The virtual time at its end, in nanoseconds (from the scenario's start).
     pub time_ns: i64,
     /// `(variable, value)` for every interface variable, in interface order.
     pub values: Vec<(String, String)>,
+    /// The failing expectation's condition on this scan (`None` for a FAULT).
+    pub actual: Option<bool>,
+    /// What it should have been (`None`: any value is right).
+    pub expected: Option<bool>,
 }
 
 /// The first wrong expectation of a scenario.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Failure {
+    /// The condition that was wrong (`Motor`), or `None` for a FAULT.
+    pub condition: Option<String>,
     /// What was expected (`Motor is TRUE at 0.2 s`).
     pub expected: String,
     /// What happened (`Motor was FALSE at 0.2 s (scan 20)`).
@@ -41,7 +63,7 @@ pub struct Failure {
 }
 
 /// One scenario's result.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ScenarioReport {
     /// Its name.
     pub name: String,
@@ -61,7 +83,7 @@ impl ScenarioReport {
 }
 
 /// A submission's grade.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Report {
     /// Why nothing could run (the project does not build, has no PROGRAM …), located.
     pub error: Option<String>,
@@ -83,6 +105,15 @@ fn place(site: &Site) -> String {
 
 /// Grades `project` against `exercise`: every scenario on a fresh PLC.
 pub fn grade(exercise: &Exercise, project: &Project) -> Result<Report, ExerciseError> {
+    grade_with(exercise, project, GradeOptions::default())
+}
+
+/// [`grade`] with a window of `options.window` scans around a failure.
+pub fn grade_with(
+    exercise: &Exercise,
+    project: &Project,
+    options: GradeOptions,
+) -> Result<Report, ExerciseError> {
     let total = exercise.scenarios.iter().map(|s| s.weight).sum();
     let build = build_project(project);
     let not_run =
@@ -114,7 +145,8 @@ pub fn grade(exercise: &Exercise, project: &Project) -> Result<Report, ExerciseE
     }
     let mut scenarios = Vec::new();
     for s in &exercise.scenarios {
-        let failure = run(exercise, s, sim.clone(), &build)?;
+        let run = Run { exercise, scenario: s, build: &build, window: options.window };
+        let failure = run.failure(sim.clone())?;
         scenarios.push(ScenarioReport {
             name: s.name.clone(),
             weight: s.weight,
@@ -128,176 +160,210 @@ pub fn grade(exercise: &Exercise, project: &Project) -> Result<Report, ExerciseE
 
 use super::random::Event;
 
-/// Runs one scenario; the first wrong expectation, if any. A random scenario runs its
-/// runs until one fails, then shrinks that run's events to a shortest failing list.
-fn run(
-    exercise: &Exercise,
-    s: &Scenario,
-    sim: Simulator,
-    build: &crate::build::ProjectBuild,
-) -> Result<Option<Failure>, ExerciseError> {
-    let Some(random) = s.random else {
-        return run_events(exercise, s, &super::random::step_events(s), sim, build);
-    };
-    for k in 0..random.runs {
-        let seed = random.seed.wrapping_add(u64::from(k));
-        let events = super::random::events(s, seed)?;
-        let Some(_) = run_events(exercise, s, &events, sim.clone(), build)? else { continue };
-        let shortest = super::random::shrink(events, |e| {
-            matches!(run_events(exercise, s, e, sim.clone(), build), Ok(Some(_)))
-        });
-        let Some(mut failure) = run_events(exercise, s, &shortest, sim.clone(), build)? else {
-            continue;
-        };
-        let list: Vec<String> = shortest
-            .iter()
-            .map(|(t, name, value)| format!("{} {name} := {value}", time_text(*t)))
-            .collect();
-        failure.actual = format!(
-            "{} — random run with seed {seed} (replay: random = {{ runs = 1, seed = {seed} }}); shortest failing events: {}",
-            failure.actual,
-            if list.is_empty() { "none".to_string() } else { list.join(", ") }
-        );
-        return Ok(Some(failure));
-    }
-    Ok(None)
+/// One scenario run on one submission.
+struct Run<'a> {
+    exercise: &'a Exercise,
+    scenario: &'a Scenario,
+    build: &'a crate::build::ProjectBuild,
+    window: usize,
 }
 
-/// Runs a scenario's expectations against a list of input events.
-fn run_events(
-    exercise: &Exercise,
-    s: &Scenario,
-    events: &[Event],
-    mut sim: Simulator,
-    build: &crate::build::ProjectBuild,
-) -> Result<Option<Failure>, ExerciseError> {
-    let expectations = s.expectations()?;
-    let cycle = s.cycle_ns()?;
-    let end = s.duration_ns()?;
-    sim.set_cycle_ns(cycle);
-    let mut probes: Vec<ProbeId> = Vec::new();
-    for e in &expectations {
-        match sim.add_probe(e.condition()) {
-            Ok(p) => probes.push(p),
-            Err(err) => {
-                return Ok(Some(Failure {
-                    expected: e.describe(),
-                    actual: format!("the condition does not check against the program: {err}"),
-                    scan: 0,
-                    time_ns: 0,
-                    window: Vec::new(),
-                }))
+impl Run<'_> {
+    /// The first wrong expectation, if any. A random scenario runs its runs until one
+    /// fails, then shrinks that run's events to a shortest failing list.
+    fn failure(&self, sim: Simulator) -> Result<Option<Failure>, ExerciseError> {
+        let s = self.scenario;
+        let Some(random) = s.random else {
+            return self.events(&super::random::step_events(s), sim);
+        };
+        for k in 0..random.runs {
+            let seed = random.seed.wrapping_add(u64::from(k));
+            let events = super::random::events(s, seed)?;
+            let Some(_) = self.events(&events, sim.clone())? else { continue };
+            let shortest = super::random::shrink(events, |e| {
+                matches!(self.events(e, sim.clone()), Ok(Some(_)))
+            });
+            let Some(mut failure) = self.events(&shortest, sim.clone())? else {
+                continue;
+            };
+            let list: Vec<String> = shortest
+                .iter()
+                .map(|(t, name, value)| format!("{} {name} := {value}", time_text(*t)))
+                .collect();
+            failure.actual = format!(
+                "{} — random run with seed {seed} (replay: random = {{ runs = 1, seed = {seed} }}); shortest failing events: {}",
+                failure.actual,
+                if list.is_empty() { "none".to_string() } else { list.join(", ") }
+            );
+            return Ok(Some(failure));
+        }
+        Ok(None)
+    }
+
+    /// Runs the scenario's expectations against a list of input events.
+    fn events(
+        &self,
+        events: &[Event],
+        mut sim: Simulator,
+    ) -> Result<Option<Failure>, ExerciseError> {
+        let (exercise, s) = (self.exercise, self.scenario);
+        let expectations = s.expectations()?;
+        let cycle = s.cycle_ns()?;
+        let end = s.duration_ns()?;
+        sim.set_cycle_ns(cycle);
+        let mut probes: Vec<ProbeId> = Vec::new();
+        for e in &expectations {
+            match sim.add_probe(e.condition()) {
+                Ok(p) => probes.push(p),
+                Err(err) => {
+                    return Ok(Some(Failure {
+                        condition: Some(e.condition().to_string()),
+                        expected: e.describe(),
+                        actual: format!("the condition does not check against the program: {err}"),
+                        scan: 0,
+                        time_ns: 0,
+                        window: Vec::new(),
+                    }))
+                }
             }
         }
-    }
-    // Per expectation: decided already (an `At` checked, a `Becomes` seen or missed).
-    let mut done = vec![false; expectations.len()];
-    // Per expectation: its value on the scan before (for `becomes`).
-    let mut prev: Vec<Option<bool>> = vec![None; expectations.len()];
-    let mut samples: Vec<Sample> = Vec::new();
-    let mut next_step = 0;
-    let mut failure: Option<(usize, Failure)> = None;
-    let sample = |sim: &Simulator| Sample {
-        scan: sim.scan_count(),
-        time_ns: sim.time_ns(),
-        values: exercise
-            .interface
-            .iter()
-            .map(|v| {
-                (v.name.clone(), sim.read(&v.name).map(|x| value_text(&x)).unwrap_or_default())
-            })
-            .collect(),
-    };
-    while sim.time_ns() < end && failure.is_none() {
-        while next_step < events.len() && events[next_step].0 <= sim.time_ns() {
-            let (_, name, value) = &events[next_step];
-            sim.hold(name, value).map_err(|e| ExerciseError {
-                message: format!("scenario “{}”: {name} cannot be set: {e}", s.name),
-            })?;
-            next_step += 1;
-        }
-        if let ScanOutcome::Fault(info) = sim.scan() {
-            let at = place(&build.site_of(info.span));
-            let actual = format!(
-                "the program stopped with a FAULT at {at} on scan {} ({}): {}",
-                info.scan,
-                time_text(info.time_ns),
-                info.fault
-            );
-            failure = Some((
-                samples.len(),
-                Failure {
+        // Per expectation: decided already (an `At` checked, a `Becomes` seen or missed).
+        let mut done = vec![false; expectations.len()];
+        // Per expectation: its value on the scan before (for `becomes`).
+        let mut prev: Vec<Option<bool>> = vec![None; expectations.len()];
+        // The last scans (at most `window` before the one being checked), each with every
+        // expectation's value on it.
+        let mut recent: VecDeque<(Sample, Vec<bool>)> = VecDeque::new();
+        let mut next_step = 0;
+        // Time and scans before the last restart (a restart sets the PLC's clock to 0).
+        let (mut base_ns, mut base_scans) = (0i64, 0u64);
+        let mut failure: Option<(Option<usize>, Failure)> = None;
+        let sample = |sim: &mut Simulator, base_ns: i64, base_scans: u64| {
+            let values = exercise
+                .interface
+                .iter()
+                .map(|v| {
+                    (v.name.clone(), sim.read(&v.name).map(|x| value_text(&x)).unwrap_or_default())
+                })
+                .collect();
+            let checks: Vec<bool> = probes.iter().map(|p| sim.probe(*p)).collect();
+            let time_ns = base_ns + sim.time_ns();
+            let scan = base_scans + sim.scan_count();
+            (Sample { scan, time_ns, values, actual: None, expected: None }, checks)
+        };
+        while base_ns + sim.time_ns() < end && failure.is_none() {
+            let now = base_ns + sim.time_ns();
+            while next_step < events.len() && events[next_step].0 <= now {
+                let (_, name, value) = &events[next_step];
+                next_step += 1;
+                if name == RESTART {
+                    base_ns += sim.time_ns();
+                    base_scans += sim.scan_count();
+                    if value == "cold" {
+                        sim.cold_restart();
+                    } else {
+                        sim.warm_restart();
+                    }
+                    continue;
+                }
+                sim.hold(name, value).map_err(|e| ExerciseError {
+                    message: format!("scenario “{}”: {name} cannot be set: {e}", s.name),
+                })?;
+            }
+            if let ScanOutcome::Fault(info) = sim.scan() {
+                let at = place(&self.build.site_of(info.span));
+                let (scan, time_ns) = (base_scans + info.scan, base_ns + info.time_ns);
+                let actual = format!(
+                    "the program stopped with a FAULT at {at} on scan {scan} ({}): {}",
+                    time_text(time_ns),
+                    info.fault
+                );
+                let failure_here = Failure {
+                    condition: None,
                     expected: "no FAULT".into(),
                     actual,
-                    scan: info.scan,
-                    time_ns: info.time_ns,
+                    scan,
+                    time_ns,
                     window: Vec::new(),
-                },
-            ));
-            break;
-        }
-        let now = sim.time_ns();
-        samples.push(sample(&sim));
-        for (i, e) in expectations.iter().enumerate() {
-            let value = sim.probe(probes[i]);
-            let wrong = match e {
-                // Checked once, on the first scan that ends at or after `at`.
-                Expectation::At { at, .. } if !done[i] && now >= *at => {
-                    done[i] = true;
-                    !value
-                }
-                Expectation::At { .. } => false,
-                // A rising edge (FALSE on the scan before, TRUE now): wrong before `from`,
-                // right up to `to`; none by `to` is wrong too.
-                Expectation::Becomes { from, to, .. } if !done[i] => {
-                    let rose = prev[i] == Some(false) && value;
-                    if rose {
-                        done[i] = true;
-                        now < *from || now > *to
-                    } else if now >= *to {
-                        done[i] = true;
-                        true
-                    } else {
-                        false
-                    }
-                }
-                Expectation::Becomes { .. } => false,
-                Expectation::Holds { from, to, .. } => now >= *from && now <= *to && !value,
-                Expectation::Never { .. } => value,
-                Expectation::Always { .. } => !value,
-            };
-            prev[i] = Some(value);
-            if wrong {
-                let actual = format!(
-                    "{} was {} at {} (scan {})",
-                    e.condition(),
-                    if value { "TRUE" } else { "FALSE" },
-                    time_text(now),
-                    sim.scan_count()
-                );
-                failure = Some((
-                    samples.len() - 1,
-                    Failure {
-                        expected: e.describe(),
-                        actual,
-                        scan: sim.scan_count(),
-                        time_ns: now,
-                        window: Vec::new(),
-                    },
-                ));
+                };
+                failure = Some((None, failure_here));
                 break;
             }
+            let now = base_ns + sim.time_ns();
+            let (here, checks) = sample(&mut sim, base_ns, base_scans);
+            for (i, e) in expectations.iter().enumerate() {
+                let value = checks[i];
+                let wrong = match e {
+                    // Checked once, on the first scan that ends at or after `at`.
+                    Expectation::At { at, .. } if !done[i] && now >= *at => {
+                        done[i] = true;
+                        !value
+                    }
+                    Expectation::At { .. } => false,
+                    // A rising edge (FALSE on the scan before, TRUE now): wrong before
+                    // `from`, right up to `to`; none by `to` is wrong too.
+                    Expectation::Becomes { from, to, .. } if !done[i] => {
+                        let rose = prev[i] == Some(false) && value;
+                        if rose {
+                            done[i] = true;
+                            now < *from || now > *to
+                        } else if now >= *to {
+                            done[i] = true;
+                            true
+                        } else {
+                            false
+                        }
+                    }
+                    Expectation::Becomes { .. } => false,
+                    Expectation::Holds { from, to, .. } => now >= *from && now <= *to && !value,
+                    Expectation::Never { .. } => value,
+                    Expectation::Always { .. } => !value,
+                };
+                prev[i] = Some(value);
+                if wrong {
+                    let actual = format!(
+                        "{} was {} at {} (scan {})",
+                        e.condition(),
+                        if value { "TRUE" } else { "FALSE" },
+                        time_text(now),
+                        here.scan
+                    );
+                    let failure_here = Failure {
+                        condition: Some(e.condition().to_string()),
+                        expected: e.describe(),
+                        actual,
+                        scan: here.scan,
+                        time_ns: now,
+                        window: Vec::new(),
+                    };
+                    failure = Some((Some(i), failure_here));
+                    break;
+                }
+            }
+            recent.push_back((here, checks));
+            if recent.len() > self.window + 1 {
+                recent.pop_front();
+            }
         }
-    }
-    let Some((at, mut failure)) = failure else { return Ok(None) };
-    // The scans after the first wrong one, then the window around it.
-    for _ in 0..WINDOW {
-        if !matches!(sim.scan(), ScanOutcome::Completed | ScanOutcome::Breakpoint(_)) {
-            break;
+        let Some((which, mut failure)) = failure else { return Ok(None) };
+        // The scans after the first wrong one.
+        for _ in 0..self.window {
+            if !matches!(sim.scan(), ScanOutcome::Completed | ScanOutcome::Breakpoint(_)) {
+                break;
+            }
+            recent.push_back(sample(&mut sim, base_ns, base_scans));
         }
-        samples.push(sample(&sim));
+        let expectation = which.and_then(|i| expectations.get(i));
+        failure.window = recent
+            .into_iter()
+            .map(|(mut sample, checks)| {
+                if let (Some(i), Some(e)) = (which, expectation) {
+                    sample.actual = checks.get(i).copied();
+                    sample.expected = e.expected_at(sample.time_ns, cycle);
+                }
+                sample
+            })
+            .collect();
+        Ok(Some(failure))
     }
-    let start = at.saturating_sub(WINDOW);
-    failure.window = samples.get(start..).map(<[Sample]>::to_vec).unwrap_or_default();
-    Ok(Some(failure))
 }

@@ -4,13 +4,17 @@
 
 mod format;
 mod grade;
+mod link;
 mod random;
+mod statement;
 
 pub use format::{
     parse_duration, scenarios_from_toml, time_text, Direction, Exercise, ExerciseError, Expect,
-    Expectation, InterfaceVar, Random, RandomInput, Scenario, Step,
+    Expectation, InterfaceVar, Random, RandomInput, Restart, Scenario, Step,
 };
-pub use grade::{grade, Failure, Report, Sample, ScenarioReport};
+pub use grade::{grade, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport};
+pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
+pub use statement::statement_html;
 
 #[cfg(test)]
 mod tests;

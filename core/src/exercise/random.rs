@@ -7,10 +7,14 @@
 //! drops events one at a time while the run still fails, so the list printed is one no
 //! event of which can be left out.
 
-use super::format::{parse_duration, ExerciseError, Scenario};
+use super::format::{parse_duration, ExerciseError, Restart, Scenario};
 
-/// An input set at a time: (time in ns, input, IEC literal).
+/// An input set at a time: (time in ns, input, IEC literal); or a restart, with
+/// [`RESTART`] for the input and `warm` or `cold` for the value.
 pub type Event = (i64, String, String);
+
+/// The input name of a restart event.
+pub const RESTART: &str = "(restart)";
 
 /// SplitMix64.
 struct Rng(u64);
@@ -87,6 +91,13 @@ pub fn step_events(s: &Scenario) -> Vec<Event> {
     let mut out = Vec::new();
     for step in &s.steps {
         let at = parse_duration(&step.at).unwrap_or(0);
+        if let Some(kind) = step.restart {
+            let kind = match kind {
+                Restart::Warm => "warm",
+                Restart::Cold => "cold",
+            };
+            out.push((at, RESTART.to_string(), kind.to_string()));
+        }
         for (name, value) in &step.set {
             out.push((at, name.clone(), literal(value)));
         }

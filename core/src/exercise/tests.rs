@@ -223,3 +223,78 @@ fn random_scenarios_check_safety_rules_only_and_say_how_long_they_run() {
     let e = Exercise::from_toml(&at).unwrap_err();
     assert!(e.message.contains("only `never` and `always`"), "{e}");
 }
+
+#[test]
+fn a_failure_window_draws_the_condition_against_what_it_should_be() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let no_seal = "PROGRAM Main
+VAR_INPUT Start, Stop : BOOL; END_VAR
+VAR_OUTPUT Motor : BOOL; END_VAR
+Motor := Start AND NOT Stop;
+END_PROGRAM
+";
+    let report = grade_with(&e, &project(no_seal), GradeOptions { window: 30 }).unwrap();
+    let f = report.scenarios[0].failure.as_ref().unwrap();
+    assert_eq!(f.condition.as_deref(), Some("Motor"));
+    // Every scan before the wrong one (scan 21 at 0.21 s: only 20, fewer than 30), the
+    // wrong one and 30 after.
+    let scans: Vec<u64> = f.window.iter().map(|s| s.scan).collect();
+    assert_eq!(scans, (1..=51).collect::<Vec<u64>>());
+    let wrong = f.window.iter().find(|s| s.scan == f.scan).unwrap();
+    assert_eq!((wrong.actual, wrong.expected), (Some(false), Some(true)));
+    // Before the `holds` window any value is right; Motor was TRUE while Start was held.
+    let held = f.window.iter().find(|s| s.scan == 15).unwrap();
+    assert_eq!((held.actual, held.expected), (Some(true), None));
+}
+
+#[test]
+fn a_warm_restart_step_keeps_retain_variables_and_the_scenario_clock_goes_on() {
+    let toml = r#"
+id = "retain"
+title = "Retained counter"
+level = 2
+
+[[interface]]
+name = "Pulse"
+type = "BOOL"
+direction = "input"
+
+[[interface]]
+name = "Count"
+type = "INT"
+direction = "output"
+
+[[scenario]]
+name = "Count survives a power cycle"
+step = [
+  { at = "0s", set = { Pulse = false } },
+  { at = "100ms", set = { Pulse = true } },
+  { at = "200ms", set = { Pulse = false } },
+  { at = "300ms", restart = "warm" },
+]
+expect = [
+  { that = "Count = 1", at = "250ms" },
+  { holds = "Count = 1", from = "300ms", to = "500ms" },
+]
+"#;
+    let e = Exercise::from_toml(toml).unwrap();
+    let body = "VAR_INPUT Pulse : BOOL; END_VAR
+VAR_OUTPUT Count : INT; END_VAR
+VAR Edge : R_TRIG; END_VAR
+Edge(CLK := Pulse);
+IF Edge.Q THEN Count := Count + 1; END_IF;
+END_PROGRAM
+";
+    let retained = format!("PROGRAM Main\n{body}")
+        .replace("VAR_OUTPUT Count : INT;", "VAR_OUTPUT RETAIN Count : INT;");
+    let report = grade(&e, &project(&retained)).unwrap();
+    assert_eq!(report.score, 1, "{report:?}");
+    let plain = format!("PROGRAM Main\n{body}");
+    let report = grade(&e, &project(&plain)).unwrap();
+    let f = report.scenarios[0].failure.as_ref().unwrap();
+    // The scenario's clock runs on across the restart: the counter is 0 from 0.3 s.
+    assert_eq!(f.actual, "Count = 1 was FALSE at 0.31 s (scan 31)");
+    let bad = toml.replace(r#"{ at = "300ms", restart = "warm" }"#, r#"{ at = "300ms" }"#);
+    let err = Exercise::from_toml(&bad).unwrap_err().message;
+    assert!(err.contains("neither sets inputs"), "{err}");
+}

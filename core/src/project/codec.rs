@@ -43,17 +43,26 @@ impl std::error::Error for ShareError {}
 /// Encodes a project as a URL fragment (without `#`): `p=<base64url(deflate(json))>`.
 pub fn encode_share(project: &Project) -> String {
     let json = serde_json::to_vec(project).unwrap_or_default();
-    let packed = miniz_oxide::deflate::compress_to_vec(&json, 9);
-    format!("{SHARE_PREFIX}{}", URL_SAFE_NO_PAD.encode(packed))
+    format!("{SHARE_PREFIX}{}", pack(&json))
 }
 
 /// Decodes a URL fragment (with or without `#`) made by [`encode_share`].
 pub fn decode_share(fragment: &str) -> Result<Project, ShareError> {
     let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
     let data = fragment.strip_prefix(SHARE_PREFIX).ok_or(ShareError::NotAShareLink)?;
-    let packed = URL_SAFE_NO_PAD.decode(data.trim()).map_err(|_| ShareError::BadEncoding)?;
-    let json = miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_PROJECT_BYTES)
-        .map_err(|_| ShareError::BadCompression)?;
-    let text = String::from_utf8(json).map_err(|_| ShareError::BadCompression)?;
+    let text = unpack(data)?;
     Project::from_file(&text).map_err(ShareError::BadProject)
+}
+
+/// Text compressed for a link: base64url of its DEFLATE.
+pub fn pack(bytes: &[u8]) -> String {
+    URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(bytes, 9))
+}
+
+/// The text [`pack`] packed, at most [`MAX_PROJECT_BYTES`] long.
+pub fn unpack(data: &str) -> Result<String, ShareError> {
+    let packed = URL_SAFE_NO_PAD.decode(data.trim()).map_err(|_| ShareError::BadEncoding)?;
+    let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&packed, MAX_PROJECT_BYTES)
+        .map_err(|_| ShareError::BadCompression)?;
+    String::from_utf8(bytes).map_err(|_| ShareError::BadCompression)
 }

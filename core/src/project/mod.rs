@@ -10,7 +10,7 @@ mod history;
 mod pous;
 mod store;
 
-pub use codec::{decode_share, encode_share, ShareError, SHARE_PREFIX};
+pub use codec::{decode_share, encode_share, pack, unpack, ShareError, SHARE_PREFIX};
 pub use history::{History, DEFAULT_HISTORY_LIMIT};
 pub use pous::PouError;
 pub use store::{

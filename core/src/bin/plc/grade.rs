@@ -5,7 +5,9 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use plc_core::exercise::{grade, scenarios_from_toml, time_text, Exercise, Report};
+use plc_core::exercise::{
+    grade, scenarios_from_toml, time_text, Exercise, ExerciseLink, LinkedFile, Report,
+};
 
 /// How the grades are printed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -206,6 +208,15 @@ pub enum ExerciseCommand {
         /// The exercise's id (also its folder).
         id: String,
     },
+    /// Print a link that carries the whole exercise (its file and its starter, never the
+    /// hidden scenarios nor the reference) in its fragment: `#x=…`.
+    Link {
+        /// The exercise file (TOML).
+        exercise: PathBuf,
+        /// The trainer's address to put before the fragment (`https://host/plc/`).
+        #[arg(long, value_name = "URL", default_value = "")]
+        base: String,
+    },
 }
 
 /// Runs `plc exercise …`.
@@ -215,6 +226,37 @@ pub fn exercise(command: ExerciseCommand) -> ExitCode {
             validate(&exercise, scenarios.as_deref())
         }
         ExerciseCommand::New { id } => new(&id),
+        ExerciseCommand::Link { exercise, base } => link(&exercise, &base),
+    }
+}
+
+/// `plc exercise link`: the exercise and its starter, packed into a URL fragment.
+fn link(path: &Path, base: &str) -> ExitCode {
+    let made = (|| -> Result<String, String> {
+        let text = read(path)?;
+        let exercise =
+            Exercise::from_toml(&text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
+        let starter = match &exercise.starter {
+            Some(name) => {
+                let file = path.parent().unwrap_or(Path::new(".")).join(name);
+                Some(LinkedFile { name: name.clone(), text: read(&file)? })
+            }
+            None => None,
+        };
+        let fragment = ExerciseLink { exercise: text, starter }
+            .encode()
+            .map_err(|e| format!("plc: {}: {e}", path.display()))?;
+        Ok(format!("{base}#{fragment}"))
+    })();
+    match made {
+        Ok(url) => {
+            println!("{url}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::from(2)
+        }
     }
 }
 
