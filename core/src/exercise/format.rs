@@ -3,7 +3,7 @@
 //! duration reads, every expectation says exactly one thing. Errors name the line and
 //! column in the file, or the scenario and expectation they are about.
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::fmt;
 
@@ -38,7 +38,7 @@ pub struct Exercise {
 }
 
 /// One variable of the interface.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct InterfaceVar {
     /// Its name.
@@ -54,7 +54,7 @@ pub struct InterfaceVar {
 }
 
 /// Whether an interface variable is an input or an output of the solution.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Direction {
     /// Set by the scenario (VAR_INPUT).

@@ -6,12 +6,14 @@
 
 use std::collections::VecDeque;
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use crate::build::{build_project, Site};
 use crate::export::value_text;
+use crate::program::Slot;
 use crate::project::Project;
 use crate::sim::{ProbeId, ScanOutcome, Simulator};
+use crate::vm::Value;
 
 use super::format::{time_text, Direction, Exercise, ExerciseError, Expectation, Scenario};
 use super::random::RESTART;
@@ -31,7 +33,7 @@ impl Default for GradeOptions {
 }
 
 /// The interface's values after one scan.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Sample {
     /// The scan (1-based, counted across restarts).
     pub scan: u64,
@@ -46,7 +48,7 @@ pub struct Sample {
 }
 
 /// The first wrong expectation of a scenario.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Failure {
     /// The condition that was wrong (`Motor`), or `None` for a FAULT.
     pub condition: Option<String>,
@@ -63,7 +65,7 @@ pub struct Failure {
 }
 
 /// One scenario's result.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ScenarioReport {
     /// Its name.
     pub name: String,
@@ -83,7 +85,7 @@ impl ScenarioReport {
 }
 
 /// A submission's grade.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Report {
     /// Why nothing could run (the project does not build, has no PROGRAM …), located.
     pub error: Option<String>,
@@ -160,6 +162,15 @@ pub fn grade_with(
 
 use super::random::Event;
 
+/// A scan as the grader keeps it until a report needs it: the interface's values as the
+/// VM holds them and every expectation's condition.
+struct Raw {
+    scan: u64,
+    time_ns: i64,
+    values: Vec<Option<Value>>,
+    checks: Vec<bool>,
+}
+
 /// One scenario run on one submission.
 struct Run<'a> {
     exercise: &'a Exercise,
@@ -233,23 +244,20 @@ impl Run<'_> {
         let mut prev: Vec<Option<bool>> = vec![None; expectations.len()];
         // The last scans (at most `window` before the one being checked), each with every
         // expectation's value on it.
-        let mut recent: VecDeque<(Sample, Vec<bool>)> = VecDeque::new();
+        let mut recent: VecDeque<Raw> = VecDeque::new();
         let mut next_step = 0;
         // Time and scans before the last restart (a restart sets the PLC's clock to 0).
         let (mut base_ns, mut base_scans) = (0i64, 0u64);
         let mut failure: Option<(Option<usize>, Failure)> = None;
-        let sample = |sim: &mut Simulator, base_ns: i64, base_scans: u64| {
-            let values = exercise
-                .interface
-                .iter()
-                .map(|v| {
-                    (v.name.clone(), sim.read(&v.name).map(|x| value_text(&x)).unwrap_or_default())
-                })
-                .collect();
-            let checks: Vec<bool> = probes.iter().map(|p| sim.probe(*p)).collect();
-            let time_ns = base_ns + sim.time_ns();
-            let scan = base_scans + sim.scan_count();
-            (Sample { scan, time_ns, values, actual: None, expected: None }, checks)
+        // The interface's slots, looked up once; values are written out as text only for
+        // the scans a report shows.
+        let slots: Vec<Option<Slot>> =
+            exercise.interface.iter().map(|v| sim.locate(&v.name).ok()).collect();
+        let sample = |sim: &mut Simulator, base_ns: i64, base_scans: u64| Raw {
+            scan: base_scans + sim.scan_count(),
+            time_ns: base_ns + sim.time_ns(),
+            values: slots.iter().map(|s| s.as_ref().map(|s| sim.read_slot(s))).collect(),
+            checks: probes.iter().map(|p| sim.probe(*p)).collect(),
         };
         while base_ns + sim.time_ns() < end && failure.is_none() {
             let now = base_ns + sim.time_ns();
@@ -290,9 +298,9 @@ impl Run<'_> {
                 break;
             }
             let now = base_ns + sim.time_ns();
-            let (here, checks) = sample(&mut sim, base_ns, base_scans);
+            let here = sample(&mut sim, base_ns, base_scans);
             for (i, e) in expectations.iter().enumerate() {
-                let value = checks[i];
+                let value = here.checks.get(i).copied().unwrap_or(false);
                 let wrong = match e {
                     // Checked once, on the first scan that ends at or after `at`.
                     Expectation::At { at, .. } if !done[i] && now >= *at => {
@@ -340,7 +348,7 @@ impl Run<'_> {
                     break;
                 }
             }
-            recent.push_back((here, checks));
+            recent.push_back(here);
             if recent.len() > self.window + 1 {
                 recent.pop_front();
             }
@@ -356,12 +364,17 @@ impl Run<'_> {
         let expectation = which.and_then(|i| expectations.get(i));
         failure.window = recent
             .into_iter()
-            .map(|(mut sample, checks)| {
-                if let (Some(i), Some(e)) = (which, expectation) {
-                    sample.actual = checks.get(i).copied();
-                    sample.expected = e.expected_at(sample.time_ns, cycle);
-                }
-                sample
+            .map(|raw| Sample {
+                scan: raw.scan,
+                time_ns: raw.time_ns,
+                values: exercise
+                    .interface
+                    .iter()
+                    .zip(&raw.values)
+                    .map(|(v, x)| (v.name.clone(), x.as_ref().map(value_text).unwrap_or_default()))
+                    .collect(),
+                actual: which.and_then(|i| raw.checks.get(i).copied()),
+                expected: expectation.and_then(|e| e.expected_at(raw.time_ns, cycle)),
             })
             .collect();
         Ok(Some(failure))

@@ -7,6 +7,7 @@ mod grade;
 mod link;
 mod random;
 mod statement;
+mod view;
 
 pub use format::{
     parse_duration, scenarios_from_toml, time_text, Direction, Exercise, ExerciseError, Expect,
@@ -15,6 +16,7 @@ pub use format::{
 pub use grade::{grade, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport};
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
 pub use statement::statement_html;
+pub use view::{ExerciseView, ScenarioView};
 
 #[cfg(test)]
 mod tests;

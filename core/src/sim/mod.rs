@@ -379,6 +379,17 @@ impl Simulator {
         }
     }
 
+    /// Where a variable lives, for reading it every scan with [`Simulator::read_slot`]
+    /// without looking its name up each time.
+    pub fn locate(&self, path: &str) -> Result<Slot, SimError> {
+        self.slot(path)
+    }
+
+    /// Reads the variable at a slot from [`Simulator::locate`].
+    pub fn read_slot(&self, slot: &Slot) -> Value {
+        vm::read(self.machine.memory(), &self.exe, slot)
+    }
+
     /// Reads a variable (`Name`, `Name.field`, `Arr[2]`, `Fb.Q`, `Word.3`).
     pub fn read(&self, path: &str) -> Result<Value, SimError> {
         let slot = self.slot(path)?;

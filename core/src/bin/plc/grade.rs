@@ -79,21 +79,28 @@ pub fn run(
     let jobs = jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .clamp(1, 64);
-    let mut rows: Vec<Option<Row>> = (0..files.len()).map(|_| None).collect();
-    let chunk = files.len().div_ceil(jobs).max(1);
+    // Each worker takes the next submission not yet taken, so slow ones (a right answer
+    // runs every random run) spread over the workers whatever their order.
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let rows: std::sync::Mutex<Vec<Option<Row>>> =
+        std::sync::Mutex::new((0..files.len()).map(|_| None).collect());
     std::thread::scope(|scope| {
-        for (files, rows) in files.chunks(chunk).zip(rows.chunks_mut(chunk)) {
-            let ex = &ex;
-            scope.spawn(move || {
-                for (file, row) in files.iter().zip(rows) {
-                    let result = super::load_project(file).and_then(|project| {
-                        grade(ex, &project).map_err(|e| format!("plc: the exercise: {e}"))
-                    });
-                    *row = Some(Row { name: file.display().to_string(), result });
+        for _ in 0..jobs.min(files.len().max(1)) {
+            let (ex, files, next, rows) = (&ex, &files, &next, &rows);
+            scope.spawn(move || loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some(file) = files.get(i) else { break };
+                let result = super::load_project(file).and_then(|project| {
+                    grade(ex, &project).map_err(|e| format!("plc: the exercise: {e}"))
+                });
+                let row = Row { name: file.display().to_string(), result };
+                if let Some(slot) = rows.lock().ok().as_mut().and_then(|r| r.get_mut(i)) {
+                    *slot = Some(row);
                 }
             });
         }
     });
+    let rows = rows.into_inner().unwrap_or_default();
     let rows: Vec<Row> = rows.into_iter().flatten().collect();
     match format {
         Format::Text => print_text(&rows),

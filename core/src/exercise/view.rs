@@ -1,0 +1,156 @@
+//! What a page shows of an exercise: its title, level, languages, the statement as HTML,
+//! the interface and the scenarios' names and weights — never the scenarios' steps and
+//! expectations, which the grader keeps — and the program a student starts from when the
+//! exercise names no starter file.
+
+use serde::{Deserialize, Serialize};
+
+use super::format::{Direction, Exercise, InterfaceVar};
+use super::statement::statement_html;
+
+/// An exercise as the page shows it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ExerciseView {
+    /// Its id (`latch`).
+    pub id: String,
+    /// Its title.
+    pub title: String,
+    /// 1 (beginner) … 5 (advanced).
+    pub level: u8,
+    /// The languages a solution may use (`st`, `ld`, `petri`, `sfc`).
+    pub languages: Vec<String>,
+    /// The statement, rendered (see [`statement_html`]).
+    pub statement_html: String,
+    /// The variables the solution declares.
+    pub interface: Vec<InterfaceVar>,
+    /// Each scenario's name and weight, in order.
+    pub scenarios: Vec<ScenarioView>,
+    /// The starter file the exercise names, if any.
+    pub starter: Option<String>,
+}
+
+/// A scenario as the page lists it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ScenarioView {
+    /// Its name.
+    pub name: String,
+    /// Its weight.
+    pub weight: u32,
+    /// Whether it runs random input histories.
+    pub random: bool,
+}
+
+impl ExerciseView {
+    /// The view of `exercise`; relative links in its statement are resolved against
+    /// `base`, the exercise file's address.
+    pub fn of(exercise: &Exercise, base: Option<&str>) -> ExerciseView {
+        ExerciseView {
+            id: exercise.id.clone(),
+            title: exercise.title.clone(),
+            level: exercise.level,
+            languages: exercise.languages.clone(),
+            statement_html: statement_html(&exercise.statement, base),
+            interface: exercise.interface.clone(),
+            scenarios: exercise
+                .scenarios
+                .iter()
+                .map(|s| ScenarioView {
+                    name: s.name.clone(),
+                    weight: s.weight,
+                    random: s.random.is_some(),
+                })
+                .collect(),
+            starter: exercise.starter.clone(),
+        }
+    }
+}
+
+impl Exercise {
+    /// A program that declares the interface and does nothing else: what a student starts
+    /// from when the exercise names no starter.
+    pub fn blank_program(&self) -> String {
+        let mut text = String::from("PROGRAM Main\n");
+        for (direction, keyword) in
+            [(Direction::Input, "VAR_INPUT"), (Direction::Output, "VAR_OUTPUT")]
+        {
+            let vars: Vec<&InterfaceVar> =
+                self.interface.iter().filter(|v| v.direction == direction).collect();
+            if vars.is_empty() {
+                continue;
+            }
+            text.push_str(keyword);
+            text.push('\n');
+            for v in vars {
+                let meaning = v.meaning.replace("*)", "* )");
+                if meaning.is_empty() {
+                    text.push_str(&format!("    {} : {};\n", v.name, v.ty));
+                } else {
+                    text.push_str(&format!("    {} : {}; (* {meaning} *)\n", v.name, v.ty));
+                }
+            }
+            text.push_str("END_VAR\n");
+        }
+        text.push_str("\n(* your program *)\n\nEND_PROGRAM\n");
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use crate::project::Project;
+
+    const FILE: &str = r#"
+id = "lamp"
+title = "Lamp"
+level = 1
+statement = "Light `Lamp` while **Start** is held."
+
+[[interface]]
+name = "Start"
+type = "BOOL"
+direction = "input"
+meaning = "a button (NO)"
+
+[[interface]]
+name = "Lamp"
+type = "BOOL"
+direction = "output"
+
+[[scenario]]
+name = "Follows"
+weight = 3
+step = [ { at = "0s", set = { Start = true } } ]
+expect = [ { that = "Lamp", at = "20ms" } ]
+"#;
+
+    #[test]
+    fn the_view_has_the_statement_as_html_and_no_expectations() {
+        let e = Exercise::from_toml(FILE).unwrap();
+        let v = ExerciseView::of(&e, None);
+        assert!(v.statement_html.contains("<code>Lamp</code>"));
+        assert_eq!(
+            v.scenarios,
+            vec![ScenarioView { name: "Follows".into(), weight: 3, random: false }]
+        );
+        let json = serde_json::to_string(&v).unwrap();
+        assert!(!json.contains("20ms"), "{json}");
+        let back: ExerciseView = serde_json::from_str(&json).unwrap();
+        assert_eq!(back, v);
+    }
+
+    #[test]
+    fn the_blank_program_declares_the_interface_and_fails() {
+        let e = Exercise::from_toml(FILE).unwrap();
+        let text = e.blank_program();
+        assert!(
+            text.contains("VAR_INPUT\n    Start : BOOL; (* a button (NO) *)\nEND_VAR"),
+            "{text}"
+        );
+        let mut p = Project::new("attempt");
+        p.source = text;
+        let report = super::super::grade(&e, &p).unwrap();
+        assert_eq!((report.error, report.score, report.total), (None, 0, 3));
+    }
+}
