@@ -13,6 +13,7 @@ use crate::export::value_text;
 use crate::program::Slot;
 use crate::project::Project;
 use crate::sim::{ProbeId, ScanOutcome, Simulator};
+use crate::syntax::VarSection;
 use crate::vm::Value;
 
 use super::format::{time_text, Direction, Exercise, ExerciseError, Expectation, Scenario};
@@ -105,6 +106,35 @@ fn place(site: &Site) -> String {
     }
 }
 
+/// Why the program's declarations do not match the exercise's interface: every interface
+/// variable must be declared by the running PROGRAM in its section (VAR_INPUT or
+/// VAR_OUTPUT) with its type.
+fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<String> {
+    let exe = sim.executable();
+    exercise.interface.iter().find_map(|v| {
+        let (section, keyword) = match v.direction {
+            Direction::Input => (VarSection::Input, "VAR_INPUT"),
+            Direction::Output => (VarSection::Output, "VAR_OUTPUT"),
+        };
+        let asked = format!("{keyword} {} : {}", v.name, v.ty);
+        let Some(entry) =
+            exe.main_vars().iter().find(|e| !e.global && e.var.name.eq_ignore_ascii_case(&v.name))
+        else {
+            return Some(format!("the program does not declare {} ({asked})", v.name));
+        };
+        if entry.var.section != section {
+            return Some(format!(
+                "the program declares {} in another section than the exercise asks ({asked})",
+                v.name
+            ));
+        }
+        let ty = exe.type_table().display(entry.var.ty).to_string();
+        (!ty.eq_ignore_ascii_case(v.ty.trim())).then(|| {
+            format!("the program declares {} as {ty}, but the exercise asks for {asked}", v.name)
+        })
+    })
+}
+
 /// Grades `project` against `exercise`: every scenario on a fresh PLC.
 pub fn grade(exercise: &Exercise, project: &Project) -> Result<Report, ExerciseError> {
     grade_with(exercise, project, GradeOptions::default())
@@ -133,17 +163,8 @@ pub fn grade_with(
         Ok(sim) => sim,
         Err(d) => return Ok(not_run(format!("the program cannot run: {}", d.message))),
     };
-    for v in &exercise.interface {
-        if sim.read(&v.name).is_err() {
-            let what = match v.direction {
-                Direction::Input => "VAR_INPUT",
-                Direction::Output => "VAR_OUTPUT",
-            };
-            return Ok(not_run(format!(
-                "the program does not declare {} ({what} {} : {})",
-                v.name, v.name, v.ty
-            )));
-        }
+    if let Some(problem) = interface_problem(exercise, &sim) {
+        return Ok(not_run(problem));
     }
     let mut scenarios = Vec::new();
     for s in &exercise.scenarios {

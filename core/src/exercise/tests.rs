@@ -150,6 +150,19 @@ fn broken_missing_and_faulting_programs_are_reported_with_their_place() {
         r.error.as_deref(),
         Some("the program does not declare Motor (VAR_OUTPUT Motor : BOOL)")
     );
+    // Declared, but as a local or with another type: the interface is a contract.
+    let local = GOOD.replace("VAR_OUTPUT Motor : BOOL; END_VAR", "VAR Motor : BOOL; END_VAR");
+    assert_eq!(
+        grade(&e, &project(&local)).unwrap().error.as_deref(),
+        Some("the program declares Motor in another section than the exercise asks (VAR_OUTPUT Motor : BOOL)")
+    );
+    let int = GOOD
+        .replace("VAR_INPUT Start, Stop : BOOL;", "VAR_INPUT Start : BOOL; Stop : INT;")
+        .replace("NOT Stop", "Stop = 0");
+    assert_eq!(
+        grade(&e, &project(&int)).unwrap().error.as_deref(),
+        Some("the program declares Stop as INT, but the exercise asks for VAR_INPUT Stop : BOOL")
+    );
     let faulting = "PROGRAM Main
 VAR_INPUT Start, Stop : BOOL; END_VAR
 VAR_OUTPUT Motor : BOOL; END_VAR
