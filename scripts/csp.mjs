@@ -16,8 +16,10 @@ const policy = [
   "default-src 'none'",
   `script-src 'self' 'wasm-unsafe-eval' 'sha256-${hash}'`,
   "style-src 'self' 'unsafe-inline'",
-  "img-src 'self' data: blob:",
-  "connect-src 'self'",
+  // Exercise statements may show images from the exercise's own host, and `?exercise=URL`
+  // fetches an exercise file (data, never run) from any host that allows it (CORS).
+  "img-src 'self' data: blob: https:",
+  "connect-src 'self' https: http:",
   "manifest-src 'self'",
   "base-uri 'none'",
   "form-action 'none'",

@@ -7,8 +7,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release -q -p plc-core --bin plc
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+dir="$work/submissions"
+mkdir "$dir"
 ex=exercises/reversing
 for i in $(seq -w 1 50); do
   cp "$ex/reference.st" "$dir/right-$i.st"
@@ -17,10 +19,10 @@ for i in $(seq -w 1 50); do
   printf '{"schema": 1, "name": "truncated' > "$dir/unreadable-$i.plcproj.json"
 done
 start=$(date +%s.%N)
-target/release/plc grade "$ex/reversing.toml" "$dir" --format csv > "$dir/grades.csv"
+target/release/plc grade "$ex/reversing.toml" "$dir" --format csv > "$work/grades.csv"
 end=$(date +%s.%N)
-rows=$(($(wc -l < "$dir/grades.csv") - 1))
-right=$(grep -c '^[^,]*right-[0-9]*\.st,2,2,' "$dir/grades.csv" || true)
+rows=$(($(wc -l < "$work/grades.csv") - 1))
+right=$(grep -c '^[^,]*right-[0-9]*\.st,2,2,' "$work/grades.csv" || true)
 printf 'graded %d submissions (%d right with full marks) in %.2f s on %d cores\n' \
   "$rows" "$right" "$(echo "$end - $start" | bc)" "$(nproc)"
 [ "$rows" -eq 200 ] && [ "$right" -eq 50 ]

@@ -2,6 +2,11 @@
 //! "Open example" menu: writes `$OUT_DIR/examples.rs` with each file's name, menu title and
 //! rank, in menu order. The files themselves are copied next to the page by Trunk and
 //! fetched when chosen, so they cost the first load nothing.
+//!
+//! Lists the shipped exercises (`../exercises/ID/ID.toml`) too: `$OUT_DIR/exercises.rs`
+//! holds the catalogue (id, title, level, languages: all the page needs before one is
+//! opened) and `$OUT_DIR/exercise_files.rs` each exercise file and its starter, which only
+//! the exercise worker includes (the reference solutions and mutants are never built in).
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -17,7 +22,75 @@ fn project_facts(text: &str) -> Option<(String, bool, bool)> {
     Some((v.get("name")?.as_str()?.to_string(), has("ladder"), has("petri")))
 }
 
+/// What the catalogue needs of an exercise file.
+#[derive(serde::Deserialize)]
+struct Entry {
+    id: String,
+    title: String,
+    level: u8,
+    #[serde(default)]
+    languages: Vec<String>,
+    #[serde(default)]
+    starter: Option<String>,
+}
+
+/// Writes the exercise catalogue and files (see the module's doc).
+fn exercises(out: &Path) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../exercises");
+    println!("cargo:rerun-if-changed={}", dir.display());
+    let mut entries: Vec<(Entry, std::path::PathBuf)> = Vec::new();
+    for folder in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
+        let id = folder.file_name().to_string_lossy().into_owned();
+        let file = folder.path().join(format!("{id}.toml"));
+        println!("cargo:rerun-if-changed={}", folder.path().display());
+        println!("cargo:rerun-if-changed={}", file.display());
+        let Ok(text) = std::fs::read_to_string(&file) else { continue };
+        match toml::from_str::<Entry>(&text) {
+            Ok(entry) => entries.push((entry, folder.path())),
+            Err(e) => panic!("{}: {e}", file.display()),
+        }
+    }
+    entries.sort_by(|a, b| a.0.level.cmp(&b.0.level).then_with(|| a.0.title.cmp(&b.0.title)));
+    let mut catalogue = String::from(
+        "/// The shipped exercises, easiest first: (id, title, level, languages).\npub const CATALOGUE: &[(&str, &str, u8, &[&str])] = &[\n",
+    );
+    let mut files = String::from(
+        "/// A starter file: (name, text).\npub type Starter = (&'static str, &'static str);\n/// The shipped exercises' files: (id, exercise file, starter).\npub const FILES: &[(&str, &str, Option<Starter>)] = &[\n",
+    );
+    for (e, folder) in &entries {
+        let _ = writeln!(
+            catalogue,
+            "    ({:?}, {:?}, {}, &{:?}),",
+            e.id, e.title, e.level, e.languages
+        );
+        let file = folder.join(format!("{}.toml", e.id));
+        let starter = match &e.starter {
+            Some(name) => {
+                let path = folder.join(name);
+                println!("cargo:rerun-if-changed={}", path.display());
+                format!("Some(({name:?}, include_str!({:?})))", path.display().to_string())
+            }
+            None => "None".to_string(),
+        };
+        let _ = writeln!(
+            files,
+            "    ({:?}, include_str!({:?}), {starter}),",
+            e.id,
+            file.display().to_string()
+        );
+    }
+    catalogue.push_str("];\n");
+    files.push_str("];\n");
+    for (name, text) in [("exercises.rs", catalogue), ("exercise_files.rs", files)] {
+        if let Err(e) = std::fs::write(out.join(name), text) {
+            panic!("cannot write {name}: {e}");
+        }
+    }
+}
+
 fn main() {
+    let out_dir = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
+    exercises(Path::new(&out_dir));
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
     println!("cargo:rerun-if-changed={}", dir.display());
     let files: Vec<String> = std::fs::read_dir(&dir)

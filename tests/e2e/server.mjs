@@ -9,7 +9,8 @@ const TYPES = {
   '.css': 'text/css', '.svg': 'image/svg+xml', '.json': 'application/json', '.png': 'image/png',
 };
 
-export async function startServer(root, prefix = '/trainer/') {
+/** Serves `root` under `prefix`; `headers` go on every answer (e.g. CORS for another origin). */
+export async function startServer(root, prefix = '/trainer/', headers = {}) {
   const server = http.createServer(async (req, res) => {
     const url = new URL(req.url, 'http://localhost');
     if (!url.pathname.startsWith(prefix)) { res.writeHead(404); res.end(); return; }
@@ -17,7 +18,7 @@ export async function startServer(root, prefix = '/trainer/') {
     const file = path.join(root, path.normalize(rel).replace(/^(\.\.[/\\])+/, ''));
     try {
       const body = await readFile(file);
-      res.writeHead(200, { 'content-type': TYPES[path.extname(file)] ?? 'application/octet-stream' });
+      res.writeHead(200, { ...headers, 'content-type': TYPES[path.extname(file)] ?? 'application/octet-stream' });
       res.end(body);
     } catch {
       res.writeHead(404); res.end('not found');

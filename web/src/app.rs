@@ -7,6 +7,7 @@ use crate::components::{
     controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, timeline::Timeline,
     variables::Variables,
 };
+use crate::exercises::{Catalogue, ExercisePanel, Exercises, Screen};
 use crate::state::AppState;
 use plc_core::build::Site;
 
@@ -15,11 +16,19 @@ use plc_core::build::Site;
 pub fn App() -> impl IntoView {
     let state = AppState::new();
     provide_context(state);
+    let exercises = Exercises::new(state);
+    provide_context(exercises);
+    let catalogue = move || exercises.screen.get() == Screen::Catalogue;
     view! {
         <Header/>
         <Banner/>
-        <main class="workspace">
+        <Show when=catalogue>
+            <Catalogue/>
+        </Show>
+        // Kept while the catalogue is shown (hidden), so the editors keep their state.
+        <main class="workspace" hidden=catalogue>
             <section class="editor-pane" aria-label="Program">
+                <ExercisePanel/>
                 <PouPane/>
             </section>
             <section class="sim-pane" aria-label="Simulation">

@@ -79,10 +79,16 @@ async fn in_worker(stem: &str, text: &str) -> Result<Imported, String> {
     read_reply(&ask_worker(&request).await?)
 }
 
-/// Sends `request` to a fresh worker and returns its answer. The worker says when it is
-/// ready (its module loads asynchronously; a message sent before would be lost).
+/// Sends `request` to a fresh import worker and returns its answer.
 async fn ask_worker(request: &js_sys::Array) -> Result<String, String> {
-    let worker = web_sys::Worker::new(WORKER_SCRIPT)
+    ask_worker_at(WORKER_SCRIPT, request).await
+}
+
+/// Sends `request` to a fresh worker of the loader `script` and returns its answer. The
+/// worker says when it is ready (its module loads asynchronously; a message sent before
+/// would be lost).
+pub async fn ask_worker_at(script: &str, request: &JsValue) -> Result<String, String> {
+    let worker = web_sys::Worker::new(script)
         .map_err(|e| format!("the importer could not start ({e:?})"))?;
     let stopped = |_| "the importer stopped (the file may be too large or damaged)".to_string();
     let answer = async {

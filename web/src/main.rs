@@ -4,6 +4,7 @@ mod app;
 mod components;
 mod download;
 mod examples;
+mod exercises;
 mod import;
 mod state;
 mod storage;

@@ -9,6 +9,7 @@ use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
 use crate::examples;
+use crate::exercises::{Exercises, Screen};
 use crate::import::import_text;
 use crate::state::AppState;
 
@@ -66,6 +67,7 @@ async fn share(state: AppState, link: String) {
 #[component]
 pub fn Header() -> impl IntoView {
     let state = expect_context::<AppState>();
+    let exercises = expect_context::<Exercises>();
     let renaming = RwSignal::new(false);
     let rename_input = NodeRef::<html::Input>::new();
     let file_input = NodeRef::<html::Input>::new();
@@ -172,6 +174,9 @@ pub fn Header() -> impl IntoView {
                     view! { <span class="project-name" title="The open project">{name}</span> }.into_any()
                 }}
             </div>
+            <button class="exercises-button" aria-pressed=move || (exercises.screen.get() == Screen::Catalogue).to_string()
+                on:click=move |_| exercises.screen.update(|s| *s = if *s == Screen::Catalogue { Screen::Workspace } else { Screen::Catalogue })
+                title="Exercises that grade themselves">"Exercises"</button>
             <nav class="project-menu" aria-label="Project">
                 <label class="project-select">
                     <span class="visually-hidden">"Open project"</span>

@@ -15,7 +15,7 @@ use plc_core::project::{Project, ProjectSummary};
 use plc_core::sim::{BreakpointId, Simulator};
 
 pub use check::DiagView;
-pub use projects::{note_panic, project_file_name};
+pub use projects::{clear_fragment, note_panic, project_file_name};
 pub use run::marking_of;
 
 /// How long after the last edit of a diagram the project is checked and saved.

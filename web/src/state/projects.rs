@@ -425,6 +425,17 @@ impl AppState {
         }
     }
 
+    /// Replaces the open project's contents by `project`; its name and its place in
+    /// storage stay (an exercise's `Reset to starter`).
+    pub fn replace_contents(&self, mut project: Project) {
+        project.name = self.project.with_untracked(|p| p.name.clone());
+        self.project.set(project);
+        self.forget_run();
+        self.check_now();
+        self.show_main_view();
+        self.save();
+    }
+
     /// The share link of the open project.
     pub fn share_link(&self) -> String {
         let fragment = encode_share(&self.project.get_untracked());
@@ -436,7 +447,8 @@ impl AppState {
     }
 }
 
-fn clear_fragment() {
+/// Removes the fragment from the address bar (what it held is open and kept).
+pub fn clear_fragment() {
     if let Some(w) = web_sys::window() {
         let url = w.location().href().unwrap_or_default();
         let base = url.split('#').next().unwrap_or_default().to_string();

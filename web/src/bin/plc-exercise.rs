@@ -1,0 +1,170 @@
+//! The exercise worker: reads exercise files (shipped, fetched or carried by a link),
+//! renders their statements and grades attempts, off the page's own module so the first
+//! load stays within its size budget. It says `"ready"` once loaded, then answers each
+//! message — a JSON [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`).
+
+#[path = "../exercises/protocol.rs"]
+mod protocol;
+
+use plc_core::exercise::{
+    grade_with, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
+};
+use plc_core::open::open_text;
+use plc_core::project::Project;
+use protocol::{Opened, Reply, Request};
+use wasm_bindgen::closure::Closure;
+use wasm_bindgen::{JsCast, JsValue};
+
+mod shipped {
+    include!(concat!(env!("OUT_DIR"), "/exercise_files.rs"));
+}
+
+/// Scans shown around a failure on the page's timeline.
+const PAGE_WINDOW: usize = 100;
+
+/// The reply to one request.
+fn answer(request: Request) -> Reply {
+    match request {
+        Request::Shipped(id) => match shipped::FILES.iter().find(|(i, _, _)| *i == id) {
+            Some((_, text, starter)) => {
+                let starter =
+                    starter.map(|(name, text)| LinkedFile { name: name.into(), text: text.into() });
+                open(ExerciseLink { exercise: (*text).to_string(), starter }, None)
+            }
+            None => Reply::Error(format!("there is no exercise “{id}” in this trainer")),
+        },
+        Request::File { link, base } => open(link, base),
+        Request::Link(fragment) => match ExerciseLink::decode(&fragment) {
+            Ok((link, _)) => open(link, None),
+            Err(e) => Reply::Error(e.to_string()),
+        },
+        Request::Grade { exercise, project } => {
+            let exercise = match Exercise::from_toml(&exercise) {
+                Ok(e) => e,
+                Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
+            };
+            let project = match Project::from_file(&project) {
+                Ok(p) => p,
+                Err(e) => return Reply::Error(format!("the project cannot be read: {e}")),
+            };
+            match grade_with(&exercise, &project, GradeOptions { window: PAGE_WINDOW }) {
+                Ok(report) => Reply::Graded(report),
+                Err(e) => Reply::Error(format!("the exercise cannot grade: {e}")),
+            }
+        }
+    }
+}
+
+/// Opens an exercise file with its starter.
+fn open(link: ExerciseLink, base: Option<String>) -> Reply {
+    let exercise = match Exercise::from_toml(&link.exercise) {
+        Ok(e) => e,
+        Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
+    };
+    let fragment = match link.encode() {
+        Ok(f) => f,
+        Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
+    };
+    let starter = match (&exercise.starter, &link.starter) {
+        (None, _) => {
+            let mut p = Project::new(&exercise.title);
+            p.source = exercise.blank_program();
+            Some(p.to_file())
+        }
+        (Some(_), None) => None,
+        (Some(_), Some(file)) => {
+            let stem = file.name.split('.').next().unwrap_or("starter");
+            match open_text(stem, &file.text) {
+                Ok(opened) => Some(opened.project.to_file()),
+                Err(e) => {
+                    return Reply::Error(format!("the starter {} cannot be opened: {e}", file.name))
+                }
+            }
+        }
+    };
+    let view = ExerciseView::of(&exercise, base.as_deref());
+    Reply::Opened(Box::new(Opened { view, link, base, fragment, starter }))
+}
+
+/// The reply to a message's text.
+fn reply_text(text: &str) -> String {
+    let reply = match serde_json::from_str::<Request>(text) {
+        Ok(request) => answer(request),
+        Err(e) => Reply::Error(format!("the exercise worker got a request it cannot read: {e}")),
+    };
+    serde_json::to_string(&reply)
+        .unwrap_or_else(|_| r#"{"Error":"the answer could not be written"}"#.into())
+}
+
+fn main() {
+    console_error_panic_hook::set_once();
+    let scope: web_sys::DedicatedWorkerGlobalScope = js_sys::global().unchecked_into();
+    let answer_to = scope.clone();
+    let on_message =
+        Closure::<dyn Fn(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
+            let text = ev.data().as_string().unwrap_or_default();
+            let _ = answer_to.post_message(&JsValue::from_str(&reply_text(&text)));
+        });
+    scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
+    on_message.forget();
+    // Ready: the page sends its request only now.
+    let _ = scope.post_message(&JsValue::from_str("ready"));
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    fn ask(request: Request) -> Reply {
+        serde_json::from_str(&reply_text(&serde_json::to_string(&request).unwrap())).unwrap()
+    }
+
+    #[test]
+    fn every_shipped_exercise_opens_with_its_starter() {
+        assert!(shipped::FILES.len() >= 2);
+        for (id, _, _) in shipped::FILES {
+            let Reply::Opened(opened) = ask(Request::Shipped((*id).to_string())) else {
+                panic!("{id} does not open");
+            };
+            assert_eq!(opened.view.id, *id);
+            assert!(Project::from_file(opened.starter.as_deref().unwrap()).is_ok(), "{id}");
+        }
+    }
+
+    #[test]
+    fn the_starter_fails_and_the_link_reopens_the_exercise() {
+        let Reply::Opened(opened) = ask(Request::Shipped("latch".into())) else { panic!() };
+        let graded = ask(Request::Grade {
+            exercise: opened.link.exercise.clone(),
+            project: opened.starter.clone().unwrap(),
+        });
+        let Reply::Graded(report) = graded else { panic!("{graded:?}") };
+        assert!(report.score < report.total);
+        let failure = report.scenarios.iter().find_map(|s| s.failure.as_ref()).unwrap();
+        assert!(failure.window.len() > 11, "the page's window is wide");
+        let Reply::Opened(again) = ask(Request::Link(format!("#{}", opened.fragment))) else {
+            panic!()
+        };
+        assert_eq!(again.view, opened.view);
+    }
+
+    #[test]
+    fn bad_requests_get_messages() {
+        assert!(reply_text("nonsense").contains("cannot read"));
+        let Reply::Error(e) = ask(Request::Shipped("nope".into())) else { panic!() };
+        assert!(e.contains("nope"));
+        let Reply::Error(e) = ask(Request::Link("x=AAAA".into())) else { panic!() };
+        assert!(e.contains("damaged"), "{e}");
+        let bad = ExerciseLink { exercise: "id = 1".into(), starter: None };
+        let Reply::Error(e) = ask(Request::File { link: bad, base: None }) else { panic!() };
+        assert!(e.starts_with("the exercise file cannot be used: line 1"), "{e}");
+        let Reply::Error(e) = ask(Request::Grade {
+            exercise: "id = \"a\"\ntitle = \"A\"\nlevel = 1\n".into(),
+            project: "{".into(),
+        }) else {
+            panic!()
+        };
+        assert!(e.contains("project cannot be read"), "{e}");
+    }
+}

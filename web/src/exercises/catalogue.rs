@@ -1,0 +1,93 @@
+//! The exercise catalogue: every shipped exercise with its level and languages, filtered
+//! by level and language, with a tick for each one passed in this browser.
+
+use leptos::ev;
+use leptos::prelude::*;
+
+use super::{catalogue, language_name, Exercises, Screen};
+use crate::state::AppState;
+
+/// A level's name for the filter.
+fn level_name(level: u8) -> String {
+    match level {
+        1 => "1 (beginner)".into(),
+        5 => "5 (advanced)".into(),
+        n => n.to_string(),
+    }
+}
+
+/// The catalogue, in place of the workspace.
+#[component]
+pub fn Catalogue() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let ex = expect_context::<Exercises>();
+    let level = RwSignal::new(0u8);
+    let language = RwSignal::new(String::new());
+    let all = catalogue();
+    let total = all.len();
+    let languages: Vec<&'static str> = {
+        let mut v: Vec<&'static str> = Vec::new();
+        for code in ["st", "ld", "petri", "sfc"] {
+            if all.iter().any(|e| e.languages.contains(&code)) {
+                v.push(code);
+            }
+        }
+        v
+    };
+    let shown = move || {
+        let (level, language) = (level.get(), language.get());
+        catalogue()
+            .into_iter()
+            .filter(|e| level == 0 || e.level == level)
+            .filter(|e| language.is_empty() || e.languages.contains(&language.as_str()))
+            .collect::<Vec<_>>()
+    };
+    let count = move || {
+        let passed = ex.passed.with(|p| catalogue().iter().filter(|e| p.contains(e.id)).count());
+        format!("{} of {total} exercises shown · {passed} passed", shown().len())
+    };
+    view! {
+        <main class="catalogue" aria-labelledby="catalogue-title">
+            <div class="catalogue-head">
+                <h2 id="catalogue-title">"Exercises"</h2>
+                <label>"Level "
+                    <select aria-label="Level" on:change=move |e: ev::Event| level.set(event_target_value(&e).parse().unwrap_or(0))>
+                        <option value="0">"All levels"</option>
+                        {(1..=5u8).map(|n| view! { <option value=n.to_string()>{level_name(n)}</option> }).collect_view()}
+                    </select>
+                </label>
+                <label>"Language "
+                    <select aria-label="Language" on:change=move |e: ev::Event| language.set(event_target_value(&e))>
+                        <option value="">"All languages"</option>
+                        {languages.into_iter().map(|code| view! { <option value=code>{language_name(code)}</option> }).collect_view()}
+                    </select>
+                </label>
+                <span class="catalogue-count" aria-live="polite">{count}</span>
+                <button on:click=move |_| ex.screen.set(Screen::Workspace)>"Back to the project"</button>
+            </div>
+            <ul class="catalogue-list" aria-label="Exercise list">
+                {move || {
+                    let passed = ex.passed.get();
+                    shown().into_iter().map(|e| {
+                        let id = e.id;
+                        let done = passed.contains(id);
+                        let langs = e.languages.iter().map(|l| language_name(l)).collect::<Vec<_>>().join(", ");
+                        view! {
+                            <li class="catalogue-item" class:passed=done data-exercise=id>
+                                <button class="catalogue-open" on:click=move |_| ex.open_shipped(state, id)>{e.title}</button>
+                                {done.then(|| view! { <span class="tick" role="img" aria-label="Passed" title="Passed">"✓"</span> })}
+                                <span class="catalogue-level">{format!("Level {}", e.level)}</span>
+                                <span class="catalogue-langs">{langs}</span>
+                            </li>
+                        }
+                    }).collect_view()
+                }}
+            </ul>
+            <p class="catalogue-note">
+                "Instructors: any exercise file opens with "<code>"?exercise=URL"</code>" (from a host that allows it), and "
+                <code>"plc exercise link FILE"</code>" or an exercise's "<em>"Share exercise"</em>" makes a link that carries the whole exercise. "
+                "See docs/exercises.md for the format and "<code>"plc grade"</code>" for grading a class."
+            </p>
+        </main>
+    }
+}

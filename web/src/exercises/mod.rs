@@ -1,0 +1,389 @@
+//! Exercises in the page: the catalogue of shipped exercises, opening one (shipped, from an
+//! address `?exercise=URL`, or from a `#x=…` link) with the attempt the student saved or
+//! the starter, checking an attempt, and the report. The exercise worker
+//! (`src/bin/plc-exercise.rs`) reads the files and grades; the page keeps what it shows.
+
+mod catalogue;
+mod panel;
+pub mod protocol;
+mod report;
+mod store;
+
+use std::collections::BTreeSet;
+
+use leptos::prelude::*;
+use plc_core::exercise::{ExerciseLink, LinkedFile, Report};
+use plc_core::project::Project;
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_futures::JsFuture;
+
+use crate::state::{clear_fragment, AppState};
+pub use catalogue::Catalogue;
+pub use panel::ExercisePanel;
+use protocol::{Opened, Reply, Request};
+
+mod list {
+    include!(concat!(env!("OUT_DIR"), "/exercises.rs"));
+}
+
+/// The worker's loader script, next to `index.html`.
+const WORKER_SCRIPT: &str = "./plc-exercise_loader.js";
+
+/// What the page's main area shows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Screen {
+    /// The editors and the simulator.
+    Workspace,
+    /// The exercise catalogue.
+    Catalogue,
+}
+
+/// One shipped exercise of the catalogue.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Entry {
+    /// Its id.
+    pub id: &'static str,
+    /// Its title.
+    pub title: &'static str,
+    /// 1 … 5.
+    pub level: u8,
+    /// `st`, `ld`, `petri`, `sfc`.
+    pub languages: &'static [&'static str],
+}
+
+/// The shipped exercises, easiest first.
+pub fn catalogue() -> Vec<Entry> {
+    list::CATALOGUE
+        .iter()
+        .map(|&(id, title, level, languages)| Entry { id, title, level, languages })
+        .collect()
+}
+
+/// A language's name for people.
+pub fn language_name(code: &str) -> &str {
+    match code {
+        "st" => "ST",
+        "ld" => "Ladder",
+        "petri" => "Petri net",
+        "sfc" => "SFC",
+        other => other,
+    }
+}
+
+/// The exercise open in the page.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OpenExercise {
+    /// What the worker gave.
+    pub opened: Opened,
+}
+
+/// The exercises' state, shared by the header, the catalogue and the exercise panel.
+#[derive(Clone, Copy)]
+pub struct Exercises {
+    /// What the main area shows.
+    pub screen: RwSignal<Screen>,
+    /// The exercise whose attempt is the open project.
+    pub open: RwSignal<Option<OpenExercise>>,
+    /// The last check's report (for the open exercise).
+    pub report: RwSignal<Option<Report>>,
+    /// A check is running.
+    pub checking: RwSignal<bool>,
+    /// The ids of the exercises passed (the catalogue's ticks).
+    pub passed: RwSignal<BTreeSet<String>>,
+    /// The link of the open exercise, once `Share exercise` made it.
+    pub share_link: RwSignal<Option<String>>,
+}
+
+impl Exercises {
+    /// The state; opens the exercise of the address (`?exercise=URL` or `#x=…`) if any,
+    /// and follows the open project: an attempt shows its exercise.
+    pub fn new(state: AppState) -> Self {
+        let ex = Exercises {
+            screen: RwSignal::new(Screen::Workspace),
+            open: RwSignal::new(None),
+            report: RwSignal::new(None),
+            checking: RwSignal::new(false),
+            passed: RwSignal::new(store::passed()),
+            share_link: RwSignal::new(None),
+        };
+        let location = web_sys::window().map(|w| w.location());
+        let hash = location.as_ref().and_then(|l| l.hash().ok()).unwrap_or_default();
+        let search = location.as_ref().and_then(|l| l.search().ok()).unwrap_or_default();
+        if let Some(fragment) = hash.strip_prefix('#').filter(|h| h.starts_with("x=")) {
+            let fragment = fragment.to_string();
+            clear_fragment();
+            leptos::task::spawn_local(async move {
+                ex.open_with(state, Request::Link(fragment), None).await;
+            });
+        } else if let Some(url) = query_param(&search, "exercise") {
+            leptos::task::spawn_local(async move { ex.open_url(state, &url).await });
+        }
+        // The open project decides which exercise the panel shows.
+        Effect::new(move |_| {
+            let project_id = state.project_id.get();
+            let exercise = project_id.as_deref().and_then(store::exercise_of);
+            let shown = ex.open.with_untracked(|o| o.as_ref().map(|o| o.opened.view.id.clone()));
+            if exercise == shown {
+                return;
+            }
+            ex.report.set(None);
+            ex.share_link.set(None);
+            match exercise {
+                None => ex.open.set(None),
+                Some(id) => leptos::task::spawn_local(async move { ex.reattach(state, &id).await }),
+            }
+        });
+        ex
+    }
+
+    /// Opens a shipped exercise (from the catalogue).
+    pub fn open_shipped(self, state: AppState, id: &str) {
+        let id = id.to_string();
+        leptos::task::spawn_local(async move {
+            self.open_with(state, Request::Shipped(id), None).await;
+        });
+    }
+
+    /// Fetches the exercise file at `url` (and its starter next to it) and opens it.
+    async fn open_url(self, state: AppState, url: &str) {
+        let text = match fetch_text(url).await {
+            Ok(t) => t,
+            Err(e) => {
+                state.error(format!(
+                    "Could not load the exercise from {url}: {e}. Nothing was changed."
+                ));
+                return;
+            }
+        };
+        let link = ExerciseLink { exercise: text, starter: None };
+        self.open_with(state, Request::File { link, base: Some(url.to_string()) }, Some(url)).await;
+    }
+
+    /// Asks the worker to open an exercise, fetching its starter next to `base` when it
+    /// names one, then opens the student's attempt at it (or a new one from the starter).
+    async fn open_with(self, state: AppState, request: Request, base: Option<&str>) {
+        let mut opened = match ask(&request).await {
+            Ok(Reply::Opened(o)) => *o,
+            Ok(Reply::Error(e)) | Err(e) => {
+                state.error(format!("Could not open the exercise: {e}. Nothing was changed."));
+                return;
+            }
+            Ok(_) => return,
+        };
+        if let (None, Some(name), Some(base)) = (&opened.starter, opened.view.starter.clone(), base)
+        {
+            let url = sibling(base, &name);
+            let text = match fetch_text(&url).await {
+                Ok(t) => t,
+                Err(e) => {
+                    state.error(format!(
+                        "Could not load the exercise's starter {url}: {e}. Nothing was changed."
+                    ));
+                    return;
+                }
+            };
+            let link = ExerciseLink {
+                exercise: opened.link.exercise.clone(),
+                starter: Some(LinkedFile { name, text }),
+            };
+            opened = match ask(&Request::File { link, base: Some(base.to_string()) }).await {
+                Ok(Reply::Opened(o)) => *o,
+                Ok(Reply::Error(e)) | Err(e) => {
+                    state.error(format!("Could not open the exercise: {e}. Nothing was changed."));
+                    return;
+                }
+                Ok(_) => return,
+            };
+        }
+        let shipped = matches!(request, Request::Shipped(_));
+        self.attach(state, opened, shipped);
+    }
+
+    /// Opens the attempt at `opened` (the stored one, else a new project from the starter)
+    /// and shows the exercise beside it.
+    fn attach(self, state: AppState, opened: Opened, shipped: bool) {
+        let id = opened.view.id.clone();
+        let title = opened.view.title.clone();
+        if !shipped {
+            store::keep_source(
+                &id,
+                &store::KeptSource { link: opened.link.clone(), base: opened.base.clone() },
+            );
+        }
+        let existing = store::attempts()
+            .get(&id)
+            .cloned()
+            .filter(|pid| state.projects.with_untracked(|ps| ps.iter().any(|p| &p.id == pid)));
+        self.open.set(Some(OpenExercise { opened: opened.clone() }));
+        self.report.set(None);
+        self.share_link.set(None);
+        self.screen.set(Screen::Workspace);
+        match existing {
+            Some(pid) => {
+                if state.project_id.get_untracked().as_deref() != Some(pid.as_str()) {
+                    state.open(&pid);
+                }
+                state.info(format!("Exercise “{title}”: your saved attempt is open."));
+            }
+            None => {
+                let Some(project) = starter_project(&opened) else {
+                    state.error("The exercise's starter cannot be opened.");
+                    return;
+                };
+                state.add_and_open(project);
+                if let Some(pid) = state.project_id.get_untracked() {
+                    store::set_attempt(&id, &pid);
+                }
+                state.info(format!("Exercise “{title}”: a new attempt from the starter is open."));
+            }
+        }
+    }
+
+    /// Shows the exercise of an attempt opened from the project menu (or at start).
+    async fn reattach(self, state: AppState, id: &str) {
+        let request = match store::kept_source(id) {
+            Some(kept) => Request::File { link: kept.link, base: kept.base },
+            None => Request::Shipped(id.to_string()),
+        };
+        let reply = ask(&request).await;
+        // Another project may have been opened meanwhile.
+        let current = state.project_id.get_untracked().as_deref().and_then(store::exercise_of);
+        if current.as_deref() != Some(id) {
+            return;
+        }
+        match reply {
+            Ok(Reply::Opened(o)) => self.open.set(Some(OpenExercise { opened: *o })),
+            _ => self.open.set(None),
+        }
+    }
+
+    /// Grades the open project against the open exercise; a pass ticks it in the
+    /// catalogue.
+    pub fn check(self, state: AppState) {
+        let Some(open) = self.open.get_untracked() else { return };
+        if self.checking.get_untracked() {
+            return;
+        }
+        self.checking.set(true);
+        let project = state.project.with_untracked(Project::to_file);
+        let request = Request::Grade { exercise: open.opened.link.exercise.clone(), project };
+        leptos::task::spawn_local(async move {
+            let reply = ask(&request).await;
+            self.checking.set(false);
+            match reply {
+                Ok(Reply::Graded(report)) => {
+                    if report.error.is_none() && report.score == report.total {
+                        self.passed.set(store::mark_passed(&open.opened.view.id));
+                    }
+                    self.report.set(Some(report));
+                }
+                Ok(Reply::Error(e)) | Err(e) => state.error(format!("Could not check: {e}")),
+                Ok(_) => {}
+            }
+        });
+    }
+
+    /// Replaces the attempt by the starter (after asking).
+    pub fn reset_to_starter(self, state: AppState) {
+        let Some(open) = self.open.get_untracked() else { return };
+        let question = format!(
+            "Discard your work on “{}” and start again from the starter? This cannot be undone.",
+            open.opened.view.title
+        );
+        let ok =
+            web_sys::window().and_then(|w| w.confirm_with_message(&question).ok()).unwrap_or(false);
+        if !ok {
+            return;
+        }
+        match starter_project(&open.opened) {
+            Some(project) => {
+                state.replace_contents(project);
+                self.report.set(None);
+                state.info("The attempt is back to the starter.");
+            }
+            None => state.error("The exercise's starter cannot be opened."),
+        }
+    }
+
+    /// The link that carries the open exercise.
+    pub fn link(self) -> Option<String> {
+        let open = self.open.get_untracked()?;
+        let base = web_sys::window()
+            .and_then(|w| w.location().href().ok())
+            .map(|h| h.split('#').next().unwrap_or_default().to_string())
+            .unwrap_or_default();
+        // The `?exercise=` query would open the file at that address instead.
+        let base = base.split('?').next().unwrap_or_default().to_string();
+        Some(format!("{base}#{}", open.opened.fragment))
+    }
+}
+
+/// The starter of an opened exercise as a new project named after it.
+fn starter_project(opened: &Opened) -> Option<Project> {
+    let mut project = Project::from_file(opened.starter.as_deref()?).ok()?;
+    project.name = format!("Exercise: {}", opened.view.title);
+    Some(project)
+}
+
+/// Sends one request to a fresh exercise worker.
+async fn ask(request: &Request) -> Result<Reply, String> {
+    let text = serde_json::to_string(request).map_err(|e| e.to_string())?;
+    let answer = crate::import::ask_worker_at(WORKER_SCRIPT, &JsValue::from_str(&text)).await?;
+    serde_json::from_str(&answer).map_err(|_| "the exercise worker gave no answer".to_string())
+}
+
+/// The text at `url` (a CORS fetch).
+async fn fetch_text(url: &str) -> Result<String, String> {
+    let window = web_sys::window().ok_or("no window")?;
+    let failed =
+        |_| "the address cannot be reached (or does not allow other sites to read it)".to_string();
+    let response: web_sys::Response = JsFuture::from(window.fetch_with_str(url))
+        .await
+        .map_err(failed)?
+        .dyn_into()
+        .map_err(|_| "no response".to_string())?;
+    if !response.ok() {
+        return Err(format!("HTTP {}", response.status()));
+    }
+    let text = JsFuture::from(response.text().map_err(failed)?).await.map_err(failed)?;
+    text.as_string().ok_or_else(|| "the answer is not text".to_string())
+}
+
+/// The address of `name` in the folder of `base`.
+fn sibling(base: &str, name: &str) -> String {
+    let end = base.find(['?', '#']).unwrap_or(base.len());
+    let folder = base[..end].rfind('/').map_or("", |i| &base[..=i]);
+    format!("{folder}{name}")
+}
+
+/// A query parameter's decoded value (`?exercise=https%3A%2F%2F…`).
+fn query_param(search: &str, name: &str) -> Option<String> {
+    let query = search.strip_prefix('?').unwrap_or(search);
+    query.split('&').find_map(|pair| {
+        let (key, value) = pair.split_once('=')?;
+        (key == name).then(|| {
+            js_sys::decode_uri_component(&value.replace('+', " ")).ok().map(String::from)
+        })?
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn addresses_next_to_the_file() {
+        assert_eq!(
+            sibling("https://h.example/c/latch.toml?v=1", "starter.st"),
+            "https://h.example/c/starter.st"
+        );
+        assert_eq!(sibling("latch.toml", "starter.st"), "starter.st");
+    }
+
+    #[test]
+    fn the_catalogue_lists_the_shipped_exercises_easiest_first() {
+        let all = catalogue();
+        assert!(all.iter().any(|e| e.id == "latch"));
+        assert!(all.windows(2).all(|w| w[0].level <= w[1].level));
+    }
+}

@@ -1,0 +1,60 @@
+//! The messages between the page and the exercise worker (`src/bin/plc-exercise.rs`),
+//! which reads exercise files, renders their statements and grades attempts off the
+//! page's own module (the TOML reader, the Markdown renderer and the grader are not in the
+//! first load). Both sides send one JSON text per message.
+
+use plc_core::exercise::{ExerciseLink, ExerciseView, Report};
+use serde::{Deserialize, Serialize};
+
+/// What the page asks.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub enum Request {
+    /// Open a shipped exercise, by id.
+    Shipped(String),
+    /// Open an exercise file (with its starter when the page fetched it); `base` is the
+    /// file's address, for the statement's relative links.
+    File {
+        /// The exercise file and its starter.
+        link: ExerciseLink,
+        /// Where the file came from.
+        base: Option<String>,
+    },
+    /// Open the exercise a `#x=…` fragment carries.
+    Link(String),
+    /// Grade a project file against an exercise file.
+    Grade {
+        /// The exercise file (TOML).
+        exercise: String,
+        /// The project file of the attempt.
+        project: String,
+    },
+}
+
+/// What the worker answers.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub enum Reply {
+    /// An exercise opened.
+    Opened(Box<Opened>),
+    /// An attempt graded.
+    Graded(Report),
+    /// Why the request could not be done (a located message for the user).
+    Error(String),
+}
+
+/// An exercise ready to show.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Opened {
+    /// What the page shows.
+    pub view: ExerciseView,
+    /// The exercise file and its starter as given: what a link carries and what the
+    /// browser keeps to reopen it.
+    pub link: ExerciseLink,
+    /// Where the file came from (`?exercise=URL`), if anywhere.
+    pub base: Option<String>,
+    /// The fragment of a link that carries it (`x=…`, without `#`).
+    pub fragment: String,
+    /// The starter as a project file: the starter file opened, or a program declaring the
+    /// interface when the exercise names none. `None` when the exercise names a starter
+    /// that was not given (the page fetches it next to the file and asks again).
+    pub starter: Option<String>,
+}
