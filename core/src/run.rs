@@ -68,6 +68,13 @@ pub struct DiagnosticReport {
     pub column: u32,
 }
 
+impl DiagnosticReport {
+    /// A diagnostic at a line and column (0, 0: the file as a whole).
+    pub fn new(severity: Severity, code: Code, message: String, line: u32, column: u32) -> Self {
+        DiagnosticReport { severity, code: code.as_str().to_string(), message, line, column }
+    }
+}
+
 /// The result of [`run_source`], serialising to exactly the `plc run --json` object:
 /// `{"status","cycles","vars","fault","diagnostics"}`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -85,6 +92,18 @@ pub struct RunReport {
 }
 
 impl RunReport {
+    /// The report of a run that could not start (the file could not be opened, the PROGRAM
+    /// asked for was left out by an import): one error, nothing ran.
+    pub fn failed(diagnostic: DiagnosticReport) -> RunReport {
+        RunReport {
+            status: RunStatus::Error,
+            cycles: 0,
+            vars: serde_json::Map::new(),
+            fault: None,
+            diagnostics: vec![diagnostic],
+        }
+    }
+
     /// The report as a JSON value.
     pub fn to_json(&self) -> Json {
         serde_json::to_value(self).unwrap_or(Json::Null)

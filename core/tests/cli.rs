@@ -104,7 +104,13 @@ fn run_rejects_unknown_set_variables_and_programs() {
 fn a_missing_file_is_a_clear_error() {
     let out = plc(&["check", "/nonexistent/x.st"]);
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot read"));
+    // Reported as every problem is: a diagnostic line, then the count.
+    assert!(
+        stdout(&out).contains("/nonexistent/x.st:0:0: error[E0304]: cannot read"),
+        "{}",
+        stdout(&out)
+    );
+    assert!(String::from_utf8_lossy(&out.stderr).contains("1 error(s), 0 warning(s)"));
 }
 
 #[test]

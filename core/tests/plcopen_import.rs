@@ -121,7 +121,7 @@ fn timers_counters_sample() {
     assert!(ctu.inputs.iter().any(|p| p.name == "PV"));
     assert!(ctu.inputs.iter().any(|p| p.name == "R"));
     assert!(
-        i.warnings.iter().any(|w| w.contains("45")),
+        i.warnings.iter().any(|w| w.message.contains("45")),
         "dangling contact 45 reported: {:?}",
         i.warnings
     );
@@ -179,10 +179,13 @@ fn oven_control_st_sample() {
 #[test]
 fn fbd_and_sfc_are_skipped_with_warnings() {
     let i = sample("fbd_user_function_and_fbs.xml");
-    assert!(i.warnings.iter().any(|w| w.contains("FA_SERV") && w.contains("FBD")));
+    assert!(i.warnings.iter().any(|w| w.message.contains("FA_SERV") && w.message.contains("FBD")));
     assert!(i.project.source.contains("S_FA_STATUS"));
     let i = sample("sfc_traffic_light.xml");
-    assert!(i.warnings.iter().any(|w| w.contains("Traffic_Control") && w.contains("SFC")));
+    assert!(i
+        .warnings
+        .iter()
+        .any(|w| w.message.contains("Traffic_Control") && w.message.contains("SFC")));
 }
 
 /// The element of rung `r` at `(row, col)`.
@@ -438,4 +441,97 @@ fn st_project_round_trip() {
 #[test]
 fn starter_project_round_trip() {
     assert_round_trip(&Project::new("Starter"));
+}
+
+/// `plc run FILE --json` and `plc check FILE` (issue 16, the command line's contract):
+/// the normal report for every failure, import failures included, located in the file;
+/// every import note a located warning in the JSON and the count; a PROGRAM the import
+/// left out named as such.
+mod command_line {
+    use super::sample_path;
+    use std::process::{Command, Output};
+
+    fn plc(args: &[&str]) -> Output {
+        Command::new(env!("CARGO_BIN_EXE_plc")).args(args).output().unwrap()
+    }
+
+    fn json(out: &Output) -> serde_json::Value {
+        serde_json::from_slice(&out.stdout)
+            .unwrap_or_else(|e| panic!("not JSON ({e}): {}", String::from_utf8_lossy(&out.stdout)))
+    }
+
+    #[test]
+    fn a_file_that_does_not_import_still_gets_its_report_with_the_place() {
+        let dir = std::env::temp_dir().join(format!("plc-contract-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("broken.xml");
+        std::fs::write(&file, "<?xml version=\"1.0\"?>\n<project>\n  <types><pous>\n</project>\n")
+            .unwrap();
+        let file = file.to_string_lossy().into_owned();
+        let out = plc(&["run", &file, "--json"]);
+        assert_eq!(out.status.code(), Some(2));
+        let report = json(&out);
+        assert_eq!(report["status"], "error");
+        assert_eq!(report["cycles"], 0);
+        let d = &report["diagnostics"][0];
+        assert_eq!(
+            (d["code"].as_str(), d["line"].as_u64(), d["column"].as_u64()),
+            (Some("E0304"), Some(4), Some(1))
+        );
+        assert!(
+            d["message"].as_str().unwrap().starts_with("not well-formed XML at line 4, column 1: "),
+            "{d}"
+        );
+        let check = plc(&["check", &file]);
+        assert_eq!(check.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&check.stdout).contains("broken.xml:4:1: error[E0304]: "));
+        let missing = plc(&["run", "no-such-file.xml", "--json"]);
+        assert_eq!(json(&missing)["diagnostics"][0]["code"], "E0304");
+    }
+
+    #[test]
+    fn import_notes_are_located_warnings_in_the_json_and_the_count() {
+        let file = sample_path("ld_timers_counters_setreset.xml");
+        let report = json(&plc(&["run", &file, "--json"]));
+        assert_eq!(report["status"], "ok");
+        let note = report["diagnostics"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|d| d["code"] == "W0031")
+            .expect("the skipped element is a warning");
+        assert_eq!((note["line"].as_u64(), note["column"].as_u64()), (Some(947), Some(13)));
+        assert!(note["message"].as_str().unwrap().contains("localId 45"));
+        let check = plc(&["check", &file]);
+        let err = String::from_utf8_lossy(&check.stderr);
+        assert!(err.contains("0 error(s), 1 warning(s)"), "{err}");
+        assert!(String::from_utf8_lossy(&check.stdout).contains(":947:13: warning[W0031]: "));
+    }
+
+    #[test]
+    fn a_program_the_import_left_out_is_named() {
+        let file = sample_path("sfc_traffic_light.xml");
+        let report = json(&plc(&["run", &file, "--json"]));
+        let messages: Vec<&str> = report["diagnostics"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|d| d["message"].as_str())
+            .collect();
+        assert!(
+            messages.iter().any(|m| m.contains("Traffic_Control") && m.contains("SFC")),
+            "{messages:?}"
+        );
+        assert!(
+            messages.contains(&"the file holds no PROGRAM that could be imported: left out Traffic_Control (SFC bodies are not supported yet)"),
+            "{messages:?}"
+        );
+        let asked = json(&plc(&["run", &file, "--program", "Traffic_Control", "--json"]));
+        let last = asked["diagnostics"].as_array().unwrap().last().unwrap().clone();
+        assert_eq!(last["code"], "E0305");
+        assert_eq!(
+            last["message"],
+            "the PROGRAM Traffic_Control was left out when the file was imported: SFC bodies are not supported yet"
+        );
+    }
 }

@@ -225,7 +225,7 @@ pub fn all() -> Vec<Hostile> {
         Hostile {
             name: "PLCopen XML nested 200,000 deep",
             text: deep_xml(200_000),
-            outcome: Outcome::Refused("nested more than 200 deep at line 1"),
+            outcome: Outcome::Refused("at line 1, column 672: elements nested more than 200 deep"),
         },
         Hostile {
             name: "PNML nested 200,000 deep",

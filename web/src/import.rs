@@ -26,7 +26,7 @@ pub async fn import_text(stem: &str, text: &str) -> Result<Imported, String> {
         Ok(Some(opened)) => Ok(Imported {
             project: opened.project,
             kind: opened.kind.description().to_string(),
-            warnings: opened.warnings,
+            warnings: opened.warnings.iter().map(ToString::to_string).collect(),
         }),
         Ok(None) => in_worker(stem, text).await,
         Err(e) => Err(e.to_string()),

@@ -12,7 +12,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use plc_core::diagnostics::{Code, LineIndex};
 use plc_core::project::Project;
-use plc_core::run::{run_project, run_source, RunOptions, RunReport, RunStatus};
+use plc_core::run::{run_project, run_source, DiagnosticReport, RunOptions, RunReport, RunStatus};
 
 #[derive(Parser)]
 #[command(
@@ -136,19 +136,121 @@ enum Input {
     Project(Project),
 }
 
-/// Reads FILE as ST text, a project file (JSON), a PLCopen XML file or a PNML net (import
-/// warnings go to stderr).
-fn load_input(path: &Path) -> Result<Input, String> {
-    let text = read_source(path)?;
-    if plc_core::open::file_kind(&text) == plc_core::open::FileKind::St {
-        return Ok(Input::Source(text));
+/// A file opened: what it holds, and what its import skipped or changed.
+struct Loaded {
+    input: Input,
+    /// Import notes, each with its place in the file.
+    notes: Vec<plc_core::plcopen::ImportNote>,
+    /// POUs the import left out.
+    skipped: Vec<plc_core::plcopen::SkippedPou>,
+}
+
+/// Why a file could not be opened: the message and its place in the file (0, 0 when not
+/// known).
+struct LoadFailure {
+    message: String,
+    line: u32,
+    column: u32,
+}
+
+impl LoadFailure {
+    /// As a diagnostic of the report.
+    fn diagnostic(&self) -> DiagnosticReport {
+        DiagnosticReport::new(
+            plc_core::diagnostics::Severity::Error,
+            Code::FileNotOpened,
+            self.message.clone(),
+            self.line,
+            self.column,
+        )
     }
-    let opened = plc_core::open::open_text("project", &text)
-        .map_err(|e| format!("plc: {}: {e}", path.display()))?;
-    for w in &opened.warnings {
+}
+
+/// Reads FILE as ST text, a project file (JSON), a PLCopen XML file or a PNML net.
+fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
+    let text = read_source(path).map_err(|message| LoadFailure {
+        message: message.replacen("plc: ", "", 1),
+        line: 0,
+        column: 0,
+    })?;
+    if plc_core::open::file_kind(&text) == plc_core::open::FileKind::St {
+        return Ok(Loaded { input: Input::Source(text), notes: Vec::new(), skipped: Vec::new() });
+    }
+    let opened = plc_core::open::open_text("project", &text).map_err(|e| {
+        let (line, column) = e.location().unwrap_or((0, 0));
+        LoadFailure { message: e.to_string(), line, column }
+    })?;
+    Ok(Loaded {
+        input: Input::Project(opened.project),
+        notes: opened.warnings,
+        skipped: opened.skipped,
+    })
+}
+
+/// [`open_file`] for the commands that take the file whole (import notes go to stderr).
+fn load_input(path: &Path) -> Result<Input, String> {
+    let loaded = open_file(path).map_err(|f| format!("plc: {}: {}", path.display(), f.message))?;
+    for w in &loaded.notes {
         eprintln!("plc: {}: warning: {w}", path.display());
     }
-    Ok(Input::Project(opened.project))
+    Ok(loaded.input)
+}
+
+/// The import notes as warnings of a report.
+fn note_diagnostics(notes: &[plc_core::plcopen::ImportNote]) -> Vec<DiagnosticReport> {
+    notes
+        .iter()
+        .map(|n| {
+            DiagnosticReport::new(
+                plc_core::diagnostics::Severity::Warning,
+                Code::ImportChanged,
+                n.message.clone(),
+                n.line,
+                n.column,
+            )
+        })
+        .collect()
+}
+
+/// "No PROGRAM to run" names the PROGRAMs the import left out, and why.
+fn name_skipped_programs(report: &mut RunReport, skipped: &[plc_core::plcopen::SkippedPou]) {
+    let programs: Vec<String> = skipped
+        .iter()
+        .filter(|s| s.kind == "PROGRAM")
+        .map(|s| format!("{} ({})", s.name, s.reason))
+        .collect();
+    if programs.is_empty() {
+        return;
+    }
+    for d in &mut report.diagnostics {
+        if d.code == Code::NoProgram.as_str() {
+            d.message = format!(
+                "the file holds no PROGRAM that could be imported: left out {}",
+                programs.join(", ")
+            );
+        }
+    }
+}
+
+/// The error for `--program NAME` when the import left NAME out.
+fn skipped_program(loaded: &Loaded, program: Option<&str>) -> Option<DiagnosticReport> {
+    let name = program?;
+    let Input::Project(project) = &loaded.input else { return None };
+    let has = |n: &str| n.eq_ignore_ascii_case(name);
+    if project.ladder.iter().any(|l| has(&l.name)) || project.petri.iter().any(|p| has(&p.name)) {
+        return None;
+    }
+    let skipped = loaded.skipped.iter().find(|s| has(&s.name))?;
+    Some(DiagnosticReport::new(
+        plc_core::diagnostics::Severity::Error,
+        Code::ProgramSkipped,
+        format!(
+            "the {} {} was left out when the file was imported: {}",
+            skipped.kind, skipped.name, skipped.reason
+        ),
+        0,
+        0,
+    ))
 }
 
 /// Loads a project file (JSON) or a PLCopen XML file as a project.
@@ -176,12 +278,19 @@ fn read_source(path: &Path) -> Result<String, String> {
 }
 
 fn check(path: &Path) -> ExitCode {
-    let source = match load_input(path) {
-        Ok(Input::Source(s)) => s,
-        Ok(Input::Project(project)) => return check_project(path, &project),
-        Err(e) => {
-            eprintln!("{e}");
+    let loaded = match open_file(path) {
+        Ok(l) => l,
+        Err(f) => {
+            let d = f.diagnostic();
+            print_diagnostic(path, d.severity, d.line, d.column, &d.code, &d.message);
+            eprintln!("{}: 1 error(s), 0 warning(s)", path.display());
             return ExitCode::from(2);
+        }
+    };
+    let source = match loaded.input {
+        Input::Source(s) => s,
+        Input::Project(ref project) => {
+            return check_project(path, project, &loaded.notes, &loaded.skipped)
         }
     };
     let analysis = plc_core::semantic::analyze(&source);
@@ -206,10 +315,16 @@ fn check(path: &Path) -> ExitCode {
 
 /// Checks a project (ST and ladder POUs): diagnostics as for ST; ladder problems name
 /// their POU, rung, row and column in the message.
-fn check_project(path: &Path, project: &Project) -> ExitCode {
-    let report = run_project(project, &RunOptions { cycles: 0, ..RunOptions::default() });
+fn check_project(
+    path: &Path,
+    project: &Project,
+    notes: &[plc_core::plcopen::ImportNote],
+    skipped: &[plc_core::plcopen::SkippedPou],
+) -> ExitCode {
+    let mut report = run_project(project, &RunOptions { cycles: 0, ..RunOptions::default() });
+    name_skipped_programs(&mut report, skipped);
     let (mut errors, mut warnings) = (0, 0);
-    for d in &report.diagnostics {
+    for d in note_diagnostics(notes).iter().chain(&report.diagnostics) {
         match d.severity {
             plc_core::diagnostics::Severity::Error => errors += 1,
             plc_core::diagnostics::Severity::Warning => warnings += 1,
@@ -306,19 +421,32 @@ fn print_text(path: &Path, report: &RunReport) {
 }
 
 fn run(path: &Path, options: RunOptions, json: bool) -> ExitCode {
-    let report = match load_input(path) {
-        Ok(Input::Source(source)) => run_source(&source, &options),
-        Ok(Input::Project(project)) => run_project(&project, &options),
-        Err(e) => {
-            eprintln!("{e}");
+    let print = |report: &RunReport| {
+        if json {
+            println!("{}", report.to_json());
+        } else {
+            print_text(path, report);
+        }
+    };
+    let loaded = match open_file(path) {
+        Ok(l) => l,
+        Err(f) => {
+            // The file could not be opened: the normal report, with the reason.
+            print(&RunReport::failed(f.diagnostic()));
             return ExitCode::from(2);
         }
     };
-    if json {
-        println!("{}", report.to_json());
-    } else {
-        print_text(path, &report);
-    }
+    let notes = note_diagnostics(&loaded.notes);
+    let mut report = match skipped_program(&loaded, options.program.as_deref()) {
+        Some(d) => RunReport::failed(d),
+        None => match &loaded.input {
+            Input::Source(source) => run_source(source, &options),
+            Input::Project(project) => run_project(project, &options),
+        },
+    };
+    name_skipped_programs(&mut report, &loaded.skipped);
+    report.diagnostics.splice(0..0, notes);
+    print(&report);
     if report.status == RunStatus::Ok {
         ExitCode::SUCCESS
     } else {

@@ -118,6 +118,8 @@ problem_codes! {
     BadSetValue = "E0301": "`--set` gives a value that does not fit the variable",
     ProgramTooLarge = "E0302": "the program needs more memory than the simulator allows",
     BadCycleTime = "E0303": "a scan cycle time outside 1 ms to 1 minute",
+    FileNotOpened = "E0304": "a file that cannot be opened (unreadable, malformed, or not a project, PLCopen XML, PNML or ST file)",
+    ProgramSkipped = "E0305": "the PROGRAM asked for was left out when its file was imported",
 
     // ---- ladder diagrams: E0400–E0449 ----
     LadderOpenCircuit = "E0400": "a ladder element that no power path reaches, or that leads nowhere",
@@ -200,6 +202,7 @@ problem_codes! {
     SfcTransitionNotAssigned = "W0024": "a transition body that never assigns the transition's name",
     SfcSamePriority = "W0025": "transitions leaving the same step with the same PRIORITY (source order decides)",
     VariableShadowsEnumValue = "W0030": "a name that is both a variable and a value of the enumeration expected there (read as the value)",
+    ImportChanged = "W0031": "part of an imported file that was skipped or changed to fit the trainer",
 }
 
 impl std::fmt::Display for Code {

@@ -256,6 +256,12 @@ explanations! {
     BadCycleTime: "The virtual clock advances by the scan cycle after every scan; it is a whole number of milliseconds from 1 to 60000 (a project's `cycle_ms`, `plc run --cycle-ms`, the page's cycle time).",
         drawn("`plc run --cycle-ms 0 main.st`, or `\"cycle_ms\": 18446744073709551615` in a project file"),
         drawn("`plc run --cycle-ms 10 main.st`");
+    FileNotOpened: "The file given to `plc run` or `plc check` could not be opened: it cannot be read, it is not well-formed (XML, JSON), or it is XML but not a PLCopen project. The report says where in the file the problem is when it can.",
+        drawn("`plc run plc.xml` on a file cut off in the middle of an element"),
+        drawn("The complete file, as OpenPLC Editor or Beremiz saved it");
+    ProgramSkipped: "The PROGRAM named with `--program` is in the file, but the import had to leave it out (its body is in a language the trainer does not import yet, such as FBD or SFC in PLCopen XML). The message says why; run another PROGRAM of the file, or rewrite this one in ST or LD.",
+        drawn("`plc run --program Traffic plc.xml` where `Traffic` is an SFC body"),
+        drawn("`plc run --program Main plc.xml` where `Main` is an ST or LD body");
     LadderOpenCircuit: "An element of the rung cannot carry power: no path from the left rail reaches it, or it leads nowhere (no coil after it).",
         drawn("A contact `Start` on row 1, column 3, with empty cells before it: `|-    -| Start |--( Motor )-`."),
         drawn("Wire the gap: `|-------| Start |--( Motor )-`.");
@@ -472,6 +478,9 @@ explanations! {
     SfcSamePriority: "Transitions leaving one step have the same PRIORITY, so the order they are written in decides which fires.",
         st("PROGRAM Main VAR x : BOOL; END_VAR INITIAL_STEP A : END_STEP STEP B : END_STEP STEP C : END_STEP TRANSITION T1 (PRIORITY := 1) FROM A TO B := x; END_TRANSITION TRANSITION T2 (PRIORITY := 1) FROM A TO C := NOT x; END_TRANSITION TRANSITION FROM B TO A := TRUE; END_TRANSITION TRANSITION FROM C TO A := TRUE; END_TRANSITION END_PROGRAM"),
         st("PROGRAM Main VAR x : BOOL; END_VAR INITIAL_STEP A : END_STEP STEP B : END_STEP STEP C : END_STEP TRANSITION T1 (PRIORITY := 1) FROM A TO B := x; END_TRANSITION TRANSITION T2 (PRIORITY := 2) FROM A TO C := NOT x; END_TRANSITION TRANSITION FROM B TO A := TRUE; END_TRANSITION TRANSITION FROM C TO A := TRUE; END_TRANSITION END_PROGRAM");
+    ImportChanged: "Opening a file from another tool skipped or changed part of it to fit the trainer: a POU in a language not imported yet, an element that is not connected, a block input read from a variable that became a contact. The program runs without it, or with the change; the message names the element and its place in the file.",
+        drawn("An OpenPLC `plc.xml` with a comment box outside any rung, or an FBD POU beside the LD program"),
+        drawn("The same project with every element wired into a network and its POUs in ST or LD");
     VariableShadowsEnumValue: "A name is both a variable and a value of the enumeration expected here; it is read as the enumeration value (as CODESYS does). Rename the variable to make the code clear.",
         st("TYPE Mode : (Off, Hand, Auto); END_TYPE PROGRAM Main VAR m : Mode; Hand : BOOL; END_VAR m := Hand; END_PROGRAM"),
         st("TYPE Mode : (Off, Hand, Auto); END_TYPE PROGRAM Main VAR m : Mode; HandSwitch : BOOL; END_VAR m := Hand; END_PROGRAM");

@@ -38,8 +38,11 @@ pub struct Opened {
     pub project: Project,
     /// What the file was read as.
     pub kind: FileKind,
-    /// Notes on what an import skipped or changed (PLCopen FBD/SFC bodies, …).
-    pub warnings: Vec<String>,
+    /// Notes on what an import skipped or changed (PLCopen FBD/SFC bodies, …), each with
+    /// its place in the file.
+    pub warnings: Vec<crate::plcopen::ImportNote>,
+    /// The POUs of the file that were left out, and why.
+    pub skipped: Vec<crate::plcopen::SkippedPou>,
 }
 
 /// Why a file could not be opened as a project.
@@ -65,6 +68,16 @@ impl fmt::Display for OpenError {
 }
 
 impl std::error::Error for OpenError {}
+
+impl OpenError {
+    /// The 1-based line and column in the file the error is about, when known.
+    pub fn location(&self) -> Option<(u32, u32)> {
+        match self {
+            OpenError::Plcopen(e) => e.location(),
+            _ => None,
+        }
+    }
+}
 
 /// What `text` looks like: JSON → a project file, `<pnml>` → PNML, other XML → PLCopen,
 /// anything else → ST.
@@ -95,7 +108,7 @@ pub fn open_plain(name: &str, text: &str) -> Result<Option<Opened>, OpenError> {
         }
         FileKind::Plcopen | FileKind::Pnml => return Ok(None),
     };
-    Ok(Some(Opened { project, kind, warnings: Vec::new() }))
+    Ok(Some(Opened { project, kind, warnings: Vec::new(), skipped: Vec::new() }))
 }
 
 /// Opens `text` as a project. `name` names the project when the file has no name of its
@@ -109,10 +122,20 @@ pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
         let mut project = Project::new(pou.name.clone());
         project.source.clear();
         project.petri.push(pou);
-        return Ok(Opened { project, kind: FileKind::Pnml, warnings: Vec::new() });
+        return Ok(Opened {
+            project,
+            kind: FileKind::Pnml,
+            warnings: Vec::new(),
+            skipped: Vec::new(),
+        });
     }
     let import = crate::plcopen::import(text).map_err(OpenError::Plcopen)?;
-    Ok(Opened { project: import.project, kind: FileKind::Plcopen, warnings: import.warnings })
+    Ok(Opened {
+        project: import.project,
+        kind: FileKind::Plcopen,
+        warnings: import.warnings,
+        skipped: import.skipped,
+    })
 }
 
 #[cfg(test)]

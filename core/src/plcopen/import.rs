@@ -2,7 +2,7 @@
 //! [`super::ld_import`].
 
 use super::xml::{self, Node};
-use super::{Import, ImportError};
+use super::{Import, ImportError, ImportNote, SkippedPou};
 use crate::ladder::{LadderPou, LadderPouKind};
 use crate::project::{Project, Settings, SCHEMA_VERSION};
 
@@ -15,7 +15,8 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             root.name
         )));
     }
-    let mut warnings = Vec::new();
+    let mut warnings: Vec<ImportNote> = Vec::new();
+    let mut skipped: Vec<SkippedPou> = Vec::new();
     let name = root
         .child("contentHeader")
         .and_then(|h| h.attr("name"))
@@ -90,7 +91,13 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     let mut bodies = Vec::new();
     if let Some(pous) = types.and_then(|t| t.child("pous")) {
         for pou in pous.children_named("pou") {
-            if let Some(body) = import_pou(pou, &mut source, &mut ladder, &mut warnings)? {
+            let mut out = PouOut {
+                source: &mut source,
+                ladder: &mut ladder,
+                warnings: &mut warnings,
+                skipped: &mut skipped,
+            };
+            if let Some(body) = import_pou(pou, &mut out)? {
                 bodies.push(body);
             }
         }
@@ -98,7 +105,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     let mut project =
         Project { schema: SCHEMA_VERSION, name, source, settings, ladder, petri: Vec::new() };
     let catalog = project.catalog();
-    for (k, body) in bodies.into_iter().enumerate() {
+    for (k, (pou_node, body)) in bodies.into_iter().enumerate() {
         let lp = &mut project.ladder[k];
         let ld =
             super::ld_import::import_ld(body, &lp.name, &catalog, &lp.declarations, &mut warnings)?;
@@ -110,23 +117,30 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
                 lp.declarations.push('\n');
             }
             lp.declarations.push_str("END_VAR\n");
-            warnings.push(format!(
+            warnings.push(ImportNote::on(pou_node, format!(
                 "POU {}: data wires from function outputs got variables of their own (see the last VAR block)",
                 lp.name
-            ));
+            )));
         }
     }
-    Ok(Import { project, warnings })
+    Ok(Import { project, warnings, skipped })
 }
 
-/// Imports one POU: ST POUs into `source`, LD POUs into `ladder` with no rungs yet (their
-/// `<LD>` body is returned, to be laid out once every POU is known).
+/// Where [`import_pou`] puts what it reads.
+struct PouOut<'o> {
+    source: &'o mut String,
+    ladder: &'o mut Vec<LadderPou>,
+    warnings: &'o mut Vec<ImportNote>,
+    skipped: &'o mut Vec<SkippedPou>,
+}
+
+/// Imports one POU: ST POUs into `source`, LD POUs into `ladder` with no rungs yet (the POU
+/// and its `<LD>` body are returned, to be laid out once every POU is known).
 fn import_pou<'a>(
     pou: &'a Node,
-    source: &mut String,
-    ladder: &mut Vec<LadderPou>,
-    warnings: &mut Vec<String>,
-) -> Result<Option<&'a Node>, ImportError> {
+    out: &mut PouOut<'_>,
+) -> Result<Option<(&'a Node, &'a Node)>, ImportError> {
+    let (source, ladder, warnings) = (&mut *out.source, &mut *out.ladder, &mut *out.warnings);
     let name = pou.attr("name").unwrap_or("").to_string();
     let err = |message: String| ImportError::Pou { pou: name.clone(), message };
     if name.is_empty() {
@@ -157,7 +171,10 @@ fn import_pou<'a>(
                 "globalVars" => ("VAR_GLOBAL", ""),
                 "documentation" | "addData" => continue,
                 other => {
-                    warnings.push(format!("POU {name}: interface section <{other}> skipped"));
+                    warnings.push(ImportNote::on(
+                        block,
+                        format!("POU {name}: interface section <{other}> skipped"),
+                    ));
                     continue;
                 }
             };
@@ -167,7 +184,7 @@ fn import_pou<'a>(
     if pou.child("actions").is_some_and(|a| !a.children.is_empty())
         || pou.child("transitions").is_some_and(|a| !a.children.is_empty())
     {
-        warnings.push(format!("POU {name}: actions and transitions skipped"));
+        warnings.push(ImportNote::on(pou, format!("POU {name}: actions and transitions skipped")));
     }
     let body = pou.child("body").ok_or_else(|| err("no <body>".into()))?;
     let lang = body
@@ -208,10 +225,14 @@ fn import_pou<'a>(
                     )),
                 };
             ladder.push(LadderPou { name, kind, declarations, rungs: Vec::new() });
-            return Ok(Some(lang));
+            return Ok(Some((pou, lang)));
         }
-        other => warnings
-            .push(format!("POU {name}: {other} bodies are not supported yet; the POU was skipped")),
+        other => {
+            let reason = format!("{other} bodies are not supported yet");
+            warnings
+                .push(ImportNote::on(lang, format!("POU {name}: {reason}; the POU was skipped")));
+            out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+        }
     }
     Ok(None)
 }

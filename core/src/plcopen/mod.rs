@@ -25,14 +25,63 @@ use std::fmt;
 
 pub use export::export;
 pub use import::import;
+pub use xml::XmlError;
 
 /// The result of a successful import: the project and what was skipped or changed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Import {
     /// The imported project.
     pub project: Project,
-    /// Human-readable notes on things that were skipped (FBD/SFC POUs, dangling elements, …).
-    pub warnings: Vec<String>,
+    /// Notes on things that were skipped or changed (FBD/SFC POUs, dangling elements, …),
+    /// each with its place in the file.
+    pub warnings: Vec<ImportNote>,
+    /// The POUs that were not imported, and why.
+    pub skipped: Vec<SkippedPou>,
+}
+
+/// A note on something an import skipped or changed, with the place in the file of the
+/// element it is about (line 0 when it is about the file as a whole).
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct ImportNote {
+    /// What was skipped or changed, and why.
+    pub message: String,
+    /// 1-based line of the element in the file (0: the whole file).
+    pub line: u32,
+    /// 1-based column.
+    pub column: u32,
+}
+
+impl ImportNote {
+    /// A note about the element that starts at `line`, `column`.
+    pub fn at(line: u32, column: u32, message: String) -> Self {
+        ImportNote { message, line, column }
+    }
+
+    /// A note about the element `node`.
+    pub(crate) fn on(node: &xml::Node, message: String) -> Self {
+        ImportNote { message, line: node.line, column: node.column }
+    }
+}
+
+impl fmt::Display for ImportNote {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.line > 0 {
+            write!(f, "line {}, column {}: {}", self.line, self.column, self.message)
+        } else {
+            f.write_str(&self.message)
+        }
+    }
+}
+
+/// A POU of the file that the import left out.
+#[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
+pub struct SkippedPou {
+    /// Its name.
+    pub name: String,
+    /// `PROGRAM`, `FUNCTION_BLOCK` or `FUNCTION`.
+    pub kind: String,
+    /// Why (`FBD bodies are not supported yet`).
+    pub reason: String,
 }
 
 /// Why a PLCopen XML document could not be imported.
@@ -40,7 +89,7 @@ pub struct Import {
 #[non_exhaustive]
 pub enum ImportError {
     /// The text is not well-formed XML.
-    Xml(String),
+    Xml(xml::XmlError),
     /// Well-formed XML, but not a PLCopen `<project>`.
     NotPlcopen(String),
     /// A data type could not be read.
@@ -71,7 +120,7 @@ pub enum ImportError {
 impl fmt::Display for ImportError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            ImportError::Xml(m) => write!(f, "not well-formed XML: {m}"),
+            ImportError::Xml(e) => write!(f, "not well-formed XML at {e}"),
             ImportError::NotPlcopen(m) => write!(f, "not a PLCopen XML project: {m}"),
             ImportError::DataType { name, message } => {
                 write!(f, "data type {name}: {message}")
@@ -85,6 +134,16 @@ impl fmt::Display for ImportError {
 }
 
 impl std::error::Error for ImportError {}
+
+impl ImportError {
+    /// The 1-based line and column in the file the error is about, when known.
+    pub fn location(&self) -> Option<(u32, u32)> {
+        match self {
+            ImportError::Xml(e) => Some((e.line, e.column)),
+            _ => None,
+        }
+    }
+}
 
 /// Why [`load`] failed.
 #[derive(Debug)]

@@ -17,6 +17,10 @@ pub(crate) struct Node {
     pub children: Vec<Node>,
     /// Concatenated character data directly inside this element (text and CDATA).
     pub text: String,
+    /// 1-based line of its start tag in the file.
+    pub line: u32,
+    /// 1-based column of its start tag.
+    pub column: u32,
 }
 
 impl Node {
@@ -45,7 +49,7 @@ impl Node {
     }
 }
 
-fn start_node(e: &BytesStart<'_>) -> Result<Node, String> {
+fn start_node(e: &BytesStart<'_>, at: crate::diagnostics::Location) -> Result<Node, String> {
     let name = e.local_name().as_ref().to_string();
     let mut attrs = Vec::new();
     for a in e.attributes() {
@@ -57,31 +61,67 @@ fn start_node(e: &BytesStart<'_>) -> Result<Node, String> {
             .into_owned();
         attrs.push((key, value));
     }
-    Ok(Node { name, attrs, children: Vec::new(), text: String::new() })
+    Ok(Node {
+        name,
+        attrs,
+        children: Vec::new(),
+        text: String::new(),
+        line: at.line,
+        column: at.column,
+    })
+}
+
+/// Why a document is not well-formed XML, and where.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct XmlError {
+    /// What is wrong.
+    pub message: String,
+    /// 1-based line of the place the reader stopped at.
+    pub line: u32,
+    /// 1-based column.
+    pub column: u32,
+}
+
+impl std::fmt::Display for XmlError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "line {}, column {}: {}", self.line, self.column, self.message)
+    }
 }
 
 /// Parses a whole document and returns its root element.
-pub(crate) fn parse(xml: &str) -> Result<Node, String> {
+pub(crate) fn parse(xml: &str) -> Result<Node, XmlError> {
+    let index = crate::diagnostics::LineIndex::new(xml);
+    let mut at = crate::diagnostics::Location { line: 1, column: 1 };
+    parse_at(xml, &index, &mut at).map_err(|message| XmlError {
+        message,
+        line: at.line,
+        column: at.column,
+    })
+}
+
+/// [`parse`], keeping in `at` the place of the last event read.
+fn parse_at(
+    xml: &str,
+    index: &crate::diagnostics::LineIndex<'_>,
+    at: &mut crate::diagnostics::Location,
+) -> Result<Node, String> {
     let mut reader = Reader::from_str(xml);
     let mut stack: Vec<Node> = Vec::new();
     let mut root: Option<Node> = None;
     loop {
         let pos = reader.buffer_position();
-        let event =
-            reader.read_event().map_err(|e| format!("malformed XML near byte {pos}: {e}"))?;
+        *at = index.location(u32::try_from(pos).unwrap_or(u32::MAX));
+        let at = *at;
+        let event = reader.read_event().map_err(|e| e.to_string())?;
         match event {
             Event::Start(e) => {
                 if stack.len() >= MAX_XML_DEPTH {
-                    let at = crate::diagnostics::LineIndex::new(xml).location(pos as u32);
-                    return Err(format!(
-                        "elements nested more than {MAX_XML_DEPTH} deep at line {}, column {}",
-                        at.line, at.column
-                    ));
+                    return Err(format!("elements nested more than {MAX_XML_DEPTH} deep"));
                 }
-                stack.push(start_node(&e)?)
+                stack.push(start_node(&e, at)?)
             }
             Event::Empty(e) => {
-                let node = start_node(&e)?;
+                let node = start_node(&e, at)?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(node),
                     None if root.is_none() => root = Some(node),

@@ -21,7 +21,7 @@ fn reply(stem: &str, text: &str) -> String {
             serde_json::json!({
                 "project": opened.project.to_file(),
                 "kind": kind,
-                "warnings": opened.warnings,
+                "warnings": opened.warnings.iter().map(ToString::to_string).collect::<Vec<_>>(),
             })
         }
         Err(e) => serde_json::json!({ "error": e.to_string() }),

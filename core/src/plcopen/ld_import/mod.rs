@@ -18,7 +18,7 @@ use std::collections::{BTreeMap, HashMap};
 
 use super::union_find::UnionFind;
 use super::xml::Node;
-use super::ImportError;
+use super::{ImportError, ImportNote};
 use crate::ladder::catalog::Catalog;
 use crate::ladder::{Element, Rung, DEFAULT_COLUMNS, DEFAULT_ROWS};
 use layout::{Grid, Parts, PinJob, Sp};
@@ -64,7 +64,7 @@ pub(crate) fn import_ld(
     pou: &str,
     catalog: &Catalog,
     declarations: &str,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<ImportNote>,
 ) -> Result<LdBody, ImportError> {
     let mut els = read::read_elements(ld, pou)?;
     let mut index: HashMap<String, usize> = HashMap::new();
@@ -142,20 +142,21 @@ pub(crate) fn import_ld(
     }
     for (r, rung) in rungs.iter().enumerate() {
         if rung.rows() > DEFAULT_ROWS as usize || rung.columns() > DEFAULT_COLUMNS as usize {
-            warnings.push(format!(
+            warnings.push(ImportNote::on(ld, format!(
                 "POU {pou}: rung {} needs {}×{} cells, more than the default {DEFAULT_ROWS}×{DEFAULT_COLUMNS} grid",
                 r + 1,
                 rung.rows(),
                 rung.columns()
-            ));
+            )));
         }
     }
     // Comments and labels go to the first rung below them.
     for e in &els {
         let ((Kind::Comment(text), y) | (Kind::Label(text), y)) = (&e.kind, e.y) else { continue };
         if rungs.is_empty() {
-            warnings
-                .push(format!("POU {pou}: comment or label localId {} has no rung; dropped", e.id));
+            let message =
+                format!("POU {pou}: comment or label localId {} has no rung; dropped", e.id);
+            warnings.push(ImportNote::at(e.at.0, e.at.1, message));
             continue;
         }
         let r = networks.iter().position(|(top, _)| *top >= y).unwrap_or(rungs.len() - 1);
@@ -177,7 +178,7 @@ fn build_graph(
     index: &HashMap<String, usize>,
     blocks: &HashMap<usize, pins::BlockEl>,
     pou: &str,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<ImportNote>,
 ) -> Result<Graph, ImportError> {
     let err = |id: &str, message: String| ImportError::Element {
         pou: pou.to_string(),
@@ -287,9 +288,13 @@ fn build_graph(
             let b = uf.find(out_node[i]);
             let terminal = !matches!(els[i].kind, Kind::Leaf(Element::Contact { .. }));
             if a != s && !ins.contains_key(&a) {
-                warnings.push(format!(
-                    "POU {pou}: element localId {} is not connected to the left rail; skipped",
-                    els[i].id
+                warnings.push(ImportNote::at(
+                    els[i].at.0,
+                    els[i].at.1,
+                    format!(
+                        "POU {pou}: element localId {} is not connected to the left rail; skipped",
+                        els[i].id
+                    ),
                 ));
                 changed = true;
                 continue;
@@ -298,9 +303,10 @@ fn build_graph(
                 if terminal {
                     uf.union(t_node, out_node[i]);
                 } else {
-                    warnings.push(format!(
-                        "POU {pou}: contact localId {} leads nowhere; skipped",
-                        els[i].id
+                    warnings.push(ImportNote::at(
+                        els[i].at.0,
+                        els[i].at.1,
+                        format!("POU {pou}: contact localId {} leads nowhere; skipped", els[i].id),
                     ));
                     changed = true;
                     continue;

@@ -8,7 +8,7 @@
 
 use std::collections::HashMap;
 
-use super::super::ImportError;
+use super::super::{ImportError, ImportNote};
 use super::read::{Conn, El, Kind, RawBlock};
 use crate::ladder::catalog::{BlockKind, Catalog, Scope, TypeKey};
 use crate::ladder::{is_comparison, standard_fb_power, Block, CoilKind, ContactKind, Element, Pin};
@@ -132,7 +132,7 @@ pub(super) fn sort_pins(
     els: &mut Vec<El>,
     index: &mut HashMap<String, usize>,
     ctx: &mut Ctx<'_>,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<ImportNote>,
 ) -> Result<Pins, ImportError> {
     let pou = ctx.pou;
     let lookup = |index: &HashMap<String, usize>,
@@ -220,11 +220,13 @@ pub(super) fn sort_pins(
                     Some((k, expr)) => {
                         power_pin = raw.inputs[k].0.clone();
                         let cid = format!("{id}.{power_pin}");
-                        warnings.push(format!(
+                        let at = els[i].at;
+                        warnings.push(ImportNote::at(at.0, at.1, format!(
                             "POU {pou}: input {power_pin} of block localId {id} reads the variable {expr}; it became a contact {expr} before the block"
-                        ));
+                        )));
                         els.push(El {
                             id: cid.clone(),
+                            at,
                             y: els[i].y,
                             kind: Kind::Leaf(Element::Contact {
                                 kind: ContactKind::NormallyOpen,
@@ -236,10 +238,11 @@ pub(super) fn sort_pins(
                         power = vec![Conn { from: cid, param: None }];
                     }
                     None => {
-                        warnings.push(format!(
+                        let at = els[i].at;
+                        warnings.push(ImportNote::at(at.0, at.1, format!(
                             "POU {pou}: block localId {id} ({}) has no power input wired; it was tied to the left rail so it runs on every scan",
                             raw.type_name
-                        ));
+                        )));
                         power = vec![rail_conn];
                     }
                 }
@@ -344,7 +347,7 @@ fn bind_out_variables(
     pins: &mut Pins,
     outs: &HashMap<usize, String>,
     pou: &str,
-    warnings: &mut Vec<String>,
+    warnings: &mut Vec<ImportNote>,
 ) -> Result<(), ImportError> {
     for i in 0..els.len() {
         let Kind::OutVar(expr) = els[i].kind.clone() else { continue };
@@ -352,8 +355,13 @@ fn bind_out_variables(
         let conns = els[i].conns.clone();
         let [c] = conns.as_slice() else {
             if conns.is_empty() {
-                warnings.push(format!(
-                    "POU {pou}: outVariable localId {id} ({expr}) is not connected; skipped"
+                let at = els[i].at;
+                warnings.push(ImportNote::at(
+                    at.0,
+                    at.1,
+                    format!(
+                        "POU {pou}: outVariable localId {id} ({expr}) is not connected; skipped"
+                    ),
                 ));
                 continue;
             }
@@ -375,9 +383,10 @@ fn bind_out_variables(
                 // The in-out's output is the variable passed in; another one is not written.
                 let passed = conns.first().and_then(|c| index.get(&c.from)).map(|&v| &els[v].kind);
                 if !matches!(passed, Some(Kind::InVar(e)) if e.eq_ignore_ascii_case(&expr)) {
-                    warnings.push(format!(
+                    let at = els[i].at;
+                    warnings.push(ImportNote::at(at.0, at.1, format!(
                         "POU {pou}: outVariable localId {id} ({expr}) is wired to in-out {pin}, which passes another variable; skipped"
-                    ));
+                    )));
                 }
                 continue;
             }
@@ -400,7 +409,8 @@ fn bind_out_variables(
         }
         match &els[s].kind {
             Kind::LeftRail | Kind::Leaf(_) => {
-                warnings.push(format!("POU {pou}: outVariable localId {id} ({expr}) is fed by power; it became a coil"));
+                let at = els[i].at;
+                warnings.push(ImportNote::at(at.0, at.1, format!("POU {pou}: outVariable localId {id} ({expr}) is fed by power; it became a coil")));
                 els[i].kind = Kind::Leaf(Element::Coil { kind: CoilKind::Normal, operand: expr });
             }
             _ => {

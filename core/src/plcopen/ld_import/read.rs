@@ -43,6 +43,8 @@ pub(super) enum Kind {
 #[derive(Debug, Clone)]
 pub(super) struct El {
     pub id: String,
+    /// 1-based line and column of the element in the file.
+    pub at: (u32, u32),
     pub y: f64,
     pub kind: Kind,
     /// Wires into the element's `connectionPointIn`s (power for leaves, rails and
@@ -204,7 +206,7 @@ pub(super) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError
             return Err(err(format!("<{}> without localId", n.name)));
         }
         let conns = if matches!(kind, Kind::Block(_)) { Vec::new() } else { all_conns_in(n) };
-        els.push(El { id, y: y_of(n), kind, conns });
+        els.push(El { id, at: (n.line, n.column), y: y_of(n), kind, conns });
     }
     if !continuations.is_empty() {
         let resolve = |list: &mut Vec<Conn>, at: &str| -> Result<(), ImportError> {
