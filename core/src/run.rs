@@ -5,7 +5,7 @@
 use serde::Serialize;
 use serde_json::Value as Json;
 
-use crate::build::{build_project, ProjectDiagnostic, Site};
+use crate::build::{build_project, FilePlace, ProjectDiagnostic, Site};
 use crate::diagnostics::{Code, Diagnostic, LineIndex, Severity};
 use crate::semantic;
 use crate::sim::{ScanOutcome, SimError, Simulator};
@@ -22,11 +22,14 @@ pub struct RunOptions {
     /// `VAR=VALUE` settings, values written as IEC literals. An input (VAR_INPUT or `%I`)
     /// is held at the value on every scan; any other variable is set before the first scan.
     pub set: Vec<(String, String)>,
+    /// For a project imported from a file: where its ladder cells came from, so their
+    /// problems carry the element's line and column in that file.
+    pub places: Vec<FilePlace>,
 }
 
 impl Default for RunOptions {
     fn default() -> Self {
-        RunOptions { program: None, cycles: 1, cycle_ms: 10, set: Vec::new() }
+        RunOptions { program: None, cycles: 1, cycle_ms: 10, set: Vec::new(), places: Vec::new() }
     }
 }
 
@@ -229,7 +232,16 @@ fn located(site: &Site, message: &str) -> (String, u32, u32) {
 }
 
 fn project_report(d: &ProjectDiagnostic) -> DiagnosticReport {
-    let (message, line, column) = located(&d.site, &d.message);
+    project_report_in(d, &[])
+}
+
+/// [`project_report`], at the element's place in the file the project was imported from
+/// when `places` knows it.
+fn project_report_in(d: &ProjectDiagnostic, places: &[FilePlace]) -> DiagnosticReport {
+    let (message, mut line, mut column) = located(&d.site, &d.message);
+    if let Some(p) = places.iter().find(|p| p.site == d.site) {
+        (line, column) = (p.line, p.column);
+    }
     DiagnosticReport {
         severity: d.severity,
         code: d.code.as_str().to_string(),
@@ -247,7 +259,8 @@ fn project_report(d: &ProjectDiagnostic) -> DiagnosticReport {
 /// it still exists), else the first.
 pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> RunReport {
     let build = build_project(project);
-    let diagnostics = build.diagnostics.iter().map(project_report).collect();
+    let diagnostics =
+        build.diagnostics.iter().map(|d| project_report_in(d, &options.places)).collect();
     let program = if build.has_errors() { None } else { build.program.clone() };
     let mut options = options.clone();
     if options.program.is_none() {

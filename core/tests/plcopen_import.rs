@@ -509,6 +509,29 @@ mod command_line {
     }
 
     #[test]
+    fn a_problem_in_an_imported_rung_is_at_its_element_in_the_file() {
+        let text = std::fs::read_to_string(sample_path("ld_start_stop_latch.xml")).unwrap();
+        // The NC contact (localId 3, line 80) reads an undeclared variable.
+        let text =
+            text.replacen("<variable>Stop_PB</variable>", "<variable>Stop_PBX</variable>", 1);
+        let dir = std::env::temp_dir().join(format!("plc-contract-ld-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("latch.xml");
+        std::fs::write(&file, text).unwrap();
+        let file = file.to_string_lossy().into_owned();
+        let report = json(&plc(&["run", &file, "--json"]));
+        let d = &report["diagnostics"][0];
+        assert_eq!(
+            (d["code"].as_str(), d["line"].as_u64(), d["column"].as_u64()),
+            (Some("E0418"), Some(80), Some(13)),
+            "{d}"
+        );
+        let check = plc(&["check", &file]);
+        assert!(String::from_utf8_lossy(&check.stdout)
+            .contains("latch.xml:80:13: error[E0418]: POU Hello_World, rung 1, row 1, column 2:"));
+    }
+
+    #[test]
     fn a_program_the_import_left_out_is_named() {
         let file = sample_path("sfc_traffic_light.xml");
         let report = json(&plc(&["run", &file, "--json"]));

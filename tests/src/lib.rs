@@ -59,6 +59,7 @@ impl Case {
             cycles: d.cycles.unwrap_or(defaults.cycles),
             cycle_ms: d.cycle_ms.unwrap_or(defaults.cycle_ms),
             set: d.set.clone(),
+            ..defaults
         }
     }
 }

@@ -143,6 +143,8 @@ struct Loaded {
     notes: Vec<plc_core::plcopen::ImportNote>,
     /// POUs the import left out.
     skipped: Vec<plc_core::plcopen::SkippedPou>,
+    /// Where the imported ladder cells came from in the file.
+    places: Vec<plc_core::build::FilePlace>,
 }
 
 /// Why a file could not be opened: the message and its place in the file (0, 0 when not
@@ -174,7 +176,12 @@ fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
         column: 0,
     })?;
     if plc_core::open::file_kind(&text) == plc_core::open::FileKind::St {
-        return Ok(Loaded { input: Input::Source(text), notes: Vec::new(), skipped: Vec::new() });
+        return Ok(Loaded {
+            input: Input::Source(text),
+            notes: Vec::new(),
+            skipped: Vec::new(),
+            places: Vec::new(),
+        });
     }
     let opened = plc_core::open::open_text("project", &text).map_err(|e| {
         let (line, column) = e.location().unwrap_or((0, 0));
@@ -184,6 +191,7 @@ fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
         input: Input::Project(opened.project),
         notes: opened.warnings,
         skipped: opened.skipped,
+        places: opened.places,
     })
 }
 
@@ -289,9 +297,7 @@ fn check(path: &Path) -> ExitCode {
     };
     let source = match loaded.input {
         Input::Source(s) => s,
-        Input::Project(ref project) => {
-            return check_project(path, project, &loaded.notes, &loaded.skipped)
-        }
+        Input::Project(ref project) => return check_project(path, project, &loaded),
     };
     let analysis = plc_core::semantic::analyze(&source);
     let index = LineIndex::new(&source);
@@ -315,16 +321,12 @@ fn check(path: &Path) -> ExitCode {
 
 /// Checks a project (ST and ladder POUs): diagnostics as for ST; ladder problems name
 /// their POU, rung, row and column in the message.
-fn check_project(
-    path: &Path,
-    project: &Project,
-    notes: &[plc_core::plcopen::ImportNote],
-    skipped: &[plc_core::plcopen::SkippedPou],
-) -> ExitCode {
-    let mut report = run_project(project, &RunOptions { cycles: 0, ..RunOptions::default() });
-    name_skipped_programs(&mut report, skipped);
+fn check_project(path: &Path, project: &Project, loaded: &Loaded) -> ExitCode {
+    let options = RunOptions { cycles: 0, places: loaded.places.clone(), ..RunOptions::default() };
+    let mut report = run_project(project, &options);
+    name_skipped_programs(&mut report, &loaded.skipped);
     let (mut errors, mut warnings) = (0, 0);
-    for d in note_diagnostics(notes).iter().chain(&report.diagnostics) {
+    for d in note_diagnostics(&loaded.notes).iter().chain(&report.diagnostics) {
         match d.severity {
             plc_core::diagnostics::Severity::Error => errors += 1,
             plc_core::diagnostics::Severity::Warning => warnings += 1,
@@ -441,7 +443,9 @@ fn run(path: &Path, options: RunOptions, json: bool) -> ExitCode {
         Some(d) => RunReport::failed(d),
         None => match &loaded.input {
             Input::Source(source) => run_source(source, &options),
-            Input::Project(project) => run_project(project, &options),
+            Input::Project(project) => {
+                run_project(project, &RunOptions { places: loaded.places.clone(), ..options })
+            }
         },
     };
     name_skipped_programs(&mut report, &loaded.skipped);
@@ -482,7 +486,11 @@ fn main() -> ExitCode {
                     }
                 }
             }
-            run(&file, RunOptions { program, cycles, cycle_ms, set: pairs }, json)
+            run(
+                &file,
+                RunOptions { program, cycles, cycle_ms, set: pairs, places: Vec::new() },
+                json,
+            )
         }
         Command::Explain { markdown: true, .. } => {
             print!("{}", plc_core::diagnostics::problems_markdown());

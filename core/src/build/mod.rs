@@ -95,6 +95,19 @@ impl Site {
     }
 }
 
+/// Where a part of a project came from in a file it was imported from: the site (a ladder
+/// cell) and the 1-based line and column of its element in the file, so problems found in
+/// the project are reported at the element the file's author drew.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FilePlace {
+    /// The part of the project.
+    pub site: Site,
+    /// 1-based line of the element in the file.
+    pub line: u32,
+    /// 1-based column.
+    pub column: u32,
+}
+
 /// One problem of a project, located at its [`Site`].
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ProjectDiagnostic {

@@ -43,6 +43,8 @@ pub struct Opened {
     pub warnings: Vec<crate::plcopen::ImportNote>,
     /// The POUs of the file that were left out, and why.
     pub skipped: Vec<crate::plcopen::SkippedPou>,
+    /// Where each imported ladder cell came from in the file.
+    pub places: Vec<crate::build::FilePlace>,
 }
 
 /// Why a file could not be opened as a project.
@@ -108,7 +110,13 @@ pub fn open_plain(name: &str, text: &str) -> Result<Option<Opened>, OpenError> {
         }
         FileKind::Plcopen | FileKind::Pnml => return Ok(None),
     };
-    Ok(Some(Opened { project, kind, warnings: Vec::new(), skipped: Vec::new() }))
+    Ok(Some(Opened {
+        project,
+        kind,
+        warnings: Vec::new(),
+        skipped: Vec::new(),
+        places: Vec::new(),
+    }))
 }
 
 /// Opens `text` as a project. `name` names the project when the file has no name of its
@@ -127,6 +135,7 @@ pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
             kind: FileKind::Pnml,
             warnings: Vec::new(),
             skipped: Vec::new(),
+            places: Vec::new(),
         });
     }
     let import = crate::plcopen::import(text).map_err(OpenError::Plcopen)?;
@@ -135,6 +144,7 @@ pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
         kind: FileKind::Plcopen,
         warnings: import.warnings,
         skipped: import.skipped,
+        places: import.places,
     })
 }
 

@@ -105,11 +105,17 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     let mut project =
         Project { schema: SCHEMA_VERSION, name, source, settings, ladder, petri: Vec::new() };
     let catalog = project.catalog();
+    let mut places = Vec::new();
     for (k, (pou_node, body)) in bodies.into_iter().enumerate() {
         let lp = &mut project.ladder[k];
         let ld =
             super::ld_import::import_ld(body, &lp.name, &catalog, &lp.declarations, &mut warnings)?;
         lp.rungs = ld.rungs;
+        places.extend(ld.origins.iter().map(|&(cell, (line, column))| crate::build::FilePlace {
+            site: crate::build::Site::Ladder { pou: lp.name.clone(), cell: Some(cell) },
+            line,
+            column,
+        }));
         if !ld.declarations.is_empty() {
             lp.declarations.push_str("VAR\n");
             for d in ld.declarations {
@@ -123,7 +129,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             )));
         }
     }
-    Ok(Import { project, warnings, skipped })
+    Ok(Import { project, warnings, skipped, places })
 }
 
 /// Where [`import_pou`] puts what it reads.

@@ -37,6 +37,8 @@ pub struct Import {
     pub warnings: Vec<ImportNote>,
     /// The POUs that were not imported, and why.
     pub skipped: Vec<SkippedPou>,
+    /// Where each ladder cell came from in the file (for problems at the element).
+    pub places: Vec<crate::build::FilePlace>,
 }
 
 /// A note on something an import skipped or changed, with the place in the file of the

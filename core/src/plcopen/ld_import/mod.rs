@@ -32,7 +32,12 @@ pub(crate) struct LdBody {
     /// Declarations (`    name : TYPE;`) of the variables created for data wires from
     /// function outputs.
     pub declarations: Vec<String>,
+    /// Where each placed element came from.
+    pub origins: Vec<Origin>,
 }
+
+/// A placed element's cell (rung, row, column) and its line and column in the file.
+pub(crate) type Origin = ((usize, usize, usize), (u32, u32));
 
 /// The electrical graph: element `i` is an edge `in_node[i]` → `out_node[i]`; wired block
 /// inputs consume `pin_node[(block, input)]`.
@@ -125,9 +130,15 @@ pub(crate) fn import_ld(
     order_by_data(&mut networks, &sorted.data);
 
     let mut rungs = Vec::new();
+    let mut origins = Vec::new();
     for (_, edges) in &networks {
         let (rung, pos) =
             layout_network(&graph, edges, &parts).map_err(|(i, m)| err(&els[i].id, m))?;
+        for (&i, &(r, c)) in &pos {
+            if let Some(e) = els.get(i) {
+                origins.push(((rungs.len(), r, c), e.at));
+            }
+        }
         for &(a, b) in &sorted.data {
             if let (Some(&(_, ca)), Some(&(_, cb))) = (pos.get(&a), pos.get(&b)) {
                 if ca >= cb {
@@ -169,7 +180,8 @@ pub(crate) fn import_ld(
             rungs[r].comment.push_str(text);
         }
     }
-    Ok(LdBody { rungs, declarations: sorted.declarations })
+    origins.sort_unstable();
+    Ok(LdBody { rungs, declarations: sorted.declarations, origins })
 }
 
 /// Builds the electrical graph and drops what no power reaches (with warnings).
