@@ -532,6 +532,29 @@ mod command_line {
     }
 
     #[test]
+    fn an_element_that_does_not_import_is_located() {
+        let text = std::fs::read_to_string(sample_path("ld_start_stop_latch.xml")).unwrap();
+        // The NC contact (localId 3, line 80) is wired from an element that does not exist.
+        let text = text.replacen(r#"refLocalId="2""#, r#"refLocalId="99""#, 1);
+        let dir = std::env::temp_dir().join(format!("plc-contract-el-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("dangling.xml");
+        std::fs::write(&file, text).unwrap();
+        let out = plc(&["run", &file.to_string_lossy(), "--json"]);
+        assert_eq!(out.status.code(), Some(2));
+        let d = &json(&out)["diagnostics"][0];
+        assert_eq!(
+            (d["code"].as_str(), d["line"].as_u64(), d["column"].as_u64()),
+            (Some("E0304"), Some(80), Some(13)),
+            "{d}"
+        );
+        assert!(d["message"]
+            .as_str()
+            .unwrap()
+            .contains("localId 3: connection refers to localId 99"));
+    }
+
+    #[test]
     fn a_program_the_import_left_out_is_named() {
         let file = sample_path("sfc_traffic_light.xml");
         let report = json(&plc(&["run", &file, "--json"]));

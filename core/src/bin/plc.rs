@@ -184,7 +184,7 @@ fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
         });
     }
     let opened = plc_core::open::open_text("project", &text).map_err(|e| {
-        let (line, column) = e.location().unwrap_or((0, 0));
+        let (line, column) = e.location_in(&text).unwrap_or((0, 0));
         LoadFailure { message: e.to_string(), line, column }
     })?;
     Ok(Loaded {

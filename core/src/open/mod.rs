@@ -72,10 +72,11 @@ impl fmt::Display for OpenError {
 impl std::error::Error for OpenError {}
 
 impl OpenError {
-    /// The 1-based line and column in the file the error is about, when known.
-    pub fn location(&self) -> Option<(u32, u32)> {
+    /// The 1-based line and column in `text` (the file that gave this error) of what the
+    /// error is about, when known.
+    pub fn location_in(&self, text: &str) -> Option<(u32, u32)> {
         match self {
-            OpenError::Plcopen(e) => e.location(),
+            OpenError::Plcopen(e) => e.location_in(text),
             _ => None,
         }
     }

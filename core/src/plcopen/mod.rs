@@ -138,13 +138,44 @@ impl fmt::Display for ImportError {
 impl std::error::Error for ImportError {}
 
 impl ImportError {
-    /// The 1-based line and column in the file the error is about, when known.
+    /// The 1-based line and column in the file the error is about, when the error itself
+    /// knows it (a well-formedness error); [`ImportError::location_in`] finds the others.
     pub fn location(&self) -> Option<(u32, u32)> {
         match self {
             ImportError::Xml(e) => Some((e.line, e.column)),
             _ => None,
         }
     }
+
+    /// The 1-based line and column in `xml_text` (the file that gave this error) of the
+    /// element the error is about: the data type, the POU, or the body element by its
+    /// `localId`.
+    pub fn location_in(&self, xml_text: &str) -> Option<(u32, u32)> {
+        if let Some(at) = self.location() {
+            return Some(at);
+        }
+        let root = xml::parse(xml_text).ok()?;
+        let named = |kind: &'static str, name: &str| {
+            find(&root, &|n: &xml::Node| n.name == kind && n.attr("name") == Some(name))
+        };
+        let node = match self {
+            ImportError::DataType { name, .. } => named("dataType", name),
+            ImportError::Pou { pou, .. } => named("pou", pou),
+            ImportError::Element { pou, local_id, .. } => named("pou", pou).and_then(|p| {
+                find(p, &|n: &xml::Node| n.attr("localId").map(str::trim) == Some(local_id))
+            }),
+            _ => None,
+        }?;
+        Some((node.line, node.column))
+    }
+}
+
+/// The first element of `node`'s tree (itself included) that `is` accepts.
+fn find<'a>(node: &'a xml::Node, is: &dyn Fn(&xml::Node) -> bool) -> Option<&'a xml::Node> {
+    if is(node) {
+        return Some(node);
+    }
+    node.children.iter().find_map(|c| find(c, is))
 }
 
 /// Why [`load`] failed.
