@@ -177,9 +177,21 @@ fn oven_control_st_sample() {
 }
 
 #[test]
-fn fbd_and_sfc_are_skipped_with_warnings() {
+fn fbd_bodies_become_st_and_sfc_is_skipped_with_warnings() {
     let i = sample("fbd_user_function_and_fbs.xml");
-    assert!(i.warnings.iter().any(|w| w.message.contains("FA_SERV") && w.message.contains("FBD")));
+    // Every FBD POU is imported (as ST statements, with a note saying the drawing is not
+    // kept); none is skipped.
+    assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    for pou in ["program0_POU", "FA", "FA_SERV", "AKT_5_2_MV"] {
+        assert!(
+            i.warnings
+                .iter()
+                .any(|w| w.message.starts_with(&format!("POU {pou}: the FBD body runs as ST"))),
+            "{pou}"
+        );
+    }
+    assert!(i.project.source.contains("FUNCTION FA_SERV : BOOL"));
+    assert!(i.project.source.contains("SR0(S1 := Hand_P2, R := Hand_P1);"), "{}", i.project.source);
     assert!(i.project.source.contains("S_FA_STATUS"));
     let i = sample("sfc_traffic_light.xml");
     assert!(i
@@ -580,4 +592,130 @@ mod command_line {
             "the PROGRAM Traffic_Control was left out when the file was imported: SFC bodies are not supported yet"
         );
     }
+}
+
+/// An FBD body: `<LD>` replaced by `<FBD>` in [`doc`].
+fn fbd_doc(body: &str, vars: &str) -> String {
+    doc(body, vars).replace("<LD>", "<FBD>").replace("</LD>", "</FBD>")
+}
+
+fn inv(id: u32, x: u32, y: u32, expr: &str) -> String {
+    format!(
+        r#"<inVariable localId="{id}"><position x="{x}" y="{y}"/><connectionPointOut/><expression>{expr}</expression></inVariable>"#
+    )
+}
+
+fn outv(id: u32, x: u32, y: u32, order: u32, from: u32, param: &str, expr: &str) -> String {
+    let param =
+        if param.is_empty() { String::new() } else { format!(r#" formalParameter="{param}""#) };
+    format!(
+        r#"<outVariable localId="{id}" executionOrderId="{order}"><position x="{x}" y="{y}"/><connectionPointIn><connection refLocalId="{from}"{param}/></connectionPointIn><expression>{expr}</expression></outVariable>"#
+    )
+}
+
+fn blk(
+    id: u32,
+    x: u32,
+    y: u32,
+    ty: &str,
+    inst: &str,
+    inputs: &[(&str, u32)],
+    outputs: &[&str],
+) -> String {
+    let inst = if inst.is_empty() { String::new() } else { format!(r#" instanceName="{inst}""#) };
+    let ins: String = inputs
+        .iter()
+        .map(|(p, from)| format!(r#"<variable formalParameter="{p}"><connectionPointIn><connection refLocalId="{from}"/></connectionPointIn></variable>"#))
+        .collect();
+    let outs: String = outputs
+        .iter()
+        .map(|p| format!(r#"<variable formalParameter="{p}"><connectionPointOut/></variable>"#))
+        .collect();
+    format!(
+        r#"<block localId="{id}" typeName="{ty}"{inst}><position x="{x}" y="{y}"/><inputVariables>{ins}</inputVariables><inOutVariables/><outputVariables>{outs}</outputVariables></block>"#
+    )
+}
+
+/// FBD bodies run (issue 16): functions written inline, function blocks as calls, output
+/// variables as assignments; feedback reads the previous scan's value.
+#[test]
+fn an_fbd_body_runs_with_inline_functions_a_timer_and_feedback() {
+    let vars = [var("A", "BOOL"), var("B", "BOOL"), var("Q", "BOOL"), var("Cnt", "INT")].concat();
+    let body = [
+        inv(1, 0, 0, "A"),
+        inv(2, 0, 40, "B"),
+        blk(3, 100, 0, "AND", "", &[("IN1", 1), ("IN2", 2)], &["OUT"]),
+        inv(5, 100, 80, "T#20ms"),
+        blk(4, 200, 0, "TON", "T1", &[("IN", 3), ("PT", 5)], &["Q", "ET"]),
+        outv(6, 300, 0, 0, 4, "Q", "Q"),
+        // Cnt := ADD(Cnt, 1): a feedback loop through a variable.
+        inv(8, 0, 200, "Cnt"),
+        inv(10, 0, 240, "1"),
+        blk(9, 100, 200, "ADD", "", &[("IN1", 8), ("IN2", 10)], &["OUT"]),
+        outv(11, 200, 200, 0, 9, "", "Cnt"),
+    ]
+    .concat();
+    let imported = import(&fbd_doc(&body, &vars)).unwrap();
+    assert!(imported.skipped.is_empty());
+    assert!(
+        imported.project.source.contains("T1(IN := AND(A, B), PT := T#20ms);"),
+        "{}",
+        imported.project.source
+    );
+    assert!(imported.project.source.contains("T1 : TON;"), "the instance is declared");
+    let mut sim = project_simulator(&imported.project, None).unwrap();
+    sim.hold("A", "TRUE").unwrap();
+    sim.hold("B", "TRUE").unwrap();
+    let mut q = Vec::new();
+    for _ in 0..4 {
+        sim.scan();
+        q.push(sim.read("Q").unwrap() == Value::Bool(true));
+    }
+    assert_eq!(q, [false, false, true, true], "TON of 20 ms at a 10 ms cycle");
+    assert!(matches!(sim.read("Cnt").unwrap(), Value::Int(4, _)), "Cnt counts one per scan");
+}
+
+/// Statements run in `executionOrderId` order when every one has its own, else top to
+/// bottom: `X := Y` above `Y := TRUE` reads last scan's Y.
+#[test]
+fn fbd_statements_follow_the_execution_order_or_the_drawing() {
+    let vars = [var("X", "BOOL"), var("Y", "BOOL")].concat();
+    let run = |order_x: u32, order_y: u32| {
+        let body = [
+            inv(1, 0, 0, "Y"),
+            outv(2, 100, 0, order_x, 1, "", "X"),
+            inv(3, 0, 100, "TRUE"),
+            outv(4, 100, 100, order_y, 3, "", "Y"),
+        ]
+        .concat();
+        let imported = import(&fbd_doc(&body, &vars)).unwrap();
+        let mut sim = project_simulator(&imported.project, None).unwrap();
+        sim.scan();
+        sim.read("X").unwrap() == Value::Bool(true)
+    };
+    assert!(!run(0, 0), "by the drawing: X := Y runs first, Y is still FALSE");
+    assert!(run(2, 1), "by executionOrderId: Y := TRUE runs first");
+}
+
+/// A hostile FBD network (each function's output feeding both inputs of the next, forty
+/// deep: 2^40 terms written out) is refused with a note, and nothing else is lost.
+#[test]
+fn an_fbd_network_that_would_explode_as_st_is_skipped_with_a_note() {
+    let vars = [var("X", "INT"), var("Y", "INT")].concat();
+    let mut body = inv(1, 0, 0, "X");
+    for k in 0..40u32 {
+        body.push_str(&blk(
+            k + 2,
+            10 * k,
+            0,
+            "ADD",
+            "",
+            &[("IN1", k + 1), ("IN2", k + 1)],
+            &["OUT"],
+        ));
+    }
+    body.push_str(&outv(100, 500, 0, 0, 41, "", "Y"));
+    let imported = import(&fbd_doc(&body, &vars)).unwrap();
+    assert_eq!(imported.skipped.len(), 1);
+    assert!(imported.skipped[0].reason.contains("too large"), "{:?}", imported.skipped);
 }

@@ -201,25 +201,38 @@ fn import_pou<'a>(
     match lang.name.as_str() {
         "ST" => {
             let text = lang.deep_text().replace("\r\n", "\n");
-            source.push_str(keyword);
-            source.push(' ');
-            source.push_str(&name);
-            if pou_type == "function" {
-                let rt =
-                    return_type.ok_or_else(|| err("a function without <returnType>".into()))?;
-                source.push_str(" : ");
-                source.push_str(&rt);
-            }
-            source.push('\n');
-            source.push_str(&declarations);
-            let text = text.trim_matches('\n');
-            if !text.trim().is_empty() {
-                source.push_str(text);
-                source.push('\n');
-            }
-            source.push_str(end);
-            source.push_str("\n\n");
+            let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
+            push_pou(source, &header, &declarations, &text, end);
         }
+        "FBD" => match super::fbd_import::import_fbd(lang, &name) {
+            Ok(fbd) => {
+                let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
+                let mut declarations = declarations;
+                let missing: Vec<&(String, String)> =
+                    fbd.instances.iter().filter(|(i, _)| !declares(&declarations, i)).collect();
+                if !missing.is_empty() {
+                    declarations.push_str("VAR\n");
+                    for (inst, ty) in missing {
+                        declarations.push_str(&format!("    {inst} : {ty};\n"));
+                    }
+                    declarations.push_str("END_VAR\n");
+                }
+                push_pou(source, &header, &declarations, &fbd.statements, end);
+                warnings.extend(fbd.notes);
+                warnings.push(ImportNote::on(
+                    lang,
+                    format!("POU {name}: the FBD body runs as ST statements in its execution order (the drawing is not kept yet)"),
+                ));
+            }
+            Err(e) => {
+                let reason = format!("its FBD body cannot be imported yet ({e})");
+                warnings.push(ImportNote::on(
+                    lang,
+                    format!("POU {name}: {reason}; the POU was skipped"),
+                ));
+                out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+            }
+        },
         "LD" => {
             let kind =
                 match pou_type {
@@ -241,6 +254,44 @@ fn import_pou<'a>(
         }
     }
     Ok(None)
+}
+
+/// `PROGRAM Name`, `FUNCTION Name : TYPE`, … : a POU's first line.
+fn pou_header(
+    keyword: &str,
+    name: &str,
+    pou_type: &str,
+    return_type: Option<String>,
+) -> Result<String, String> {
+    if pou_type == "function" {
+        let rt = return_type.ok_or("a function without <returnType>")?;
+        Ok(format!("{keyword} {name} : {rt}"))
+    } else {
+        Ok(format!("{keyword} {name}"))
+    }
+}
+
+/// Appends a POU written in ST to `source`.
+fn push_pou(source: &mut String, header: &str, declarations: &str, body: &str, end: &str) {
+    source.push_str(header);
+    source.push('\n');
+    source.push_str(declarations);
+    let body = body.trim_matches('\n');
+    if !body.trim().is_empty() {
+        source.push_str(body);
+        source.push('\n');
+    }
+    source.push_str(end);
+    source.push_str("\n\n");
+}
+
+/// Whether `declarations` declare `name` (a whole word before a colon).
+fn declares(declarations: &str, name: &str) -> bool {
+    declarations.lines().any(|l| {
+        l.split(':')
+            .next()
+            .is_some_and(|names| names.split(',').any(|n| n.trim().eq_ignore_ascii_case(name)))
+    })
 }
 
 /// Parses a task interval such as `T#20ms`, `T#1s`, `PT0.02S` into milliseconds.

@@ -14,6 +14,7 @@
 
 mod decl_xml;
 mod export;
+mod fbd_import;
 mod import;
 mod ld_export;
 mod ld_import;

@@ -11,7 +11,7 @@
 
 mod layout;
 mod pins;
-mod read;
+pub(crate) mod read;
 mod verify;
 
 use std::collections::{BTreeMap, HashMap};

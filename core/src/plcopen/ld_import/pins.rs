@@ -227,6 +227,8 @@ pub(super) fn sort_pins(
                         els.push(El {
                             id: cid.clone(),
                             at,
+                            x: els[i].x,
+                            order: 0,
                             y: els[i].y,
                             kind: Kind::Leaf(Element::Contact {
                                 kind: ContactKind::NormallyOpen,

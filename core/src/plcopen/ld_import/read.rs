@@ -10,14 +10,14 @@ use crate::ladder::{CoilKind, ContactKind, Element};
 
 /// A wire end: the element it comes from and the output pin named, if any.
 #[derive(Debug, Clone, PartialEq)]
-pub(super) struct Conn {
+pub(crate) struct Conn {
     pub from: String,
     pub param: Option<String>,
 }
 
 /// A block as written: its pins and what is wired to them.
 #[derive(Debug, Clone)]
-pub(super) struct RawBlock {
+pub(crate) struct RawBlock {
     pub type_name: String,
     pub instance: Option<String>,
     /// `(formalParameter, wires)` of the input pins, in document order.
@@ -27,7 +27,7 @@ pub(super) struct RawBlock {
 }
 
 #[derive(Debug, Clone)]
-pub(super) enum Kind {
+pub(crate) enum Kind {
     LeftRail,
     RightRail,
     /// A contact, coil, jump or return.
@@ -41,10 +41,14 @@ pub(super) enum Kind {
 }
 
 #[derive(Debug, Clone)]
-pub(super) struct El {
+pub(crate) struct El {
     pub id: String,
     /// 1-based line and column of the element in the file.
     pub at: (u32, u32),
+    /// Its `position`'s x.
+    pub x: f64,
+    /// Its `executionOrderId` (0: none).
+    pub order: u32,
     pub y: f64,
     pub kind: Kind,
     /// Wires into the element's `connectionPointIn`s (power for leaves, rails and
@@ -112,7 +116,7 @@ fn pin_list(
 }
 
 /// Reads the elements of an LD body, with connectors and continuations resolved.
-pub(super) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError> {
+pub(crate) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError> {
     let mut els = Vec::new();
     let mut connectors: HashMap<String, Vec<Conn>> = HashMap::new();
     // Continuations by localId: (name in upper case, name as written).
@@ -206,7 +210,17 @@ pub(super) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError
             return Err(err(format!("<{}> without localId", n.name)));
         }
         let conns = if matches!(kind, Kind::Block(_)) { Vec::new() } else { all_conns_in(n) };
-        els.push(El { id, at: (n.line, n.column), y: y_of(n), kind, conns });
+        let x = n.child("position").and_then(|p| p.attr("x")).and_then(|x| x.trim().parse().ok());
+        let order = n.attr("executionOrderId").and_then(|o| o.trim().parse().ok()).unwrap_or(0);
+        els.push(El {
+            id,
+            at: (n.line, n.column),
+            x: x.unwrap_or(0.0),
+            order,
+            y: y_of(n),
+            kind,
+            conns,
+        });
     }
     if !continuations.is_empty() {
         let resolve = |list: &mut Vec<Conn>, at: &str| -> Result<(), ImportError> {
