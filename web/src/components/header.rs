@@ -8,6 +8,7 @@ use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
+use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
 use crate::import::import_text;
@@ -52,11 +53,7 @@ async fn import_file(state: AppState, file: web_sys::File) {
 
 /// Copies the share link to the clipboard (when allowed) and shows it.
 async fn share(state: AppState, link: String) {
-    let copied = match web_sys::window() {
-        Some(w) => JsFuture::from(w.navigator().clipboard().write_text(&link)).await.is_ok(),
-        None => false,
-    };
-    if copied {
+    if copy_to_clipboard(&link).await {
         state.info(format!("Share link copied to the clipboard: {link}"));
     } else {
         state.info(format!("Copy this share link (the clipboard is not available here): {link}"));
@@ -244,15 +241,8 @@ pub fn Header() -> impl IntoView {
                 <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
             </nav>
             {move || share_link.get().map(|link| view! {
-                <div class="share-box">
-                    <input type="text" readonly aria-label="Share link" prop:value=link
-                        on:focus=move |ev: ev::FocusEvent| {
-                            if let Some(i) = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok()) {
-                                i.select();
-                            }
-                        }/>
-                    <button class="close" aria-label="Close share link" on:click=move |_| share_link.set(None)>"×"</button>
-                </div>
+                <ShareBox link=link label="Share link" close_label="Close share link"
+                    on_close=move || share_link.set(None)/>
             })}
         </header>
     }

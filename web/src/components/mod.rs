@@ -11,5 +11,6 @@ pub mod pou_actions;
 pub mod pou_pane;
 pub mod problems;
 pub mod sfc;
+pub mod share_box;
 pub mod timeline;
 pub mod variables;

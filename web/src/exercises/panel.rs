@@ -1,23 +1,13 @@
 //! The exercise panel beside the editors: the statement, the interface, `Check`,
 //! `Reset to starter`, `Share exercise`, and the last check's report.
 
-use leptos::ev;
 use leptos::prelude::*;
 use plc_core::exercise::Direction;
-use wasm_bindgen::JsCast;
-use wasm_bindgen_futures::JsFuture;
 
 use super::report::ReportView;
 use super::{language_name, Exercises, Screen};
+use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::state::AppState;
-
-/// Copies `link` to the clipboard when allowed.
-async fn copy(link: String) -> bool {
-    match web_sys::window() {
-        Some(w) => JsFuture::from(w.navigator().clipboard().write_text(&link)).await.is_ok(),
-        None => false,
-    }
-}
 
 /// The open exercise (nothing when the open project is not an attempt).
 #[component]
@@ -28,7 +18,7 @@ pub fn ExercisePanel() -> impl IntoView {
         let Some(link) = ex.link() else { return };
         ex.share_link.set(Some(link.clone()));
         leptos::task::spawn_local(async move {
-            if copy(link).await {
+            if copy_to_clipboard(&link).await {
                 state.info("Exercise link copied to the clipboard (it never holds hidden scenarios nor the reference).");
             }
         });
@@ -57,15 +47,8 @@ pub fn ExercisePanel() -> impl IntoView {
                         </div>
                     </div>
                     {move || ex.share_link.get().map(|link| view! {
-                        <div class="share-box">
-                            <input type="text" readonly aria-label="Exercise link" prop:value=link
-                                on:focus=move |e: ev::FocusEvent| {
-                                    if let Some(i) = e.target().and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok()) {
-                                        i.select();
-                                    }
-                                }/>
-                            <button class="close" aria-label="Close exercise link" on:click=move |_| ex.share_link.set(None)>"×"</button>
-                        </div>
+                        <ShareBox link=link label="Exercise link" close_label="Close exercise link"
+                            on_close=move || ex.share_link.set(None)/>
                     })}
                     <details class="exercise-task" open=true>
                         <summary>"Task"</summary>
