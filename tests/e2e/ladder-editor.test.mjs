@@ -200,16 +200,17 @@ test('keys alone build a rung Start, TON and Lamp, Escape takes a placement back
   await page.keyboard.press('o');
   await page.keyboard.press('Escape');
   await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: empty' }).waitFor();
-  // `b` opens the block picker; typing picks TON and Enter puts it into the cell.
+  // `b` opens the block picker; typing picks TON and Enter puts it into the cell. (A person
+  // types once the list is open and has the focus.)
+  const focused = (label) => page.waitForFunction((l) => document.activeElement?.getAttribute('aria-label') === l, label);
   await page.keyboard.press('b');
-  await view.getByRole('combobox', { name: 'Block type' }).waitFor();
+  await focused('Block type');
   await page.keyboard.type('TON');
   await page.keyboard.press('Enter');
   await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: TON T1' }).waitFor();
   const pt = view.getByRole('textbox', { name: 'PT of T1' });
   assert.equal(await pt.inputValue(), 'T#1s', 'a timer starts with a preset');
   // Enter on the block goes to its first pin; Enter there sets it and comes back.
-  const focused = (label) => page.waitForFunction((l) => document.activeElement?.getAttribute('aria-label') === l, label);
   await page.keyboard.press('Enter');
   await focused('PT of T1');
   await page.keyboard.type('T#2s');
@@ -226,6 +227,7 @@ test('keys alone build a rung Start, TON and Lamp, Escape takes a placement back
   await focused('Rung 1, row 1, column 3: coil Lamp');
   await page.keyboard.press('ArrowDown');
   await page.keyboard.press('b');
+  await focused('Block type');
   await page.keyboard.type('TOF');
   await page.keyboard.press('Enter');
   await view.getByRole('gridcell', { name: 'Rung 1, row 2, column 3: TOF T2' }).waitFor();
