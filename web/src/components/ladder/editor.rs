@@ -313,10 +313,13 @@ impl LadderEditor {
                 .as_ref()
                 .and_then(|d| d.get_element_by_id(id))
                 .and_then(|e| e.dyn_into::<web_sys::HtmlElement>().ok());
-            let operand_open = document
-                .and_then(|d| d.active_element())
-                .is_some_and(|a| a.class_list().contains("ld-operand-box"));
-            if let Some(el) = el.filter(|_| !operand_open) {
+            // A key pressed before this runs may have opened the operand box or the block
+            // picker: they keep the focus they took.
+            let elsewhere = document.and_then(|d| d.active_element()).is_some_and(|a| {
+                a.class_list().contains("ld-operand-box")
+                    || a.closest(".ld-picker").ok().flatten().is_some()
+            });
+            if let Some(el) = el.filter(|_| !elsewhere) {
                 let _ = el.focus();
             }
         };
