@@ -125,13 +125,7 @@ fn diagnostic_report(index: &LineIndex<'_>, d: &Diagnostic) -> DiagnosticReport 
 }
 
 fn option_error(code: Code, message: String) -> DiagnosticReport {
-    DiagnosticReport {
-        severity: Severity::Error,
-        code: code.as_str().to_string(),
-        message,
-        line: 0,
-        column: 0,
-    }
+    DiagnosticReport::new(Severity::Error, code, message, 0, 0)
 }
 
 /// The program instance's variables as JSON, without the generated ones.

@@ -15,7 +15,7 @@ pub use format::{
 };
 pub use grade::{grade, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport};
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
-pub use statement::statement_html;
+pub use statement::{next_to, statement_html};
 pub use view::{ExerciseView, ScenarioView};
 
 #[cfg(test)]

@@ -25,6 +25,15 @@ pub fn statement_html(markdown: &str, base: Option<&str>) -> String {
     html
 }
 
+/// The address of `name` in the folder of the file at `base` (`https://h/c/latch.toml`,
+/// `starter.st` → `https://h/c/starter.st`): where an exercise's starter and the relative
+/// links of its statement are.
+pub fn next_to(base: &str, name: &str) -> String {
+    let path_end = base.find(['?', '#']).unwrap_or(base.len());
+    let folder = base[..path_end].rfind('/').map_or("", |i| &base[..=i]);
+    format!("{folder}{name}")
+}
+
 /// A link's target made safe and absolute: `javascript:`, `data:` and other schemes
 /// become empty; a relative target is joined to `base`'s folder (or its origin for `/x`).
 fn resolve<'a>(url: CowStr<'a>, base: Option<&str>) -> CowStr<'a> {
@@ -52,9 +61,7 @@ fn resolve<'a>(url: CowStr<'a>, base: Option<&str>) -> CowStr<'a> {
             .unwrap_or(0);
         format!("{}{text}", &base[..origin_end])
     } else {
-        let path_end = base.find(['?', '#']).unwrap_or(base.len());
-        let folder = base[..path_end].rfind('/').map_or("", |i| &base[..=i]);
-        format!("{folder}{text}")
+        next_to(base, text)
     };
     CowStr::from(joined)
 }

@@ -12,7 +12,7 @@ mod store;
 use std::collections::BTreeSet;
 
 use leptos::prelude::*;
-use plc_core::exercise::{ExerciseLink, LinkedFile, Report};
+use plc_core::exercise::{next_to, ExerciseLink, LinkedFile, Report};
 use plc_core::project::Project;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
@@ -172,7 +172,7 @@ impl Exercises {
         };
         if let (None, Some(name), Some(base)) = (&opened.starter, opened.view.starter.clone(), base)
         {
-            let url = sibling(base, &name);
+            let url = next_to(base, &name);
             let text = match fetch_text(&url).await {
                 Ok(t) => t,
                 Err(e) => {
@@ -349,13 +349,6 @@ async fn fetch_text(url: &str) -> Result<String, String> {
     text.as_string().ok_or_else(|| "the answer is not text".to_string())
 }
 
-/// The address of `name` in the folder of `base`.
-fn sibling(base: &str, name: &str) -> String {
-    let end = base.find(['?', '#']).unwrap_or(base.len());
-    let folder = base[..end].rfind('/').map_or("", |i| &base[..=i]);
-    format!("{folder}{name}")
-}
-
 /// A query parameter's decoded value (`?exercise=https%3A%2F%2F…`).
 fn query_param(search: &str, name: &str) -> Option<String> {
     let query = search.strip_prefix('?').unwrap_or(search);
@@ -374,10 +367,10 @@ mod tests {
     #[test]
     fn addresses_next_to_the_file() {
         assert_eq!(
-            sibling("https://h.example/c/latch.toml?v=1", "starter.st"),
+            next_to("https://h.example/c/latch.toml?v=1", "starter.st"),
             "https://h.example/c/starter.st"
         );
-        assert_eq!(sibling("latch.toml", "starter.st"), "starter.st");
+        assert_eq!(next_to("latch.toml", "starter.st"), "starter.st");
     }
 
     #[test]

@@ -6,7 +6,10 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use plc_core::exercise::ExerciseLink;
+use plc_core::project::StorageBackend;
 use serde::{Deserialize, Serialize};
+
+use crate::storage::LocalStorage;
 
 const PASSED: &str = "plc-exercises-passed";
 const ATTEMPTS: &str = "plc-exercise-attempts";
@@ -21,20 +24,19 @@ pub struct KeptSource {
     pub base: Option<String>,
 }
 
-fn storage() -> Option<web_sys::Storage> {
-    web_sys::window().and_then(|w| w.local_storage().ok().flatten())
+/// The value kept under `key` (its default when there is none or it does not read).
+fn read<T: for<'de> Deserialize<'de> + Default>(key: &str) -> T {
+    read_opt(key).unwrap_or_default()
 }
 
-fn read<T: for<'de> Deserialize<'de> + Default>(key: &str) -> T {
-    storage()
-        .and_then(|s| s.get_item(key).ok().flatten())
-        .and_then(|text| serde_json::from_str(&text).ok())
-        .unwrap_or_default()
+fn read_opt<T: for<'de> Deserialize<'de>>(key: &str) -> Option<T> {
+    let text = LocalStorage::open().get(key).ok().flatten()?;
+    serde_json::from_str(&text).ok()
 }
 
 fn write<T: Serialize>(key: &str, value: &T) {
-    if let (Some(s), Ok(text)) = (storage(), serde_json::to_string(value)) {
-        let _ = s.set_item(key, &text);
+    if let Ok(text) = serde_json::to_string(value) {
+        let _ = LocalStorage::open().set(key, &text);
     }
 }
 
@@ -75,6 +77,5 @@ pub fn keep_source(id: &str, source: &KeptSource) {
 
 /// The kept file of exercise `id`.
 pub fn kept_source(id: &str) -> Option<KeptSource> {
-    let text = storage()?.get_item(&format!("{SOURCE_PREFIX}{id}")).ok().flatten()?;
-    serde_json::from_str(&text).ok()
+    read_opt(&format!("{SOURCE_PREFIX}{id}"))
 }
