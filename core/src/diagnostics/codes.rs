@@ -78,7 +78,7 @@ problem_codes! {
     // ---- types and expressions (checker): E0150–E0199 ----
     TypeMismatch = "E0150": "a value of one type where another is needed",
     NotAssignable = "E0151": "an assignment to something that cannot be written",
-    AssignToConstant = "E0152": "an assignment to a CONSTANT, an input of a FUNCTION or a system variable",
+    AssignToConstant = "E0152": "an assignment to a CONSTANT or a system variable",
     OperatorTypeMismatch = "E0153": "an operator applied to types it does not accept",
     ConditionNotBool = "E0154": "a condition that is not BOOL",
     NotAnArray = "E0155": "an index applied to something that is not an array",
@@ -203,6 +203,7 @@ problem_codes! {
     SfcSamePriority = "W0025": "transitions leaving the same step with the same PRIORITY (source order decides)",
     VariableShadowsEnumValue = "W0030": "a name that is both a variable and a value of the enumeration expected there (read as the value)",
     ImportChanged = "W0031": "part of an imported file that was skipped or changed to fit the trainer",
+    FunctionInputWritten = "W0032": "a FUNCTION writes one of its inputs (only its own copy changes)",
 }
 
 impl std::fmt::Display for Code {

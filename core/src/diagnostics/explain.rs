@@ -148,7 +148,7 @@ explanations! {
     NotAssignable: "The left side of `:=` is not a variable: a literal, an expression, a function call or a constant enumerator cannot be written.",
         st("PROGRAM Main VAR t : TON; END_VAR t.Q := TRUE; END_PROGRAM"),
         st("PROGRAM Main VAR t : TON; END_VAR t(IN := TRUE, PT := T#1s); END_PROGRAM");
-    AssignToConstant: "The target is read-only: a VAR CONSTANT, an input of a FUNCTION, or a system variable such as `FirstScan`.",
+    AssignToConstant: "The target is read-only: a VAR CONSTANT or a system variable such as `FirstScan`.",
         st("PROGRAM Main VAR CONSTANT limit : INT := 10; END_VAR limit := 20; END_PROGRAM"),
         st("PROGRAM Main VAR limit : INT := 10; END_VAR limit := 20; END_PROGRAM");
     OperatorTypeMismatch: "The operator does not accept these operand types: arithmetic needs numbers (or TIME), `AND`/`OR` need BOOL or bit strings, both sides must have the same type family.",
@@ -481,6 +481,9 @@ explanations! {
     ImportChanged: "Opening a file from another tool skipped or changed part of it to fit the trainer: a POU in a language not imported yet, an element that is not connected, a block input read from a variable that became a contact. The program runs without it, or with the change; the message names the element and its place in the file.",
         drawn("An OpenPLC `plc.xml` with a comment box outside any rung, or an FBD POU beside the LD program"),
         drawn("The same project with every element wired into a network and its POUs in ST or LD");
+    FunctionInputWritten: "A FUNCTION assigns to one of its VAR_INPUTs. The input is the function's own copy of the argument: the assignment changes that copy for the rest of the call, and the caller's variable stays as it was. CODESYS, OpenPLC and Beremiz accept this (files from them do it); write the value to a local variable to make the code clear.",
+        st("FUNCTION Twice : INT VAR_INPUT a : INT; END_VAR a := a * 2; Twice := a; END_FUNCTION PROGRAM Main VAR x : INT; END_VAR x := Twice(3); END_PROGRAM"),
+        st("FUNCTION Twice : INT VAR_INPUT a : INT; END_VAR VAR d : INT; END_VAR d := a * 2; Twice := d; END_FUNCTION PROGRAM Main VAR x : INT; END_VAR x := Twice(3); END_PROGRAM");
     VariableShadowsEnumValue: "A name is both a variable and a value of the enumeration expected here; it is read as the enumeration value (as CODESYS does). Rename the variable to make the code clear.",
         st("TYPE Mode : (Off, Hand, Auto); END_TYPE PROGRAM Main VAR m : Mode; Hand : BOOL; END_VAR m := Hand; END_PROGRAM"),
         st("TYPE Mode : (Off, Hand, Auto); END_TYPE PROGRAM Main VAR m : Mode; HandSwitch : BOOL; END_VAR m := Hand; END_PROGRAM");

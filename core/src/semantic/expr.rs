@@ -626,12 +626,14 @@ impl<'a> Checker<'a> {
             return None;
         }
         if pou_kind == Some(crate::syntax::PouKind::Function) && var.section == VarSection::Input {
-            self.error(
-                Code::AssignToConstant,
+            self.warning(
+                Code::FunctionInputWritten,
                 span,
-                format!("`{}` is an input of the FUNCTION and cannot be changed", var.name),
+                format!(
+                    "`{}` is an input of the FUNCTION: this changes the function's own copy, not the caller's variable",
+                    var.name
+                ),
             );
-            return None;
         }
         Some(())
     }

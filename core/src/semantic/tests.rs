@@ -211,3 +211,13 @@ fn a_case_of_200000_labels_checks_and_still_finds_overlaps() {
     let errs = errors(&src);
     assert_eq!(errs, vec![(Code::DuplicateCaseLabel, 200_003, 1)]);
 }
+
+#[test]
+fn a_function_writing_its_input_is_a_warning_and_constants_stay_errors() {
+    let src = "FUNCTION F : INT\nVAR_INPUT a : INT; END_VAR\nVAR CONSTANT k : INT := 1; END_VAR\na := 2;\nk := 3;\nF := a;\nEND_FUNCTION\n";
+    let a = analyze(src);
+    assert_eq!(
+        located(src, &a),
+        vec![(Code::FunctionInputWritten, 4, 1), (Code::AssignToConstant, 5, 1)]
+    );
+}
