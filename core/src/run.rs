@@ -5,7 +5,7 @@
 use serde::Serialize;
 use serde_json::Value as Json;
 
-use crate::build::{build_project, FilePlace, ProjectDiagnostic, Site};
+use crate::build::{build_project, FileMap, ProjectDiagnostic, Site};
 use crate::diagnostics::{Code, Diagnostic, LineIndex, Severity};
 use crate::semantic;
 use crate::sim::{ScanOutcome, SimError, Simulator};
@@ -22,14 +22,20 @@ pub struct RunOptions {
     /// `VAR=VALUE` settings, values written as IEC literals. An input (VAR_INPUT or `%I`)
     /// is held at the value on every scan; any other variable is set before the first scan.
     pub set: Vec<(String, String)>,
-    /// For a project imported from a file: where its ladder cells came from, so their
-    /// problems carry the element's line and column in that file.
-    pub places: Vec<FilePlace>,
+    /// For a project imported from a file: where its ladder cells and ST lines came from,
+    /// so their problems carry the line and column in that file.
+    pub file_map: FileMap,
 }
 
 impl Default for RunOptions {
     fn default() -> Self {
-        RunOptions { program: None, cycles: 1, cycle_ms: 10, set: Vec::new(), places: Vec::new() }
+        RunOptions {
+            program: None,
+            cycles: 1,
+            cycle_ms: 10,
+            set: Vec::new(),
+            file_map: FileMap::default(),
+        }
     }
 }
 
@@ -226,15 +232,15 @@ fn located(site: &Site, message: &str) -> (String, u32, u32) {
 }
 
 fn project_report(d: &ProjectDiagnostic) -> DiagnosticReport {
-    project_report_in(d, &[])
+    project_report_in(d, &FileMap::default())
 }
 
 /// [`project_report`], at the element's place in the file the project was imported from
-/// when `places` knows it.
-fn project_report_in(d: &ProjectDiagnostic, places: &[FilePlace]) -> DiagnosticReport {
+/// when `file_map` knows it.
+fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticReport {
     let (message, mut line, mut column) = located(&d.site, &d.message);
-    if let Some(p) = places.iter().find(|p| p.site == d.site) {
-        (line, column) = (p.line, p.column);
+    if let Some(at) = file_map.locate(&d.site) {
+        (line, column) = at;
     }
     DiagnosticReport {
         severity: d.severity,
@@ -254,7 +260,7 @@ fn project_report_in(d: &ProjectDiagnostic, places: &[FilePlace]) -> DiagnosticR
 pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> RunReport {
     let build = build_project(project);
     let diagnostics =
-        build.diagnostics.iter().map(|d| project_report_in(d, &options.places)).collect();
+        build.diagnostics.iter().map(|d| project_report_in(d, &options.file_map)).collect();
     let program = if build.has_errors() { None } else { build.program.clone() };
     let mut options = options.clone();
     if options.program.is_none() {
@@ -263,7 +269,11 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
         });
     }
     run_checked(program, &options, diagnostics, |info| {
-        let (message, line, column) = located(&build.site_of(info.span), &info.fault.to_string());
+        let site = build.site_of(info.span);
+        let (message, mut line, mut column) = located(&site, &info.fault.to_string());
+        if let Some(at) = options.file_map.locate(&site) {
+            (line, column) = at;
+        }
         FaultReport { message, line, column }
     })
 }

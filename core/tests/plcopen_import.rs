@@ -3,7 +3,7 @@
 //! worktree nested deeper, the nearest such folder above the crate).
 
 use plc_core::ladder::{st_view, validate, Block, CoilKind, ContactKind, Element, Rung};
-use plc_core::plcopen::{export, import, load, ImportError};
+use plc_core::plcopen::{export, import, load};
 use plc_core::project::Project;
 use plc_core::run::project_simulator;
 use plc_core::vm::Value;
@@ -177,7 +177,7 @@ fn oven_control_st_sample() {
 }
 
 #[test]
-fn fbd_bodies_become_st_and_sfc_is_skipped_with_warnings() {
+fn fbd_bodies_become_st_and_the_fbd_sample_builds() {
     let i = sample("fbd_user_function_and_fbs.xml");
     // Every FBD POU is imported (as ST statements, with a note saying the drawing is not
     // kept); none is skipped.
@@ -193,11 +193,81 @@ fn fbd_bodies_become_st_and_sfc_is_skipped_with_warnings() {
     assert!(i.project.source.contains("FUNCTION FA_SERV : BOOL"));
     assert!(i.project.source.contains("SR0(S1 := Hand_P2, R := Hand_P1);"), "{}", i.project.source);
     assert!(i.project.source.contains("S_FA_STATUS"));
+    // FA_SERV writes its own input `status` (W0032), as OpenPLC allows: the file builds.
+    let build = plc_core::build::build_project(&i.project);
+    let errors: Vec<_> = build.diagnostics.iter().filter(|d| d.is_error()).collect();
+    assert!(errors.is_empty(), "{errors:?}");
+    assert!(build.diagnostics.iter().any(|d| d.code.as_str() == "W0032"));
+}
+
+/// The lamps (RED, YELLOW, GREEN) of the traffic light sample, scan by scan, as the scans
+/// at which they change: `(first scan, lamps)`.
+fn traffic_light_phases(
+    s: &mut plc_core::sim::Simulator,
+    scans: u32,
+    press_at: Option<u32>,
+) -> Vec<(u32, [bool; 3])> {
+    let lamp = |s: &plc_core::sim::Simulator, v: &str| s.read(v).unwrap() == Value::Bool(true);
+    let mut phases: Vec<(u32, [bool; 3])> = Vec::new();
+    for k in 1..=scans {
+        if let Some(p) = press_at {
+            let pressed = if k == p || k == p + 1 { "TRUE" } else { "FALSE" };
+            s.write("Pedestrian_PB", pressed).unwrap();
+        }
+        s.scan();
+        let lamps = ["RED_Light", "YELLOW_Light", "GREEN_Light"].map(|v| lamp(s, v));
+        if phases.last().is_none_or(|(_, l)| *l != lamps) {
+            phases.push((k, lamps));
+        }
+    }
+    phases
+}
+
+#[test]
+fn sfc_traffic_light_runs_its_cycle_with_fbd_conditions() {
     let i = sample("sfc_traffic_light.xml");
-    assert!(i
-        .warnings
-        .iter()
-        .any(|w| w.message.contains("Traffic_Control") && w.message.contains("SFC")));
+    assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    assert!(i.warnings.is_empty(), "{:?}", i.warnings);
+    let p = i.project;
+    assert_eq!(p.settings.cycle_ms, 20);
+    let mut s = project_simulator(&p, None).unwrap_or_else(|e| panic!("{e:?}"));
+    s.set_cycle_ns(20_000_000);
+    const RED: [bool; 3] = [true, false, false];
+    const RED_YELLOW: [bool; 3] = [true, true, false];
+    const GREEN: [bool; 3] = [false, false, true];
+    const YELLOW: [bool; 3] = [false, true, false];
+    // Step0 (red) holds until TON0 (IN = its boolean action, PT = 8 s) is done: the timer
+    // starts with the step in scan 1 and reaches 8 s in scan 401; the transition sees it
+    // at the start of scan 402. Then red+yellow 3 s, green 4 s, yellow 3 s, and the jump
+    // back to Step0, whose timer starts afresh (its input fell when the step was left).
+    assert_eq!(
+        traffic_light_phases(&mut s, 1400, None),
+        vec![
+            (1, RED),
+            (402, RED_YELLOW),
+            (553, GREEN),
+            (754, YELLOW),
+            (905, RED),
+            (1306, RED_YELLOW)
+        ]
+    );
+    // The pedestrian button (R_TRIG0 on its rising edge, ORed with the green timer) cuts
+    // the green phase short: pressed in scan 600, the edge is seen by the transition at
+    // the start of scan 601.
+    let mut s = project_simulator(&p, None).unwrap();
+    s.set_cycle_ns(20_000_000);
+    assert_eq!(
+        traffic_light_phases(&mut s, 800, Some(600)),
+        vec![(1, RED), (402, RED_YELLOW), (553, GREEN), (601, YELLOW), (752, RED)]
+    );
+    // Pressed while red, the edge passes unseen: the transition out of green is not
+    // enabled then.
+    let mut s = project_simulator(&p, None).unwrap();
+    s.set_cycle_ns(20_000_000);
+    assert_eq!(
+        traffic_light_phases(&mut s, 800, Some(100)),
+        vec![(1, RED), (402, RED_YELLOW), (553, GREEN), (754, YELLOW)]
+    );
 }
 
 /// The element of rung `r` at `(row, col)`.
@@ -395,7 +465,7 @@ fn beremiz_style_ton_with_in_variable() {
 }
 
 #[test]
-fn non_series_parallel_network_names_the_element() {
+fn non_series_parallel_network_runs_by_power_flow() {
     let vars = ["A", "B", "C", "D", "E", "Y"].map(|v| var(v, "BOOL")).concat();
     let c = |id: u32, v: &str, from: &[u32], y: u32| {
         let conns: String =
@@ -415,14 +485,25 @@ fn non_series_parallel_network_names_the_element() {
         r#"<coil localId="7"><position x="0" y="0"/><connectionPointIn><connection refLocalId="5"/><connection refLocalId="6"/></connectionPointIn><connectionPointOut/><variable>Y</variable></coil>"#.to_string(),
     ]
     .concat();
-    let e = import(&doc(&body, &vars)).unwrap_err();
-    match &e {
-        ImportError::Element { pou, local_id, message } => {
-            assert_eq!(pou, "Main");
-            assert!(["2", "3", "4", "5", "6"].contains(&local_id.as_str()), "{e}");
-            assert!(message.contains("series-parallel"));
+    // It does not fit the rung grid, so it runs by power flow (left to right, as OpenPLC
+    // runs it): Y = A·D + (B + A·C)·E.
+    let i = import(&doc(&body, &vars)).unwrap();
+    assert!(i.project.ladder.is_empty());
+    assert!(
+        i.warnings.iter().any(|w| w.message.contains("series-parallel")
+            && w.message.contains("runs as ST statements by power flow")),
+        "{:?}",
+        i.warnings
+    );
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    for bits in 0..32u32 {
+        let [a, b, c, d, e] = [0, 1, 2, 3, 4].map(|k| bits & (1 << k) != 0);
+        for (name, on) in [("A", a), ("B", b), ("C", c), ("D", d), ("E", e)] {
+            s.write(name, if on { "TRUE" } else { "FALSE" }).unwrap();
         }
-        other => panic!("{other:?}"),
+        s.scan();
+        let y = (a && d) || ((b || (a && c)) && e);
+        assert_eq!(s.read("Y").unwrap(), Value::Bool(y), "A B C D E = {a} {b} {c} {d} {e}");
     }
 }
 
@@ -566,9 +647,97 @@ mod command_line {
             .contains("localId 3: connection refers to localId 99"));
     }
 
+    /// A PLCopen file whose program `Main` has the ST body `body`, declared in `vars`.
+    fn st_file(name: &str, vars: &str, body: &str) -> String {
+        let text = super::doc("", vars).replace(
+            "<LD></LD>",
+            &format!("<ST>\n        <xhtml:p><![CDATA[{body}]]></xhtml:p>\n      </ST>"),
+        );
+        let dir = std::env::temp_dir().join(format!("plc-contract-st-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join(name);
+        std::fs::write(&file, text).unwrap();
+        file.to_string_lossy().into_owned()
+    }
+
+    /// (code, line, column) of every diagnostic of a `--json` report.
+    fn located(report: &serde_json::Value) -> Vec<(String, u64, u64)> {
+        report["diagnostics"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|d| {
+                let s = |k: &str| d[k].as_str().unwrap().to_string();
+                (s("code"), d["line"].as_u64().unwrap(), d["column"].as_u64().unwrap())
+            })
+            .collect()
+    }
+
+    #[test]
+    fn problems_in_st_bodies_and_declarations_are_at_their_place_in_the_file() {
+        // doc() puts the variables on line 7 and the body's CDATA on line 9, column 28.
+        let vars = format!("{}\n{}", super::var("x", "INT"), super::var("b", "BOOL"));
+        let file = st_file("st-errors.xml", &vars, "x := 1;\n  b := x;\n  undeclared := 2;");
+        let report = json(&plc(&["run", &file, "--json"]));
+        assert_eq!(report["status"], "error");
+        let text = std::fs::read_to_string(&file).unwrap();
+        let line_of = |needle: &str| {
+            text.lines().position(|l| l.contains(needle)).map(|k| k as u64 + 1).unwrap()
+        };
+        let body = line_of("<![CDATA[");
+        assert_eq!(
+            located(&report),
+            vec![
+                ("E0150".into(), body + 1, 8), // b := x: INT into BOOL
+                ("E0100".into(), body + 2, 3), // undeclared
+            ],
+            "{report}"
+        );
+        // The first line of the body starts after `<![CDATA[`.
+        let file = st_file("st-first.xml", &vars, "b := 1.5;");
+        let column = text.lines().nth(body as usize - 1).unwrap().find("<![CDATA[").unwrap() + 10;
+        assert_eq!(
+            located(&json(&plc(&["run", &file, "--json"]))),
+            vec![("E0150".into(), body, column as u64 + 5)]
+        );
+        // A runtime fault is at its statement in the file, too.
+        let file = st_file("st-fault.xml", &vars, "x := 0;\n  x := 10 / x;");
+        let report = json(&plc(&["run", &file, "--json"]));
+        assert_eq!(report["status"], "fault", "{report}");
+        assert_eq!(
+            (report["fault"]["line"].as_u64(), report["fault"]["column"].as_u64()),
+            (Some(body + 1), Some(3)),
+            "{report}"
+        );
+        // A declaration problem is at its <variable>.
+        let vars = format!(
+            "{}\n{}",
+            super::var("x", "INT"),
+            super::var("y", "derived name=\"NoSuchType\"")
+        );
+        let file = st_file("st-decl.xml", &vars, "x := 1;");
+        let report = json(&plc(&["run", &file, "--json"]));
+        let text = std::fs::read_to_string(&file).unwrap();
+        let y = text.lines().position(|l| l.contains("name=\"y\"")).unwrap() as u64 + 1;
+        assert_eq!(
+            located(&report).first().map(|d| (d.0.as_str(), d.1)),
+            Some(("E0102", y)),
+            "{report}"
+        );
+    }
+
     #[test]
     fn a_program_the_import_left_out_is_named() {
-        let file = sample_path("sfc_traffic_light.xml");
+        // The traffic light's chart, as if it were written in IL (not imported yet).
+        let text = std::fs::read_to_string(sample_path("sfc_traffic_light.xml"))
+            .unwrap()
+            .replace("<SFC>", "<IL>")
+            .replace("</SFC>", "</IL>");
+        let dir = std::env::temp_dir().join(format!("plc-contract-il-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("il.xml");
+        std::fs::write(&file, text).unwrap();
+        let file = file.to_string_lossy().into_owned();
         let report = json(&plc(&["run", &file, "--json"]));
         let messages: Vec<&str> = report["diagnostics"]
             .as_array()
@@ -577,11 +746,11 @@ mod command_line {
             .filter_map(|d| d["message"].as_str())
             .collect();
         assert!(
-            messages.iter().any(|m| m.contains("Traffic_Control") && m.contains("SFC")),
+            messages.iter().any(|m| m.contains("Traffic_Control") && m.contains("IL")),
             "{messages:?}"
         );
         assert!(
-            messages.contains(&"the file holds no PROGRAM that could be imported: left out Traffic_Control (SFC bodies are not supported yet)"),
+            messages.contains(&"the file holds no PROGRAM that could be imported: left out Traffic_Control (IL bodies are not supported yet)"),
             "{messages:?}"
         );
         let asked = json(&plc(&["run", &file, "--program", "Traffic_Control", "--json"]));
@@ -589,7 +758,7 @@ mod command_line {
         assert_eq!(last["code"], "E0305");
         assert_eq!(
             last["message"],
-            "the PROGRAM Traffic_Control was left out when the file was imported: SFC bodies are not supported yet"
+            "the PROGRAM Traffic_Control was left out when the file was imported: IL bodies are not supported yet"
         );
     }
 }
@@ -718,4 +887,283 @@ fn an_fbd_network_that_would_explode_as_st_is_skipped_with_a_note() {
     let imported = import(&fbd_doc(&body, &vars)).unwrap();
     assert_eq!(imported.skipped.len(), 1);
     assert!(imported.skipped[0].reason.contains("too large"), "{:?}", imported.skipped);
+}
+
+/// LD elements for the networks that do not fit the rung grid.
+mod off_grid {
+    /// `<leftPowerRail>`.
+    pub fn rail(id: u32, y: u32) -> String {
+        format!(
+            r#"<leftPowerRail localId="{id}"><position x="0" y="{y}"/><connectionPointOut formalParameter=""/></leftPowerRail>"#
+        )
+    }
+
+    /// Wires into a `connectionPointIn`: `(from, output pin)`.
+    fn wires(from: &[(u32, &str)]) -> String {
+        from.iter()
+            .map(|(f, p)| {
+                let p =
+                    if p.is_empty() { String::new() } else { format!(r#" formalParameter="{p}""#) };
+                format!(r#"<connection refLocalId="{f}"{p}/>"#)
+            })
+            .collect()
+    }
+
+    /// A contact (`edge`: "", "rising" or "falling").
+    pub fn contact(id: u32, x: u32, y: u32, v: &str, edge: &str, from: &[(u32, &str)]) -> String {
+        let edge = if edge.is_empty() { String::new() } else { format!(r#" edge="{edge}""#) };
+        format!(
+            r#"<contact localId="{id}" negated="false"{edge}><position x="{x}" y="{y}"/><connectionPointIn>{}</connectionPointIn><connectionPointOut/><variable>{v}</variable></contact>"#,
+            wires(from)
+        )
+    }
+
+    /// A coil (`storage`: "", "set" or "reset").
+    pub fn coil(id: u32, x: u32, y: u32, v: &str, storage: &str, from: &[(u32, &str)]) -> String {
+        let storage =
+            if storage.is_empty() { String::new() } else { format!(r#" storage="{storage}""#) };
+        format!(
+            r#"<coil localId="{id}" negated="false"{storage}><position x="{x}" y="{y}"/><connectionPointIn>{}</connectionPointIn><connectionPointOut/><variable>{v}</variable></coil>"#,
+            wires(from)
+        )
+    }
+
+    /// A block whose inputs are wired from `(pin, from, output pin of from)`.
+    pub fn block(
+        id: u32,
+        (x, y): (u32, u32),
+        ty: &str,
+        inst: &str,
+        inputs: &[(&str, u32, &str)],
+        outputs: &[&str],
+    ) -> String {
+        let inst =
+            if inst.is_empty() { String::new() } else { format!(r#" instanceName="{inst}""#) };
+        let ins: String = inputs
+            .iter()
+            .map(|(p, f, o)| {
+                format!(
+                    r#"<variable formalParameter="{p}"><connectionPointIn>{}</connectionPointIn></variable>"#,
+                    wires(&[(*f, o)])
+                )
+            })
+            .collect();
+        let outs: String = outputs
+            .iter()
+            .map(|p| format!(r#"<variable formalParameter="{p}"><connectionPointOut/></variable>"#))
+            .collect();
+        format!(
+            r#"<block localId="{id}" typeName="{ty}"{inst}><position x="{x}" y="{y}"/><inputVariables>{ins}</inputVariables><inOutVariables/><outputVariables>{outs}</outputVariables></block>"#
+        )
+    }
+}
+
+/// Scans `s` once with the BOOL inputs `set` and returns the BOOL variables `read`.
+fn scan_bools(s: &mut plc_core::sim::Simulator, set: &[(&str, bool)], read: &[&str]) -> Vec<bool> {
+    for (name, on) in set {
+        s.write(name, if *on { "TRUE" } else { "FALSE" }).unwrap();
+    }
+    s.scan();
+    read.iter().map(|v| s.read(v).unwrap() == Value::Bool(true)).collect()
+}
+
+/// Networks OpenPLC and Beremiz run that the rung grid cannot hold run by power flow
+/// (SEMANTICS "imported LD/FBD networks"): blocks with no left rail, a function fed by
+/// contacts, a counter whose two outputs drive two coils, a variable box driving a coil,
+/// an edge contact.
+#[test]
+fn ld_networks_off_the_grid_run_as_their_tools_run_them() {
+    use off_grid::*;
+    let bools = ["A", "B", "C", "Y4", "Y5", "Y6", "Y7", "Y8", "Y9"];
+    let vars = format!(
+        "{}{}",
+        bools.map(|v| var(v, "BOOL")).concat(),
+        var("C1", r#"derived name="CTUD""#)
+    );
+    let body = [
+        // No left rail: Y4 := AND(B, C), FBD style.
+        inv(1, 0, 0, "B"),
+        inv(2, 0, 40, "C"),
+        block(3, (100, 0), "AND", "", &[("IN1", 1, ""), ("IN2", 2, "")], &["OUT"]),
+        coil(4, 200, 0, "Y4", "", &[(3, "OUT")]),
+        // OR fed by two contacts: its type comes from the power flow.
+        rail(10, 100),
+        contact(11, 50, 100, "A", "", &[(10, "")]),
+        contact(12, 50, 140, "B", "", &[(10, "")]),
+        block(13, (100, 100), "OR", "", &[("IN1", 11, ""), ("IN2", 12, "")], &["OUT"]),
+        coil(14, 200, 100, "Y5", "", &[(13, "OUT")]),
+        // A counter's QU and QD both drive coils.
+        contact(20, 50, 200, "A", "", &[(10, "")]),
+        contact(21, 50, 240, "B", "", &[(10, "")]),
+        inv(22, 0, 280, "C"),
+        inv(23, 0, 320, "FALSE"),
+        inv(24, 0, 360, "2"),
+        block(
+            25,
+            (100, 200),
+            "CTUD",
+            "C1",
+            &[("CU", 20, ""), ("CD", 21, ""), ("R", 22, ""), ("LD", 23, ""), ("PV", 24, "")],
+            &["QU", "QD", "CV"],
+        ),
+        coil(26, 200, 200, "Y6", "", &[(25, "QU")]),
+        coil(27, 200, 240, "Y7", "", &[(25, "QD")]),
+        // A BOOL variable box drives a coil.
+        inv(30, 0, 400, "C"),
+        coil(31, 200, 400, "Y8", "", &[(30, "")]),
+        // A rising-edge contact.
+        contact(40, 50, 500, "A", "rising", &[(10, "")]),
+        coil(41, 200, 500, "Y9", "", &[(40, "")]),
+    ]
+    .concat();
+    let i = import(&doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
+    assert!(i.project.ladder.is_empty(), "the network is not a grid");
+    assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let read = ["Y4", "Y5", "Y6", "Y7", "Y8", "Y9"];
+    let (t, f) = (true, false);
+    // Y4 = B·C, Y5 = A + B, Y6 = C1.QU (CV >= 2), Y7 = C1.QD (CV <= 0), Y8 = C,
+    // Y9 = rising edge of A.
+    let steps: [([bool; 3], [bool; 6]); 7] = [
+        ([f, f, f], [f, f, f, t, f, f]),
+        ([t, f, f], [f, t, f, f, f, t]), // CV 1
+        ([t, f, f], [f, t, f, f, f, f]),
+        ([f, f, f], [f, f, f, f, f, f]),
+        ([t, f, f], [f, t, t, f, f, t]), // CV 2
+        ([t, t, f], [f, t, f, f, f, f]), // CD: CV 1
+        ([t, t, t], [t, t, f, t, t, f]), // R: CV 0
+    ];
+    for (k, (inputs, expected)) in steps.iter().enumerate() {
+        let set = [("A", inputs[0]), ("B", inputs[1]), ("C", inputs[2])];
+        assert_eq!(scan_bools(&mut s, &set, &read), expected.to_vec(), "scan {}", k + 1);
+    }
+}
+
+/// A coil passes its power on and a coil on the rail is always on (E0408 and E0401 in the
+/// trainer's own rungs): a network that lays out on the grid but breaks those rules runs by
+/// power flow, with a note naming the rule.
+#[test]
+fn coils_pass_power_and_a_coil_on_the_rail_is_always_on() {
+    use off_grid::*;
+    let vars = ["A", "B", "Y1", "Y2", "Y3"].map(|v| var(v, "BOOL")).concat();
+    let body = [
+        rail(1, 0),
+        coil(2, 100, 0, "Y1", "", &[(1, "")]),
+        contact(3, 20, 100, "A", "", &[(1, "")]),
+        coil(4, 60, 100, "Y2", "", &[(3, "")]),
+        contact(5, 100, 100, "B", "", &[(4, "")]),
+        coil(6, 140, 100, "Y3", "", &[(5, "")]),
+    ]
+    .concat();
+    let i = import(&doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
+    assert!(i.project.ladder.is_empty());
+    assert!(
+        i.warnings.iter().any(|w| w.message.contains("E0401") || w.message.contains("E0408")),
+        "{:?}",
+        i.warnings
+    );
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let read = ["Y1", "Y2", "Y3"];
+    assert_eq!(scan_bools(&mut s, &[("A", false), ("B", true)], &read), [true, false, false]);
+    assert_eq!(scan_bools(&mut s, &[("A", true), ("B", false)], &read), [true, true, false]);
+    assert_eq!(scan_bools(&mut s, &[("A", true), ("B", true)], &read), [true, true, true]);
+}
+
+/// A document of two POUs: the LD FUNCTION `Majority` and a program calling it in ST.
+fn ld_function_doc() -> String {
+    use off_grid::*;
+    let body = [
+        rail(1, 0),
+        contact(2, 20, 0, "X", "", &[(1, "")]),
+        contact(3, 60, 0, "Y", "", &[(2, "")]),
+        contact(4, 20, 40, "X", "", &[(1, "")]),
+        contact(5, 60, 40, "Z", "", &[(4, "")]),
+        contact(6, 20, 80, "Y", "", &[(1, "")]),
+        contact(7, 60, 80, "Z", "", &[(6, "")]),
+        coil(8, 120, 0, "Majority", "", &[(3, ""), (5, ""), (7, "")]),
+    ]
+    .concat();
+    let inputs = ["X", "Y", "Z"].map(|v| var(v, "BOOL")).concat();
+    let program = doc("", &["A", "B", "C", "M"].map(|v| var(v, "BOOL")).concat()).replace(
+        "<body><LD></LD></body>",
+        "<body><ST><xhtml:p><![CDATA[M := Majority(A, B, C);]]></xhtml:p></ST></body>",
+    );
+    program.replace(
+        "<pou name=\"Main\"",
+        &format!(
+            r#"<pou name="Majority" pouType="function"><interface><returnType><BOOL/></returnType><inputVars>{inputs}</inputVars></interface><body><LD>{body}</LD></body></pou>
+    <pou name="Main""#
+        ),
+    )
+}
+
+#[test]
+fn an_ld_function_runs_by_power_flow() {
+    let i = import(&ld_function_doc()).unwrap_or_else(|e| panic!("{e}"));
+    assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    let mut s = project_simulator(&i.project, Some("Main")).unwrap_or_else(|e| panic!("{e:?}"));
+    for bits in 0..8u32 {
+        let [a, b, c] = [0, 1, 2].map(|k| bits & (1 << k) != 0);
+        let m = scan_bools(&mut s, &[("A", a), ("B", b), ("C", c)], &["M"]);
+        let majority = [a, b, c].iter().filter(|x| **x).count() >= 2;
+        assert_eq!(m, [majority], "{a} {b} {c}");
+    }
+}
+
+/// An SFC whose transitions have an LD condition (a contact on the rail) and an inline ST
+/// one, with an action block, a jump and a selection divergence.
+#[test]
+fn an_sfc_with_ld_and_st_conditions_runs() {
+    use off_grid::*;
+    let step = |id: u32, name: &str, initial: bool, from: &[u32]| {
+        let ins: String =
+            from.iter().map(|f| format!(r#"<connection refLocalId="{f}"/>"#)).collect();
+        let input = if from.is_empty() {
+            String::new()
+        } else {
+            format!("<connectionPointIn>{ins}</connectionPointIn>")
+        };
+        format!(
+            r#"<step localId="{id}" name="{name}" initialStep="{initial}"><position x="0" y="{id}"/>{input}<connectionPointOut/><connectionPointOutAction/></step>"#
+        )
+    };
+    let transition = |id: u32, from: u32, condition: &str| {
+        format!(
+            r#"<transition localId="{id}"><position x="0" y="{id}"/><connectionPointIn><connection refLocalId="{from}"/></connectionPointIn><connectionPointOut/><condition>{condition}</condition></transition>"#
+        )
+    };
+    let body = [
+        step(1, "Idle", true, &[]),
+        r#"<selectionDivergence localId="2"><position x="0" y="2"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut formalParameter=""/><connectionPointOut formalParameter=""/></selectionDivergence>"#.to_string(),
+        // Idle → Run when Start (a contact on the rail wired into the condition).
+        rail(3, 0),
+        contact(4, 20, 0, "Start", "", &[(3, "")]),
+        transition(5, 2, r#"<connectionPointIn><connection refLocalId="4"/></connectionPointIn>"#),
+        // Idle → Fault when Alarm (inline ST), priority by order.
+        transition(6, 2, r#"<inline name=""><ST><xhtml:p><![CDATA[Alarm]]></xhtml:p></ST></inline>"#),
+        step(7, "Run", false, &[5]),
+        r#"<actionBlock localId="8"><position x="0" y="8"/><connectionPointIn><connection refLocalId="7"/></connectionPointIn><action localId="0" qualifier="N"><reference name="Motor"/></action></actionBlock>"#.to_string(),
+        step(9, "Fault", false, &[6]),
+        r#"<actionBlock localId="10"><position x="0" y="10"/><connectionPointIn><connection refLocalId="9"/></connectionPointIn><action localId="0" qualifier="S"><reference name="Lamp"/></action></actionBlock>"#.to_string(),
+        // Run → Idle when NOT Start; Fault → Idle when NOT Alarm (both jumps).
+        transition(11, 7, r#"<inline name=""><ST><xhtml:p><![CDATA[NOT Start]]></xhtml:p></ST></inline>"#),
+        r#"<jumpStep localId="12" targetName="Idle"><position x="0" y="12"/><connectionPointIn><connection refLocalId="11"/></connectionPointIn></jumpStep>"#.to_string(),
+        transition(13, 9, r#"<inline name=""><ST><xhtml:p><![CDATA[NOT Alarm]]></xhtml:p></ST></inline>"#),
+        r#"<jumpStep localId="14" targetName="Idle"><position x="0" y="14"/><connectionPointIn><connection refLocalId="13"/></connectionPointIn></jumpStep>"#.to_string(),
+    ]
+    .concat();
+    let vars = ["Start", "Alarm", "Motor", "Lamp"].map(|v| var(v, "BOOL")).concat();
+    let text = doc(&body, &vars).replace("<LD>", "<SFC>").replace("</LD>", "</SFC>");
+    let i = import(&text).unwrap_or_else(|e| panic!("{e}"));
+    assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let read = ["Idle.X", "Run.X", "Fault.X", "Motor", "Lamp"];
+    let (t, f) = (true, false);
+    // Scan 1 only activates; transitions are tested from scan 2 on.
+    assert_eq!(scan_bools(&mut s, &[("Start", true)], &read), [t, f, f, f, f]);
+    assert_eq!(scan_bools(&mut s, &[], &read), [f, t, f, t, f]);
+    assert_eq!(scan_bools(&mut s, &[("Start", false)], &read), [t, f, f, f, f]);
+    assert_eq!(scan_bools(&mut s, &[("Alarm", true)], &read), [f, f, t, f, t]);
+    // Lamp was set (S) and stays on back in Idle.
+    assert_eq!(scan_bools(&mut s, &[("Alarm", false)], &read), [t, f, f, f, t]);
 }

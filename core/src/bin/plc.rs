@@ -143,8 +143,8 @@ struct Loaded {
     notes: Vec<plc_core::plcopen::ImportNote>,
     /// POUs the import left out.
     skipped: Vec<plc_core::plcopen::SkippedPou>,
-    /// Where the imported ladder cells came from in the file.
-    places: Vec<plc_core::build::FilePlace>,
+    /// Where the imported ladder cells and ST lines came from in the file.
+    file_map: plc_core::build::FileMap,
 }
 
 /// Why a file could not be opened: the message and its place in the file (0, 0 when not
@@ -180,7 +180,7 @@ fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
             input: Input::Source(text),
             notes: Vec::new(),
             skipped: Vec::new(),
-            places: Vec::new(),
+            file_map: Default::default(),
         });
     }
     let opened = plc_core::open::open_text("project", &text).map_err(|e| {
@@ -191,7 +191,7 @@ fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
         input: Input::Project(opened.project),
         notes: opened.warnings,
         skipped: opened.skipped,
-        places: opened.places,
+        file_map: opened.file_map,
     })
 }
 
@@ -322,7 +322,8 @@ fn check(path: &Path) -> ExitCode {
 /// Checks a project (ST and ladder POUs): diagnostics as for ST; ladder problems name
 /// their POU, rung, row and column in the message.
 fn check_project(path: &Path, project: &Project, loaded: &Loaded) -> ExitCode {
-    let options = RunOptions { cycles: 0, places: loaded.places.clone(), ..RunOptions::default() };
+    let options =
+        RunOptions { cycles: 0, file_map: loaded.file_map.clone(), ..RunOptions::default() };
     let mut report = run_project(project, &options);
     name_skipped_programs(&mut report, &loaded.skipped);
     let (mut errors, mut warnings) = (0, 0);
@@ -444,7 +445,7 @@ fn run(path: &Path, options: RunOptions, json: bool) -> ExitCode {
         None => match &loaded.input {
             Input::Source(source) => run_source(source, &options),
             Input::Project(project) => {
-                run_project(project, &RunOptions { places: loaded.places.clone(), ..options })
+                run_project(project, &RunOptions { file_map: loaded.file_map.clone(), ..options })
             }
         },
     };
@@ -488,7 +489,7 @@ fn main() -> ExitCode {
             }
             run(
                 &file,
-                RunOptions { program, cycles, cycle_ms, set: pairs, places: Vec::new() },
+                RunOptions { program, cycles, cycle_ms, set: pairs, file_map: Default::default() },
                 json,
             )
         }

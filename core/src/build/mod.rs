@@ -108,6 +108,47 @@ pub struct FilePlace {
     pub column: u32,
 }
 
+/// How the ST source of a project imported from a file maps back to that file, line by line.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SourceLine {
+    /// 1-based line in the file.
+    pub line: u32,
+    /// 1-based column in the file.
+    pub column: u32,
+    /// The source line is the file's own text starting at `column` (an ST body): a column
+    /// on it moves by as much in the file. Otherwise the line was written from the element
+    /// at `line`, `column` (declarations, a lowered FBD statement) and every column on it
+    /// is reported there.
+    pub verbatim: bool,
+}
+
+/// Where a project imported from a file came from in it: ladder cells by element, and the
+/// lines of its ST source; problems found in the project are reported at the element or
+/// text the file's author wrote. Empty for projects not imported.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct FileMap {
+    /// Ladder cells and the elements they came from.
+    pub places: Vec<FilePlace>,
+    /// Entry `k` is where line `k + 1` of the project's ST source came from (`None`: a line
+    /// the import wrote with no element behind it).
+    pub lines: Vec<Option<SourceLine>>,
+}
+
+impl FileMap {
+    /// The 1-based line and column in the file of `site`, when the map knows it.
+    pub fn locate(&self, site: &Site) -> Option<(u32, u32)> {
+        if let Site::St { line, column, .. } = site {
+            let at = (*line as usize).checked_sub(1).and_then(|k| self.lines.get(k).copied())??;
+            return Some(if at.verbatim {
+                (at.line, at.column + column.saturating_sub(1))
+            } else {
+                (at.line, at.column)
+            });
+        }
+        self.places.iter().find(|p| p.site == *site).map(|p| (p.line, p.column))
+    }
+}
+
 /// One problem of a project, located at its [`Site`].
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct ProjectDiagnostic {

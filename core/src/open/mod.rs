@@ -43,8 +43,8 @@ pub struct Opened {
     pub warnings: Vec<crate::plcopen::ImportNote>,
     /// The POUs of the file that were left out, and why.
     pub skipped: Vec<crate::plcopen::SkippedPou>,
-    /// Where each imported ladder cell came from in the file.
-    pub places: Vec<crate::build::FilePlace>,
+    /// Where each imported ladder cell and ST line came from in the file.
+    pub file_map: crate::build::FileMap,
 }
 
 /// Why a file could not be opened as a project.
@@ -116,7 +116,7 @@ pub fn open_plain(name: &str, text: &str) -> Result<Option<Opened>, OpenError> {
         kind,
         warnings: Vec::new(),
         skipped: Vec::new(),
-        places: Vec::new(),
+        file_map: Default::default(),
     }))
 }
 
@@ -136,7 +136,7 @@ pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
             kind: FileKind::Pnml,
             warnings: Vec::new(),
             skipped: Vec::new(),
-            places: Vec::new(),
+            file_map: Default::default(),
         });
     }
     let import = crate::plcopen::import(text).map_err(OpenError::Plcopen)?;
@@ -145,7 +145,7 @@ pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
         kind: FileKind::Plcopen,
         warnings: import.warnings,
         skipped: import.skipped,
-        places: import.places,
+        file_map: import.file_map,
     })
 }
 

@@ -13,11 +13,13 @@ use std::collections::{BTreeSet, HashMap};
 use super::ld_import::read::{read_elements, Conn, El, Kind, RawBlock};
 use super::xml::Node;
 use super::ImportError;
+use crate::ladder::{CoilKind, ContactKind, Element};
 
 /// An FBD body lowered: the statements and the instances it uses.
 pub(crate) struct FbdBody {
-    /// The body as ST statements, one per line.
-    pub statements: String,
+    /// The body as ST statements, one per line, each with the line and column of the
+    /// element it was written from.
+    pub statements: Vec<(String, (u32, u32))>,
     /// `(instance, type)` of every function block instance in the body.
     pub instances: Vec<(String, String)>,
     /// What was left out (an output variable with no wire), with the element's place.
@@ -27,16 +29,16 @@ pub(crate) struct FbdBody {
 /// Lowers the FBD body `fbd` of POU `pou`.
 pub(crate) fn import_fbd(fbd: &Node, pou: &str) -> Result<FbdBody, ImportError> {
     let els = read_elements(fbd, pou)?;
-    let index: HashMap<&str, usize> =
-        els.iter().enumerate().map(|(i, e)| (e.id.as_str(), i)).collect();
-    let lower = Lower { els: &els, index: &index, pou };
-    // The statements: function block instances and output variables.
-    let statements: Vec<usize> = els
-        .iter()
-        .enumerate()
-        .filter(|(_, e)| matches!(&e.kind, Kind::OutVar(_)) || instance_of(&e.kind).is_some())
-        .map(|(i, _)| i)
-        .collect();
+    lower_network(&els, pou)
+}
+
+/// Lowers the network `els` (of POU `pou`) to statements: function block calls, output
+/// variable assignments and, for LD, coils (each written from the power at its left) and
+/// the edge detectors of edge contacts.
+pub(crate) fn lower_network(els: &[El], pou: &str) -> Result<FbdBody, ImportError> {
+    let lower = Lower::new(els, pou);
+    let statements: Vec<usize> =
+        els.iter().enumerate().filter(|(_, e)| is_statement(&e.kind)).map(|(i, _)| i).collect();
     let mut deps: HashMap<usize, BTreeSet<usize>> = HashMap::new();
     for &s in &statements {
         let mut found = BTreeSet::new();
@@ -44,47 +46,113 @@ pub(crate) fn import_fbd(fbd: &Node, pou: &str) -> Result<FbdBody, ImportError> 
         found.remove(&s);
         deps.insert(s, found);
     }
-    let order = run_order(&els, &statements, &deps);
-    let mut text = String::new();
+    let order = run_order(els, &statements, &deps);
+    let mut text = Vec::new();
     let mut instances = Vec::new();
     let mut notes = Vec::new();
     for s in order {
+        let at = els[s].at;
         match &els[s].kind {
             Kind::OutVar(target) => {
-                let conn = match els[s].conns.as_slice() {
-                    [conn] => conn,
-                    [] => {
-                        let (line, column) = els[s].at;
-                        notes.push(super::ImportNote::at(line, column, format!(
-                            "POU {pou}: output variable localId {} ({target}) is not wired; skipped",
-                            els[s].id
-                        )));
-                        continue;
-                    }
-                    _ => return Err(lower.err(s, "an output variable with several wires".into())),
+                if els[s].conns.is_empty() {
+                    notes.push(super::ImportNote::at(
+                        at.0,
+                        at.1,
+                        format!(
+                        "POU {pou}: output variable localId {} ({target}) is not wired; skipped",
+                        els[s].id
+                    ),
+                    ));
+                    continue;
+                }
+                let value = lower.joined(&els[s].conns)?;
+                let assign = format!("{target} := {value};");
+                let line = match lower.function_enable(&els[s].conns)? {
+                    Some(en) => format!("IF {en} THEN {assign} END_IF;\n"),
+                    None => format!("{assign}\n"),
                 };
-                text.push_str(&format!("{target} := {};\n", lower.value(conn, &mut Vec::new())?));
+                text.push((line, at));
             }
             Kind::Block(b) => {
                 let Some(inst) = &b.instance else { continue };
                 let mut args = Vec::new();
+                let mut enable = None;
                 for (pin, conns) in b.inputs.iter().chain(&b.in_outs) {
-                    if pin.eq_ignore_ascii_case("EN") && conns.is_empty() {
+                    if pin.eq_ignore_ascii_case("EN") {
+                        if !conns.is_empty() {
+                            enable = Some(lower.joined(conns)?).filter(|e| e != "TRUE");
+                        }
                         continue;
                     }
-                    match conns.as_slice() {
-                        [] => {}
-                        [c] => args.push(format!("{pin} := {}", lower.value(c, &mut Vec::new())?)),
-                        _ => return Err(lower.err(s, format!("input {pin} has several wires"))),
+                    if !conns.is_empty() {
+                        args.push(format!("{pin} := {}", lower.joined(conns)?));
                     }
                 }
-                text.push_str(&format!("{inst}({});\n", args.join(", ")));
+                let call = format!("{inst}({});", args.join(", "));
+                let line = match enable {
+                    Some(en) => format!("IF {en} THEN {call} END_IF;\n"),
+                    None => format!("{call}\n"),
+                };
+                text.push((line, at));
                 instances.push((inst.clone(), b.type_name.clone()));
+            }
+            Kind::Leaf(Element::Coil { kind, operand }) => {
+                let power = lower.power_in(s)?;
+                let line = match kind {
+                    CoilKind::Normal => format!("{operand} := {power};\n"),
+                    CoilKind::Negated => format!("{operand} := NOT ({power});\n"),
+                    CoilKind::Set => format!("IF {power} THEN {operand} := TRUE; END_IF;\n"),
+                    CoilKind::Reset => format!("IF {power} THEN {operand} := FALSE; END_IF;\n"),
+                    CoilKind::Rising | CoilKind::Falling => {
+                        let (edge, ty) = edge_instance(&els[s]);
+                        instances.push((edge.clone(), ty.to_string()));
+                        format!("{edge}(CLK := {power}); {operand} := {edge}.Q;\n")
+                    }
+                };
+                text.push((line, at));
+            }
+            Kind::Leaf(Element::Contact { operand, .. }) => {
+                let (edge, ty) = edge_instance(&els[s]);
+                instances.push((edge.clone(), ty.to_string()));
+                text.push((format!("{edge}(CLK := {});\n", operand.trim()), at));
+            }
+            Kind::Leaf(Element::Jump { .. } | Element::Return) => {
+                return Err(lower.err(
+                    s,
+                    "jumps and returns outside the rung grid are not supported yet".into(),
+                ))
             }
             _ => {}
         }
     }
     Ok(FbdBody { statements: text, instances, notes })
+}
+
+/// Whether an element is a statement of its network: a function block instance, an output
+/// variable, a coil, an edge contact (its edge detector), a jump or a return.
+fn is_statement(kind: &Kind) -> bool {
+    match kind {
+        Kind::OutVar(_) => true,
+        Kind::Block(b) => b.instance.is_some(),
+        Kind::Leaf(Element::Contact { kind, .. }) => {
+            matches!(kind, ContactKind::Rising | ContactKind::Falling)
+        }
+        Kind::Leaf(_) => true,
+        _ => false,
+    }
+}
+
+/// The edge detector of an edge contact or coil: its instance name and type.
+fn edge_instance(el: &El) -> (String, &'static str) {
+    let id: String = el.id.chars().filter(|c| c.is_ascii_alphanumeric()).collect();
+    let falling = matches!(
+        el.kind,
+        Kind::Leaf(
+            Element::Contact { kind: ContactKind::Falling, .. }
+                | Element::Coil { kind: CoilKind::Falling, .. }
+        )
+    );
+    (format!("LdEdge{id}"), if falling { "F_TRIG" } else { "R_TRIG" })
 }
 
 /// The instance name of a function block element.
@@ -95,17 +163,35 @@ fn instance_of(kind: &Kind) -> Option<&str> {
     }
 }
 
-struct Lower<'a> {
+/// The values wires carry in a network, as ST expressions.
+pub(crate) struct Lower<'a> {
     els: &'a [El],
-    index: &'a HashMap<&'a str, usize>,
+    index: HashMap<&'a str, usize>,
     pou: &'a str,
 }
 
-impl Lower<'_> {
+impl<'a> Lower<'a> {
+    /// The network `els` of POU `pou`.
+    pub(crate) fn new(els: &'a [El], pou: &'a str) -> Self {
+        let index = els.iter().enumerate().map(|(i, e)| (e.id.as_str(), i)).collect();
+        Lower { els, index, pou }
+    }
+
+    /// The ST expression of the wires `conns` into one pin from outside the network (an
+    /// SFC transition's condition): their OR when several meet there (power flow joining).
+    pub(crate) fn joined(&self, conns: &[Conn]) -> Result<String, ImportError> {
+        let parts =
+            conns.iter().map(|c| self.value(c, &mut Vec::new())).collect::<Result<Vec<_>, _>>()?;
+        Ok(match parts.as_slice() {
+            [one] => one.clone(),
+            _ => format!("({})", parts.join(" OR ")),
+        })
+    }
+
     fn err(&self, i: usize, message: String) -> ImportError {
         ImportError::Element {
             pou: self.pou.to_string(),
-            local_id: self.els[i].id.clone(),
+            local_id: self.els.get(i).map_or_else(|| "?".to_string(), |e| e.id.clone()),
             message,
         }
     }
@@ -116,13 +202,20 @@ impl Lower<'_> {
         })
     }
 
-    /// The ST expression a wire carries. `path` holds the functions being written (a loop of
-    /// functions alone has no value).
+    /// The ST expression a wire carries. `path` holds the functions and contacts being
+    /// written (a loop of them alone has no value).
     fn value(&self, conn: &Conn, path: &mut Vec<usize>) -> Result<String, ImportError> {
-        let at = *path.last().unwrap_or(&0);
+        let at = *path.last().unwrap_or(&usize::MAX);
         let i = self.source(conn, at)?;
         match &self.els[i].kind {
             Kind::InVar(expr) => Ok(operand(expr)),
+            Kind::LeftRail => Ok("TRUE".into()),
+            Kind::Leaf(element) => self.power_through(i, element, path),
+            Kind::Block(b)
+                if conn.param.as_deref().is_some_and(|p| p.eq_ignore_ascii_case("ENO")) =>
+            {
+                Ok(self.enable_of(b)?.unwrap_or_else(|| "TRUE".into()))
+            }
             Kind::Block(b) => match &b.instance {
                 Some(inst) => match &conn.param {
                     Some(p) => Ok(format!("{inst}.{p}")),
@@ -152,7 +245,13 @@ impl Lower<'_> {
                                     format!("input {pin} of {} is not wired", b.type_name),
                                 ))
                             }
-                            _ => return Err(self.err(i, format!("input {pin} has several wires"))),
+                            several => {
+                                let parts = several
+                                    .iter()
+                                    .map(|c| self.value(c, path))
+                                    .collect::<Result<Vec<_>, _>>()?;
+                                args.push(format!("({})", parts.join(" OR ")));
+                            }
                         }
                     }
                     path.pop();
@@ -164,6 +263,83 @@ impl Lower<'_> {
                 }
             },
             _ => Err(self.err(i, "this element gives no value to a wire".into())),
+        }
+    }
+
+    /// The power out of a contact or coil `i` (a coil passes on the power at its left).
+    fn power_through(
+        &self,
+        i: usize,
+        element: &crate::ladder::Element,
+        path: &mut Vec<usize>,
+    ) -> Result<String, ImportError> {
+        if path.contains(&i) {
+            return Err(self.err(i, "contacts wired in a loop".into()));
+        }
+        if path.len() > crate::limits::MAX_EXPR_HEIGHT {
+            return Err(self.err(i, "too many contacts in one series".into()));
+        }
+        path.push(i);
+        let power = self.power_along(i, path);
+        path.pop();
+        let power = power?;
+        let term = match element {
+            Element::Contact { kind: ContactKind::NormallyOpen, operand: o } => operand(o),
+            Element::Contact { kind: ContactKind::NormallyClosed, operand: o } => {
+                format!("NOT {}", operand(o))
+            }
+            Element::Contact { .. } => format!("{}.Q", edge_instance(&self.els[i]).0),
+            Element::Coil { .. } => return Ok(power),
+            _ => return Err(self.err(i, "this element gives no value to a wire".into())),
+        };
+        let text = if power == "TRUE" { term } else { format!("{power} AND {term}") };
+        if text.len() > crate::limits::MAX_PROJECT_BYTES {
+            return Err(self.err(i, "this network is too large when written as ST".into()));
+        }
+        Ok(text)
+    }
+
+    /// The power at the left of contact or coil `i`: the OR of the wires that meet there.
+    fn power_along(&self, i: usize, path: &mut Vec<usize>) -> Result<String, ImportError> {
+        let ins = &self.els[i].conns;
+        match ins.as_slice() {
+            [] => Err(self.err(i, "no wire brings power to this element".into())),
+            [c] => self.value(c, path),
+            _ => ins
+                .iter()
+                .map(|c| self.value(c, path))
+                .collect::<Result<Vec<_>, _>>()
+                .map(|p| format!("({})", p.join(" OR "))),
+        }
+    }
+
+    /// The power at the left of coil `i`.
+    fn power_in(&self, i: usize) -> Result<String, ImportError> {
+        self.power_along(i, &mut vec![i])
+    }
+
+    /// When the wires `conns` come from one function (no instance) whose EN is wired, the
+    /// value of that EN: the function writes its output only when it is TRUE.
+    fn function_enable(&self, conns: &[Conn]) -> Result<Option<String>, ImportError> {
+        let [conn] = conns else { return Ok(None) };
+        let i = self.source(conn, usize::MAX)?;
+        let Kind::Block(b) = &self.els[i].kind else { return Ok(None) };
+        if b.instance.is_some()
+            || conn.param.as_deref().is_some_and(|p| p.eq_ignore_ascii_case("ENO"))
+        {
+            return Ok(None);
+        }
+        self.enable_of(b)
+    }
+
+    /// The value of block `b`'s EN input when it is wired (and not plainly TRUE).
+    fn enable_of(&self, b: &RawBlock) -> Result<Option<String>, ImportError> {
+        let en = b.inputs.iter().find(|(pin, _)| pin.eq_ignore_ascii_case("EN"));
+        match en {
+            Some((_, conns)) if !conns.is_empty() => {
+                Ok(Some(self.joined(conns)?).filter(|e| e != "TRUE"))
+            }
+            _ => Ok(None),
         }
     }
 
@@ -180,9 +356,14 @@ impl Lower<'_> {
         };
         for c in conns {
             let i = self.source(c, s)?;
-            if instance_of(&self.els[i].kind).is_some() {
+            let kind = &self.els[i].kind;
+            if is_statement(kind) && !matches!(kind, Kind::Leaf(Element::Coil { .. })) {
                 found.insert(i);
-            } else if matches!(self.els[i].kind, Kind::Block(_)) && seen.insert(i) {
+            }
+            if instance_of(kind).is_none()
+                && matches!(kind, Kind::Block(_) | Kind::Leaf(_))
+                && seen.insert(i)
+            {
                 if seen.len() > crate::limits::MAX_EXPR_HEIGHT * 100 {
                     return Err(self.err(i, "too many functions in one network".into()));
                 }

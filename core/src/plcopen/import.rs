@@ -1,6 +1,7 @@
 //! PLCopen XML → project: interfaces, data types and ST bodies as ST text; LD bodies via
 //! [`super::ld_import`].
 
+use super::source_out::SourceOut;
 use super::xml::{self, Node};
 use super::{Import, ImportError, ImportNote, SkippedPou};
 use crate::ladder::{LadderPou, LadderPouKind};
@@ -25,7 +26,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         .unwrap_or("Imported")
         .to_string();
     let types = root.child("types");
-    let mut source = String::new();
+    let mut source = SourceOut::default();
 
     // Data types.
     let mut type_lines = Vec::new();
@@ -42,32 +43,33 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
                 Some(v) => format!(" := {}", value_text(v).map_err(err)?),
                 None => String::new(),
             };
-            type_lines.push(format!("    {tname} : {ty}{init};\n"));
+            type_lines.push((format!("    {tname} : {ty}{init};\n"), dt));
         }
     }
     if !type_lines.is_empty() {
-        source.push_str("TYPE\n");
-        for l in type_lines {
-            source.push_str(&l);
+        source.push("TYPE\n", None);
+        for (l, dt) in type_lines {
+            source.push_from(&l, dt);
         }
-        source.push_str("END_TYPE\n\n");
+        source.push("END_TYPE\n\n", None);
     }
 
     // Globals of configurations and resources.
     let mut settings = Settings::default();
-    let mut globals = String::new();
+    let mut globals = SourceOut::default();
     if let Some(confs) = root.child("instances").and_then(|i| i.child("configurations")) {
         for conf in confs.children_named("configuration") {
             let cname = conf.attr("name").unwrap_or("config");
             for g in conf.children_named("globalVars") {
-                globals.push_str(&var_block(g, "VAR_GLOBAL", "").map_err(|message| {
-                    ImportError::Pou { pou: format!("configuration {cname}"), message }
+                globals.append(var_block(g, "VAR_GLOBAL").map_err(|message| ImportError::Pou {
+                    pou: format!("configuration {cname}"),
+                    message,
                 })?);
             }
             for res in conf.children_named("resource") {
                 let rname = res.attr("name").unwrap_or("resource");
                 for g in res.children_named("globalVars") {
-                    globals.push_str(&var_block(g, "VAR_GLOBAL", "").map_err(|message| {
+                    globals.append(var_block(g, "VAR_GLOBAL").map_err(|message| {
                         ImportError::Pou { pou: format!("resource {rname}"), message }
                     })?);
                 }
@@ -81,9 +83,9 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             }
         }
     }
-    if !globals.is_empty() {
-        source.push_str(&globals);
-        source.push('\n');
+    if !globals.text.is_empty() {
+        source.append(globals);
+        source.push("\n", None);
     }
 
     // POUs: ST texts and LD declarations first, so LD bodies know every block type.
@@ -102,14 +104,59 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             }
         }
     }
-    let mut project =
-        Project { schema: SCHEMA_VERSION, name, source, settings, ladder, petri: Vec::new() };
+    let mut project = Project {
+        schema: SCHEMA_VERSION,
+        name,
+        source: source.text.clone(),
+        settings,
+        ladder,
+        petri: Vec::new(),
+    };
     let catalog = project.catalog();
     let mut places = Vec::new();
+    // LD networks that do not fit the rung grid run as ST statements by power flow.
+    let mut off_grid = Vec::new();
     for (k, (pou_node, body)) in bodies.into_iter().enumerate() {
         let lp = &mut project.ladder[k];
-        let ld =
-            super::ld_import::import_ld(body, &lp.name, &catalog, &lp.declarations, &mut warnings)?;
+        let laid_out =
+            super::ld_import::import_ld(body, &lp.name, &catalog, &lp.declarations, &mut warnings);
+        // Why the network is not a grid: it does not lay out, or it breaks a rule of the grid
+        // that the tool which wrote it does not have (a coil passes its power on, a coil on
+        // the rail is always on, an element may lead nowhere).
+        let off = match &laid_out {
+            Err(ImportError::Element { local_id, message, .. }) => {
+                Some(format!("element localId {local_id}: {message}"))
+            }
+            Err(other) => Some(other.to_string()),
+            Ok(ld) => {
+                let grid = LadderPou { rungs: ld.rungs.clone(), ..lp.clone() };
+                crate::ladder::validate_with(&grid, &catalog)
+                    .into_iter()
+                    .find(|d| GRID_ONLY_RULES.contains(&d.code))
+                    .map(|d| {
+                        format!(
+                            "{} at rung {}, row {}, column {}: {}",
+                            d.code,
+                            d.rung + 1,
+                            d.row + 1,
+                            d.column + 1,
+                            d.message
+                        )
+                    })
+            }
+        };
+        if let Some(why) = off {
+            // When neither fits, the grid's own problem is reported.
+            if let Ok(lowered) = super::fbd_import::import_fbd(body, &lp.name) {
+                warnings.push(ImportNote::on(body, format!(
+                    "POU {}: the LD network does not fit the rung grid ({why}); it runs as ST statements by power flow (the drawing is not kept yet)",
+                    lp.name
+                )));
+                off_grid.push((k, pou_node, body, lowered));
+                continue;
+            }
+        }
+        let ld = laid_out?;
         lp.rungs = ld.rungs;
         places.extend(ld.origins.iter().map(|&(cell, (line, column))| crate::build::FilePlace {
             site: crate::build::Site::Ladder { pou: lp.name.clone(), cell: Some(cell) },
@@ -129,12 +176,41 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             )));
         }
     }
-    Ok(Import { project, warnings, skipped, places })
+    for (k, pou_node, body, lowered) in off_grid.into_iter().rev() {
+        let lp = project.ladder.remove(k);
+        let (keyword, end) = match lp.kind {
+            LadderPouKind::Program => ("PROGRAM", "END_PROGRAM"),
+            LadderPouKind::FunctionBlock => ("FUNCTION_BLOCK", "END_FUNCTION_BLOCK"),
+        };
+        let mut declarations = SourceOut::default();
+        declarations.push_from(&lp.declarations, pou_node);
+        let header = format!("{keyword} {}", lp.name);
+        warnings.extend(push_lowered(
+            &mut source,
+            (&header, pou_node),
+            declarations,
+            body,
+            lowered,
+            end,
+        ));
+    }
+    project.source = source.text;
+    let file_map = crate::build::FileMap { places, lines: source.lines };
+    Ok(Import { project, warnings, skipped, file_map })
 }
+
+/// Ladder rules of the trainer's rung grid that OpenPLC and Beremiz do not have: a network
+/// an imported file breaks them with runs by power flow instead.
+const GRID_ONLY_RULES: &[crate::diagnostics::Code] = &[
+    crate::diagnostics::Code::LadderOpenCircuit,
+    crate::diagnostics::Code::LadderShortCircuit,
+    crate::diagnostics::Code::LadderAfterCoil,
+    crate::diagnostics::Code::LadderBadPowerPin,
+];
 
 /// Where [`import_pou`] puts what it reads.
 struct PouOut<'o> {
-    source: &'o mut String,
+    source: &'o mut SourceOut,
     ladder: &'o mut Vec<LadderPou>,
     warnings: &'o mut Vec<ImportNote>,
     skipped: &'o mut Vec<SkippedPou>,
@@ -159,22 +235,22 @@ fn import_pou<'a>(
         "function" => ("FUNCTION", "END_FUNCTION"),
         other => return Err(err(format!("unknown pouType {other:?}"))),
     };
-    let mut declarations = String::new();
+    let mut declarations = SourceOut::default();
     let mut return_type = None;
     if let Some(iface) = pou.child("interface") {
         for block in &iface.children {
-            let (section, attrs) = match block.name.as_str() {
+            let section = match block.name.as_str() {
                 "returnType" => {
                     return_type = Some(type_text(block).map_err(err)?);
                     continue;
                 }
-                "inputVars" => ("VAR_INPUT", ""),
-                "outputVars" => ("VAR_OUTPUT", ""),
-                "inOutVars" => ("VAR_IN_OUT", ""),
-                "localVars" => ("VAR", ""),
-                "tempVars" => ("VAR_TEMP", ""),
-                "externalVars" => ("VAR_EXTERNAL", ""),
-                "globalVars" => ("VAR_GLOBAL", ""),
+                "inputVars" => "VAR_INPUT",
+                "outputVars" => "VAR_OUTPUT",
+                "inOutVars" => "VAR_IN_OUT",
+                "localVars" => "VAR",
+                "tempVars" => "VAR_TEMP",
+                "externalVars" => "VAR_EXTERNAL",
+                "globalVars" => "VAR_GLOBAL",
                 "documentation" | "addData" => continue,
                 other => {
                     warnings.push(ImportNote::on(
@@ -184,13 +260,8 @@ fn import_pou<'a>(
                     continue;
                 }
             };
-            declarations.push_str(&var_block(block, section, attrs).map_err(err)?);
+            declarations.append(var_block(block, section).map_err(err)?);
         }
-    }
-    if pou.child("actions").is_some_and(|a| !a.children.is_empty())
-        || pou.child("transitions").is_some_and(|a| !a.children.is_empty())
-    {
-        warnings.push(ImportNote::on(pou, format!("POU {name}: actions and transitions skipped")));
     }
     let body = pou.child("body").ok_or_else(|| err("no <body>".into()))?;
     let lang = body
@@ -198,27 +269,41 @@ fn import_pou<'a>(
         .iter()
         .find(|c| c.name != "documentation" && c.name != "addData")
         .ok_or_else(|| err("empty <body>".into()))?;
+    if lang.name != "SFC"
+        && (pou.child("actions").is_some_and(|a| !a.children.is_empty())
+            || pou.child("transitions").is_some_and(|a| !a.children.is_empty()))
+    {
+        warnings.push(ImportNote::on(pou, format!("POU {name}: actions and transitions skipped")));
+    }
     match lang.name.as_str() {
         "ST" => {
-            let text = lang.deep_text().replace("\r\n", "\n");
             let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
-            push_pou(source, &header, &declarations, &text, end);
+            push_pou(source, (&header, pou), declarations, st_body(lang), end);
         }
+        "SFC" => match super::sfc_import::import_sfc(lang, pou, &name) {
+            Ok(sfc) => {
+                let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
+                let declarations = with_instances(declarations, &sfc.instances, lang);
+                let mut body = SourceOut::default();
+                for (line, at) in &sfc.lines {
+                    body.push(line, Some(*at));
+                }
+                push_pou(source, (&header, pou), declarations, body, end);
+                warnings.extend(sfc.notes);
+            }
+            Err(e) => {
+                let reason = format!("its SFC body cannot be imported yet ({e})");
+                warnings.push(ImportNote::on(
+                    lang,
+                    format!("POU {name}: {reason}; the POU was skipped"),
+                ));
+                out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+            }
+        },
         "FBD" => match super::fbd_import::import_fbd(lang, &name) {
             Ok(fbd) => {
                 let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
-                let mut declarations = declarations;
-                let missing: Vec<&(String, String)> =
-                    fbd.instances.iter().filter(|(i, _)| !declares(&declarations, i)).collect();
-                if !missing.is_empty() {
-                    declarations.push_str("VAR\n");
-                    for (inst, ty) in missing {
-                        declarations.push_str(&format!("    {inst} : {ty};\n"));
-                    }
-                    declarations.push_str("END_VAR\n");
-                }
-                push_pou(source, &header, &declarations, &fbd.statements, end);
-                warnings.extend(fbd.notes);
+                warnings.extend(push_lowered(source, (&header, pou), declarations, lang, fbd, end));
                 warnings.push(ImportNote::on(
                     lang,
                     format!("POU {name}: the FBD body runs as ST statements in its execution order (the drawing is not kept yet)"),
@@ -233,17 +318,44 @@ fn import_pou<'a>(
                 out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
             }
         },
+        "LD" if pou_type == "function" => match super::fbd_import::import_fbd(lang, &name) {
+            // A function has no rung grid here: its network runs as ST by power flow.
+            Ok(lowered) => {
+                let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
+                warnings.push(ImportNote::on(
+                    lang,
+                    format!("POU {name}: the LD function runs as ST statements by power flow (the drawing is not kept yet)"),
+                ));
+                warnings.extend(push_lowered(
+                    source,
+                    (&header, pou),
+                    declarations,
+                    lang,
+                    lowered,
+                    end,
+                ));
+            }
+            Err(e) => {
+                let reason = format!("its LD body cannot be imported yet ({e})");
+                warnings.push(ImportNote::on(
+                    lang,
+                    format!("POU {name}: {reason}; the POU was skipped"),
+                ));
+                out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+            }
+        },
         "LD" => {
-            let kind =
-                match pou_type {
-                    "program" => LadderPouKind::Program,
-                    "functionBlock" => LadderPouKind::FunctionBlock,
-                    _ => return Err(err(
-                        "LD functions are not supported yet (only programs and function blocks)"
-                            .into(),
-                    )),
-                };
-            ladder.push(LadderPou { name, kind, declarations, rungs: Vec::new() });
+            let kind = if pou_type == "program" {
+                LadderPouKind::Program
+            } else {
+                LadderPouKind::FunctionBlock
+            };
+            ladder.push(LadderPou {
+                name,
+                kind,
+                declarations: declarations.text,
+                rungs: Vec::new(),
+            });
             return Ok(Some((pou, lang)));
         }
         other => {
@@ -271,18 +383,89 @@ fn pou_header(
     }
 }
 
-/// Appends a POU written in ST to `source`.
-fn push_pou(source: &mut String, header: &str, declarations: &str, body: &str, end: &str) {
-    source.push_str(header);
-    source.push('\n');
-    source.push_str(declarations);
-    let body = body.trim_matches('\n');
-    if !body.trim().is_empty() {
-        source.push_str(body);
-        source.push('\n');
+/// Appends a POU whose network `body` was lowered to statements (`lowered`) to `source`,
+/// with declarations for the instances it uses that `declarations` lack. Returns the
+/// lowering's notes.
+fn push_lowered(
+    source: &mut SourceOut,
+    head: (&str, &Node),
+    declarations: SourceOut,
+    body: &Node,
+    lowered: super::fbd_import::FbdBody,
+    end: &str,
+) -> Vec<ImportNote> {
+    let declarations = with_instances(declarations, &lowered.instances, body);
+    let mut text = SourceOut::default();
+    for (statement, at) in &lowered.statements {
+        text.push(statement, Some(*at));
     }
-    source.push_str(end);
-    source.push_str("\n\n");
+    push_pou(source, head, declarations, text, end);
+    lowered.notes
+}
+
+/// Appends a POU written in ST to `source`: its header (written from the `<pou>` element),
+/// declarations and body.
+fn push_pou(
+    source: &mut SourceOut,
+    (header, pou): (&str, &Node),
+    declarations: SourceOut,
+    body: SourceOut,
+    end: &str,
+) {
+    source.push_from(&format!("{header}\n"), pou);
+    source.append(declarations);
+    if !body.text.trim().is_empty() {
+        source.append(body);
+        if !source.text.ends_with('\n') {
+            source.push("\n", None);
+        }
+    }
+    source.push(&format!("{end}\n\n"), None);
+}
+
+/// The text of an ST body, tracked to its place in the file when one element holds it all
+/// (the usual `<xhtml:p><![CDATA[…]]></xhtml:p>`).
+fn st_body(lang: &Node) -> SourceOut {
+    let mut holders = Vec::new();
+    text_holders(lang, &mut holders);
+    let mut out = SourceOut::default();
+    match holders.as_slice() {
+        [holder] => {
+            let (line, column) = holder.text_at.unwrap_or((holder.line, holder.column));
+            out.push_verbatim(&holder.text.replace("\r\n", "\n"), line, column);
+        }
+        _ => out.push_from(&lang.deep_text().replace("\r\n", "\n"), lang),
+    }
+    out
+}
+
+/// The elements of `node`'s tree that hold text other than white space.
+fn text_holders<'a>(node: &'a Node, out: &mut Vec<&'a Node>) {
+    if !node.text.trim().is_empty() {
+        out.push(node);
+    }
+    for c in &node.children {
+        text_holders(c, out);
+    }
+}
+
+/// `declarations` with a `VAR` block for the function block `instances` (name, type) of a
+/// body that they do not declare (OpenPLC declares them; other tools may not).
+fn with_instances(
+    mut declarations: SourceOut,
+    instances: &[(String, String)],
+    body: &Node,
+) -> SourceOut {
+    let missing: Vec<&(String, String)> =
+        instances.iter().filter(|(i, _)| !declares(&declarations.text, i)).collect();
+    if !missing.is_empty() {
+        declarations.push("VAR\n", None);
+        for (inst, ty) in missing {
+            declarations.push_from(&format!("    {inst} : {ty};\n"), body);
+        }
+        declarations.push("END_VAR\n", None);
+    }
+    declarations
 }
 
 /// Whether `declarations` declare `name` (a whole word before a colon).
@@ -315,8 +498,9 @@ fn parse_interval_ms(text: &str) -> Option<u64> {
     Some((v * factor).round() as u64).filter(|&m| m > 0)
 }
 
-/// One interface section (`<inputVars retain=…>`) as an ST `VAR… END_VAR` block.
-pub(crate) fn var_block(block: &Node, section: &str, _attrs: &str) -> Result<String, String> {
+/// One interface section (`<inputVars retain=…>`) as an ST `VAR… END_VAR` block, each
+/// variable's line written from its `<variable>`.
+pub(crate) fn var_block(block: &Node, section: &str) -> Result<SourceOut, String> {
     let mut out = String::from(section);
     if block.attr("retain") == Some("true") {
         out.push_str(" RETAIN");
@@ -328,13 +512,13 @@ pub(crate) fn var_block(block: &Node, section: &str, _attrs: &str) -> Result<Str
         out.push_str(" CONSTANT");
     }
     out.push('\n');
+    let mut text = SourceOut::default();
+    text.push_from(&out, block);
     for v in block.children_named("variable") {
-        out.push_str("    ");
-        out.push_str(&variable_text(v)?);
-        out.push('\n');
+        text.push_from(&format!("    {}\n", variable_text(v)?), v);
     }
-    out.push_str("END_VAR\n");
-    Ok(out)
+    text.push("END_VAR\n", None);
+    Ok(text)
 }
 
 /// `name AT %IX0.0 : BOOL := FALSE; (* doc *)`.

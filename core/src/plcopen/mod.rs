@@ -4,10 +4,12 @@
 //! types become a `TYPE … END_TYPE` block, configuration and resource globals a top-level
 //! `VAR_GLOBAL` block, ST POUs full POU texts in [`Project::source`], and LD POUs
 //! [`LadderPou`](crate::ladder::LadderPou)s whose networks (elements at free positions wired
-//! by `refLocalId`) are laid out onto the rung grid. FBD, SFC and IL bodies are skipped with
-//! a warning. [`export`] writes a TC6 0201 document back; `import(&export(p))` gives the same
-//! program (ST text equal up to whitespace, ladder grids equal when they were laid out by
-//! [`import`]).
+//! by `refLocalId`) are laid out onto the rung grid. Networks that do not fit the grid, LD
+//! functions and FBD bodies become ST statements by power flow and execution order; SFC
+//! bodies become textual SFC; IL bodies are skipped with a warning. Every line of the ST
+//! written is mapped back to its place in the file ([`Import::file_map`]). [`export`] writes
+//! a TC6 0201 document back; `import(&export(p))` gives the same program (ST text equal up
+//! to whitespace, ladder grids equal when they were laid out by [`import`]).
 //!
 //! XML is read with quick-xml's event reader into a small element tree; nothing here panics
 //! on malformed input: every problem is an [`ImportError`] naming the element.
@@ -18,6 +20,8 @@ mod fbd_import;
 mod import;
 mod ld_export;
 mod ld_import;
+mod sfc_import;
+mod source_out;
 mod union_find;
 mod xml;
 
@@ -38,8 +42,9 @@ pub struct Import {
     pub warnings: Vec<ImportNote>,
     /// The POUs that were not imported, and why.
     pub skipped: Vec<SkippedPou>,
-    /// Where each ladder cell came from in the file (for problems at the element).
-    pub places: Vec<crate::build::FilePlace>,
+    /// Where each ladder cell and each line of the ST source came from in the file (for
+    /// problems at the element).
+    pub file_map: crate::build::FileMap,
 }
 
 /// A note on something an import skipped or changed, with the place in the file of the

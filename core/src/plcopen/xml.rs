@@ -21,6 +21,9 @@ pub(crate) struct Node {
     pub line: u32,
     /// 1-based column of its start tag.
     pub column: u32,
+    /// 1-based line and column where [`Node::text`] begins in the file (its first text or
+    /// CDATA content).
+    pub text_at: Option<(u32, u32)>,
 }
 
 impl Node {
@@ -68,6 +71,7 @@ fn start_node(e: &BytesStart<'_>, at: crate::diagnostics::Location) -> Result<No
         text: String::new(),
         line: at.line,
         column: at.column,
+        text_at: None,
     })
 }
 
@@ -138,11 +142,14 @@ fn parse_at(
             }
             Event::Text(t) => {
                 if let Some(top) = stack.last_mut() {
+                    top.text_at.get_or_insert((at.line, at.column));
                     top.text.push_str(&t.xml10_content());
                 }
             }
             Event::CData(t) => {
                 if let Some(top) = stack.last_mut() {
+                    // The content begins after `<![CDATA[`.
+                    top.text_at.get_or_insert((at.line, at.column + 9));
                     top.text.push_str(&t.into_inner());
                 }
             }

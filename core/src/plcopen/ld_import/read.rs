@@ -56,7 +56,8 @@ pub(crate) struct El {
     pub conns: Vec<Conn>,
 }
 
-fn conns_of(point: &Node) -> Vec<Conn> {
+/// The wires into a `connectionPointIn`.
+pub(crate) fn conns_of(point: &Node) -> Vec<Conn> {
     point
         .children_named("connection")
         .filter_map(|c| {
