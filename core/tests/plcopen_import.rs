@@ -1167,3 +1167,58 @@ fn an_sfc_with_ld_and_st_conditions_runs() {
     // Lamp was set (S) and stays on back in Idle.
     assert_eq!(scan_bools(&mut s, &[("Alarm", false)], &read), [t, f, f, f, t]);
 }
+
+/// Negated and edge-triggered block inputs (Beremiz draws them as a circle or an arrow on
+/// the pin): a negated function input reads NOT the value, an edge-triggered function
+/// block input reads the edge of the value.
+#[test]
+fn negated_and_edge_triggered_pins_run() {
+    use off_grid::*;
+    let vars = format!(
+        "{}{}",
+        ["A", "B", "Y"].map(|v| var(v, "BOOL")).concat(),
+        [var("C1", r#"derived name="CTU""#), var("N", "INT")].concat()
+    );
+    let body = [
+        inv(1, 0, 0, "A"),
+        inv(2, 0, 40, "B"),
+        block(3, (100, 0), "AND", "", &[("IN1", 1, ""), ("IN2", 2, "")], &["OUT"]),
+        outv(4, 200, 0, 0, 3, "OUT", "Y"),
+        inv(5, 0, 100, "10"),
+        block(
+            6,
+            (100, 100),
+            "CTU",
+            "C1",
+            &[("CU", 1, ""), ("R", 2, ""), ("PV", 5, "")],
+            &["Q", "CV"],
+        ),
+        outv(7, 200, 100, 0, 6, "CV", "N"),
+    ]
+    .concat()
+    .replacen(
+        r#"<variable formalParameter="IN1">"#,
+        r#"<variable formalParameter="IN1" negated="true">"#,
+        1,
+    )
+    .replacen(
+        r#"<variable formalParameter="R">"#,
+        r#"<variable formalParameter="R" edge="rising">"#,
+        1,
+    );
+    let i = import(&fbd_doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
+    assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    let mut step = |a: bool, b: bool| {
+        let y = scan_bools(&mut s, &[("A", a), ("B", b)], &["Y"])[0];
+        let Value::Int(n, _) = s.read("N").unwrap() else { panic!() };
+        (y, n)
+    };
+    // Y = NOT A AND B; C1 counts A's rising edges and resets on B's rising edge only.
+    assert_eq!(step(false, true), (true, 0));
+    assert_eq!(step(true, true), (false, 1));
+    assert_eq!(step(false, true), (true, 1));
+    assert_eq!(step(true, true), (false, 2), "B held: no new reset");
+    assert_eq!(step(false, false), (false, 2));
+    assert_eq!(step(false, true), (true, 0), "B's rising edge resets");
+}

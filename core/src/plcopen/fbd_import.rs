@@ -10,7 +10,7 @@
 
 use std::collections::{BTreeSet, HashMap};
 
-use super::ld_import::read::{read_elements, Conn, El, Kind, RawBlock};
+use super::ld_import::read::{read_elements, Conn, El, Kind, PinModifier, RawBlock};
 use super::xml::Node;
 use super::ImportError;
 use crate::ladder::{CoilKind, ContactKind, Element};
@@ -76,19 +76,33 @@ pub(crate) fn lower_network(els: &[El], pou: &str) -> Result<FbdBody, ImportErro
             Kind::Block(b) => {
                 let Some(inst) = &b.instance else { continue };
                 let mut args = Vec::new();
+                let mut edges = String::new();
                 let mut enable = None;
                 for (pin, conns) in b.inputs.iter().chain(&b.in_outs) {
-                    if pin.eq_ignore_ascii_case("EN") {
-                        if !conns.is_empty() {
-                            enable = Some(lower.joined(conns)?).filter(|e| e != "TRUE");
-                        }
+                    if conns.is_empty() {
                         continue;
                     }
-                    if !conns.is_empty() {
-                        args.push(format!("{pin} := {}", lower.joined(conns)?));
+                    let mut v = lower.joined(conns)?;
+                    match modifier(b, pin) {
+                        Some(PinModifier::Negated) => v = format!("NOT ({v})"),
+                        Some(edge) => {
+                            let id: String =
+                                els[s].id.chars().filter(char::is_ascii_alphanumeric).collect();
+                            let name = format!("LdEdge{id}{pin}");
+                            let ty = if edge == PinModifier::Rising { "R_TRIG" } else { "F_TRIG" };
+                            instances.push((name.clone(), ty.to_string()));
+                            edges.push_str(&format!("{name}(CLK := {v}); "));
+                            v = format!("{name}.Q");
+                        }
+                        None => {}
+                    }
+                    if pin.eq_ignore_ascii_case("EN") {
+                        enable = Some(v).filter(|e| e != "TRUE");
+                    } else {
+                        args.push(format!("{pin} := {v}"));
                     }
                 }
-                let call = format!("{inst}({});", args.join(", "));
+                let call = format!("{edges}{inst}({});", args.join(", "));
                 let line = match enable {
                     Some(en) => format!("IF {en} THEN {call} END_IF;\n"),
                     None => format!("{call}\n"),
@@ -126,6 +140,11 @@ pub(crate) fn lower_network(els: &[El], pou: &str) -> Result<FbdBody, ImportErro
         }
     }
     Ok(FbdBody { statements: text, instances, notes })
+}
+
+/// How input `pin` of block `b` changes what is wired to it.
+fn modifier(b: &RawBlock, pin: &str) -> Option<PinModifier> {
+    b.modified.iter().find(|(p, _)| p.eq_ignore_ascii_case(pin)).map(|(_, m)| *m)
 }
 
 /// Whether an element is a statement of its network: a function block instance, an output
@@ -237,6 +256,19 @@ impl<'a> Lower<'a> {
                         if pin.eq_ignore_ascii_case("EN") {
                             continue;
                         }
+                        let negated = match modifier(b, pin) {
+                            None => false,
+                            Some(PinModifier::Negated) => true,
+                            Some(_) => {
+                                return Err(self.err(
+                                    i,
+                                    format!(
+                                        "an edge on input {pin} of a function (not supported yet)"
+                                    ),
+                                ))
+                            }
+                        };
+                        let at = args.len();
                         match conns.as_slice() {
                             [c] => args.push(self.value(c, path)?),
                             [] => {
@@ -252,6 +284,9 @@ impl<'a> Lower<'a> {
                                     .collect::<Result<Vec<_>, _>>()?;
                                 args.push(format!("({})", parts.join(" OR ")));
                             }
+                        }
+                        if negated {
+                            args[at] = format!("NOT ({})", args[at]);
                         }
                     }
                     path.pop();
@@ -337,7 +372,12 @@ impl<'a> Lower<'a> {
         let en = b.inputs.iter().find(|(pin, _)| pin.eq_ignore_ascii_case("EN"));
         match en {
             Some((_, conns)) if !conns.is_empty() => {
-                Ok(Some(self.joined(conns)?).filter(|e| e != "TRUE"))
+                let v = self.joined(conns)?;
+                let v = match modifier(b, "EN") {
+                    Some(PinModifier::Negated) => format!("NOT ({v})"),
+                    _ => v,
+                };
+                Ok(Some(v).filter(|e| e != "TRUE"))
             }
             _ => Ok(None),
         }

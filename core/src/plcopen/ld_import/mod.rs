@@ -72,6 +72,19 @@ pub(crate) fn import_ld(
     warnings: &mut Vec<ImportNote>,
 ) -> Result<LdBody, ImportError> {
     let mut els = read::read_elements(ld, pou)?;
+    // The grid's blocks read their pins as they are: a negated or edge-triggered pin keeps
+    // the network off the grid.
+    for e in &els {
+        if let Kind::Block(b) = &e.kind {
+            if let Some((p, _)) = b.modified.first() {
+                return Err(ImportError::Element {
+                    pou: pou.into(),
+                    local_id: e.id.clone(),
+                    message: format!("pin {p} is negated or edge-triggered"),
+                });
+            }
+        }
+    }
     let mut index: HashMap<String, usize> = HashMap::new();
     for (i, e) in els.iter().enumerate() {
         if e.id.is_empty() {

@@ -24,6 +24,19 @@ pub(crate) struct RawBlock {
     pub inputs: Vec<(String, Vec<Conn>)>,
     /// `(formalParameter, wires)` of the in-out pins.
     pub in_outs: Vec<(String, Vec<Conn>)>,
+    /// The input pins that are negated or edge-triggered, and how.
+    pub modified: Vec<(String, PinModifier)>,
+}
+
+/// How an input pin changes the value wired to it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum PinModifier {
+    /// `negated="true"`: the pin reads NOT the value.
+    Negated,
+    /// `edge="rising"`: the pin reads the value's rising edge.
+    Rising,
+    /// `edge="falling"`: the pin reads its falling edge.
+    Falling,
 }
 
 #[derive(Debug, Clone)]
@@ -91,10 +104,13 @@ fn edge_is_redundant(type_name: &str, pin: &str, edge: &str) -> bool {
         )
 }
 
+/// The pins of `section` with their wires; the negated or edge-triggered ones are added to
+/// `modified`.
 fn pin_list(
     n: &Node,
     type_name: &str,
     section: &str,
+    modified: &mut Vec<(String, PinModifier)>,
     err: &dyn Fn(String) -> ImportError,
 ) -> Result<Vec<(String, Vec<Conn>)>, ImportError> {
     let mut out = Vec::new();
@@ -106,10 +122,14 @@ fn pin_list(
         }
         let edge = v.attr("edge").unwrap_or("none");
         let redundant = edge_is_redundant(type_name, &p, edge);
-        if v.attr("negated") == Some("true") || (edge != "none" && !redundant) {
-            return Err(err(format!(
-                "pin {p} is negated or edge-triggered; put a contact or an R_TRIG before it instead"
-            )));
+        let modifier = match (v.attr("negated") == Some("true"), edge) {
+            (true, _) => Some(PinModifier::Negated),
+            (false, "rising") if !redundant => Some(PinModifier::Rising),
+            (false, "falling") => Some(PinModifier::Falling),
+            _ => None,
+        };
+        if let Some(m) = modifier {
+            modified.push((p.clone(), m));
         }
         out.push((p, v.child("connectionPointIn").map(conns_of).unwrap_or_default()));
     }
@@ -170,11 +190,13 @@ pub(crate) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError
                     .map(str::trim)
                     .filter(|s| !s.is_empty())
                     .map(str::to_string);
+                let mut modified = Vec::new();
                 Kind::Block(RawBlock {
-                    inputs: pin_list(n, &type_name, "inputVariables", &err)?,
-                    in_outs: pin_list(n, &type_name, "inOutVariables", &err)?,
+                    inputs: pin_list(n, &type_name, "inputVariables", &mut modified, &err)?,
+                    in_outs: pin_list(n, &type_name, "inOutVariables", &mut modified, &err)?,
                     type_name,
                     instance,
+                    modified,
                 })
             }
             "inVariable" | "inOutVariable" => Kind::InVar(text_of(n, "expression")),
