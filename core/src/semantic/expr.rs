@@ -884,6 +884,24 @@ impl<'a> Checker<'a> {
         }
     }
 
+    /// An untyped `0` or `1` beside a BOOL operand is the BOOL literal FALSE or TRUE
+    /// (IEC 61131-3 Table 5; `IF Done = 1`, as matiec and OpenPLC accept).
+    fn bool_literal(&self, t: Typed, other: Type) -> Typed {
+        match (&t.e.kind, t.e.ty.elem()) {
+            (ExprKind::Const(bits), Some(el)) if t.flexible && other.is_bool() && el.is_int() => {
+                match arith::to_i128(el, *bits) {
+                    v @ (0 | 1) => Typed::fixed(self.const_expr(
+                        arith::norm(Elem::Bool, v),
+                        Type::BOOL,
+                        t.e.span,
+                    )),
+                    _ => t,
+                }
+            }
+            _ => t,
+        }
+    }
+
     fn binary(
         &mut self,
         op: BinOp,
@@ -899,6 +917,12 @@ impl<'a> Checker<'a> {
             _ => self.expr(r, hint),
         };
         let (a, b) = (a?, b?);
+        let (a, b) = if is_comparison(op) || matches!(op, BinOp::And | BinOp::Or | BinOp::Xor) {
+            let (at, bt) = (a.e.ty, b.e.ty);
+            (self.bool_literal(a, bt), self.bool_literal(b, at))
+        } else {
+            (a, b)
+        };
         let (at, bt) = (a.e.ty, b.e.ty);
         let mismatch = |c: &mut Self| {
             let msg =

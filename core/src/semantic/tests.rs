@@ -221,3 +221,13 @@ fn a_function_writing_its_input_is_a_warning_and_constants_stay_errors() {
         vec![(Code::FunctionInputWritten, 4, 1), (Code::AssignToConstant, 5, 1)]
     );
 }
+
+#[test]
+fn zero_and_one_are_bool_literals_beside_a_bool() {
+    assert_eq!(
+        errors(&program("b := b = 1; b := 0 <> b; b := b AND 1; b := 1; b := b OR 0;")),
+        vec![]
+    );
+    assert_eq!(errors(&program("b := b = 2;")), vec![(Code::OperatorTypeMismatch, 3, 6)]);
+    assert_eq!(errors(&program("b := i = 1;")), vec![], "an INT compared with 1 stays an INT");
+}
