@@ -1150,12 +1150,16 @@ fn an_sfc_with_ld_and_st_conditions_runs() {
         r#"<jumpStep localId="12" targetName="Idle"><position x="0" y="12"/><connectionPointIn><connection refLocalId="11"/></connectionPointIn></jumpStep>"#.to_string(),
         transition(13, 9, r#"<inline name=""><ST><xhtml:p><![CDATA[NOT Alarm]]></xhtml:p></ST></inline>"#),
         r#"<jumpStep localId="14" targetName="Idle"><position x="0" y="14"/><connectionPointIn><connection refLocalId="13"/></connectionPointIn></jumpStep>"#.to_string(),
+        // A transition left unconnected in the editor: skipped with a note.
+        r#"<transition localId="15"><position x="200" y="0"/><connectionPointIn/><connectionPointOut/><condition><inline name=""><ST><xhtml:p><![CDATA[Alarm]]></xhtml:p></ST></inline></condition></transition>"#.to_string(),
     ]
     .concat();
     let vars = ["Start", "Alarm", "Motor", "Lamp"].map(|v| var(v, "BOOL")).concat();
     let text = doc(&body, &vars).replace("<LD>", "<SFC>").replace("</LD>", "</SFC>");
     let i = import(&text).unwrap_or_else(|e| panic!("{e}"));
     assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    assert_eq!(i.warnings.len(), 1, "{:?}", i.warnings);
+    assert!(i.warnings[0].message.contains("transition localId 15 is not connected"));
     let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
     let read = ["Idle.X", "Run.X", "Fault.X", "Motor", "Lamp"];
     let (t, f) = (true, false);

@@ -334,11 +334,13 @@ impl<'a> Lower<'a> {
         Ok(text)
     }
 
-    /// The power at the left of contact or coil `i`: the OR of the wires that meet there.
+    /// The power at the left of contact or coil `i`: the OR of the wires that meet there
+    /// (FALSE when none does).
     fn power_along(&self, i: usize, path: &mut Vec<usize>) -> Result<String, ImportError> {
         let ins = &self.els[i].conns;
         match ins.as_slice() {
-            [] => Err(self.err(i, "no wire brings power to this element".into())),
+            // Nothing at its left: an open circuit, never powered.
+            [] => Ok("FALSE".into()),
             [c] => self.value(c, path),
             _ => ins
                 .iter()

@@ -146,14 +146,22 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             }
         };
         if let Some(why) = off {
-            // When neither fits, the grid's own problem is reported.
-            if let Ok(lowered) = super::fbd_import::import_fbd(body, &lp.name) {
-                warnings.push(ImportNote::on(body, format!(
-                    "POU {}: the LD network does not fit the rung grid ({why}); it runs as ST statements by power flow (the drawing is not kept yet)",
-                    lp.name
-                )));
-                off_grid.push((k, pou_node, body, lowered));
-                continue;
+            match super::fbd_import::import_fbd(body, &lp.name) {
+                Ok(lowered) => {
+                    warnings.push(ImportNote::on(body, format!(
+                        "POU {}: the LD network does not fit the rung grid ({why}); it runs as ST statements by power flow (the drawing is not kept yet)",
+                        lp.name
+                    )));
+                    off_grid.push((k, pou_node, body, lowered));
+                    continue;
+                }
+                // Neither fits: the grid's problem is reported, with the network's.
+                Err(lowering) => {
+                    if let Err(ImportError::Element { pou, local_id, message }) = laid_out {
+                        let message = format!("{message}; run by power flow instead: {lowering}");
+                        return Err(ImportError::Element { pou, local_id, message });
+                    }
+                }
             }
         }
         let ld = laid_out?;

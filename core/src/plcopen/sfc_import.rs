@@ -110,6 +110,17 @@ pub(crate) fn import_sfc(sfc: &Node, pou: &Node, name: &str) -> Result<SfcBody, 
     for t in chart.iter().filter(|n| n.name == "transition") {
         let from = reader.steps_before(t)?;
         let to = reader.steps_after(t)?;
+        if from.is_empty() || to.is_empty() {
+            let side = if from.is_empty() { "no step leads to it" } else { "it leads to no step" };
+            out.notes.push(ImportNote::on(
+                t,
+                format!(
+                    "POU {name}: transition localId {} is not connected ({side}); skipped",
+                    t.attr("localId").unwrap_or("?").trim()
+                ),
+            ));
+            continue;
+        }
         let priority = match t.attr("priority").map(str::trim).filter(|p| !p.is_empty()) {
             Some(p) => {
                 let p: u32 = p
@@ -345,7 +356,7 @@ impl<'a> Chart<'a> {
         Ok(out)
     }
 
-    /// The steps transition `t` leaves.
+    /// The steps transition `t` leaves (none when nothing is wired into it).
     fn steps_before(&self, t: &Node) -> Result<Vec<String>, ImportError> {
         let mut steps = BTreeSet::new();
         let mut order = Vec::new();
@@ -371,14 +382,11 @@ impl<'a> Chart<'a> {
                 }
             }
         }
-        if order.is_empty() {
-            return Err(self.err(t, "a transition that no step leads to".into()));
-        }
         order.reverse();
         Ok(order)
     }
 
-    /// The steps transition `t` activates.
+    /// The steps transition `t` activates (none when nothing is wired from it).
     fn steps_after(&self, t: &Node) -> Result<Vec<String>, ImportError> {
         let mut steps = BTreeSet::new();
         let mut order = Vec::new();
@@ -413,9 +421,6 @@ impl<'a> Chart<'a> {
             if steps.insert(name.to_ascii_uppercase()) {
                 order.push(name);
             }
-        }
-        if order.is_empty() {
-            return Err(self.err(t, "a transition that leads to no step".into()));
         }
         Ok(order)
     }
