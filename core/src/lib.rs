@@ -37,6 +37,7 @@ pub mod exercise;
 pub mod export;
 pub mod ladder;
 pub mod limits;
+pub mod network;
 pub mod open;
 pub mod order;
 pub mod petri;

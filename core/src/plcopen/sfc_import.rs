@@ -16,10 +16,11 @@
 
 use std::collections::{BTreeSet, HashMap};
 
-use super::fbd_import::{import_fbd, lower_network, Lower};
+use super::fbd_import::{import_fbd, lower_network};
 use super::ld_import::read::read_elements;
 use super::xml::Node;
 use super::{ImportError, ImportNote};
+use crate::network::lower::Lower;
 
 /// The elements that make the chart; every other element of the body is its network.
 const CHART: &[&str] = &[
@@ -64,7 +65,7 @@ pub(crate) fn import_sfc(sfc: &Node, pou: &Node, name: &str) -> Result<SfcBody, 
     let els = read_elements(&network, name)?;
     let lowered = lower_network(&els, name)?;
     let reader = Chart::new(&chart, name)?;
-    let wires = Lower::new(&els, name);
+    let wires = Lower::new(&els);
     let mut out = SfcBody { lines: Vec::new(), instances: lowered.instances, notes: lowered.notes };
     let mut inline_actions: Vec<(String, &Node, &Node)> = Vec::new();
     let mut network_done = lowered.statements.is_empty();

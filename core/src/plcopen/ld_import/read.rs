@@ -1,93 +1,67 @@
-//! LD body XML → a flat list of elements with their `refLocalId` wiring. Connector /
-//! continuation pairs are resolved here: a wire from a continuation becomes the wires into
-//! the connector of the same name, so later stages never see them.
-
-use std::collections::HashMap;
+//! LD and FBD body XML → the network model (elements with their positions, pins and
+//! wires, [`crate::network::model`]), and its logical view (connectors resolved) for the
+//! grid layout and the lowering.
 
 use super::super::xml::Node;
 use super::super::ImportError;
-use crate::ladder::{CoilKind, ContactKind, Element};
+use crate::ladder::{CoilKind, ContactKind};
+pub(crate) use crate::network::logical::{Conn, El, Kind, RawBlock};
+use crate::network::model::{NetElement, NetKind, Pin, PinModifier, Wire};
 
-/// A wire end: the element it comes from and the output pin named, if any.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Conn {
-    pub from: String,
-    pub param: Option<String>,
+/// A number attribute (0 when missing or not a number).
+fn num(n: Option<&Node>, attr: &str) -> f64 {
+    n.and_then(|n| n.attr(attr))
+        .and_then(|v| v.trim().parse().ok())
+        .filter(|v: &f64| v.is_finite())
+        .unwrap_or(0.0)
 }
 
-/// A block as written: its pins and what is wired to them.
-#[derive(Debug, Clone)]
-pub(crate) struct RawBlock {
-    pub type_name: String,
-    pub instance: Option<String>,
-    /// `(formalParameter, wires)` of the input pins, in document order.
-    pub inputs: Vec<(String, Vec<Conn>)>,
-    /// `(formalParameter, wires)` of the in-out pins.
-    pub in_outs: Vec<(String, Vec<Conn>)>,
-    /// The input pins that are negated or edge-triggered, and how.
-    pub modified: Vec<(String, PinModifier)>,
+/// The `<relPosition>` of a connection point.
+fn rel(point: &Node) -> (f64, f64) {
+    let r = point.child("relPosition");
+    (num(r, "x"), num(r, "y"))
 }
 
-/// How an input pin changes the value wired to it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum PinModifier {
-    /// `negated="true"`: the pin reads NOT the value.
-    Negated,
-    /// `edge="rising"`: the pin reads the value's rising edge.
-    Rising,
-    /// `edge="falling"`: the pin reads its falling edge.
-    Falling,
-}
-
-#[derive(Debug, Clone)]
-pub(crate) enum Kind {
-    LeftRail,
-    RightRail,
-    /// A contact, coil, jump or return.
-    Leaf(Element),
-    Block(RawBlock),
-    /// An `inVariable` or `inOutVariable`: a value for a block pin.
-    InVar(String),
-    OutVar(String),
-    Comment(String),
-    Label(String),
-}
-
-#[derive(Debug, Clone)]
-pub(crate) struct El {
-    pub id: String,
-    /// 1-based line and column of the element in the file.
-    pub at: (u32, u32),
-    /// Its `position`'s x.
-    pub x: f64,
-    /// Its `executionOrderId` (0: none).
-    pub order: u32,
-    pub y: f64,
-    pub kind: Kind,
-    /// Wires into the element's `connectionPointIn`s (power for leaves, rails and
-    /// outVariables).
-    pub conns: Vec<Conn>,
-}
-
-/// The wires into a `connectionPointIn`.
-pub(crate) fn conns_of(point: &Node) -> Vec<Conn> {
+/// The wires into a `connectionPointIn`, with the points they are drawn through.
+fn wires_of(point: &Node) -> Vec<Wire> {
     point
         .children_named("connection")
         .filter_map(|c| {
-            Some(Conn {
+            Some(Wire {
                 from: c.attr("refLocalId")?.trim().to_string(),
                 param: c.attr("formalParameter").filter(|p| !p.is_empty()).map(str::to_string),
+                points: c
+                    .children_named("position")
+                    .map(|p| (num(Some(p), "x"), num(Some(p), "y")))
+                    .collect(),
             })
         })
         .collect()
 }
 
-fn all_conns_in(n: &Node) -> Vec<Conn> {
-    n.children_named("connectionPointIn").flat_map(conns_of).collect()
+/// The wires into a `connectionPointIn`, logically.
+pub(crate) fn conns_of(point: &Node) -> Vec<Conn> {
+    wires_of(point).into_iter().map(|w| Conn { from: w.from, param: w.param }).collect()
 }
 
-fn y_of(n: &Node) -> f64 {
-    n.child("position").and_then(|p| p.attr("y")).and_then(|y| y.trim().parse().ok()).unwrap_or(0.0)
+/// One pin per `connectionPointIn` of an element that is not a block.
+fn input_points(n: &Node) -> Vec<Pin> {
+    n.children_named("connectionPointIn")
+        .map(|p| {
+            let (dx, dy) = rel(p);
+            Pin { name: String::new(), dx, dy, wires: wires_of(p), modifier: None, in_out: false }
+        })
+        .collect()
+}
+
+/// One pin per `connectionPointOut` of an element that is not a block.
+fn output_points(n: &Node) -> Vec<Pin> {
+    n.children_named("connectionPointOut")
+        .map(|p| {
+            let (dx, dy) = rel(p);
+            Pin { name: String::new(), dx, dy, wires: Vec::new(), modifier: None, in_out: false }
+        })
+        .collect()
 }
 
 fn text_of(n: &Node, child: &str) -> String {
@@ -104,73 +78,71 @@ fn edge_is_redundant(type_name: &str, pin: &str, edge: &str) -> bool {
         )
 }
 
-/// The pins of `section` with their wires; the negated or edge-triggered ones are added to
-/// `modified`.
-fn pin_list(
+/// The pins of a block's `section` (`inputVariables`, `inOutVariables`, `outputVariables`).
+fn block_pins(
     n: &Node,
     type_name: &str,
     section: &str,
-    modified: &mut Vec<(String, PinModifier)>,
     err: &dyn Fn(String) -> ImportError,
-) -> Result<Vec<(String, Vec<Conn>)>, ImportError> {
+) -> Result<Vec<Pin>, ImportError> {
     let mut out = Vec::new();
     let Some(sec) = n.child(section) else { return Ok(out) };
     for v in sec.children_named("variable") {
-        let p = v.attr("formalParameter").unwrap_or("").trim().to_string();
-        if p.is_empty() {
+        let name = v.attr("formalParameter").unwrap_or("").trim().to_string();
+        if name.is_empty() {
             return Err(err(format!("a block pin in <{section}> without formalParameter")));
         }
         let edge = v.attr("edge").unwrap_or("none");
-        let redundant = edge_is_redundant(type_name, &p, edge);
+        let redundant = edge_is_redundant(type_name, &name, edge);
         let modifier = match (v.attr("negated") == Some("true"), edge) {
+            _ if section == "outputVariables" => None,
             (true, _) => Some(PinModifier::Negated),
             (false, "rising") if !redundant => Some(PinModifier::Rising),
             (false, "falling") => Some(PinModifier::Falling),
             _ => None,
         };
-        if let Some(m) = modifier {
-            modified.push((p.clone(), m));
-        }
-        out.push((p, v.child("connectionPointIn").map(conns_of).unwrap_or_default()));
+        let point = v.child("connectionPointIn").or_else(|| v.child("connectionPointOut"));
+        let (dx, dy) = point.map(rel).unwrap_or((0.0, 0.0));
+        let wires = v.child("connectionPointIn").map(wires_of).unwrap_or_default();
+        out.push(Pin { name, dx, dy, wires, modifier, in_out: section == "inOutVariables" });
     }
     Ok(out)
 }
 
-/// Reads the elements of an LD body, with connectors and continuations resolved.
-pub(crate) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError> {
+/// Reads the elements of an LD or FBD body as the network model.
+pub(crate) fn read_network(body: &Node, pou: &str) -> Result<Vec<NetElement>, ImportError> {
     let mut els = Vec::new();
-    let mut connectors: HashMap<String, Vec<Conn>> = HashMap::new();
-    // Continuations by localId: (name in upper case, name as written).
-    let mut continuations: HashMap<String, (String, String)> = HashMap::new();
-    for n in &ld.children {
+    for n in &body.children {
         let id = n.attr("localId").unwrap_or("").trim().to_string();
         let err = |message: String| ImportError::Element {
             pou: pou.to_string(),
             local_id: if id.is_empty() { "?".into() } else { id.clone() },
             message,
         };
+        let mut inputs = input_points(n);
+        let mut outputs = output_points(n);
         let kind = match n.name.as_str() {
-            "leftPowerRail" => Kind::LeftRail,
-            "rightPowerRail" => Kind::RightRail,
+            "leftPowerRail" => NetKind::LeftRail,
+            "rightPowerRail" => NetKind::RightRail,
             "contact" => {
                 let operand = text_of(n, "variable");
                 if operand.is_empty() {
                     return Err(err("a contact without a variable".into()));
                 }
-                let kind = match (n.attr("edge"), n.attr("negated") == Some("true")) {
+                let contact = match (n.attr("edge"), n.attr("negated") == Some("true")) {
                     (Some("rising"), _) => ContactKind::Rising,
                     (Some("falling"), _) => ContactKind::Falling,
                     (_, true) => ContactKind::NormallyClosed,
                     _ => ContactKind::NormallyOpen,
                 };
-                Kind::Leaf(Element::Contact { kind, operand })
+                NetKind::Contact { operand, contact }
             }
             "coil" => {
                 let operand = text_of(n, "variable");
                 if operand.is_empty() {
                     return Err(err("a coil without a variable".into()));
                 }
-                let kind = match (n.attr("storage"), n.attr("edge"), n.attr("negated")) {
+                let coil = match (n.attr("storage"), n.attr("edge"), n.attr("negated")) {
                     (Some("set"), _, _) => CoilKind::Set,
                     (Some("reset"), _, _) => CoilKind::Reset,
                     (_, Some("rising"), _) => CoilKind::Rising,
@@ -178,7 +150,7 @@ pub(crate) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError
                     (_, _, Some("true")) => CoilKind::Negated,
                     _ => CoilKind::Normal,
                 };
-                Kind::Leaf(Element::Coil { kind, operand })
+                NetKind::Coil { operand, coil }
             }
             "block" => {
                 let type_name = n.attr("typeName").unwrap_or("").trim().to_string();
@@ -190,107 +162,66 @@ pub(crate) fn read_elements(ld: &Node, pou: &str) -> Result<Vec<El>, ImportError
                     .map(str::trim)
                     .filter(|s| !s.is_empty())
                     .map(str::to_string);
-                let mut modified = Vec::new();
-                Kind::Block(RawBlock {
-                    inputs: pin_list(n, &type_name, "inputVariables", &mut modified, &err)?,
-                    in_outs: pin_list(n, &type_name, "inOutVariables", &mut modified, &err)?,
-                    type_name,
-                    instance,
-                    modified,
-                })
+                inputs = block_pins(n, &type_name, "inputVariables", &err)?;
+                let in_outs = block_pins(n, &type_name, "inOutVariables", &err)?;
+                outputs = block_pins(n, &type_name, "outputVariables", &err)?;
+                outputs.extend(in_outs.iter().map(|p| Pin { wires: Vec::new(), ..p.clone() }));
+                inputs.extend(in_outs);
+                NetKind::Block { type_name, instance }
             }
-            "inVariable" | "inOutVariable" => Kind::InVar(text_of(n, "expression")),
-            "outVariable" => Kind::OutVar(text_of(n, "expression")),
-            "comment" => Kind::Comment(n.child("content").map(comment_text).unwrap_or_default()),
-            "label" => Kind::Label(n.attr("label").unwrap_or("").to_string()),
-            "jump" => {
-                Kind::Leaf(Element::Jump { label: n.attr("label").unwrap_or("").to_string() })
+            "inVariable" => NetKind::InVar { expr: text_of(n, "expression") },
+            "inOutVariable" => NetKind::InOutVar { expr: text_of(n, "expression") },
+            "outVariable" => NetKind::OutVar { expr: text_of(n, "expression") },
+            "comment" => {
+                NetKind::Comment { text: n.child("content").map(comment_text).unwrap_or_default() }
             }
-            "return" => Kind::Leaf(Element::Return),
+            "label" => NetKind::Label { label: n.attr("label").unwrap_or("").to_string() },
+            "jump" => NetKind::Jump { label: n.attr("label").unwrap_or("").to_string() },
+            "return" => NetKind::Return,
             "connector" | "continuation" => {
-                let spelled = n.attr("name").unwrap_or("").trim().to_string();
-                let name = spelled.to_ascii_uppercase();
+                let name = n.attr("name").unwrap_or("").trim().to_string();
                 if name.is_empty() {
                     return Err(err(format!("a <{}> without a name", n.name)));
                 }
                 if n.name == "connector" {
-                    if connectors.insert(name.clone(), all_conns_in(n)).is_some() {
-                        return Err(err(format!("two connectors are named {spelled}")));
-                    }
-                } else if id.is_empty() {
-                    return Err(err("a <continuation> without localId".into()));
+                    NetKind::Connector { name }
                 } else {
-                    continuations.insert(id.clone(), (name, spelled));
+                    NetKind::Continuation { name }
                 }
-                continue;
             }
             "documentation" | "addData" => continue,
             other => {
                 return Err(err(format!("<{other}> elements are not supported in LD bodies yet")))
             }
         };
-        if id.is_empty() && !matches!(kind, Kind::Comment(_)) {
+        if id.is_empty() && !matches!(kind, NetKind::Comment { .. }) {
             return Err(err(format!("<{}> without localId", n.name)));
         }
-        let conns = if matches!(kind, Kind::Block(_)) { Vec::new() } else { all_conns_in(n) };
-        let x = n.child("position").and_then(|p| p.attr("x")).and_then(|x| x.trim().parse().ok());
-        let order = n.attr("executionOrderId").and_then(|o| o.trim().parse().ok()).unwrap_or(0);
-        els.push(El {
+        let position = n.child("position");
+        els.push(NetElement {
             id,
-            at: (n.line, n.column),
-            x: x.unwrap_or(0.0),
-            order,
-            y: y_of(n),
             kind,
-            conns,
+            x: num(position, "x"),
+            y: num(position, "y"),
+            width: num(Some(n), "width"),
+            height: num(Some(n), "height"),
+            order: n.attr("executionOrderId").and_then(|o| o.trim().parse().ok()).unwrap_or(0),
+            inputs,
+            outputs,
+            at: (n.line, n.column),
         });
-    }
-    if !continuations.is_empty() {
-        let resolve = |list: &mut Vec<Conn>, at: &str| -> Result<(), ImportError> {
-            resolve_continuations(list, &connectors, &continuations).map_err(|message| {
-                ImportError::Element { pou: pou.to_string(), local_id: at.to_string(), message }
-            })
-        };
-        for e in &mut els {
-            resolve(&mut e.conns, &e.id)?;
-            if let Kind::Block(b) = &mut e.kind {
-                for (_, list) in b.inputs.iter_mut().chain(b.in_outs.iter_mut()) {
-                    resolve(list, &e.id)?;
-                }
-            }
-        }
     }
     Ok(els)
 }
 
-/// Replaces wires from continuations by the wires into their connectors.
-fn resolve_continuations(
-    list: &mut Vec<Conn>,
-    connectors: &HashMap<String, Vec<Conn>>,
-    continuations: &HashMap<String, (String, String)>,
-) -> Result<(), String> {
-    for _ in 0..64 {
-        if !list.iter().any(|c| continuations.contains_key(&c.from)) {
-            return Ok(());
-        }
-        let mut next = Vec::new();
-        for c in list.drain(..) {
-            match continuations.get(&c.from) {
-                Some((key, name)) => match connectors.get(key) {
-                    Some(src) => next.extend(src.iter().cloned()),
-                    None => {
-                        return Err(format!(
-                            "continuation {name} (localId {}) has no connector of that name",
-                            c.from
-                        ))
-                    }
-                },
-                None => next.push(c),
-            }
-        }
-        *list = next;
-    }
-    Err("connectors and continuations form a loop".into())
+/// Reads the elements of an LD or FBD body, with connectors and continuations resolved.
+pub(crate) fn read_elements(body: &Node, pou: &str) -> Result<Vec<El>, ImportError> {
+    let network = read_network(body, pou)?;
+    crate::network::logical(&network).map_err(|e| ImportError::Element {
+        pou: pou.to_string(),
+        local_id: e.element,
+        message: e.message,
+    })
 }
 
 /// A comment's text: its lines with runs of blanks folded, blank lines dropped, and no `*)`

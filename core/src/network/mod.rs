@@ -1,0 +1,36 @@
+//! Networks: LD and FBD bodies as PLCopen holds them (ARCHITECTURE "Two ladder models") —
+//! elements at free positions wired by `localId` ([`model`]), their logical view with
+//! connectors resolved ([`logical`]), and their lowering to ST statements by power flow and
+//! execution order ([`lower`]). Files from OpenPLC Editor and Beremiz hold their LD and FBD
+//! this way; an LD network that fits the rung grid becomes rungs
+//! ([`LadderPou`](crate::ladder::LadderPou)), any other stays a network and runs through
+//! this lowering.
+
+pub mod logical;
+pub mod lower;
+pub mod model;
+
+pub use logical::logical;
+pub use lower::lower;
+pub use model::{
+    NetElement, NetKind, NetworkLanguage, NetworkPou, NetworkPouKind, Pin, PinModifier, Wire,
+};
+
+use std::fmt;
+
+/// A problem with an element of a network.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NetError {
+    /// The element's `localId`.
+    pub element: String,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for NetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "element localId {}: {}", self.element, self.message)
+    }
+}
+
+impl std::error::Error for NetError {}
