@@ -46,6 +46,7 @@ def cause(rep):
             msg = re.sub(r"localId \S+", "localId N", msg)
             msg = re.sub(r"POU [^,:]+", "POU P", msg)
             msg = re.sub(r"rung \d+, row \d+, column \d+", "rung r", msg)
+            msg = re.sub(r"declarations line \d+, column \d+", "declarations", msg)
             msg = re.sub(r"%[IQM]\S+", "%…", msg)
             return f"{d['code']} {msg[:110]}"
     if rep.get("status") == "fault":

@@ -176,23 +176,42 @@ fn oven_control_st_sample() {
     assert_round_trip(p);
 }
 
+/// Exports `p` and imports it again: the network POUs come back element for element
+/// (positions, pins, wire paths, execution order), the ladder and ST as they were.
+fn assert_networks_round_trip(p: &Project) {
+    let strip = |p: &Project| {
+        let mut nets = p.networks.clone();
+        for e in nets.iter_mut().flat_map(|n| n.elements.iter_mut()) {
+            e.at = (0, 0);
+        }
+        nets
+    };
+    let xml = export(p);
+    let back = import(&xml).unwrap_or_else(|e| panic!("{e}\n{xml}"));
+    assert!(!p.networks.is_empty());
+    assert_eq!(strip(&back.project), strip(p), "{xml}");
+    assert_eq!(back.project.ladder, p.ladder);
+}
+
+/// The ST a network POU of `p` runs as.
+fn network_st(p: &Project, name: &str) -> String {
+    let net = p.networks.iter().find(|n| n.name == name).unwrap_or_else(|| panic!("no {name}"));
+    net.to_st().unwrap_or_else(|e| panic!("{name}: {e}")).st
+}
+
 #[test]
-fn fbd_bodies_become_st_and_the_fbd_sample_builds() {
+fn fbd_bodies_are_kept_as_networks_and_the_fbd_sample_builds() {
     let i = sample("fbd_user_function_and_fbs.xml");
-    // Every FBD POU is imported (as ST statements, with a note saying the drawing is not
-    // kept); none is skipped.
+    // Every FBD POU is kept as a network (drawn as in the file), none skipped, no note.
     assert!(i.skipped.is_empty(), "{:?}", i.skipped);
-    for pou in ["program0_POU", "FA", "FA_SERV", "AKT_5_2_MV"] {
-        assert!(
-            i.warnings
-                .iter()
-                .any(|w| w.message.starts_with(&format!("POU {pou}: the FBD body runs as ST"))),
-            "{pou}"
-        );
-    }
-    assert!(i.project.source.contains("FUNCTION FA_SERV : BOOL"));
-    assert!(i.project.source.contains("SR0(S1 := Hand_P2, R := Hand_P1);"), "{}", i.project.source);
-    assert!(i.project.source.contains("S_FA_STATUS"));
+    let names: Vec<&str> = i.project.networks.iter().map(|n| n.name.as_str()).collect();
+    assert_eq!(names, ["program0_POU", "FA", "FA_SERV", "AKT_5_2_MV"]);
+    assert!(i.warnings.iter().all(|w| !w.message.contains("FBD")), "{:?}", i.warnings);
+    assert!(network_st(&i.project, "FA_SERV").starts_with("FUNCTION FA_SERV : BOOL"));
+    let valve = network_st(&i.project, "AKT_5_2_MV");
+    assert!(valve.contains("SR0(S1 := Hand_P2, R := Hand_P1);"), "{valve}");
+    assert!(i.project.networks.iter().any(|n| n.to_st().unwrap().st.contains("S_FA_STATUS")));
+    assert_networks_round_trip(&i.project);
     // FA_SERV writes its own input `status` (W0032), as OpenPLC allows: the file builds.
     let build = plc_core::build::build_project(&i.project);
     let errors: Vec<_> = build.diagnostics.iter().filter(|d| d.is_error()).collect();
@@ -489,9 +508,10 @@ fn non_series_parallel_network_runs_by_power_flow() {
     // runs it): Y = A·D + (B + A·C)·E.
     let i = import(&doc(&body, &vars)).unwrap();
     assert!(i.project.ladder.is_empty());
+    assert_networks_round_trip(&i.project);
     assert!(
         i.warnings.iter().any(|w| w.message.contains("series-parallel")
-            && w.message.contains("runs as ST statements by power flow")),
+            && w.message.contains("kept as drawn in the file and runs by power flow")),
         "{:?}",
         i.warnings
     );
@@ -826,12 +846,9 @@ fn an_fbd_body_runs_with_inline_functions_a_timer_and_feedback() {
     .concat();
     let imported = import(&fbd_doc(&body, &vars)).unwrap();
     assert!(imported.skipped.is_empty());
-    assert!(
-        imported.project.source.contains("T1(IN := AND(A, B), PT := T#20ms);"),
-        "{}",
-        imported.project.source
-    );
-    assert!(imported.project.source.contains("T1 : TON;"), "the instance is declared");
+    let st = network_st(&imported.project, "Main");
+    assert!(st.contains("T1(IN := AND(A, B), PT := T#20ms);"), "{st}");
+    assert!(st.contains("T1 : TON;"), "the instance is declared");
     let mut sim = project_simulator(&imported.project, None).unwrap();
     sim.hold("A", "TRUE").unwrap();
     sim.hold("B", "TRUE").unwrap();
@@ -1018,6 +1035,7 @@ fn ld_networks_off_the_grid_run_as_their_tools_run_them() {
     .concat();
     let i = import(&doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
     assert!(i.project.ladder.is_empty(), "the network is not a grid");
+    assert_networks_round_trip(&i.project);
     assert!(i.skipped.is_empty(), "{:?}", i.skipped);
     let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
     let read = ["Y4", "Y5", "Y6", "Y7", "Y8", "Y9"];
@@ -1057,6 +1075,7 @@ fn coils_pass_power_and_a_coil_on_the_rail_is_always_on() {
     .concat();
     let i = import(&doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
     assert!(i.project.ladder.is_empty());
+    assert_networks_round_trip(&i.project);
     assert!(
         i.warnings.iter().any(|w| w.message.contains("E0401") || w.message.contains("E0408")),
         "{:?}",
@@ -1101,6 +1120,7 @@ fn ld_function_doc() -> String {
 fn an_ld_function_runs_by_power_flow() {
     let i = import(&ld_function_doc()).unwrap_or_else(|e| panic!("{e}"));
     assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    assert_networks_round_trip(&i.project);
     let mut s = project_simulator(&i.project, Some("Main")).unwrap_or_else(|e| panic!("{e:?}"));
     for bits in 0..8u32 {
         let [a, b, c] = [0, 1, 2].map(|k| bits & (1 << k) != 0);
@@ -1212,6 +1232,7 @@ fn negated_and_edge_triggered_pins_run() {
     );
     let i = import(&fbd_doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
     assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    assert_networks_round_trip(&i.project);
     let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
     let mut step = |a: bool, b: bool| {
         let y = scan_bools(&mut s, &[("A", a), ("B", b)], &["Y"])[0];

@@ -5,7 +5,7 @@
 //! elements the exporter writes.
 //!
 //! Checked, for every element the exporter writes (project, headers, coordinate info, data
-//! types, POUs and their interfaces and variables, ST and LD bodies, rails, contacts, coils,
+//! types, POUs and their interfaces and variables, ST, LD and FBD bodies, rails, contacts, coils,
 //! blocks and their pin lists, in/out variables, labels, jumps, returns, comments,
 //! connection points and connections, configurations, resources, tasks, POU instances):
 //! - the children that may appear, in the order the schema's `xsd:sequence` fixes, and how
@@ -21,7 +21,7 @@
 //!
 //! Not checked: the text inside `xhtml:p` and `expression`/`variable` (ST syntax is the
 //! importer's business), `addData` and `documentation` contents, element kinds the exporter
-//! never writes (FBD, SFC, IL, actions, transitions, access paths), and the `xsd:ID` /
+//! never writes (SFC, IL, actions, transitions, access paths), and the `xsd:ID` /
 //! `globalId` machinery.
 
 use std::collections::{HashMap, HashSet};
@@ -230,6 +230,45 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 MANY,
             )],
         ),
+        ("body", "FBD") => r(
+            &[],
+            vec![Choice(
+                &[
+                    "comment",
+                    "error",
+                    "connector",
+                    "continuation",
+                    "actionBlock",
+                    "vendorElement",
+                    "block",
+                    "inVariable",
+                    "outVariable",
+                    "inOutVariable",
+                    "label",
+                    "jump",
+                    "return",
+                ],
+                0,
+                MANY,
+            )],
+        ),
+        ("LD" | "FBD", "inOutVariable") => r(
+            &["localId"],
+            with_tail(vec![
+                Seq(("position", 1, ONE)),
+                Seq(("connectionPointIn", 0, ONE)),
+                Seq(("connectionPointOut", 0, ONE)),
+                Seq(("expression", 1, ONE)),
+            ]),
+        ),
+        ("LD" | "FBD", "connector") => r(
+            &["localId", "name"],
+            with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, ONE))]),
+        ),
+        ("LD" | "FBD", "continuation") => r(
+            &["localId", "name"],
+            with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointOut", 0, ONE))]),
+        ),
         ("LD", "leftPowerRail") => r(
             &["localId"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointOut", 0, MANY))]),
@@ -247,7 +286,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 Seq(("variable", 1, ONE)),
             ]),
         ),
-        ("LD", "block") => r(
+        ("LD" | "FBD", "block") => r(
             &["localId", "typeName"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -275,7 +314,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
             &["formalParameter"],
             vec![Seq(("connectionPointOut", 0, ONE)), Seq(("documentation", 0, ONE))],
         ),
-        ("LD", "inVariable") => r(
+        ("LD" | "FBD", "inVariable") => r(
             &["localId"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -283,7 +322,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 Seq(("expression", 1, ONE)),
             ]),
         ),
-        ("LD", "outVariable") => r(
+        ("LD" | "FBD", "outVariable") => r(
             &["localId"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -291,16 +330,18 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 Seq(("expression", 1, ONE)),
             ]),
         ),
-        ("LD", "label") => r(&["localId", "label"], with_tail(vec![Seq(("position", 1, ONE))])),
-        ("LD", "jump") => r(
+        ("LD" | "FBD", "label") => {
+            r(&["localId", "label"], with_tail(vec![Seq(("position", 1, ONE))]))
+        }
+        ("LD" | "FBD", "jump") => r(
             &["localId", "label"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, ONE))]),
         ),
-        ("LD", "return") => r(
+        ("LD" | "FBD", "return") => r(
             &["localId"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, ONE))]),
         ),
-        ("LD", "comment") => r(
+        ("LD" | "FBD", "comment") => r(
             &["localId", "height", "width"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("content", 1, ONE))]),
         ),
@@ -461,7 +502,7 @@ fn problems(xml: &str) -> Vec<String> {
     let names: HashSet<&str> = pous.iter().filter_map(|p| p.attr("name")).collect();
     for p in &pous {
         for b in p.children.iter().filter(|c| c.name == "body") {
-            for ld in b.children.iter().filter(|c| c.name == "LD") {
+            for ld in b.children.iter().filter(|c| c.name == "LD" || c.name == "FBD") {
                 check_body(ld, p.attr("name").unwrap_or("?"), &mut out);
             }
         }

@@ -17,8 +17,8 @@ use crate::syntax::PouKind;
 mod source;
 
 pub use source::{
-    compile_project, project_diagnostics, project_source, project_source_with, Origin,
-    PetriSegment, ProjectNets, ProjectSource, Segment, SourceMap,
+    compile_project, project_diagnostics, project_source, project_source_with, NetworkSegment,
+    Origin, PetriSegment, ProjectNets, ProjectSource, Segment, SourceMap,
 };
 
 /// Where a problem (or a runtime fault, or a running statement) is in a project.
@@ -51,6 +51,13 @@ pub enum Site {
         /// 1-based column (characters).
         column: u32,
     },
+    /// A network POU, and the `localId` of the element when known.
+    Network {
+        /// The POU's name.
+        pou: String,
+        /// The element's `localId`.
+        element: Option<String>,
+    },
     /// A Petri net POU, and the element (with the position inside its text) when known.
     Petri {
         /// The POU's name.
@@ -72,8 +79,11 @@ impl Site {
             Site::Ladder { pou, cell: Some((r, row, c)) } => {
                 Some(format!("POU {pou}, rung {}, row {}, column {}", r + 1, row + 1, c + 1))
             }
-            Site::Ladder { pou, cell: None } | Site::Petri { pou, element: None, .. } => {
-                Some(format!("POU {pou}"))
+            Site::Ladder { pou, cell: None }
+            | Site::Petri { pou, element: None, .. }
+            | Site::Network { pou, element: None } => Some(format!("POU {pou}")),
+            Site::Network { pou, element: Some(id) } => {
+                Some(format!("POU {pou}, element localId {id}"))
             }
             Site::Declarations { pou, line, column } => {
                 Some(format!("POU {pou}, declarations line {line}, column {column}"))
@@ -87,9 +97,10 @@ impl Site {
     /// The POU a site belongs to (ladder and Petri net sites).
     pub fn pou(&self) -> Option<&str> {
         match self {
-            Site::Ladder { pou, .. } | Site::Declarations { pou, .. } | Site::Petri { pou, .. } => {
-                Some(pou)
-            }
+            Site::Ladder { pou, .. }
+            | Site::Declarations { pou, .. }
+            | Site::Petri { pou, .. }
+            | Site::Network { pou, .. } => Some(pou),
             Site::Project | Site::St { .. } => None,
         }
     }
@@ -132,18 +143,28 @@ pub struct FileMap {
     /// Entry `k` is where line `k + 1` of the project's ST source came from (`None`: a line
     /// the import wrote with no element behind it).
     pub lines: Vec<Option<SourceLine>>,
+    /// The same for the declarations of each ladder and network POU, by POU name.
+    pub declarations: Vec<(String, Vec<Option<SourceLine>>)>,
 }
 
 impl FileMap {
     /// The 1-based line and column in the file of `site`, when the map knows it.
     pub fn locate(&self, site: &Site) -> Option<(u32, u32)> {
-        if let Site::St { line, column, .. } = site {
-            let at = (*line as usize).checked_sub(1).and_then(|k| self.lines.get(k).copied())??;
-            return Some(if at.verbatim {
+        let in_lines = |lines: &[Option<SourceLine>], line: u32, column: u32| {
+            let at = (line as usize).checked_sub(1).and_then(|k| lines.get(k).copied())??;
+            Some(if at.verbatim {
                 (at.line, at.column + column.saturating_sub(1))
             } else {
                 (at.line, at.column)
-            });
+            })
+        };
+        match site {
+            Site::St { line, column, .. } => return in_lines(&self.lines, *line, *column),
+            Site::Declarations { pou, line, column } => {
+                let (_, lines) = self.declarations.iter().find(|(p, _)| p == pou)?;
+                return in_lines(lines, *line, *column);
+            }
+            _ => {}
         }
         self.places.iter().find(|p| p.site == *site).map(|p| (p.line, p.column))
     }
@@ -257,6 +278,7 @@ fn site_in(source: &ProjectSource, index: &LineIndex<'_>, span: Span) -> Site {
         Origin::St(line) => Site::St { line, column: loc.column, span },
         Origin::Ladder(pou, cell) => Site::Ladder { pou, cell },
         Origin::Declarations(pou, line) => Site::Declarations { pou, line, column: loc.column },
+        Origin::Network(pou, element) => Site::Network { pou, element },
         Origin::Petri(pou, None) => Site::Petri { pou, element: None, at: None },
         Origin::Petri(pou, Some((element, at))) => Site::Petri { pou, element: Some(element), at },
     }
@@ -292,6 +314,19 @@ pub fn build_project(project: &Project) -> ProjectBuild {
             return ProjectBuild { diagnostics, source: None, program: None };
         }
     };
+    if !source.network_errors.is_empty() {
+        let diagnostics = source
+            .network_errors
+            .iter()
+            .map(|(pou, e)| ProjectDiagnostic {
+                severity: Severity::Error,
+                code: Code::NetworkNotRunnable,
+                message: e.message.clone(),
+                site: Site::Network { pou: pou.clone(), element: Some(e.element.clone()) },
+            })
+            .collect();
+        return ProjectBuild { diagnostics, source: None, program: None };
+    }
     let mut diagnostics: Vec<ProjectDiagnostic> =
         source.warnings.iter().cloned().map(ladder_diag).collect();
     diagnostics.extend(petri_diags);
@@ -307,10 +342,11 @@ pub fn build_project(project: &Project) -> ProjectBuild {
 }
 
 /// Whether `name` is a hidden variable that a front-end generated (ladder power flow and
-/// edge memories `LdPow_…`, Petri-net scan copies `PnScan_…`, SFC bookkeeping `SFC__…`):
+/// edge memories `LdPow_…`, network edge detectors `LdEdge…`, Petri-net scan copies `PnScan_…`, SFC bookkeeping `SFC__…`):
 /// reports and variable lists leave these out, the views still read them by name.
 pub fn is_hidden_variable(name: &str) -> bool {
     crate::ladder::is_hidden_name(name)
+        || crate::network::lower::is_hidden_name(name)
         || crate::petri::is_hidden_name(name)
         || crate::sfc::is_hidden_name(name)
 }

@@ -24,8 +24,21 @@ pub struct SourceMap {
     pub st_lines: u32,
     /// The lowered ladder POUs, in order.
     pub segments: Vec<Segment>,
-    /// The generated Petri net POUs, in order (after the ladder ones).
+    /// The network POUs, in order (after the ladder ones).
+    pub networks: Vec<NetworkSegment>,
+    /// The generated Petri net POUs, in order (after the network ones).
     pub petri: Vec<PetriSegment>,
+}
+
+/// One network POU inside a combined project source.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NetworkSegment {
+    /// The POU's name.
+    pub pou: String,
+    /// 1-based line of the combined text where the POU starts.
+    pub first_line: u32,
+    /// The POU as ST.
+    pub text: crate::network::NetworkText,
 }
 
 /// Where a line of the combined source comes from.
@@ -41,6 +54,9 @@ pub enum Origin {
     /// A Petri net POU: its name, and the net element (with the position inside its guard
     /// or actions) when the line comes from one.
     Petri(String, Option<(NetElement, Option<TextPosition>)>),
+    /// A network POU: its name, and the `localId` of the element the line was written
+    /// from (`None` for its header and framing).
+    Network(String, Option<String>),
 }
 
 impl SourceMap {
@@ -56,6 +72,17 @@ impl SourceMap {
         }
         if let Some(s) = self.petri.iter().rev().find(|s| s.first_line <= line) {
             return Origin::Petri(s.pou.clone(), s.locate(line, column));
+        }
+        if let Some(s) = self.networks.iter().rev().find(|s| s.first_line <= line) {
+            let inside = line + 1 - s.first_line;
+            if s.text.declaration_lines.contains(&inside) {
+                return Origin::Declarations(
+                    s.pou.clone(),
+                    inside + 1 - s.text.declaration_lines.start,
+                );
+            }
+            let element = s.text.lines.get(inside as usize - 1).cloned().flatten();
+            return Origin::Network(s.pou.clone(), element);
         }
         match self.segments.iter().rev().find(|s| s.first_line <= line) {
             Some(s) => {
@@ -98,6 +125,10 @@ impl SourceMap {
             Origin::Declarations(pou, l) => {
                 (None, format!("POU {pou}, declarations line {l}: {message}"))
             }
+            Origin::Network(pou, Some(id)) => {
+                (None, format!("POU {pou}, element localId {id}: {message}"))
+            }
+            Origin::Network(pou, None) => (None, format!("POU {pou}: {message}")),
         }
     }
 }
@@ -111,6 +142,8 @@ pub struct ProjectSource {
     pub map: SourceMap,
     /// Ladder warnings, with the POU they belong to.
     pub warnings: Vec<(String, LadderDiagnostic)>,
+    /// The network POUs that could not be lowered (left out of `text`), with the POU.
+    pub network_errors: Vec<(String, crate::network::NetError)>,
 }
 
 /// Validates every ladder POU of a project and combines them with the ST source and the
@@ -138,7 +171,8 @@ pub fn project_source_with(
         text.push('\n');
     }
     let st_lines = text.lines().count() as u32;
-    let mut map = SourceMap { st_lines, segments: Vec::new(), petri: Vec::new() };
+    let mut map =
+        SourceMap { st_lines, segments: Vec::new(), networks: Vec::new(), petri: Vec::new() };
     let mut line = st_lines + 1;
     for pou in &project.ladder {
         let lowered = lower(pou);
@@ -147,8 +181,24 @@ pub fn project_source_with(
         map.segments.push(Segment { pou: pou.name.clone(), first_line: line, lowered });
         line += n;
     }
+    let mut network_errors = Vec::new();
+    for pou in &project.networks {
+        match pou.to_st() {
+            Ok(net) => {
+                let n = net.st.lines().count() as u32;
+                text.push_str(&net.st);
+                map.networks.push(NetworkSegment {
+                    pou: pou.name.clone(),
+                    first_line: line,
+                    text: net,
+                });
+                line += n;
+            }
+            Err(e) => network_errors.push((pou.name.clone(), e)),
+        }
+    }
     append_to_source(nets, &mut text, &mut map.petri, line);
-    Ok(ProjectSource { text, map, warnings: diags })
+    Ok(ProjectSource { text, map, warnings: diags, network_errors })
 }
 
 /// A project's Petri net POUs compiled once, for its diagnostics and its combined source.

@@ -141,6 +141,7 @@ problem_codes! {
     LadderBadPowerPin = "E0416": "a block power input or output that cannot carry the rung's power (not BOOL, or ENO without EN)",
     LadderInstanceType = "E0417": "a block instance declared with another type, or an instance given to a FUNCTION",
     LadderUndeclaredOperand = "E0418": "a ladder operand naming a variable that is not declared",
+    NetworkNotRunnable = "E0420": "an element of an LD or FBD network (drawn at its own positions) that cannot be run",
 
     // ---- Petri nets: E0500–E0549 ----
     PetriDuplicateId = "E0500": "two elements of a Petri net share one id",

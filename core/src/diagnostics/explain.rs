@@ -319,6 +319,9 @@ explanations! {
     LadderUndeclaredOperand: "An operand names a variable that the POU does not declare. Declare it (the editor offers `Declare NAME` with the type the use implies).",
         drawn("A contact `Start` in a POU whose declarations have no `Start`."),
         drawn("`Start : BOOL;` added to the declarations.");
+    NetworkNotRunnable: "An LD or FBD network from another tool (kept as it was drawn, not as rungs) has an element the trainer cannot run: a wire from an element that does not exist, functions wired in a loop with no function block to hold a value, a jump or return outside the rung grid, an input of a function left unwired. The message names the element by its `localId`; the file's tool shows the same number.",
+        drawn("An FBD network where ADD feeds MUL and MUL feeds ADD, with no function block between them"),
+        drawn("The same network with the loop through a variable (an output variable written and an input variable read): it reads the previous scan's value");
     PetriDuplicateId: "Two places or transitions of the net have the same id.",
         drawn("Two places both with id `P1`."),
         drawn("Ids `P1` and `P2`.");

@@ -78,9 +78,7 @@ pub fn lower(els: &[El], pou: &str) -> Result<Lowered, NetError> {
                     match modifier(b, pin) {
                         Some(PinModifier::Negated) => v = format!("NOT ({v})"),
                         Some(edge) => {
-                            let id: String =
-                                els[s].id.chars().filter(char::is_ascii_alphanumeric).collect();
-                            let name = format!("LdEdge{id}{pin}");
+                            let name = format!("{}{pin}", edge_name(&els[s].id));
                             let ty = if edge == PinModifier::Rising { "R_TRIG" } else { "F_TRIG" };
                             instances.push((name.clone(), ty.to_string()));
                             edges.push_str(&format!("{name}(CLK := {v}); "));
@@ -155,7 +153,6 @@ fn is_statement(kind: &Kind) -> bool {
 
 /// The edge detector of an edge contact or coil: its instance name and type.
 fn edge_instance(el: &El) -> (String, &'static str) {
-    let id: String = el.id.chars().filter(|c| c.is_ascii_alphanumeric()).collect();
     let falling = matches!(
         el.kind,
         Kind::Leaf(
@@ -163,7 +160,23 @@ fn edge_instance(el: &El) -> (String, &'static str) {
                 | Element::Coil { kind: CoilKind::Falling, .. }
         )
     );
-    (format!("LdEdge{id}"), if falling { "F_TRIG" } else { "R_TRIG" })
+    (edge_name(&el.id), if falling { "F_TRIG" } else { "R_TRIG" })
+}
+
+/// The name of the edge detector of the edge contact or coil `id` (a hidden instance).
+pub fn edge_name(id: &str) -> String {
+    let id: String = id.chars().filter(char::is_ascii_alphanumeric).collect();
+    format!("{EDGE_PREFIX}{id}")
+}
+
+/// The prefix of the hidden edge detectors' names.
+pub const EDGE_PREFIX: &str = "LdEdge";
+
+/// Whether `name` is a hidden variable of a lowered network (an edge detector).
+pub fn is_hidden_name(name: &str) -> bool {
+    name.len() > EDGE_PREFIX.len()
+        && name.is_char_boundary(EDGE_PREFIX.len())
+        && name[..EDGE_PREFIX.len()].eq_ignore_ascii_case(EDGE_PREFIX)
 }
 
 /// The instance name of a function block element.

@@ -6,15 +6,18 @@
 //! ([`LadderPou`](crate::ladder::LadderPou)), any other stays a network and runs through
 //! this lowering.
 
+pub mod live;
 pub mod logical;
 pub mod lower;
 pub mod model;
+pub mod source;
 
 pub use logical::logical;
 pub use lower::lower;
 pub use model::{
     NetElement, NetKind, NetworkLanguage, NetworkPou, NetworkPouKind, Pin, PinModifier, Wire,
 };
+pub use source::{declares, NetworkText};
 
 use std::fmt;
 

@@ -95,7 +95,7 @@ fn is_zero(n: &u32) -> bool {
 
 /// What an element is.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case")]
+#[serde(rename_all = "snake_case")]
 pub enum NetKind {
     /// The left power rail.
     LeftRail,

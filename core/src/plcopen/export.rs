@@ -87,6 +87,12 @@ pub fn export(project: &Project) -> String {
         }
         pous.push_str(&super::ld_export::ld_pou_xml(lp));
     }
+    for net in &project.networks {
+        if net.kind == crate::network::NetworkPouKind::Program && first_program.is_none() {
+            first_program = Some(net.name.clone());
+        }
+        pous.push_str(&super::network_export::network_pou_xml(net));
+    }
     let name = esc(&project.name);
     let mut out = String::new();
     out.push_str("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n");

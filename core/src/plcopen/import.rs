@@ -5,6 +5,7 @@ use super::source_out::SourceOut;
 use super::xml::{self, Node};
 use super::{Import, ImportError, ImportNote, SkippedPou};
 use crate::ladder::{LadderPou, LadderPouKind};
+use crate::network::{NetworkLanguage, NetworkPou, NetworkPouKind};
 use crate::project::{Project, Settings, SCHEMA_VERSION};
 
 /// Imports a PLCopen XML (TC6 0201) document.
@@ -90,6 +91,9 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
 
     // POUs: ST texts and LD declarations first, so LD bodies know every block type.
     let mut ladder = Vec::new();
+    let mut networks = Vec::new();
+    let mut places = Vec::new();
+    let mut declaration_lines = Vec::new();
     let mut bodies = Vec::new();
     if let Some(pous) = types.and_then(|t| t.child("pous")) {
         for pou in pous.children_named("pou") {
@@ -98,6 +102,9 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
                 ladder: &mut ladder,
                 warnings: &mut warnings,
                 skipped: &mut skipped,
+                networks: &mut networks,
+                places: &mut places,
+                declarations: &mut declaration_lines,
             };
             if let Some(body) = import_pou(pou, &mut out)? {
                 bodies.push(body);
@@ -111,15 +118,22 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         settings,
         ladder,
         petri: Vec::new(),
+        networks,
     };
     let catalog = project.catalog();
-    let mut places = Vec::new();
-    // LD networks that do not fit the rung grid run as ST statements by power flow.
+    // LD networks that do not fit the rung grid stay networks, run by power flow.
     let mut off_grid = Vec::new();
     for (k, (pou_node, body)) in bodies.into_iter().enumerate() {
         let lp = &mut project.ladder[k];
-        let laid_out =
-            super::ld_import::import_ld(body, &lp.name, &catalog, &lp.declarations, &mut warnings);
+        // The grid's notes count only if the network stays a grid.
+        let mut grid_notes = Vec::new();
+        let laid_out = super::ld_import::import_ld(
+            body,
+            &lp.name,
+            &catalog,
+            &lp.declarations,
+            &mut grid_notes,
+        );
         // Why the network is not a grid: it does not lay out, or it breaks a rule of the grid
         // that the tool which wrote it does not have (a coil passes its power on, a coil on
         // the rail is always on, an element may lead nowhere).
@@ -146,13 +160,19 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             }
         };
         if let Some(why) = off {
-            match super::fbd_import::import_fbd(body, &lp.name) {
-                Ok(lowered) => {
+            let kind = match lp.kind {
+                LadderPouKind::Program => NetworkPouKind::Program,
+                LadderPouKind::FunctionBlock => NetworkPouKind::FunctionBlock,
+            };
+            let mut declarations = SourceOut::default();
+            declarations.push(&lp.declarations, None);
+            let name = lp.name.clone();
+            match keep_network(&name, kind, None, NetworkLanguage::Ld, declarations, body) {
+                Ok((net, _)) => {
                     warnings.push(ImportNote::on(body, format!(
-                        "POU {}: the LD network does not fit the rung grid ({why}); it runs as ST statements by power flow (the drawing is not kept yet)",
-                        lp.name
+                        "POU {name}: the LD network does not fit the rung grid ({why}); it is kept as drawn in the file and runs by power flow"
                     )));
-                    off_grid.push((k, pou_node, body, lowered));
+                    off_grid.push((k, net));
                     continue;
                 }
                 // Neither fits: the grid's problem is reported, with the network's.
@@ -165,6 +185,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             }
         }
         let ld = laid_out?;
+        warnings.extend(grid_notes);
         lp.rungs = ld.rungs;
         places.extend(ld.origins.iter().map(|&(cell, (line, column))| crate::build::FilePlace {
             site: crate::build::Site::Ladder { pou: lp.name.clone(), cell: Some(cell) },
@@ -184,27 +205,67 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             )));
         }
     }
-    for (k, pou_node, body, lowered) in off_grid.into_iter().rev() {
-        let lp = project.ladder.remove(k);
-        let (keyword, end) = match lp.kind {
-            LadderPouKind::Program => ("PROGRAM", "END_PROGRAM"),
-            LadderPouKind::FunctionBlock => ("FUNCTION_BLOCK", "END_FUNCTION_BLOCK"),
-        };
-        let mut declarations = SourceOut::default();
-        declarations.push_from(&lp.declarations, pou_node);
-        let header = format!("{keyword} {}", lp.name);
-        warnings.extend(push_lowered(
-            &mut source,
-            (&header, pou_node),
-            declarations,
-            body,
-            lowered,
-            end,
-        ));
+    for (k, net) in off_grid.into_iter().rev() {
+        project.ladder.remove(k);
+        places.extend(network_places(&net));
+        project.networks.push(net);
     }
     project.source = source.text;
-    let file_map = crate::build::FileMap { places, lines: source.lines };
+    let file_map =
+        crate::build::FileMap { places, lines: source.lines, declarations: declaration_lines };
     Ok(Import { project, warnings, skipped, file_map })
+}
+
+/// What kind of network POU a `pouType` makes.
+fn network_kind(pou_type: &str) -> NetworkPouKind {
+    match pou_type {
+        "function" => NetworkPouKind::Function,
+        "functionBlock" => NetworkPouKind::FunctionBlock,
+        _ => NetworkPouKind::Program,
+    }
+}
+
+/// The network POU of an LD or FBD `body`, checked to run (lowered once), with the places
+/// in the file of its declaration lines.
+fn keep_network(
+    name: &str,
+    kind: NetworkPouKind,
+    return_type: Option<String>,
+    language: NetworkLanguage,
+    declarations: SourceOut,
+    body: &Node,
+) -> Result<(NetworkPou, Vec<Option<crate::build::SourceLine>>), ImportError> {
+    let elements = super::ld_import::read::read_network(body, name)?;
+    let net = NetworkPou {
+        name: name.to_string(),
+        kind,
+        return_type,
+        language,
+        declarations: declarations.text,
+        elements,
+    };
+    net.to_st().map_err(|e| super::fbd_import::element_error(name, e))?;
+    Ok((net, declarations.lines))
+}
+
+/// Adds a network POU to the project being imported.
+fn add_network(
+    out: &mut PouOut<'_>,
+    net: NetworkPou,
+    declarations: Vec<Option<crate::build::SourceLine>>,
+) {
+    out.declarations.push((net.name.clone(), declarations));
+    out.places.extend(network_places(&net));
+    out.networks.push(net);
+}
+
+/// Where each element of a network POU is in the file.
+fn network_places(net: &NetworkPou) -> impl Iterator<Item = crate::build::FilePlace> + '_ {
+    net.elements.iter().filter(|e| !e.id.is_empty()).map(|e| crate::build::FilePlace {
+        site: crate::build::Site::Network { pou: net.name.clone(), element: Some(e.id.clone()) },
+        line: e.at.0,
+        column: e.at.1,
+    })
 }
 
 /// Ladder rules of the trainer's rung grid that OpenPLC and Beremiz do not have: a network
@@ -222,6 +283,11 @@ struct PouOut<'o> {
     ladder: &'o mut Vec<LadderPou>,
     warnings: &'o mut Vec<ImportNote>,
     skipped: &'o mut Vec<SkippedPou>,
+    networks: &'o mut Vec<NetworkPou>,
+    /// Where the elements of network POUs are in the file.
+    places: &'o mut Vec<crate::build::FilePlace>,
+    /// Where the declaration lines of ladder and network POUs came from.
+    declarations: &'o mut Vec<(String, Vec<Option<crate::build::SourceLine>>)>,
 }
 
 /// Imports one POU: ST POUs into `source`, LD POUs into `ladder` with no rungs yet (the POU
@@ -308,56 +374,42 @@ fn import_pou<'a>(
                 out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
             }
         },
-        "FBD" => match super::fbd_import::import_fbd(lang, &name) {
-            Ok(fbd) => {
-                let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
-                warnings.extend(push_lowered(source, (&header, pou), declarations, lang, fbd, end));
-                warnings.push(ImportNote::on(
-                    lang,
-                    format!("POU {name}: the FBD body runs as ST statements in its execution order (the drawing is not kept yet)"),
-                ));
+        "FBD" => {
+            let kind = network_kind(pou_type);
+            match keep_network(&name, kind, return_type, NetworkLanguage::Fbd, declarations, lang) {
+                Ok((net, lines)) => add_network(out, net, lines),
+                Err(e) => {
+                    let reason = format!("its FBD body cannot be imported yet ({e})");
+                    warnings.push(ImportNote::on(
+                        lang,
+                        format!("POU {name}: {reason}; the POU was skipped"),
+                    ));
+                    out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+                }
             }
-            Err(e) => {
-                let reason = format!("its FBD body cannot be imported yet ({e})");
-                warnings.push(ImportNote::on(
-                    lang,
-                    format!("POU {name}: {reason}; the POU was skipped"),
-                ));
-                out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+        }
+        "LD" if pou_type == "function" => {
+            // A function has no rung grid: its network is kept as drawn.
+            let kind = NetworkPouKind::Function;
+            match keep_network(&name, kind, return_type, NetworkLanguage::Ld, declarations, lang) {
+                Ok((net, lines)) => add_network(out, net, lines),
+                Err(e) => {
+                    let reason = format!("its LD body cannot be imported yet ({e})");
+                    warnings.push(ImportNote::on(
+                        lang,
+                        format!("POU {name}: {reason}; the POU was skipped"),
+                    ));
+                    out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+                }
             }
-        },
-        "LD" if pou_type == "function" => match super::fbd_import::import_fbd(lang, &name) {
-            // A function has no rung grid here: its network runs as ST by power flow.
-            Ok(lowered) => {
-                let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
-                warnings.push(ImportNote::on(
-                    lang,
-                    format!("POU {name}: the LD function runs as ST statements by power flow (the drawing is not kept yet)"),
-                ));
-                warnings.extend(push_lowered(
-                    source,
-                    (&header, pou),
-                    declarations,
-                    lang,
-                    lowered,
-                    end,
-                ));
-            }
-            Err(e) => {
-                let reason = format!("its LD body cannot be imported yet ({e})");
-                warnings.push(ImportNote::on(
-                    lang,
-                    format!("POU {name}: {reason}; the POU was skipped"),
-                ));
-                out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
-            }
-        },
+        }
         "LD" => {
             let kind = if pou_type == "program" {
                 LadderPouKind::Program
             } else {
                 LadderPouKind::FunctionBlock
             };
+            out.declarations.push((name.clone(), declarations.lines.clone()));
             ladder.push(LadderPou {
                 name,
                 kind,
@@ -389,26 +441,6 @@ fn pou_header(
     } else {
         Ok(format!("{keyword} {name}"))
     }
-}
-
-/// Appends a POU whose network `body` was lowered to statements (`lowered`) to `source`,
-/// with declarations for the instances it uses that `declarations` lack. Returns the
-/// lowering's notes.
-fn push_lowered(
-    source: &mut SourceOut,
-    head: (&str, &Node),
-    declarations: SourceOut,
-    body: &Node,
-    lowered: super::fbd_import::FbdBody,
-    end: &str,
-) -> Vec<ImportNote> {
-    let declarations = with_instances(declarations, &lowered.instances, body);
-    let mut text = SourceOut::default();
-    for (statement, at) in &lowered.statements {
-        text.push(statement, Some(*at));
-    }
-    push_pou(source, head, declarations, text, end);
-    lowered.notes
 }
 
 /// Appends a POU written in ST to `source`: its header (written from the `<pou>` element),
@@ -464,8 +496,10 @@ fn with_instances(
     instances: &[(String, String)],
     body: &Node,
 ) -> SourceOut {
-    let missing: Vec<&(String, String)> =
-        instances.iter().filter(|(i, _)| !declares(&declarations.text, i)).collect();
+    let missing: Vec<&(String, String)> = instances
+        .iter()
+        .filter(|(i, _)| !crate::network::declares(&declarations.text, i))
+        .collect();
     if !missing.is_empty() {
         declarations.push("VAR\n", None);
         for (inst, ty) in missing {
@@ -474,15 +508,6 @@ fn with_instances(
         declarations.push("END_VAR\n", None);
     }
     declarations
-}
-
-/// Whether `declarations` declare `name` (a whole word before a colon).
-fn declares(declarations: &str, name: &str) -> bool {
-    declarations.lines().any(|l| {
-        l.split(':')
-            .next()
-            .is_some_and(|names| names.split(',').any(|n| n.trim().eq_ignore_ascii_case(name)))
-    })
 }
 
 /// Parses a task interval such as `T#20ms`, `T#1s`, `PT0.02S` into milliseconds.

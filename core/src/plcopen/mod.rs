@@ -5,7 +5,7 @@
 //! `VAR_GLOBAL` block, ST POUs full POU texts in [`Project::source`], and LD POUs
 //! [`LadderPou`](crate::ladder::LadderPou)s whose networks (elements at free positions wired
 //! by `refLocalId`) are laid out onto the rung grid. Networks that do not fit the grid, LD
-//! functions and FBD bodies become ST statements by power flow and execution order; SFC
+//! functions and FBD bodies are kept as [`NetworkPou`](crate::network::NetworkPou)s; SFC
 //! bodies become textual SFC; IL bodies are skipped with a warning. Every line of the ST
 //! written is mapped back to its place in the file ([`Import::file_map`]). [`export`] writes
 //! a TC6 0201 document back; `import(&export(p))` gives the same program (ST text equal up
@@ -20,6 +20,7 @@ mod fbd_import;
 mod import;
 mod ld_export;
 mod ld_import;
+mod network_export;
 mod sfc_import;
 mod source_out;
 mod union_find;

@@ -41,6 +41,10 @@ pub struct Project {
     /// The Petri net POUs of the project (generated into ST by the CASE OF method).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub petri: Vec<crate::petri::PetriPou>,
+    /// The network POUs (LD and FBD as PLCopen files hold them, drawn at their own
+    /// positions and lowered by power flow and execution order).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub networks: Vec<crate::network::NetworkPou>,
 }
 
 /// Simulation settings kept with a project.
@@ -82,7 +86,13 @@ impl Project {
     /// The block types and operand types the project's ladder POUs can use: the standard
     /// FBs, the ST POUs, types and globals, and the ladder FBs.
     pub fn catalog(&self) -> crate::ladder::Catalog {
-        crate::ladder::Catalog::of_parts(&self.source, &self.ladder)
+        let mut catalog = crate::ladder::Catalog::of_parts(&self.source, &self.ladder);
+        for net in &self.networks {
+            if net.kind != crate::network::NetworkPouKind::Program {
+                catalog.add_source(&net.signature());
+            }
+        }
+        catalog
     }
 
     /// A new project named `name` with the starter program.
@@ -94,6 +104,7 @@ impl Project {
             settings: Settings::default(),
             ladder: Vec::new(),
             petri: Vec::new(),
+            networks: Vec::new(),
         }
     }
 

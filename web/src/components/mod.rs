@@ -6,6 +6,7 @@ pub mod editor;
 pub mod header;
 pub mod io;
 pub mod ladder;
+pub mod network;
 pub mod petri;
 pub mod pou_actions;
 pub mod pou_pane;

@@ -1,5 +1,5 @@
-//! The editor pane: the POU navigator (the ST source, then each ladder POU, then each
-//! Petri net POU), the selected POU's view, and the project's problem list.
+//! The editor pane: the POU navigator (the ST source, then each ladder POU, SFC chart,
+//! network POU and Petri net POU), the selected POU's view, and the project's problem list.
 //!
 //! The ST editor stays mounted while another POU is shown (hidden), so its undo history
 //! and caret survive switching; ladder and net views are built when selected.
@@ -60,6 +60,19 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
             label: format!("SFC chart {name}"),
             errors: 0,
             name,
+        }));
+        items.extend(p.networks.iter().map(|n| {
+            let badge = match n.language {
+                plc_core::network::NetworkLanguage::Ld => "LD",
+                plc_core::network::NetworkLanguage::Fbd => "FBD",
+            };
+            NavItem {
+                view: PouView::Network(n.name.clone()),
+                badge,
+                name: n.name.clone(),
+                label: format!("{badge} network {}", n.name),
+                errors: errors_in(Some(&n.name)),
+            }
         }));
         items.extend(p.petri.iter().map(|n| NavItem {
             view: PouView::Petri(n.name.clone()),
@@ -197,6 +210,7 @@ pub fn PouPane() -> impl IntoView {
             PouView::Ladder(name) => view! { <LadderView name=name/> }.into_any(),
             PouView::Petri(name) => view! { <PetriView name=name/> }.into_any(),
             PouView::Sfc(name) => view! { <crate::components::sfc::SfcView name=name/> }.into_any(),
+            PouView::Network(name) => view! { <crate::components::network::NetworkView name=name/> }.into_any(),
         }}
         <Problems/>
     }

@@ -144,6 +144,9 @@ impl AppState {
             if let Some(n) = p.petri.iter().find(|n| is(&n.name)) {
                 return PouView::Petri(n.name.clone());
             }
+            if let Some(n) = p.networks.iter().find(|n| is(&n.name)) {
+                return PouView::Network(n.name.clone());
+            }
             if p.source.trim().is_empty() {
                 if let Some(l) = p.ladder.first() {
                     return PouView::Ladder(l.name.clone());

@@ -57,6 +57,8 @@ pub enum PouView {
     Petri(String),
     /// The chart of a POU of the ST source written as a textual SFC, by name.
     Sfc(String),
+    /// A network POU (LD or FBD as an imported file drew it), by name.
+    Network(String),
 }
 
 /// A message for the user in the banner.
@@ -282,6 +284,16 @@ impl AppState {
             Site::St { line, column, .. } => {
                 self.view.set(PouView::St);
                 self.jump_to.set(Some((*line, *column)));
+            }
+            Site::Network { pou, .. } => {
+                self.view.set(PouView::Network(pou.clone()));
+                self.focus.set(Some(site.clone()));
+            }
+            Site::Declarations { pou, .. }
+                if self.project.with_untracked(|p| p.networks.iter().any(|n| &n.name == pou)) =>
+            {
+                self.view.set(PouView::Network(pou.clone()));
+                self.focus.set(Some(site.clone()));
             }
             Site::Ladder { pou, .. } | Site::Declarations { pou, .. } => {
                 self.view.set(PouView::Ladder(pou.clone()));
