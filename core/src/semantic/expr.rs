@@ -884,6 +884,18 @@ impl<'a> Checker<'a> {
         }
     }
 
+    /// The operands of a comparison or a logical operator, an untyped `0` or `1` beside a
+    /// BOOL read as FALSE or TRUE. Kept out of [`Self::binary`]'s frame: expressions nest
+    /// as deep as the limit on a 1 MiB stack.
+    #[inline(never)]
+    fn bool_literals(&self, op: BinOp, a: Typed, b: Typed) -> (Typed, Typed) {
+        if !(is_comparison(op) || matches!(op, BinOp::And | BinOp::Or | BinOp::Xor)) {
+            return (a, b);
+        }
+        let (at, bt) = (a.e.ty, b.e.ty);
+        (self.bool_literal(a, bt), self.bool_literal(b, at))
+    }
+
     /// An untyped `0` or `1` beside a BOOL operand is the BOOL literal FALSE or TRUE
     /// (IEC 61131-3 Table 5; `IF Done = 1`, as matiec and OpenPLC accept).
     fn bool_literal(&self, t: Typed, other: Type) -> Typed {
@@ -916,13 +928,7 @@ impl<'a> Checker<'a> {
             Some(a) if is_comparison(op) => self.expr(r, Some(a.e.ty)),
             _ => self.expr(r, hint),
         };
-        let (a, b) = (a?, b?);
-        let (a, b) = if is_comparison(op) || matches!(op, BinOp::And | BinOp::Or | BinOp::Xor) {
-            let (at, bt) = (a.e.ty, b.e.ty);
-            (self.bool_literal(a, bt), self.bool_literal(b, at))
-        } else {
-            (a, b)
-        };
+        let (a, b) = self.bool_literals(op, a?, b?);
         let (at, bt) = (a.e.ty, b.e.ty);
         let mismatch = |c: &mut Self| {
             let msg =
