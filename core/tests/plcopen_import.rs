@@ -1247,3 +1247,36 @@ fn negated_and_edge_triggered_pins_run() {
     assert_eq!(step(false, false), (false, 2));
     assert_eq!(step(false, true), (true, 0), "B's rising edge resets");
 }
+
+/// An element of a kind the trainer does not know (a vendor's own) is left out with a note
+/// naming it; the rest of the network runs.
+#[test]
+fn a_vendor_element_is_left_out_with_a_note() {
+    let vars = [var("A", "BOOL"), var("Y", "BOOL")].concat();
+    let body = [
+        inv(1, 0, 0, "A"),
+        outv(2, 100, 0, 0, 1, "", "Y"),
+        r#"<vendorElement localId="3"><position x="0" y="50"/><alternativeText><xhtml:p>gauge</xhtml:p></alternativeText></vendorElement>"#.to_string(),
+    ]
+    .concat();
+    let i = import(&fbd_doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
+    assert!(i.skipped.is_empty(), "{:?}", i.skipped);
+    assert_eq!(i.warnings.len(), 1, "{:?}", i.warnings);
+    assert!(i.warnings[0].message.contains("<vendorElement> localId 3"), "{:?}", i.warnings);
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(scan_bools(&mut s, &[("A", true)], &["Y"]), [true]);
+    // The same element in an LD body that fits the rung grid.
+    let ld = doc(
+        &[
+            off_grid::rail(1, 0),
+            off_grid::contact(2, 20, 0, "A", "", &[(1, "")]),
+            off_grid::coil(3, 60, 0, "Y", "", &[(2, "")]),
+            r#"<vendorElement localId="4"><position x="0" y="50"/></vendorElement>"#.to_string(),
+        ]
+        .concat(),
+        &vars,
+    );
+    let i = import(&ld).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(i.project.ladder.len(), 1, "still a grid");
+    assert!(i.warnings.iter().any(|w| w.message.contains("<vendorElement> localId 4")));
+}

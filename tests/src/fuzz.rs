@@ -54,10 +54,14 @@ pub fn share_link(data: &[u8]) {
     }
 }
 
-/// Any text as a PLCopen XML document, then built.
+/// Any text as a PLCopen XML document, then built (and its network POUs exported and read back).
 pub fn plcopen_xml(data: &[u8]) {
     if let Ok(i) = plc_core::plcopen::import(&text(data)) {
         let _ = plc_core::build::build_project(&i.project);
+        // Network POUs are written back element for element; what comes back imports.
+        if !i.project.networks.is_empty() {
+            let _ = plc_core::plcopen::import(&plc_core::plcopen::export(&i.project));
+        }
     }
 }
 

@@ -19,8 +19,10 @@ pub(crate) struct FbdBody {
 
 /// Lowers the FBD (or LD) body `fbd` of POU `pou`.
 pub(crate) fn import_fbd(fbd: &Node, pou: &str) -> Result<FbdBody, ImportError> {
-    let els = read_elements(fbd, pou)?;
-    lower_network(&els, pou)
+    let (els, left_out) = read_elements(fbd, pou)?;
+    let mut body = lower_network(&els, pou)?;
+    body.notes.extend(left_out);
+    Ok(body)
 }
 
 /// Lowers the logical view `els` of a network of POU `pou`.

@@ -168,7 +168,8 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             declarations.push(&lp.declarations, None);
             let name = lp.name.clone();
             match keep_network(&name, kind, None, NetworkLanguage::Ld, declarations, body) {
-                Ok((net, _)) => {
+                Ok((net, _, left_out)) => {
+                    warnings.extend(left_out);
                     warnings.push(ImportNote::on(body, format!(
                         "POU {name}: the LD network does not fit the rung grid ({why}); it is kept as drawn in the file and runs by power flow"
                     )));
@@ -225,8 +226,12 @@ fn network_kind(pou_type: &str) -> NetworkPouKind {
     }
 }
 
+/// A network POU read from a file, the places in the file of its declaration lines, and
+/// the notes on elements left out.
+type KeptNetwork = (NetworkPou, Vec<Option<crate::build::SourceLine>>, Vec<ImportNote>);
+
 /// The network POU of an LD or FBD `body`, checked to run (lowered once), with the places
-/// in the file of its declaration lines.
+/// in the file of its declaration lines and the notes on elements left out.
 fn keep_network(
     name: &str,
     kind: NetworkPouKind,
@@ -234,8 +239,8 @@ fn keep_network(
     language: NetworkLanguage,
     declarations: SourceOut,
     body: &Node,
-) -> Result<(NetworkPou, Vec<Option<crate::build::SourceLine>>), ImportError> {
-    let elements = super::ld_import::read::read_network(body, name)?;
+) -> Result<KeptNetwork, ImportError> {
+    let (elements, left_out) = super::ld_import::read::read_network(body, name)?;
     let net = NetworkPou {
         name: name.to_string(),
         kind,
@@ -245,7 +250,7 @@ fn keep_network(
         elements,
     };
     net.to_st().map_err(|e| super::fbd_import::element_error(name, e))?;
-    Ok((net, declarations.lines))
+    Ok((net, declarations.lines, left_out))
 }
 
 /// Adds a network POU to the project being imported.
@@ -377,7 +382,10 @@ fn import_pou<'a>(
         "FBD" => {
             let kind = network_kind(pou_type);
             match keep_network(&name, kind, return_type, NetworkLanguage::Fbd, declarations, lang) {
-                Ok((net, lines)) => add_network(out, net, lines),
+                Ok((net, lines, left_out)) => {
+                    out.warnings.extend(left_out);
+                    add_network(out, net, lines)
+                }
                 Err(e) => {
                     let reason = format!("its FBD body cannot be imported yet ({e})");
                     warnings.push(ImportNote::on(
@@ -392,7 +400,10 @@ fn import_pou<'a>(
             // A function has no rung grid: its network is kept as drawn.
             let kind = NetworkPouKind::Function;
             match keep_network(&name, kind, return_type, NetworkLanguage::Ld, declarations, lang) {
-                Ok((net, lines)) => add_network(out, net, lines),
+                Ok((net, lines, left_out)) => {
+                    out.warnings.extend(left_out);
+                    add_network(out, net, lines)
+                }
                 Err(e) => {
                     let reason = format!("its LD body cannot be imported yet ({e})");
                     warnings.push(ImportNote::on(

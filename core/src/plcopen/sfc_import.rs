@@ -62,11 +62,12 @@ pub(crate) fn import_sfc(sfc: &Node, pou: &Node, name: &str) -> Result<SfcBody, 
             .collect(),
         ..Node::default()
     };
-    let els = read_elements(&network, name)?;
+    let (els, left_out) = read_elements(&network, name)?;
     let lowered = lower_network(&els, name)?;
     let reader = Chart::new(&chart, name)?;
     let wires = Lower::new(&els);
     let mut out = SfcBody { lines: Vec::new(), instances: lowered.instances, notes: lowered.notes };
+    out.notes.extend(left_out);
     let mut inline_actions: Vec<(String, &Node, &Node)> = Vec::new();
     let mut network_done = lowered.statements.is_empty();
 

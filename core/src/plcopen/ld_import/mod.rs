@@ -71,7 +71,8 @@ pub(crate) fn import_ld(
     declarations: &str,
     warnings: &mut Vec<ImportNote>,
 ) -> Result<LdBody, ImportError> {
-    let mut els = read::read_elements(ld, pou)?;
+    let (mut els, left_out) = read::read_elements(ld, pou)?;
+    warnings.extend(left_out);
     // The grid's blocks read their pins as they are: a negated or edge-triggered pin keeps
     // the network off the grid.
     for e in &els {

@@ -3,7 +3,7 @@
 //! grid layout and the lowering.
 
 use super::super::xml::Node;
-use super::super::ImportError;
+use super::super::{ImportError, ImportNote};
 use crate::ladder::{CoilKind, ContactKind};
 pub(crate) use crate::network::logical::{Conn, El, Kind, RawBlock};
 use crate::network::model::{NetElement, NetKind, Pin, PinModifier, Wire};
@@ -109,9 +109,15 @@ fn block_pins(
     Ok(out)
 }
 
-/// Reads the elements of an LD or FBD body as the network model.
-pub(crate) fn read_network(body: &Node, pou: &str) -> Result<Vec<NetElement>, ImportError> {
+/// Reads the elements of an LD or FBD body as the network model, with a note for each
+/// element of a kind the trainer does not know (a vendor's own, an action block), which is
+/// left out.
+pub(crate) fn read_network(
+    body: &Node,
+    pou: &str,
+) -> Result<(Vec<NetElement>, Vec<ImportNote>), ImportError> {
     let mut els = Vec::new();
+    let mut notes = Vec::new();
     for n in &body.children {
         let id = n.attr("localId").unwrap_or("").trim().to_string();
         let err = |message: String| ImportError::Element {
@@ -191,7 +197,14 @@ pub(crate) fn read_network(body: &Node, pou: &str) -> Result<Vec<NetElement>, Im
             }
             "documentation" | "addData" => continue,
             other => {
-                return Err(err(format!("<{other}> elements are not supported in LD bodies yet")))
+                let id = if id.is_empty() { String::new() } else { format!(" localId {id}") };
+                notes.push(ImportNote::on(
+                    n,
+                    format!(
+                        "POU {pou}: <{other}>{id} is not an element the trainer runs; left out"
+                    ),
+                ));
+                continue;
             }
         };
         if id.is_empty() && !matches!(kind, NetKind::Comment { .. }) {
@@ -211,17 +224,22 @@ pub(crate) fn read_network(body: &Node, pou: &str) -> Result<Vec<NetElement>, Im
             at: (n.line, n.column),
         });
     }
-    Ok(els)
+    Ok((els, notes))
 }
 
-/// Reads the elements of an LD or FBD body, with connectors and continuations resolved.
-pub(crate) fn read_elements(body: &Node, pou: &str) -> Result<Vec<El>, ImportError> {
-    let network = read_network(body, pou)?;
-    crate::network::logical(&network).map_err(|e| ImportError::Element {
+/// Reads the elements of an LD or FBD body, with connectors and continuations resolved,
+/// and the notes on elements left out.
+pub(crate) fn read_elements(
+    body: &Node,
+    pou: &str,
+) -> Result<(Vec<El>, Vec<ImportNote>), ImportError> {
+    let (network, notes) = read_network(body, pou)?;
+    let els = crate::network::logical(&network).map_err(|e| ImportError::Element {
         pou: pou.to_string(),
         local_id: e.element,
         message: e.message,
-    })
+    })?;
+    Ok((els, notes))
 }
 
 /// A comment's text: its lines with runs of blanks folded, blank lines dropped, and no `*)`
