@@ -177,23 +177,11 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
             let cin = conn_xml(&srcs, "              ");
             match &rung.cells[r][c].element {
                 Element::Contact { kind, operand } => {
-                    let attrs = match kind {
-                        ContactKind::NormallyOpen => " negated=\"false\"",
-                        ContactKind::NormallyClosed => " negated=\"true\"",
-                        ContactKind::Rising => " negated=\"false\" edge=\"rising\"",
-                        ContactKind::Falling => " negated=\"false\" edge=\"falling\"",
-                    };
+                    let attrs = contact_attrs(*kind);
                     let _ = write!(body, "            <contact localId=\"{eid}\" height=\"20\" width=\"21\"{attrs}>\n              <position x=\"{x}\" y=\"{y}\"/>\n{cin}              <connectionPointOut>\n                <relPosition x=\"21\" y=\"10\"/>\n              </connectionPointOut>\n              <variable>{}</variable>\n            </contact>\n", esc(operand));
                 }
                 Element::Coil { kind, operand } => {
-                    let attrs = match kind {
-                        CoilKind::Normal => " negated=\"false\"",
-                        CoilKind::Negated => " negated=\"true\"",
-                        CoilKind::Set => " negated=\"false\" storage=\"set\"",
-                        CoilKind::Reset => " negated=\"false\" storage=\"reset\"",
-                        CoilKind::Rising => " negated=\"false\" edge=\"rising\"",
-                        CoilKind::Falling => " negated=\"false\" edge=\"falling\"",
-                    };
+                    let attrs = coil_attrs(*kind);
                     let _ = write!(body, "            <coil localId=\"{eid}\" height=\"20\" width=\"21\"{attrs}>\n              <position x=\"{x}\" y=\"{y}\"/>\n{cin}              <connectionPointOut>\n                <relPosition x=\"21\" y=\"10\"/>\n              </connectionPointOut>\n              <variable>{}</variable>\n            </coil>\n", esc(operand));
                 }
                 Element::Jump { label } => {
@@ -286,4 +274,26 @@ pub(crate) fn ld_pou_xml(lp: &LadderPou) -> String {
     out.push_str(&body);
     out.push_str("          </LD>\n        </body>\n      </pou>\n");
     out
+}
+
+/// The attributes of a `<contact>` of `kind`.
+pub(crate) fn contact_attrs(kind: ContactKind) -> &'static str {
+    match kind {
+        ContactKind::NormallyOpen => " negated=\"false\"",
+        ContactKind::NormallyClosed => " negated=\"true\"",
+        ContactKind::Rising => " negated=\"false\" edge=\"rising\"",
+        ContactKind::Falling => " negated=\"false\" edge=\"falling\"",
+    }
+}
+
+/// The attributes of a `<coil>` of `kind`.
+pub(crate) fn coil_attrs(kind: CoilKind) -> &'static str {
+    match kind {
+        CoilKind::Normal => " negated=\"false\"",
+        CoilKind::Negated => " negated=\"true\"",
+        CoilKind::Set => " negated=\"false\" storage=\"set\"",
+        CoilKind::Reset => " negated=\"false\" storage=\"reset\"",
+        CoilKind::Rising => " negated=\"false\" edge=\"rising\"",
+        CoilKind::Falling => " negated=\"false\" edge=\"falling\"",
+    }
 }

@@ -5,8 +5,8 @@
 use std::fmt::Write;
 
 use super::decl_xml::{cdata, section_tag, type_xml, vars_xml};
+use super::ld_export::{coil_attrs, contact_attrs};
 use super::xml::esc;
-use crate::ladder::{CoilKind, ContactKind};
 use crate::network::PinModifier;
 use crate::network::{NetElement, NetKind, NetworkLanguage, NetworkPou, NetworkPouKind, Pin};
 use crate::syntax::ast::Item;
@@ -128,26 +128,14 @@ fn element_xml(out: &mut String, e: &NetElement) {
             let _ = writeln!(out, "{I}</{tag}>");
         }
         NetKind::Contact { operand, contact } => {
-            let attrs = match contact {
-                ContactKind::NormallyOpen => " negated=\"false\"",
-                ContactKind::NormallyClosed => " negated=\"true\"",
-                ContactKind::Rising => " negated=\"false\" edge=\"rising\"",
-                ContactKind::Falling => " negated=\"false\" edge=\"falling\"",
-            };
+            let attrs = contact_attrs(*contact);
             let _ = writeln!(out, "{I}<contact localId=\"{id}\"{}{attrs}>", size(e));
             position(out, e);
             points(out, e);
             let _ = writeln!(out, "{I}  <variable>{}</variable>\n{I}</contact>", esc(operand));
         }
         NetKind::Coil { operand, coil } => {
-            let attrs = match coil {
-                CoilKind::Normal => " negated=\"false\"",
-                CoilKind::Negated => " negated=\"true\"",
-                CoilKind::Set => " negated=\"false\" storage=\"set\"",
-                CoilKind::Reset => " negated=\"false\" storage=\"reset\"",
-                CoilKind::Rising => " negated=\"false\" edge=\"rising\"",
-                CoilKind::Falling => " negated=\"false\" edge=\"falling\"",
-            };
+            let attrs = coil_attrs(*coil);
             let _ = writeln!(out, "{I}<coil localId=\"{id}\"{}{attrs}>", size(e));
             position(out, e);
             points(out, e);

@@ -9,7 +9,7 @@ use std::collections::{HashMap, HashSet};
 use leptos::prelude::*;
 use plc_core::build::Site;
 use plc_core::export::value_text;
-use plc_core::ladder::{CoilKind, ContactKind};
+use plc_core::ladder::ContactKind;
 use plc_core::network::live::{output_values, wire_value};
 use plc_core::network::{NetElement, NetKind, NetworkLanguage, NetworkPou, Pin, PinModifier};
 use plc_core::vm::Value;
@@ -123,14 +123,7 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
             let state = out("").map(|_| if on { ", on" } else { ", off" }).unwrap_or("");
             let (mid, cy) = (x + w / 2.0, y + h / 2.0);
             let r = (h / 2.0).max(6.0);
-            let mark = match coil {
-                CoilKind::Normal => "",
-                CoilKind::Negated => "/",
-                CoilKind::Set => "S",
-                CoilKind::Reset => "R",
-                CoilKind::Rising => "P",
-                CoilKind::Falling => "N",
-            };
+            let mark = crate::components::ladder::coil_letter(*coil);
             (
                 format!("Coil {operand}{state}"),
                 view! {

@@ -76,7 +76,8 @@ fn contact_letter(kind: ContactKind) -> Option<&'static str> {
     }
 }
 
-fn coil_letter(kind: CoilKind) -> &'static str {
+/// The letter drawn inside a coil of `kind` (`S`, `R`, `/`, `P`, `N`; none for a plain one).
+pub(crate) fn coil_letter(kind: CoilKind) -> &'static str {
     match kind {
         CoilKind::Normal => "",
         CoilKind::Negated => "/",

@@ -5,6 +5,7 @@
 
 mod declarations;
 mod draw;
+pub(crate) use draw::coil_letter;
 mod editor;
 pub mod geometry;
 mod live;
