@@ -287,6 +287,15 @@ fn sfc_traffic_light_runs_its_cycle_with_fbd_conditions() {
         traffic_light_phases(&mut s, 800, Some(100)),
         vec![(1, RED), (402, RED_YELLOW), (553, GREEN), (754, YELLOW)]
     );
+    // Exported (the chart as textual SFC in an ST body) and imported again, it runs the
+    // same cycle.
+    let back = import(&export(&p)).unwrap_or_else(|e| panic!("{e}")).project;
+    let mut s = project_simulator(&back, None).unwrap_or_else(|e| panic!("{e:?}"));
+    s.set_cycle_ns(20_000_000);
+    assert_eq!(
+        traffic_light_phases(&mut s, 1000, None),
+        vec![(1, RED), (402, RED_YELLOW), (553, GREEN), (754, YELLOW), (905, RED)]
+    );
 }
 
 /// The element of rung `r` at `(row, col)`.
@@ -846,6 +855,7 @@ fn an_fbd_body_runs_with_inline_functions_a_timer_and_feedback() {
     .concat();
     let imported = import(&fbd_doc(&body, &vars)).unwrap();
     assert!(imported.skipped.is_empty());
+    assert_networks_round_trip(&imported.project);
     let st = network_st(&imported.project, "Main");
     assert!(st.contains("T1(IN := AND(A, B), PT := T#20ms);"), "{st}");
     assert!(st.contains("T1 : TON;"), "the instance is declared");
@@ -875,6 +885,7 @@ fn fbd_statements_follow_the_execution_order_or_the_drawing() {
         ]
         .concat();
         let imported = import(&fbd_doc(&body, &vars)).unwrap();
+        assert_networks_round_trip(&imported.project);
         let mut sim = project_simulator(&imported.project, None).unwrap();
         sim.scan();
         sim.read("X").unwrap() == Value::Bool(true)
