@@ -1291,3 +1291,28 @@ fn a_vendor_element_is_left_out_with_a_note() {
     assert_eq!(i.project.ladder.len(), 1, "still a grid");
     assert!(i.warnings.iter().any(|w| w.message.contains("<vendorElement> localId 4")));
 }
+
+/// A block whose ENO powers a contact that powers its own EN is a loop with no value: the
+/// network is refused with the element named, never lowered forever (a damaged grid
+/// exported and read back made one).
+#[test]
+fn an_eno_wired_back_to_its_own_en_is_refused() {
+    use off_grid::*;
+    let vars = [var("A", "BOOL"), var("Y", "BOOL")].concat();
+    let body = [
+        inv(1, 0, 0, "A"),
+        block(
+            2,
+            (100, 0),
+            "AND",
+            "",
+            &[("EN", 3, ""), ("IN1", 1, ""), ("IN2", 1, "")],
+            &["ENO", "OUT"],
+        ),
+        contact(3, 50, 60, "A", "", &[(2, "ENO")]),
+        coil(4, 200, 0, "Y", "", &[(2, "ENO")]),
+    ]
+    .concat();
+    let e = import(&doc(&body, &vars)).map(|_| ()).unwrap_err().to_string();
+    assert!(e.contains("ENO wired back to its own EN") || e.contains("loop"), "{e}");
+}

@@ -236,7 +236,13 @@ impl<'a> Lower<'a> {
             Kind::Block(b)
                 if conn.param.as_deref().is_some_and(|p| p.eq_ignore_ascii_case("ENO")) =>
             {
-                Ok(self.enable_of(b)?.unwrap_or_else(|| "TRUE".into()))
+                if path.contains(&i) {
+                    return Err(self.err(i, "a block's ENO wired back to its own EN".into()));
+                }
+                path.push(i);
+                let en = self.enable_in(b, path);
+                path.pop();
+                Ok(en?.unwrap_or_else(|| "TRUE".into()))
             }
             Kind::Block(b) => match &b.instance {
                 Some(inst) => match &conn.param {
@@ -374,10 +380,21 @@ impl<'a> Lower<'a> {
 
     /// The value of block `b`'s EN input when it is wired (and not plainly TRUE).
     fn enable_of(&self, b: &RawBlock) -> Result<Option<String>, NetError> {
+        self.enable_in(b, &mut Vec::new())
+    }
+
+    /// [`Self::enable_of`] while the elements of `path` are being written (a loop through
+    /// them has no value).
+    fn enable_in(&self, b: &RawBlock, path: &mut Vec<usize>) -> Result<Option<String>, NetError> {
         let en = b.inputs.iter().find(|(pin, _)| pin.eq_ignore_ascii_case("EN"));
         match en {
             Some((_, conns)) if !conns.is_empty() => {
-                let v = self.joined(conns)?;
+                let parts =
+                    conns.iter().map(|c| self.value(c, path)).collect::<Result<Vec<_>, _>>()?;
+                let v = match parts.as_slice() {
+                    [one] => one.clone(),
+                    _ => format!("({})", parts.join(" OR ")),
+                };
                 let v = match modifier(b, "EN") {
                     Some(PinModifier::Negated) => format!("NOT ({v})"),
                     _ => v,
