@@ -94,28 +94,46 @@ impl std::fmt::Display for XmlError {
 
 /// Parses a whole document and returns its root element.
 pub(crate) fn parse(xml: &str) -> Result<Node, XmlError> {
-    let index = crate::diagnostics::LineIndex::new(xml);
-    let mut at = crate::diagnostics::Location { line: 1, column: 1 };
-    parse_at(xml, &index, &mut at).map_err(|message| XmlError {
-        message,
-        line: at.line,
-        column: at.column,
-    })
+    let mut at = Cursor { text: xml, offset: 0, line: 1, column: 1 };
+    parse_at(xml, &mut at).map_err(|message| XmlError { message, line: at.line, column: at.column })
 }
 
-/// [`parse`], keeping in `at` the place of the last event read.
-fn parse_at(
-    xml: &str,
-    index: &crate::diagnostics::LineIndex<'_>,
-    at: &mut crate::diagnostics::Location,
-) -> Result<Node, String> {
+/// The line and column of a place in the text, moved forward from the last place asked
+/// for: reading a document costs one pass over it, however long its lines (a file saved
+/// on one line would otherwise count its columns from the start for every element).
+struct Cursor<'a> {
+    text: &'a str,
+    offset: usize,
+    line: u32,
+    column: u32,
+}
+
+impl Cursor<'_> {
+    /// Moves to byte `offset` (never backwards) and returns its place.
+    fn advance(&mut self, offset: usize) -> crate::diagnostics::Location {
+        if let Some(passed) = self.text.get(self.offset..offset) {
+            for c in passed.chars() {
+                if c == '\n' {
+                    self.line += 1;
+                    self.column = 1;
+                } else {
+                    self.column += 1;
+                }
+            }
+            self.offset = offset;
+        }
+        crate::diagnostics::Location { line: self.line, column: self.column }
+    }
+}
+
+/// [`parse`], keeping in `cursor` the place of the last event read.
+fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, String> {
     let mut reader = Reader::from_str(xml);
     let mut stack: Vec<Node> = Vec::new();
     let mut root: Option<Node> = None;
     loop {
         let pos = reader.buffer_position();
-        *at = index.location(u32::try_from(pos).unwrap_or(u32::MAX));
-        let at = *at;
+        let at = cursor.advance(usize::try_from(pos).unwrap_or(usize::MAX));
         let event = reader.read_event().map_err(|e| e.to_string())?;
         match event {
             Event::Start(e) => {
