@@ -115,6 +115,27 @@ fn deep_xml(depth: usize) -> String {
     )
 }
 
+/// An FBD program whose `n` NOT functions each feed the next: `Y := NOT(NOT(…(A)))`.
+fn fbd_chain(n: usize) -> String {
+    let mut body = String::from(
+        r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>A</expression></inVariable>"#,
+    );
+    for k in 2..n + 2 {
+        body.push_str(&format!(
+            r#"<block localId="{k}" typeName="NOT"><position x="{k}" y="0"/><inputVariables><variable formalParameter="IN"><connectionPointIn><connection refLocalId="{}"/></connectionPointIn></variable></inputVariables><inOutVariables/><outputVariables><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>"#,
+            k - 1
+        ));
+    }
+    body.push_str(&format!(
+        r#"<outVariable localId="{}"><position x="0" y="50"/><connectionPointIn><connection refLocalId="{}" formalParameter="OUT"/></connectionPointIn><expression>Y</expression></outVariable>"#,
+        n + 2,
+        n + 1
+    ));
+    format!(
+        r#"<?xml version="1.0"?><project xmlns="http://www.plcopen.org/xml/tc6_0201"><types><pous><pou name="Main" pouType="program"><interface><localVars><variable name="A"><type><BOOL/></type></variable><variable name="Y"><type><BOOL/></type></variable></localVars></interface><body><FBD>{body}</FBD></body></pou></pous></types></project>"#
+    )
+}
+
 fn deep_pnml(depth: usize) -> String {
     format!(
         "<?xml version=\"1.0\"?><pnml><net id=\"n\" type=\"http://www.pnml.org/version-2009/grammar/ptnet\">{}{}</net></pnml>",
@@ -226,6 +247,11 @@ pub fn all() -> Vec<Hostile> {
             name: "PLCopen XML nested 200,000 deep",
             text: deep_xml(200_000),
             outcome: Outcome::Refused("at line 1, column 672: elements nested more than 200 deep"),
+        },
+        Hostile {
+            name: "an FBD network of 20,000 functions feeding each other in a row",
+            text: fbd_chain(20_000),
+            outcome: error("E0105", 0),
         },
         Hostile {
             name: "PNML nested 200,000 deep",

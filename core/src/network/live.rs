@@ -74,7 +74,11 @@ impl<'a> Eval<'a> {
         if let Some(v) = self.memo.get(&key) {
             return v.clone();
         }
-        if !self.visiting.insert(key.clone()) {
+        // A loop has no value; nor has a chain longer than any network that runs (the
+        // lowering refuses those), so the view never recurses deeper than that.
+        if self.visiting.len() > 2 * crate::limits::MAX_EXPR_HEIGHT
+            || !self.visiting.insert(key.clone())
+        {
             return None;
         }
         let v = self.compute(e, pin);

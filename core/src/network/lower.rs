@@ -259,6 +259,15 @@ impl<'a> Lower<'a> {
                                 .into(),
                         ));
                     }
+                    if path.len() > crate::limits::MAX_EXPR_HEIGHT {
+                        return Err(self.err(
+                            i,
+                            format!(
+                                "more than {} functions and contacts feed each other in a row",
+                                crate::limits::MAX_EXPR_HEIGHT
+                            ),
+                        ));
+                    }
                     path.push(i);
                     let mut args = Vec::new();
                     for (pin, conns) in b.inputs.iter().chain(&b.in_outs) {
@@ -412,24 +421,28 @@ impl<'a> Lower<'a> {
         found: &mut BTreeSet<usize>,
         seen: &mut BTreeSet<usize>,
     ) -> Result<(), NetError> {
-        let conns: Vec<&Conn> = match &self.els[s].kind {
-            Kind::Block(b) => b.inputs.iter().chain(&b.in_outs).flat_map(|(_, c)| c).collect(),
-            _ => self.els[s].conns.iter().collect(),
-        };
-        for c in conns {
-            let i = self.source(c, s)?;
-            let kind = &self.els[i].kind;
-            if is_statement(kind) && !matches!(kind, Kind::Leaf(Element::Coil { .. })) {
-                found.insert(i);
-            }
-            if instance_of(kind).is_none()
-                && matches!(kind, Kind::Block(_) | Kind::Leaf(_))
-                && seen.insert(i)
-            {
-                if seen.len() > crate::limits::MAX_EXPR_HEIGHT * 100 {
-                    return Err(self.err(i, "too many functions in one network".into()));
+        // A worklist, not recursion: a long chain of functions must not exhaust the stack.
+        let mut todo = vec![s];
+        while let Some(at) = todo.pop() {
+            let conns: Vec<&Conn> = match &self.els[at].kind {
+                Kind::Block(b) => b.inputs.iter().chain(&b.in_outs).flat_map(|(_, c)| c).collect(),
+                _ => self.els[at].conns.iter().collect(),
+            };
+            for c in conns {
+                let i = self.source(c, at)?;
+                let kind = &self.els[i].kind;
+                if is_statement(kind) && !matches!(kind, Kind::Leaf(Element::Coil { .. })) {
+                    found.insert(i);
                 }
-                self.instances_read(i, found, seen)?;
+                if instance_of(kind).is_none()
+                    && matches!(kind, Kind::Block(_) | Kind::Leaf(_))
+                    && seen.insert(i)
+                {
+                    if seen.len() > crate::limits::MAX_EXPR_HEIGHT * 100 {
+                        return Err(self.err(i, "too many functions in one network".into()));
+                    }
+                    todo.push(i);
+                }
             }
         }
         Ok(())
