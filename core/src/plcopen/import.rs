@@ -217,6 +217,12 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     Ok(Import { project, warnings, skipped, file_map })
 }
 
+/// Leaves the POU `name` out of the import, with a note at its body saying why.
+fn skip_pou(out: &mut PouOut<'_>, body: &Node, name: String, keyword: &str, reason: String) {
+    out.warnings.push(ImportNote::on(body, format!("POU {name}: {reason}; the POU was skipped")));
+    out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+}
+
 /// What kind of network POU a `pouType` makes.
 fn network_kind(pou_type: &str) -> NetworkPouKind {
     match pou_type {
@@ -372,45 +378,22 @@ fn import_pou<'a>(
             }
             Err(e) => {
                 let reason = format!("its SFC body cannot be imported yet ({e})");
-                warnings.push(ImportNote::on(
-                    lang,
-                    format!("POU {name}: {reason}; the POU was skipped"),
-                ));
-                out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+                skip_pou(out, lang, name, keyword, reason);
             }
         },
-        "FBD" => {
+        // FBD bodies, and LD functions (a function has no rung grid), are kept as drawn.
+        "FBD" | "LD" if lang.name == "FBD" || pou_type == "function" => {
+            let language =
+                if lang.name == "FBD" { NetworkLanguage::Fbd } else { NetworkLanguage::Ld };
             let kind = network_kind(pou_type);
-            match keep_network(&name, kind, return_type, NetworkLanguage::Fbd, declarations, lang) {
+            match keep_network(&name, kind, return_type, language, declarations, lang) {
                 Ok((net, lines, left_out)) => {
                     out.warnings.extend(left_out);
                     add_network(out, net, lines)
                 }
                 Err(e) => {
-                    let reason = format!("its FBD body cannot be imported yet ({e})");
-                    warnings.push(ImportNote::on(
-                        lang,
-                        format!("POU {name}: {reason}; the POU was skipped"),
-                    ));
-                    out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
-                }
-            }
-        }
-        "LD" if pou_type == "function" => {
-            // A function has no rung grid: its network is kept as drawn.
-            let kind = NetworkPouKind::Function;
-            match keep_network(&name, kind, return_type, NetworkLanguage::Ld, declarations, lang) {
-                Ok((net, lines, left_out)) => {
-                    out.warnings.extend(left_out);
-                    add_network(out, net, lines)
-                }
-                Err(e) => {
-                    let reason = format!("its LD body cannot be imported yet ({e})");
-                    warnings.push(ImportNote::on(
-                        lang,
-                        format!("POU {name}: {reason}; the POU was skipped"),
-                    ));
-                    out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+                    let reason = format!("its {} body cannot be imported yet ({e})", lang.name);
+                    skip_pou(out, lang, name, keyword, reason);
                 }
             }
         }
@@ -431,9 +414,7 @@ fn import_pou<'a>(
         }
         other => {
             let reason = format!("{other} bodies are not supported yet");
-            warnings
-                .push(ImportNote::on(lang, format!("POU {name}: {reason}; the POU was skipped")));
-            out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+            skip_pou(out, lang, name, keyword, reason);
         }
     }
     Ok(None)
