@@ -6,8 +6,69 @@
 //! standard body, since its memory starts FALSE); counters let reset/load win over
 //! counting, and `CV` keeps counting past `PV` up to the limit of INT.
 
-/// The prelude's source text.
-pub const SOURCE: &str = r#"
+/// `CTU_T`, `CTD_T` and `CTUD_T` of edition 3 for the counter type `T` with its limits:
+/// `CTU`, `CTD` and `CTUD` with `PV` and `CV` of that type.
+macro_rules! typed_counters {
+    ($t:literal, $max:literal, $min:literal) => {
+        concat!(
+            "\nFUNCTION_BLOCK CTU_",
+            $t,
+            "\n",
+            "VAR_INPUT CU : BOOL; R : BOOL; PV : ",
+            $t,
+            "; END_VAR\n",
+            "VAR_OUTPUT Q : BOOL; CV : ",
+            $t,
+            "; END_VAR\n",
+            "VAR CU_M : BOOL; END_VAR\n",
+            "IF R THEN\n    CV := 0;\n",
+            "ELSIF CU AND NOT CU_M AND CV < ",
+            $max,
+            " THEN\n    CV := CV + 1;\nEND_IF;\n",
+            "CU_M := CU;\nQ := CV >= PV;\nEND_FUNCTION_BLOCK\n",
+            "\nFUNCTION_BLOCK CTD_",
+            $t,
+            "\n",
+            "VAR_INPUT CD : BOOL; LD : BOOL; PV : ",
+            $t,
+            "; END_VAR\n",
+            "VAR_OUTPUT Q : BOOL; CV : ",
+            $t,
+            "; END_VAR\n",
+            "VAR CD_M : BOOL; END_VAR\n",
+            "IF LD THEN\n    CV := PV;\n",
+            "ELSIF CD AND NOT CD_M AND CV > ",
+            $min,
+            " THEN\n    CV := CV - 1;\nEND_IF;\n",
+            "CD_M := CD;\nQ := CV <= 0;\nEND_FUNCTION_BLOCK\n",
+            "\nFUNCTION_BLOCK CTUD_",
+            $t,
+            "\n",
+            "VAR_INPUT CU : BOOL; CD : BOOL; R : BOOL; LD : BOOL; PV : ",
+            $t,
+            "; END_VAR\n",
+            "VAR_OUTPUT QU : BOOL; QD : BOOL; CV : ",
+            $t,
+            "; END_VAR\n",
+            "VAR CU_M : BOOL; CD_M : BOOL; END_VAR\n",
+            "IF R THEN\n    CV := 0;\nELSIF LD THEN\n    CV := PV;\n",
+            "ELSIF NOT (CU AND NOT CU_M AND CD AND NOT CD_M) THEN\n",
+            "    IF CU AND NOT CU_M AND CV < ",
+            $max,
+            " THEN\n        CV := CV + 1;\n",
+            "    ELSIF CD AND NOT CD_M AND CV > ",
+            $min,
+            " THEN\n        CV := CV - 1;\n",
+            "    END_IF;\nEND_IF;\n",
+            "CU_M := CU;\nCD_M := CD;\nQU := CV >= PV;\nQD := CV <= 0;\nEND_FUNCTION_BLOCK\n",
+        )
+    };
+}
+
+/// The standard blocks, each written once.
+macro_rules! blocks {
+    () => {
+        r#"
 FUNCTION_BLOCK R_TRIG
 VAR_INPUT CLK : BOOL; END_VAR
 VAR_OUTPUT Q : BOOL; END_VAR
@@ -169,4 +230,16 @@ ELSE
 END_IF;
 Q := ET >= PT;
 END_FUNCTION_BLOCK
-"#;
+"#
+    };
+}
+
+/// The prelude's source text: the blocks above and the typed counters.
+pub const SOURCE: &str = concat!(
+    blocks!(),
+    typed_counters!("INT", "32767", "-32768"),
+    typed_counters!("DINT", "2147483647", "-2147483648"),
+    typed_counters!("LINT", "9223372036854775807", "-9223372036854775808"),
+    typed_counters!("UDINT", "4294967295", "0"),
+    typed_counters!("ULINT", "18446744073709551615", "0"),
+);
