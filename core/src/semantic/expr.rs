@@ -898,7 +898,7 @@ impl<'a> Checker<'a> {
 
     /// An untyped `0` or `1` beside a BOOL operand is the BOOL literal FALSE or TRUE
     /// (IEC 61131-3 Table 5; `IF Done = 1`, as matiec and OpenPLC accept).
-    fn bool_literal(&self, t: Typed, other: Type) -> Typed {
+    pub(super) fn bool_literal(&self, t: Typed, other: Type) -> Typed {
         match (&t.e.kind, t.e.ty.elem()) {
             (ExprKind::Const(bits), Some(el)) if t.flexible && other.is_bool() && el.is_int() => {
                 match arith::to_i128(el, *bits) {

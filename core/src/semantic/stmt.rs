@@ -27,8 +27,10 @@ impl<'a> Checker<'a> {
         list.iter().filter_map(|s| self.stmt(s)).collect()
     }
 
-    fn condition(&mut self, e: &ast::Expr, what: &str) -> Option<Expr> {
+    pub(super) fn condition(&mut self, e: &ast::Expr, what: &str) -> Option<Expr> {
         let t = self.expr(e, Some(Type::BOOL))?;
+        // A condition is a BOOL context: an untyped `0` or `1` is FALSE or TRUE.
+        let t = self.bool_literal(t, Type::BOOL);
         if !t.e.ty.is_bool() {
             let msg = format!("the condition of {what} must be BOOL, not {}", self.tname(t.e.ty));
             self.error(Code::ConditionNotBool, e.span, msg);
