@@ -1316,3 +1316,66 @@ fn an_eno_wired_back_to_its_own_en_is_refused() {
     let e = import(&doc(&body, &vars)).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("ENO wired back to its own EN") || e.contains("loop"), "{e}");
 }
+
+/// A TIME initial value written as a whole number (`<simpleValue value="5000"/>`, as some
+/// OpenPLC projects hold it) is read as milliseconds, with a located note saying so.
+#[test]
+fn a_time_initial_value_written_as_a_number_is_milliseconds() {
+    let vars = [
+        var("Go", "BOOL"),
+        var("Lamp", "BOOL"),
+        r#"<variable name="Delay"><type><TIME/></type><initialValue><simpleValue value="5000"/></initialValue></variable>"#.to_string(),
+    ]
+    .concat();
+    let body = r#"
+<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>
+<contact localId="2"><position x="50" y="10"/><connectionPointIn><connection refLocalId="1"/></connectionPointIn><connectionPointOut/><variable>Go</variable></contact>
+<coil localId="3"><position x="150" y="10"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>Lamp</variable></coil>
+<rightPowerRail localId="4"><position x="300" y="0"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn></rightPowerRail>"#;
+    let i = import(&doc(body, &vars)).unwrap();
+    let note = i.warnings.iter().find(|w| w.message.contains("Delay")).expect("a note");
+    assert!(note.message.contains("read as T#5000ms"), "{}", note.message);
+    assert!(note.line > 0);
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    s.scan();
+    let delay = s.read("Delay").unwrap();
+    assert_eq!(plc_core::export::value_text(&delay), "T#5s");
+}
+
+/// A conversion's output type is in its name: `BOOL_TO_INT` of a BOOL gives an INT
+/// on the data wire to the next block, which then gets a variable of that type and the
+/// network stays a grid of rungs.
+#[test]
+fn a_conversion_on_a_data_wire_gives_its_type() {
+    let vars = [var("A", "BOOL"), var("N", "INT"), var("Lamp", "BOOL")].concat();
+    let body = r#"
+<leftPowerRail localId="1"><position x="0" y="0"/><connectionPointOut formalParameter=""/></leftPowerRail>
+<inVariable localId="2"><position x="50" y="40"/><connectionPointOut/><expression>A</expression></inVariable>
+<block localId="3" typeName="BOOL_TO_INT"><position x="100" y="10"/>
+  <inputVariables><variable formalParameter="EN"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+  <variable formalParameter="IN"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable></inputVariables>
+  <inOutVariables/><outputVariables><variable formalParameter="ENO"><connectionPointOut/></variable><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+<inVariable localId="4"><position x="100" y="80"/><connectionPointOut/><expression>40</expression></inVariable>
+<block localId="5" typeName="ADD"><position x="200" y="10"/>
+  <inputVariables><variable formalParameter="EN"><connectionPointIn><connection refLocalId="3" formalParameter="ENO"/></connectionPointIn></variable>
+  <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn></variable>
+  <variable formalParameter="IN2"><connectionPointIn><connection refLocalId="4"/></connectionPointIn></variable></inputVariables>
+  <inOutVariables/><outputVariables><variable formalParameter="ENO"><connectionPointOut/></variable><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+<outVariable localId="6"><position x="300" y="40"/><connectionPointIn><connection refLocalId="5" formalParameter="OUT"/></connectionPointIn><expression>N</expression></outVariable>
+<coil localId="7"><position x="300" y="10"/><connectionPointIn><connection refLocalId="5" formalParameter="ENO"/></connectionPointIn><connectionPointOut/><variable>Lamp</variable></coil>
+<rightPowerRail localId="8"><position x="400" y="0"/><connectionPointIn><connection refLocalId="7"/></connectionPointIn></rightPowerRail>"#;
+    let i = import(&doc(body, &vars)).unwrap_or_else(|e| panic!("{e}"));
+    assert!(i.project.networks.is_empty(), "{:?}", i.warnings);
+    assert_eq!(i.project.ladder.len(), 1);
+    assert!(
+        i.project.ladder[0].declarations.contains(": INT;"),
+        "{}",
+        i.project.ladder[0].declarations
+    );
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    s.write("A", "TRUE").unwrap();
+    s.scan();
+    assert_eq!(plc_core::export::value_text(&s.read("N").unwrap()), "41");
+    assert_eq!(s.read("Lamp").unwrap(), Value::Bool(true));
+    assert_round_trip(&i.project);
+}

@@ -93,9 +93,19 @@ pub(crate) const STANDARD_FUNCTIONS: &[&str] = &[
     "INT_TO_BCD",
 ];
 
-/// Whether `name` is one of the [`STANDARD_FUNCTIONS`].
+/// Whether `name` is one of the [`STANDARD_FUNCTIONS`] or a type conversion.
 pub(crate) fn is_standard_function(name: &str) -> bool {
-    STANDARD_FUNCTIONS.iter().any(|n| n.eq_ignore_ascii_case(name.trim()))
+    STANDARD_FUNCTIONS.iter().any(|n| n.eq_ignore_ascii_case(name.trim())) || is_conversion(name)
+}
+
+/// Whether `name` is a conversion between elementary types (`BOOL_TO_INT`, `REAL_TO_DINT`),
+/// one input `IN` and the output `OUT` of the type its name ends in.
+pub(crate) fn is_conversion(name: &str) -> bool {
+    let upper = name.trim().to_ascii_uppercase();
+    let elementary = |t: &str| {
+        crate::semantic::types::Elem::from_name(t).is_some() || t == "STRING" || t == "WSTRING"
+    };
+    upper.split_once("_TO_").is_some_and(|(from, to)| elementary(from) && elementary(to))
 }
 
 /// Whether a block is a function block (has an instance) rather than a function.

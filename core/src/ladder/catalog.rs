@@ -131,6 +131,7 @@ pub fn standard_function_inputs(name: &str) -> Option<(&'static [&'static str], 
         "SUB" | "DIV" | "MOD" => (&["IN1", "IN2"], false),
         "SQRT" | "MOVE" | "NOT" | "BCD_TO_INT" | "INT_TO_BCD" => (&["IN"], false),
         "SHL" | "SHR" | "ROL" | "ROR" => (&["IN", "N"], false),
+        _ if super::blocks::is_conversion(name) => (&["IN"], false),
         _ => return None,
     })
 }

@@ -1,7 +1,7 @@
 //! Ladder diagrams (LD): the rung grid model, validation with located diagnostics,
 //! lowering to ST (so ladder runs on the one ST compiler and VM), and the readable ST view.
 
-mod blocks;
+pub(crate) mod blocks;
 pub(crate) mod catalog;
 pub mod complete;
 pub mod edit;

@@ -62,17 +62,16 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         for conf in confs.children_named("configuration") {
             let cname = conf.attr("name").unwrap_or("config");
             for g in conf.children_named("globalVars") {
-                globals.append(var_block(g, "VAR_GLOBAL").map_err(|message| ImportError::Pou {
-                    pou: format!("configuration {cname}"),
-                    message,
+                globals.append(var_block(g, "VAR_GLOBAL", &mut warnings).map_err(|message| {
+                    ImportError::Pou { pou: format!("configuration {cname}"), message }
                 })?);
             }
             for res in conf.children_named("resource") {
                 let rname = res.attr("name").unwrap_or("resource");
                 for g in res.children_named("globalVars") {
-                    globals.append(var_block(g, "VAR_GLOBAL").map_err(|message| {
-                        ImportError::Pou { pou: format!("resource {rname}"), message }
-                    })?);
+                    globals.append(var_block(g, "VAR_GLOBAL", &mut warnings).map_err(
+                        |message| ImportError::Pou { pou: format!("resource {rname}"), message },
+                    )?);
                 }
                 if let Some(ms) = res
                     .children_named("task")
@@ -345,7 +344,7 @@ fn import_pou<'a>(
                     continue;
                 }
             };
-            declarations.append(var_block(block, section).map_err(err)?);
+            declarations.append(var_block(block, section, warnings).map_err(err)?);
         }
     }
     let body = pou.child("body").ok_or_else(|| err("no <body>".into()))?;
@@ -524,8 +523,13 @@ fn parse_interval_ms(text: &str) -> Option<u64> {
 }
 
 /// One interface section (`<inputVars retain=…>`) as an ST `VAR… END_VAR` block, each
-/// variable's line written from its `<variable>`.
-pub(crate) fn var_block(block: &Node, section: &str) -> Result<SourceOut, String> {
+/// variable's line written from its `<variable>`; what was changed on the way is noted in
+/// `notes`.
+pub(crate) fn var_block(
+    block: &Node,
+    section: &str,
+    notes: &mut Vec<ImportNote>,
+) -> Result<SourceOut, String> {
     let mut out = String::from(section);
     if block.attr("retain") == Some("true") {
         out.push_str(" RETAIN");
@@ -540,14 +544,15 @@ pub(crate) fn var_block(block: &Node, section: &str) -> Result<SourceOut, String
     let mut text = SourceOut::default();
     text.push_from(&out, block);
     for v in block.children_named("variable") {
-        text.push_from(&format!("    {}\n", variable_text(v)?), v);
+        text.push_from(&format!("    {}\n", variable_text(v, notes)?), v);
     }
     text.push("END_VAR\n", None);
     Ok(text)
 }
 
-/// `name AT %IX0.0 : BOOL := FALSE; (* doc *)`.
-fn variable_text(v: &Node) -> Result<String, String> {
+/// `name AT %IX0.0 : BOOL := FALSE; (* doc *)`. A TIME initial value written as a whole
+/// number is read as milliseconds, as matiec reads it, with a note in `notes`.
+fn variable_text(v: &Node, notes: &mut Vec<ImportNote>) -> Result<String, String> {
     let name = v.attr("name").filter(|n| !n.is_empty()).ok_or("a <variable> without a name")?;
     let mut out = name.to_string();
     if let Some(addr) = v.attr("address").filter(|a| !a.trim().is_empty()) {
@@ -556,10 +561,20 @@ fn variable_text(v: &Node) -> Result<String, String> {
     }
     let ty = v.child("type").ok_or_else(|| format!("variable {name} has no <type>"))?;
     out.push_str(" : ");
-    out.push_str(&type_text(ty).map_err(|e| format!("variable {name}: {e}"))?);
+    let type_name = type_text(ty).map_err(|e| format!("variable {name}: {e}"))?;
+    out.push_str(&type_name);
     if let Some(init) = v.child("initialValue") {
+        let mut value = value_text(init).map_err(|e| format!("variable {name}: {e}"))?;
+        let is_duration = matches!(type_name.as_str(), "TIME" | "LTIME");
+        if is_duration && !value.is_empty() && value.bytes().all(|b| b.is_ascii_digit()) {
+            notes.push(ImportNote::on(
+                init,
+                format!("variable {name}: the TIME initial value {value} is read as T#{value}ms"),
+            ));
+            value = format!("T#{value}ms");
+        }
         out.push_str(" := ");
-        out.push_str(&value_text(init).map_err(|e| format!("variable {name}: {e}"))?);
+        out.push_str(&value);
     }
     out.push(';');
     if let Some(doc) = v.child("documentation") {
@@ -643,7 +658,9 @@ fn type_node_text(t: &Node) -> Result<String, String> {
             let mut out = String::from("STRUCT\n");
             for v in t.children_named("variable") {
                 out.push_str("        ");
-                out.push_str(&variable_text(v)?);
+                // A member's value is converted like a variable's; the note has no place
+                // to go from inside a type.
+                out.push_str(&variable_text(v, &mut Vec::new())?);
                 out.push('\n');
             }
             out.push_str("    END_STRUCT");

@@ -495,10 +495,16 @@ fn function_output_type(
     if is_comparison(&raw.type_name) {
         return Some(TypeKey::Named("BOOL".into()));
     }
-    match raw.type_name.to_ascii_uppercase().as_str() {
+    let upper = raw.type_name.to_ascii_uppercase();
+    match upper.as_str() {
         "BCD_TO_INT" => return Some(TypeKey::Named("INT".into())),
         "INT_TO_BCD" => return Some(TypeKey::Named("WORD".into())),
         _ => {}
+    }
+    // A conversion gives the type its name ends in: `BOOL_TO_INT` gives INT.
+    if crate::ladder::blocks::is_conversion(&upper) {
+        let (_, to) = upper.split_once("_TO_")?;
+        return Some(TypeKey::Named(to.to_string()));
     }
     // ADD, MOVE, SQRT, SHL, …: the type of their (widest) typed input.
     let _ = (pins, outs);
@@ -513,6 +519,8 @@ fn function_output_type(
             Kind::InVar(expr) => {
                 ctx.catalog.place_type(&ctx.scope, expr).or_else(|| typed_literal(expr))
             }
+            // Power from the rail or through contacts and coils is BOOL.
+            Kind::LeftRail | Kind::Leaf(_) => Some(TypeKey::Named("BOOL".into())),
             Kind::Block(b) => match &b.instance {
                 Some(inst) => ctx.catalog.place_type(
                     &ctx.scope,
