@@ -407,3 +407,39 @@ fn an_exercise_link_carries_the_file_and_the_starter_only() {
     assert_eq!(missing.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no-such.toml"));
 }
+
+/// `st-view` prints the ST a network POU (an FBD body kept as drawn) runs as.
+#[test]
+fn st_view_prints_a_network_pou() {
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="x" productName="x" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="Fbd"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Main" pouType="program">
+      <interface><localVars><variable name="A"><type><BOOL/></type></variable><variable name="N"><type><INT/></type></variable></localVars></interface>
+      <body><FBD>
+        <inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>A</expression></inVariable>
+        <inVariable localId="2"><position x="0" y="40"/><connectionPointOut/><expression>7</expression></inVariable>
+        <block localId="3" typeName="MOVE"><position x="60" y="0"/><inputVariables>
+          <variable formalParameter="EN"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+          <variable formalParameter="IN"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/><outputVariables><variable formalParameter="ENO"><connectionPointOut/></variable><variable formalParameter="OUT"><connectionPointOut/></variable></outputVariables></block>
+        <outVariable localId="4"><position x="140" y="0"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><expression>N</expression></outVariable>
+      </FBD></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>"#;
+    let path = source_file("network.xml", xml);
+    let out = plc(&["st-view", &path.to_string_lossy(), "--pou", "main"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        stdout(&out).contains("IF A THEN N := MOVE(EN := A, IN := 7); END_IF;"),
+        "{}",
+        stdout(&out)
+    );
+    let out = plc(&["st-view", &path.to_string_lossy(), "--pou", "Nope"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("they are: Main"));
+}

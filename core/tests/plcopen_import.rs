@@ -1379,3 +1379,56 @@ fn a_conversion_on_a_data_wire_gives_its_type() {
     assert_eq!(s.read("Lamp").unwrap(), Value::Bool(true));
     assert_round_trip(&i.project);
 }
+
+/// OpenPLC's way to add up what is switched on: each MOVE's EN is a contact, the MOVEs feed
+/// an ADD and a MAX in an LD FUNCTION returning INT. A function whose EN is off gives 0 to
+/// the block it feeds (matiec's execution control), and the untyped literals take INT from
+/// the result (corpus file 086 computed 60 whatever its inputs before).
+#[test]
+fn functions_with_their_en_off_feed_zero_to_the_next_block() {
+    use off_grid::*;
+    let in_var = |id: u32, y: u32, e: &str| {
+        format!(
+            r#"<inVariable localId="{id}"><position x="40" y="{y}"/><connectionPointOut/><expression>{e}</expression></inVariable>"#
+        )
+    };
+    let body = [
+        rail(1, 0),
+        contact(2, 20, 0, "V0", "", &[(1, "")]),
+        contact(3, 20, 80, "V1", "", &[(1, "")]),
+        in_var(4, 40, "30"),
+        in_var(5, 120, "-30"),
+        block(6, (80, 0), "MOVE", "", &[("EN", 2, ""), ("IN", 4, "")], &["ENO", "OUT"]),
+        block(7, (80, 80), "MOVE", "", &[("EN", 3, ""), ("IN", 5, "")], &["ENO", "OUT"]),
+        in_var(8, 160, "45"),
+        block(9, (160, 0), "ADD", "", &[("IN1", 6, "OUT"), ("IN2", 7, "OUT"), ("IN3", 8, "")], &["OUT"]),
+        in_var(10, 200, "0"),
+        block(11, (240, 0), "MAX", "", &[("IN1", 9, "OUT"), ("IN2", 10, "")], &["OUT"]),
+        r#"<outVariable localId="12"><position x="320" y="0"/><connectionPointIn><connection refLocalId="11" formalParameter="OUT"/></connectionPointIn><expression>Speed</expression></outVariable>"#.to_string(),
+    ]
+    .concat();
+    let inputs = ["V0", "V1"].map(|v| var(v, "BOOL")).concat();
+    let program = doc("", &[var("A", "BOOL"), var("B", "BOOL"), var("S", "INT")].concat())
+        .replace(
+            "<body><LD></LD></body>",
+            "<body><ST><xhtml:p><![CDATA[S := Speed(A, B);]]></xhtml:p></ST></body>",
+        )
+        .replace(
+            "<pou name=\"Main\"",
+            &format!(
+                r#"<pou name="Speed" pouType="function"><interface><returnType><INT/></returnType><inputVars>{inputs}</inputVars></interface><body><LD>{body}</LD></body></pou>
+    <pou name="Main""#
+            ),
+        );
+    let i = import(&program).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(i.project.networks.len(), 1, "{:?}", i.warnings);
+    assert_networks_round_trip(&i.project);
+    let mut s = project_simulator(&i.project, Some("Main")).unwrap_or_else(|e| panic!("{e:?}"));
+    for (a, b, speed) in
+        [(false, false, 45), (true, false, 75), (true, true, 45), (false, true, 15)]
+    {
+        scan_bools(&mut s, &[("A", a), ("B", b)], &[]);
+        let got = plc_core::export::value_text(&s.read("S").unwrap());
+        assert_eq!(got, speed.to_string(), "A={a} B={b}");
+    }
+}

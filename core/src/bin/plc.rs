@@ -67,11 +67,12 @@ enum Command {
         #[arg(long, conflicts_with_all = ["code", "markdown"])]
         html: bool,
     },
-    /// Print the readable ST view of a ladder POU of a project.
+    /// Print the readable ST view of a ladder POU of a project, or the ST a network POU
+    /// (an LD or FBD body kept as drawn in an imported file) runs as.
     StView {
         /// The project file.
         project: PathBuf,
-        /// The ladder POU.
+        /// The ladder or network POU.
         #[arg(long)]
         pou: String,
     },
@@ -350,21 +351,35 @@ fn st_view(path: &Path, pou: &str) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    match project.ladder.iter().find(|p| p.name.eq_ignore_ascii_case(pou)) {
-        Some(lp) => {
-            print!("{}", plc_core::ladder::st_view_pou(lp));
-            ExitCode::SUCCESS
-        }
-        None => {
-            let names: Vec<&str> = project.ladder.iter().map(|p| p.name.as_str()).collect();
-            eprintln!(
-                "plc: no ladder POU `{pou}` in {} (ladder POUs: {})",
-                path.display(),
-                names.join(", ")
-            );
-            ExitCode::FAILURE
-        }
+    if let Some(lp) = project.ladder.iter().find(|p| p.name.eq_ignore_ascii_case(pou)) {
+        print!("{}", plc_core::ladder::st_view_pou(lp));
+        return ExitCode::SUCCESS;
     }
+    // A network POU (LD or FBD kept as drawn in an imported file): the ST it runs as.
+    if let Some(net) = project.networks.iter().find(|p| p.name.eq_ignore_ascii_case(pou)) {
+        return match net.to_st() {
+            Ok(text) => {
+                print!("{}", text.st);
+                ExitCode::SUCCESS
+            }
+            Err(e) => {
+                eprintln!("plc: network POU `{}` cannot run: {e}", net.name);
+                ExitCode::FAILURE
+            }
+        };
+    }
+    let names: Vec<&str> = project
+        .ladder
+        .iter()
+        .map(|p| p.name.as_str())
+        .chain(project.networks.iter().map(|p| p.name.as_str()))
+        .collect();
+    eprintln!(
+        "plc: no ladder or network POU `{pou}` in {} (they are: {})",
+        path.display(),
+        names.join(", ")
+    );
+    ExitCode::FAILURE
 }
 
 fn bench(json: bool, quick: bool, only: &[String]) -> ExitCode {

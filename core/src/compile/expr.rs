@@ -408,6 +408,17 @@ impl Emitter<'_> {
                 self.emit(Op::Select { dst, g, a: block });
                 Ok(dst)
             }
+            Builtin::Enabled => {
+                // The default first; the call only when EN is TRUE (it may fault).
+                let t = self.alloc(1)?;
+                self.expr_to(arg(1)?, t)?;
+                let en = self.expr(arg(0)?, None)?;
+                let j = self.emit(Op::JumpIfNot { c: en, target: 0 });
+                self.expr_to(arg(2)?, t)?;
+                let end = self.pc();
+                self.patch(j, end);
+                self.finish(t, hint)
+            }
             Builtin::Max | Builtin::Min | Builtin::Limit => {
                 let elem = self.elem_of(ty)?;
                 let n = u8::try_from(args.len()).map_err(|_| bad("argument count"))?;

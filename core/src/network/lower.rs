@@ -270,10 +270,12 @@ impl<'a> Lower<'a> {
                     }
                     path.push(i);
                     let mut args = Vec::new();
+                    let mut pins = Vec::new();
                     for (pin, conns) in b.inputs.iter().chain(&b.in_outs) {
                         if pin.eq_ignore_ascii_case("EN") {
                             continue;
                         }
+                        pins.push(pin.as_str());
                         let negated = match modifier(b, pin) {
                             None => false,
                             Some(PinModifier::Negated) => true,
@@ -307,8 +309,19 @@ impl<'a> Lower<'a> {
                             args[at] = format!("NOT ({})", args[at]);
                         }
                     }
+                    // A wired EN: the function runs only when it is TRUE and gives its
+                    // type's initial value otherwise (as matiec runs OpenPLC's networks).
+                    let enable = self.enable_in(b, path);
                     path.pop();
-                    let text = format!("{}({})", b.type_name, args.join(", "));
+                    let text = match enable? {
+                        Some(en) => {
+                            let formal = pins.iter().zip(&args).map(|(p, a)| format!("{p} := {a}"));
+                            let list: Vec<String> =
+                                std::iter::once(format!("EN := {en}")).chain(formal).collect();
+                            format!("{}({})", b.type_name, list.join(", "))
+                        }
+                        None => format!("{}({})", b.type_name, args.join(", ")),
+                    };
                     if text.len() > crate::limits::MAX_PROJECT_BYTES {
                         return Err(self.err(i, "this network is too large when written as ST (a function's output feeds too many others)".into()));
                     }

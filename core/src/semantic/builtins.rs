@@ -333,7 +333,7 @@ impl<'a> Checker<'a> {
             for next in &a[1..] {
                 acc = Self::binary_ast(op, &acc, next, span);
             }
-            let t = c.expr(&acc, None)?;
+            let t = c.expr(&acc, hint)?;
             Some(c.adapt(t, hint).e)
         };
         let simple = match key.as_str() {
@@ -423,14 +423,16 @@ impl<'a> Checker<'a> {
             }
             "SEL" => {
                 let g = self.want(a[0], Type::BOOL)?;
-                let x = self.expr(a[1], None)?;
+                // The expected type reaches the inputs: a nested generic call of literals
+                // (`SEL(g, SEL(h, 50, 100), 0)` for an INT) takes it too.
+                let x = self.expr(a[1], hint)?;
                 let y = self.expr(a[2], Some(x.e.ty))?;
                 let (ty, mut rest) = self.unify(vec![x, y], span, "SEL", expected)?;
                 rest.insert(0, g);
                 return Some(self.builtin_expr(Builtin::Sel, rest, ty, span));
             }
             "MAX" | "MIN" | "LIMIT" => {
-                let items = a.iter().map(|e| self.expr(e, None)).collect::<Option<Vec<_>>>()?;
+                let items = a.iter().map(|e| self.expr(e, hint)).collect::<Option<Vec<_>>>()?;
                 let (ty, args) = self.unify(items, span, &key, expected)?;
                 let f = match key.as_str() {
                     "MAX" => Builtin::Max,
@@ -442,7 +444,7 @@ impl<'a> Checker<'a> {
             "MUX" => {
                 let k = self.want_int(a[0])?;
                 let items =
-                    a[1..].iter().map(|e| self.expr(e, None)).collect::<Option<Vec<_>>>()?;
+                    a[1..].iter().map(|e| self.expr(e, hint)).collect::<Option<Vec<_>>>()?;
                 let (ty, mut args) = self.unify(items, span, "MUX", expected)?;
                 args.insert(0, k);
                 return Some(self.builtin_expr(Builtin::Mux, args, ty, span));

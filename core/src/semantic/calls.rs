@@ -82,6 +82,12 @@ impl<'a> Checker<'a> {
         span: Span,
         expected: Option<Type>,
     ) -> Option<Expr> {
+        let en = args.iter().position(
+            |a| matches!(a, ast::Arg::Input { name, .. } if name.name.eq_ignore_ascii_case("EN")),
+        );
+        if let Some(k) = en {
+            return self.enabled_call(callee, args, k, span, expected);
+        }
         match self.callee(callee, true)? {
             Callee::Instance(..) => None,
             Callee::Builtin => {
@@ -104,6 +110,40 @@ impl<'a> Checker<'a> {
                 Some(Expr { kind: ExprKind::Call { pou, args }, ty, span })
             }
         }
+    }
+
+    /// A function called with `EN := en` (argument `k`): the call when `en` is TRUE, else
+    /// the default value of its result type, the call not made (IEC 61131-3 execution
+    /// control; matiec returns the type's initial value, so an OpenPLC network's function
+    /// with its EN off gives 0 to the block it feeds).
+    #[inline(never)]
+    fn enabled_call(
+        &mut self,
+        callee: &ast::Expr,
+        args: &[ast::Arg],
+        k: usize,
+        span: Span,
+        expected: Option<Type>,
+    ) -> Option<Expr> {
+        let ast::Arg::Input { value: en, .. } = &args[k] else { return None };
+        let en = self.condition(en, "EN")?;
+        let mut rest = args.to_vec();
+        rest.remove(k);
+        let call = self.call_expr(callee, &rest, span, expected)?;
+        let ty = call.ty;
+        if !matches!(ty, Type::Elem(_)) {
+            let msg = format!(
+                "EN on a function whose result is {}: only functions with an elementary result \
+                 take EN in an expression",
+                self.tname(ty)
+            );
+            self.error(Code::TypeMismatch, span, msg);
+            return None;
+        }
+        let default = Expr { kind: ExprKind::Const(0), ty, span };
+        let kind =
+            ExprKind::Builtin { func: super::ir::Builtin::Enabled, args: vec![en, default, call] };
+        Some(Expr { kind, ty, span })
     }
 
     /// A call used as a statement.

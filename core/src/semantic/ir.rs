@@ -284,6 +284,10 @@ pub enum Builtin {
     BcdToInt,
     /// *_TO_BCD : encode packed BCD.
     IntToBcd,
+    /// A function called with `EN` (en, default, call): the call when `en` is TRUE, else
+    /// the default value of its type without evaluating the call (IEC execution control;
+    /// matiec gives the type's initial value).
+    Enabled,
 }
 
 /// One CASE branch: inclusive ranges of selector values, and its body.
