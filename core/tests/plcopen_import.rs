@@ -184,6 +184,10 @@ fn assert_networks_round_trip(p: &Project) {
         for e in nets.iter_mut().flat_map(|n| n.elements.iter_mut()) {
             e.at = (0, 0);
         }
+        for b in nets.iter_mut().flat_map(|n| n.actions.iter_mut().chain(n.transitions.iter_mut()))
+        {
+            b.at = (0, 0);
+        }
         nets
     };
     let xml = export(p);
@@ -249,6 +253,13 @@ fn sfc_traffic_light_runs_its_cycle_with_fbd_conditions() {
     assert!(i.warnings.is_empty(), "{:?}", i.warnings);
     let p = i.project;
     assert_eq!(p.settings.cycle_ms, 20);
+    // The chart is kept as drawn (steps, transitions, action blocks at the file's
+    // positions) and written back as SFC.
+    assert_eq!(p.networks.len(), 1);
+    assert_eq!(p.networks[0].language, plc_core::network::NetworkLanguage::Sfc);
+    let step0 = p.networks[0].elements.iter().find(|e| e.id == "1").unwrap();
+    assert_eq!((step0.x, step0.y), (440.0, 190.0));
+    assert_networks_round_trip(&p);
     let mut s = project_simulator(&p, None).unwrap_or_else(|e| panic!("{e:?}"));
     s.set_cycle_ns(20_000_000);
     const RED: [bool; 3] = [true, false, false];
@@ -1191,6 +1202,7 @@ fn an_sfc_with_ld_and_st_conditions_runs() {
     assert!(i.skipped.is_empty(), "{:?}", i.skipped);
     assert_eq!(i.warnings.len(), 1, "{:?}", i.warnings);
     assert!(i.warnings[0].message.contains("transition localId 15 is not connected"));
+    assert_networks_round_trip(&i.project);
     let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
     let read = ["Idle.X", "Run.X", "Fault.X", "Motor", "Lamp"];
     let (t, f) = (true, false);
@@ -1431,4 +1443,36 @@ fn functions_with_their_en_off_feed_zero_to_the_next_block() {
         let got = plc_core::export::value_text(&s.read("S").unwrap());
         assert_eq!(got, speed.to_string(), "A={a} B={b}");
     }
+}
+
+/// LD programs that do not fit the grid stay in the file's order, so the first PROGRAM of
+/// the file is still the first after a round trip (corpus file 086 ran another program
+/// once exported and imported again).
+#[test]
+fn off_grid_programs_keep_the_file_order() {
+    use off_grid::*;
+    let body = |v: &str| {
+        format!(
+            r#"<inVariable localId="1"><position x="0" y="0"/><connectionPointOut/><expression>{v}</expression></inVariable>{}"#,
+            coil(2, 60, 0, "Y", "", &[(1, "")])
+        )
+    };
+    let vars = [var("A", "BOOL"), var("B", "BOOL"), var("C", "BOOL"), var("Y", "BOOL")].concat();
+    let pou = |name: &str, v: &str| {
+        format!(
+            r#"<pou name="{name}" pouType="program"><interface><localVars>{vars}</localVars></interface><body><LD>{}</LD></body></pou>
+    "#,
+            body(v)
+        )
+    };
+    let text = doc(&body("A"), &vars).replace(
+        "<pou name=\"Main\"",
+        &format!("{}{}<pou name=\"Main\"", pou("First", "B"), pou("Second", "C")),
+    );
+    let i = import(&text).unwrap_or_else(|e| panic!("{e}"));
+    let names: Vec<&str> = i.project.networks.iter().map(|n| n.name.as_str()).collect();
+    assert_eq!(names, ["First", "Second", "Main"]);
+    let back = import(&export(&i.project)).unwrap();
+    let again: Vec<&str> = back.project.networks.iter().map(|n| n.name.as_str()).collect();
+    assert_eq!(again, names);
 }

@@ -19,10 +19,12 @@
 //!   same body, a `formalParameter` on a connection from a block naming one of its outputs,
 //!   every `pouInstance` naming a POU of the file.
 //!
+//! SFC bodies too: steps, transitions and their conditions, divergences and convergences,
+//! jumps, action blocks and their actions, and the POU's named actions and transitions.
+//!
 //! Not checked: the text inside `xhtml:p` and `expression`/`variable` (ST syntax is the
 //! importer's business), `addData` and `documentation` contents, element kinds the exporter
-//! never writes (SFC, IL, actions, transitions, access paths), and the `xsd:ID` /
-//! `globalId` machinery.
+//! never writes (IL, macro steps, access paths), and the `xsd:ID` / `globalId` machinery.
 
 use std::collections::{HashMap, HashSet};
 
@@ -252,7 +254,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 MANY,
             )],
         ),
-        ("LD" | "FBD", "inOutVariable") => r(
+        ("LD" | "FBD" | "SFC", "inOutVariable") => r(
             &["localId"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -261,23 +263,23 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 Seq(("expression", 1, ONE)),
             ]),
         ),
-        ("LD" | "FBD", "connector") => r(
+        ("LD" | "FBD" | "SFC", "connector") => r(
             &["localId", "name"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, ONE))]),
         ),
-        ("LD" | "FBD", "continuation") => r(
+        ("LD" | "FBD" | "SFC", "continuation") => r(
             &["localId", "name"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointOut", 0, ONE))]),
         ),
-        ("LD", "leftPowerRail") => r(
+        ("LD" | "SFC", "leftPowerRail") => r(
             &["localId"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointOut", 0, MANY))]),
         ),
-        ("LD", "rightPowerRail") => r(
+        ("LD" | "SFC", "rightPowerRail") => r(
             &["localId"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, MANY))]),
         ),
-        ("LD", "contact" | "coil") => r(
+        ("LD" | "SFC", "contact" | "coil") => r(
             &["localId"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -286,7 +288,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 Seq(("variable", 1, ONE)),
             ]),
         ),
-        ("LD" | "FBD", "block") => r(
+        ("LD" | "FBD" | "SFC", "block") => r(
             &["localId", "typeName"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -314,7 +316,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
             &["formalParameter"],
             vec![Seq(("connectionPointOut", 0, ONE)), Seq(("documentation", 0, ONE))],
         ),
-        ("LD" | "FBD", "inVariable") => r(
+        ("LD" | "FBD" | "SFC", "inVariable") => r(
             &["localId"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -322,7 +324,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 Seq(("expression", 1, ONE)),
             ]),
         ),
-        ("LD" | "FBD", "outVariable") => r(
+        ("LD" | "FBD" | "SFC", "outVariable") => r(
             &["localId"],
             with_tail(vec![
                 Seq(("position", 1, ONE)),
@@ -330,21 +332,127 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
                 Seq(("expression", 1, ONE)),
             ]),
         ),
-        ("LD" | "FBD", "label") => {
+        ("LD" | "FBD" | "SFC", "label") => {
             r(&["localId", "label"], with_tail(vec![Seq(("position", 1, ONE))]))
         }
-        ("LD" | "FBD", "jump") => r(
+        ("LD" | "FBD" | "SFC", "jump") => r(
             &["localId", "label"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, ONE))]),
         ),
-        ("LD" | "FBD", "return") => r(
+        ("LD" | "FBD" | "SFC", "return") => r(
             &["localId"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, ONE))]),
         ),
-        ("LD" | "FBD", "comment") => r(
+        ("LD" | "FBD" | "SFC", "comment") => r(
             &["localId", "height", "width"],
             with_tail(vec![Seq(("position", 1, ONE)), Seq(("content", 1, ONE))]),
         ),
+        ("body" | "inline", "SFC") => r(
+            &[],
+            vec![Choice(
+                &[
+                    "comment",
+                    "error",
+                    "connector",
+                    "continuation",
+                    "actionBlock",
+                    "vendorElement",
+                    "block",
+                    "inVariable",
+                    "outVariable",
+                    "inOutVariable",
+                    "label",
+                    "jump",
+                    "return",
+                    "leftPowerRail",
+                    "rightPowerRail",
+                    "coil",
+                    "contact",
+                    "step",
+                    "macroStep",
+                    "jumpStep",
+                    "transition",
+                    "selectionDivergence",
+                    "selectionConvergence",
+                    "simultaneousDivergence",
+                    "simultaneousConvergence",
+                ],
+                0,
+                MANY,
+            )],
+        ),
+        ("SFC", "step") => r(
+            &["localId", "name"],
+            with_tail(vec![
+                Seq(("position", 1, ONE)),
+                Seq(("connectionPointIn", 0, ONE)),
+                Seq(("connectionPointOut", 0, ONE)),
+                Seq(("connectionPointOutAction", 0, ONE)),
+            ]),
+        ),
+        (_, "connectionPointOutAction") => r(&[], vec![Seq(("relPosition", 0, ONE))]),
+        ("SFC", "transition") => r(
+            &["localId"],
+            with_tail(vec![
+                Seq(("position", 1, ONE)),
+                Seq(("connectionPointIn", 0, ONE)),
+                Seq(("connectionPointOut", 0, ONE)),
+                Seq(("condition", 0, ONE)),
+            ]),
+        ),
+        ("transition", "condition") => {
+            r(&[], with_tail(vec![Choice(&["reference", "connectionPointIn", "inline"], 1, ONE)]))
+        }
+        ("condition" | "action", "reference") => r(&["name"], vec![]),
+        ("condition", "inline") => {
+            r(&["name"], with_tail(vec![Choice(&["IL", "ST", "FBD", "LD", "SFC"], 1, ONE)]))
+        }
+        ("action", "inline") => {
+            r(&[], with_tail(vec![Choice(&["IL", "ST", "FBD", "LD", "SFC"], 1, ONE)]))
+        }
+        ("inline", "ST") => r(&[], vec![Seq(("p", 1, ONE))]),
+        ("SFC", "selectionDivergence" | "simultaneousDivergence") => r(
+            &["localId"],
+            with_tail(vec![
+                Seq(("position", 1, ONE)),
+                Seq(("connectionPointIn", 1, ONE)),
+                Seq(("connectionPointOut", 0, MANY)),
+            ]),
+        ),
+        ("SFC", "selectionConvergence" | "simultaneousConvergence") => r(
+            &["localId"],
+            with_tail(vec![
+                Seq(("position", 1, ONE)),
+                Seq(("connectionPointIn", 0, MANY)),
+                Seq(("connectionPointOut", 1, ONE)),
+            ]),
+        ),
+        ("SFC", "jumpStep") => r(
+            &["localId", "targetName"],
+            with_tail(vec![Seq(("position", 1, ONE)), Seq(("connectionPointIn", 0, ONE))]),
+        ),
+        ("LD" | "FBD" | "SFC", "actionBlock") => r(
+            &["localId"],
+            with_tail(vec![
+                Seq(("position", 1, ONE)),
+                Seq(("connectionPointIn", 0, ONE)),
+                Seq(("action", 0, MANY)),
+            ]),
+        ),
+        ("actionBlock", "action") => r(
+            &["localId"],
+            vec![
+                Seq(("relPosition", 0, ONE)),
+                Choice(&["reference", "inline"], 1, ONE),
+                Seq(("connectionPointOut", 0, ONE)),
+                Seq(("documentation", 0, ONE)),
+            ],
+        ),
+        ("pou", "actions") => r(&[], vec![Seq(("action", 0, MANY))]),
+        ("pou", "transitions") => r(&[], vec![Seq(("transition", 0, MANY))]),
+        ("actions", "action") | ("transitions", "transition") => {
+            r(&["name"], with_tail(vec![Seq(("body", 1, ONE))]))
+        }
         (_, "position" | "relPosition") => r(&["x", "y"], vec![]),
         (_, "connectionPointIn") => r(
             &[],
@@ -502,7 +610,8 @@ fn problems(xml: &str) -> Vec<String> {
     let names: HashSet<&str> = pous.iter().filter_map(|p| p.attr("name")).collect();
     for p in &pous {
         for b in p.children.iter().filter(|c| c.name == "body") {
-            for ld in b.children.iter().filter(|c| c.name == "LD" || c.name == "FBD") {
+            for ld in b.children.iter().filter(|c| ["LD", "FBD", "SFC"].contains(&c.name.as_str()))
+            {
                 check_body(ld, p.attr("name").unwrap_or("?"), &mut out);
             }
         }

@@ -157,3 +157,67 @@ test('a rail-less LD network and an FBD network run with live values at the file
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+// SFC as OpenPLC Editor draws it: Idle (initial) → [Start] → Run (action N Motor) →
+// [NOT Start] → jump to Idle.
+const SFC = project('Chart', 'Machine',
+  `<inputVars>${v('Start', 'BOOL')}</inputVars><outputVars>${v('Motor', 'BOOL')}</outputVars>`,
+  `<SFC>
+    <step localId="1" name="Idle" initialStep="true" height="30" width="60"><position x="100" y="40"/><connectionPointOut formalParameter=""><relPosition x="30" y="30"/></connectionPointOut></step>
+    <transition localId="2" height="10" width="20"><position x="120" y="100"/><connectionPointIn><relPosition x="10" y="0"/><connection refLocalId="1"><position x="130" y="100"/><position x="130" y="70"/></connection></connectionPointIn><connectionPointOut><relPosition x="10" y="10"/></connectionPointOut><condition><inline name=""><ST><xhtml:p><![CDATA[Start]]></xhtml:p></ST></inline></condition></transition>
+    <step localId="3" name="Run" initialStep="false" height="30" width="60"><position x="100" y="140"/><connectionPointIn><relPosition x="30" y="0"/><connection refLocalId="2"><position x="130" y="140"/><position x="130" y="110"/></connection></connectionPointIn><connectionPointOut formalParameter=""><relPosition x="30" y="30"/></connectionPointOut><connectionPointOutAction formalParameter=""><relPosition x="60" y="15"/></connectionPointOutAction></step>
+    <actionBlock localId="4" height="30" width="100"><position x="200" y="140"/><connectionPointIn><relPosition x="0" y="15"/><connection refLocalId="3"><position x="200" y="155"/><position x="160" y="155"/></connection></connectionPointIn><action localId="0" qualifier="N"><relPosition x="0" y="0"/><reference name="Motor"/></action></actionBlock>
+    <transition localId="5" height="10" width="20"><position x="120" y="200"/><connectionPointIn><relPosition x="10" y="0"/><connection refLocalId="3"><position x="130" y="200"/><position x="130" y="170"/></connection></connectionPointIn><connectionPointOut><relPosition x="10" y="10"/></connectionPointOut><condition><inline name=""><ST><xhtml:p><![CDATA[NOT Start]]></xhtml:p></ST></inline></condition></transition>
+    <jumpStep localId="6" targetName="Idle" height="20" width="20"><position x="120" y="240"/><connectionPointIn><relPosition x="10" y="0"/><connection refLocalId="5"><position x="130" y="240"/><position x="130" y="210"/></connection></connectionPointIn></jumpStep>
+  </SFC>`);
+
+test('an SFC chart is drawn at the file positions with its active step lit', async () => {
+  const { context, page, errors } = await openApp();
+  await importXml(page, 'chart.xml', SFC);
+  const chart = page.getByRole('region', { name: 'SFC network Machine' });
+  await chart.waitFor();
+  await page.getByRole('button', { name: 'SFC network Machine' }).waitFor();
+  assert.deepEqual(await drawnAt(chart, '1'), [100, 40], 'step Idle at the file position');
+  assert.deepEqual(await drawnAt(chart, '3'), [100, 140], 'step Run');
+  assert.deepEqual(await drawnAt(chart, '4'), [200, 140], 'its action block');
+  await chart.getByRole('img', { name: 'Transition Start' }).waitFor();
+  await chart.getByRole('img', { name: 'Actions N Motor' }).waitFor();
+  await chart.getByRole('img', { name: 'Jump to step Idle' }).waitFor();
+  const step = page.getByRole('button', { name: 'Step', exact: true });
+  await step.click();
+  await chart.getByRole('img', { name: 'Initial step Idle, active' }).waitFor();
+  await chart.getByRole('img', { name: 'Step Run', exact: true }).waitFor();
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
+  await step.click();
+  await chart.getByRole('img', { name: 'Step Run, active' }).waitFor();
+  await chart.getByRole('img', { name: 'Initial step Idle', exact: true }).waitFor();
+  assert.equal(await chart.locator('.nw-step.active').count(), 1);
+  // The wire out of the active step shows its activity.
+  assert.equal(await chart.locator('.nw-wire.powered[d="M130 200 L130 170"]').count(), 1);
+  await page.screenshot({ path: path.join(shots, 'network-sfc.png'), fullPage: true });
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).uncheck();
+  await step.click();
+  await step.click();
+  await chart.getByRole('img', { name: 'Initial step Idle, active' }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+test('a problem in a network is marked on its element and its entry reveals it', async () => {
+  const { context, page, errors } = await openApp();
+  // The output variable writes Lamp9, which the program does not declare.
+  // Nothing runs, so the app opens on the ST source; the problem names the element.
+  await importXml(page, 'broken.xml', FBD.replace('<expression>Done</expression>', '<expression>Lamp9</expression>'));
+  const problem = page.getByRole('button', { name: /^Calc, element localId 8 +E0100 +`Lamp9` is not declared/ });
+  await problem.waitFor();
+  await page.getByRole('button', { name: /FBD network Calc/ }).getByText('1').waitFor();
+  await problem.click();
+  const fbd = page.getByRole('region', { name: 'FBD network Calc' });
+  await fbd.waitFor();
+  await fbd.getByRole('status').filter({ hasText: 'Element localId 8 is marked in red.' }).waitFor();
+  assert.equal(await fbd.locator('.nw-el.faulty[data-local-id="8"]').count(), 1);
+  assert.equal(await fbd.locator('.nw-el.faulty').count(), 1);
+  await fbd.getByRole('img', { name: 'Variable Lamp9' }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});

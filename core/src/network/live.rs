@@ -3,7 +3,7 @@
 //! detectors of edge contacts) and carried through contacts and coils by power flow. A
 //! function's output has no variable of its own (it is written inline): the view works out
 //! the BOOL ones (AND, OR, XOR, NOT, MOVE) from their inputs and `ENO` from `EN`; the
-//! others have no value here.
+//! others have no value here. An SFC step's outputs carry whether it is active.
 
 use std::collections::{HashMap, HashSet};
 
@@ -136,6 +136,8 @@ impl<'a> Eval<'a> {
                     _ => self.joined_refs(&wires).map(Value::Bool),
                 }
             }
+            // A step is lit while it is active (its flag `Name.X`).
+            NetKind::Step { name, .. } => read(&format!("{}.X", name.trim())),
             _ => None,
         }
     }
@@ -257,6 +259,8 @@ mod tests {
                 el("4", NetKind::Coil { operand: "Y".into(), coil: CoilKind::Normal }, &["2", "3"]),
                 el("5", contact("C", ContactKind::NormallyOpen), &["4"]),
             ],
+            actions: Vec::new(),
+            transitions: Vec::new(),
         };
         let read = |a: bool, b: bool, c: bool| {
             move |name: &str| match name {

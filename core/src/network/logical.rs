@@ -131,6 +131,15 @@ pub fn logical(elements: &[NetElement]) -> Result<Vec<El>, NetError> {
                 continuations.insert(n.id.clone(), (name.to_ascii_uppercase(), name.clone()));
                 continue;
             }
+            // The chart of an SFC body is read by `chart`; its network is what is left.
+            NetKind::Step { .. }
+            | NetKind::Transition { .. }
+            | NetKind::SelectionDivergence
+            | NetKind::SelectionConvergence
+            | NetKind::SimultaneousDivergence
+            | NetKind::SimultaneousConvergence
+            | NetKind::JumpStep { .. }
+            | NetKind::ActionBlock { .. } => continue,
         };
         let conns = if matches!(kind, Kind::Block(_)) { Vec::new() } else { all_in };
         els.push(El { id: n.id.clone(), at: n.at, x: n.x, order: n.order, y: n.y, kind, conns });

@@ -1,11 +1,13 @@
-//! Networks: LD and FBD bodies as PLCopen holds them (ARCHITECTURE "Two ladder models") —
+//! Networks: LD, FBD and SFC bodies as PLCopen holds them (ARCHITECTURE "Two ladder models") —
 //! elements at free positions wired by `localId` ([`model`]), their logical view with
 //! connectors resolved ([`logical`]), and their lowering to ST statements by power flow and
-//! execution order ([`lower`]). Files from OpenPLC Editor and Beremiz hold their LD and FBD
+//! execution order ([`lower`]); an SFC body's chart becomes textual SFC ([`chart`]).
+//! Files from OpenPLC Editor and Beremiz hold their LD and FBD
 //! this way; an LD network that fits the rung grid becomes rungs
 //! ([`LadderPou`](crate::ladder::LadderPou)), any other stays a network and runs through
 //! this lowering.
 
+pub mod chart;
 pub mod live;
 pub mod logical;
 pub mod lower;
@@ -15,7 +17,8 @@ pub mod source;
 pub use logical::logical;
 pub use lower::lower;
 pub use model::{
-    NetElement, NetKind, NetworkLanguage, NetworkPou, NetworkPouKind, Pin, PinModifier, Wire,
+    NamedBody, NetElement, NetKind, NetworkLanguage, NetworkPou, NetworkPouKind, Pin, PinModifier,
+    SfcAction, SfcActionBody, SfcCondition, Wire,
 };
 pub use source::{declares, NetworkText};
 

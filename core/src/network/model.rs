@@ -21,6 +21,25 @@ pub struct NetworkPou {
     pub declarations: String,
     /// The elements in the file's order.
     pub elements: Vec<NetElement>,
+    /// An SFC POU's named actions (`<actions>`), their bodies in ST.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub actions: Vec<NamedBody>,
+    /// An SFC POU's named transitions (`<transitions>`), their bodies in ST.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub transitions: Vec<NamedBody>,
+}
+
+/// A named action or transition of an SFC POU, with its ST body.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct NamedBody {
+    /// Its name.
+    pub name: String,
+    /// Its body in ST (statements; for a transition, an expression or statements that
+    /// assign the transition's name).
+    pub st: String,
+    /// 1-based line and column of its element in the file (not kept in the project file).
+    #[serde(skip)]
+    pub at: (u32, u32),
 }
 
 /// What a network POU is.
@@ -55,6 +74,21 @@ pub enum NetworkLanguage {
     /// Function block diagram: values flow along wires.
     #[serde(rename = "FBD")]
     Fbd,
+    /// Sequential function chart: steps and transitions, their conditions in ST or wired
+    /// from the chart's own LD/FBD elements.
+    #[serde(rename = "SFC")]
+    Sfc,
+}
+
+impl NetworkLanguage {
+    /// The language's short name, as PLCopen tags its body (`LD`, `FBD`, `SFC`).
+    pub fn name(self) -> &'static str {
+        match self {
+            NetworkLanguage::Ld => "LD",
+            NetworkLanguage::Fbd => "FBD",
+            NetworkLanguage::Sfc => "SFC",
+        }
+    }
 }
 
 /// One element of a network.
@@ -165,6 +199,111 @@ pub enum NetKind {
         /// Its name.
         name: String,
     },
+    /// An SFC step: its input (`""`) from the transitions before it, its output (`""`) to
+    /// the transitions after it, and its `action` output to its action blocks.
+    Step {
+        /// Its name.
+        name: String,
+        /// The step the chart starts in.
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        initial: bool,
+    },
+    /// An SFC transition: its input (`""`) from the steps before it, and, for a wired
+    /// condition, a `condition` input.
+    Transition {
+        /// When it may fire.
+        condition: SfcCondition,
+        /// Its condition is negated.
+        #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+        negated: bool,
+        /// Its priority among the transitions leaving the same step (lower first).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        priority: Option<u32>,
+    },
+    /// One step to one of several branches (the first transition true wins).
+    SelectionDivergence,
+    /// Several branches back to one.
+    SelectionConvergence,
+    /// One transition to several branches run at once.
+    SimultaneousDivergence,
+    /// Several branches run at once, all finished, to one transition.
+    SimultaneousConvergence,
+    /// A jump to a step of the chart.
+    JumpStep {
+        /// The step.
+        target: String,
+    },
+    /// The actions of a step, wired to its `action` output.
+    ActionBlock {
+        /// Its rows.
+        actions: Vec<SfcAction>,
+    },
+}
+
+/// The condition of an SFC transition.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SfcCondition {
+    /// An ST expression written on the transition.
+    Inline {
+        /// The expression.
+        st: String,
+    },
+    /// A named transition of the POU ([`NetworkPou::transitions`]).
+    Reference {
+        /// Its name.
+        name: String,
+    },
+    /// The value wired to the transition's `condition` input.
+    Wired,
+}
+
+/// One row of an action block: an action with its qualifier.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SfcAction {
+    /// `N`, `S`, `R`, `L`, `D`, `P`, `P1`, `P0`, `SD`, `DS`, `SL`.
+    pub qualifier: String,
+    /// The time of `L`, `D`, `SD`, `DS`, `SL` (`T#2s`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub duration: Option<String>,
+    /// The indicator variable.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub indicator: Option<String>,
+    /// The action: a named action of the POU, a BOOL variable, or an inline body.
+    pub action: SfcActionBody,
+}
+
+/// What an action block row runs.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SfcActionBody {
+    /// An action of the POU or a BOOL variable, by name.
+    Reference {
+        /// The name.
+        name: String,
+    },
+    /// Statements written in the block.
+    Inline {
+        /// The statements in ST.
+        st: String,
+    },
+}
+
+impl NetKind {
+    /// Whether the element belongs to an SFC chart (not to the LD/FBD network beside it).
+    pub fn is_chart(&self) -> bool {
+        matches!(
+            self,
+            NetKind::Step { .. }
+                | NetKind::Transition { .. }
+                | NetKind::SelectionDivergence
+                | NetKind::SelectionConvergence
+                | NetKind::SimultaneousDivergence
+                | NetKind::SimultaneousConvergence
+                | NetKind::JumpStep { .. }
+                | NetKind::ActionBlock { .. }
+        )
+    }
 }
 
 /// A connection point of an element.

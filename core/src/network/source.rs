@@ -1,10 +1,10 @@
 //! A network POU as ST text for the checker: its header, declarations (with the function
-//! block instances its blocks use and the declarations lack), the lowered statements and
-//! its END keyword, with the element each line was written from.
+//! block instances its blocks use and the declarations lack), the lowered statements (an
+//! SFC's textual chart) and its END keyword, with the element each line was written from.
 
 use std::ops::Range;
 
-use super::model::{NetworkPou, NetworkPouKind};
+use super::model::{NetworkLanguage, NetworkPou, NetworkPouKind};
 use super::NetError;
 
 /// A network POU written as ST.
@@ -34,8 +34,19 @@ impl NetworkPou {
 
     /// The POU as ST text (see the module comment).
     pub fn to_st(&self) -> Result<NetworkText, NetError> {
-        let els = super::logical(&self.elements)?;
-        let lowered = super::lower(&els, &self.name)?;
+        let (body, instances) = match self.language {
+            NetworkLanguage::Sfc => {
+                let chart = super::chart::chart_text(self)?;
+                (chart.lines, chart.instances)
+            }
+            NetworkLanguage::Ld | NetworkLanguage::Fbd => {
+                let els = super::logical(&self.elements)?;
+                let lowered = super::lower(&els, &self.name)?;
+                let id = |i: usize| els.get(i).map(|e| e.id.clone());
+                let body = lowered.statements.into_iter().map(|(s, i)| (s, id(i))).collect();
+                (body, lowered.instances)
+            }
+        };
         let mut st = String::new();
         let mut lines: Vec<Option<String>> = Vec::new();
         let mut push = |st: &mut String, text: &str, element: Option<&str>| {
@@ -49,7 +60,7 @@ impl NetworkPou {
         let first_declaration = st.lines().count() as u32 + 1;
         push(&mut st, &self.declarations, None);
         let mut missing: Vec<&(String, String)> = Vec::new();
-        for inst in &lowered.instances {
+        for inst in &instances {
             if !declares(&self.declarations, &inst.0)
                 && !missing.iter().any(|m| m.0.eq_ignore_ascii_case(&inst.0))
             {
@@ -64,8 +75,8 @@ impl NetworkPou {
             push(&mut st, "END_VAR", None);
         }
         let declaration_lines = first_declaration..st.lines().count() as u32 + 1;
-        for (statement, i) in &lowered.statements {
-            push(&mut st, statement, els.get(*i).map(|e| e.id.as_str()));
+        for (text, element) in &body {
+            push(&mut st, text, element.as_deref());
         }
         push(&mut st, &format!("END_{}", self.kind.keyword()), None);
         st.push('\n');

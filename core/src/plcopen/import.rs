@@ -166,7 +166,14 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             let mut declarations = SourceOut::default();
             declarations.push(&lp.declarations, None);
             let name = lp.name.clone();
-            match keep_network(&name, kind, None, NetworkLanguage::Ld, declarations, body) {
+            match keep_network(
+                &name,
+                kind,
+                None,
+                NetworkLanguage::Ld,
+                declarations,
+                (body, pou_node),
+            ) {
                 Ok((net, _, left_out)) => {
                     warnings.extend(left_out);
                     warnings.push(ImportNote::on(body, format!(
@@ -205,8 +212,11 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             )));
         }
     }
-    for (k, net) in off_grid.into_iter().rev() {
-        project.ladder.remove(k);
+    // Removed from the back (indices stay valid), added in the file's order.
+    for (k, _) in off_grid.iter().rev() {
+        project.ladder.remove(*k);
+    }
+    for (_, net) in off_grid {
         places.extend(network_places(&net));
         project.networks.push(net);
     }
@@ -243,9 +253,17 @@ fn keep_network(
     return_type: Option<String>,
     language: NetworkLanguage,
     declarations: SourceOut,
-    body: &Node,
+    (body, pou): (&Node, &Node),
 ) -> Result<KeptNetwork, ImportError> {
-    let (elements, left_out) = super::ld_import::read::read_network(body, name)?;
+    let (elements, mut left_out) = super::ld_import::read::read_network(body, name)?;
+    let err = |message: String| ImportError::Pou { pou: name.to_string(), message };
+    let (mut actions, mut transitions) = (Vec::new(), Vec::new());
+    if language == NetworkLanguage::Sfc {
+        actions =
+            super::sfc_read::named_bodies(pou, "actions", name, &mut left_out).map_err(err)?;
+        transitions =
+            super::sfc_read::named_bodies(pou, "transitions", name, &mut left_out).map_err(err)?;
+    }
     let net = NetworkPou {
         name: name.to_string(),
         kind,
@@ -253,9 +271,24 @@ fn keep_network(
         language,
         declarations: declarations.text,
         elements,
+        actions,
+        transitions,
     };
-    net.to_st().map_err(|e| super::fbd_import::element_error(name, e))?;
+    net.to_st().map_err(|e| element_error(name, e))?;
+    if language == NetworkLanguage::Sfc {
+        // What the chart leaves out (a transition wired to no step), at its element.
+        let chart = crate::network::chart::chart_text(&net).map_err(|e| element_error(name, e))?;
+        for (id, message) in chart.notes {
+            let at = net.elements.iter().find(|e| e.id == id).map_or((0, 0), |e| e.at);
+            left_out.push(ImportNote::at(at.0, at.1, message));
+        }
+    }
     Ok((net, declarations.lines, left_out))
+}
+
+/// A network error as an import error of POU `pou`.
+fn element_error(pou: &str, e: crate::network::NetError) -> ImportError {
+    ImportError::Element { pou: pou.to_string(), local_id: e.element, message: e.message }
 }
 
 /// Adds a network POU to the project being imported.
@@ -364,28 +397,17 @@ fn import_pou<'a>(
             let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
             push_pou(source, (&header, pou), declarations, st_body(lang), end);
         }
-        "SFC" => match super::sfc_import::import_sfc(lang, pou, &name) {
-            Ok(sfc) => {
-                let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
-                let declarations = with_instances(declarations, &sfc.instances, lang);
-                let mut body = SourceOut::default();
-                for (line, at) in &sfc.lines {
-                    body.push(line, Some(*at));
-                }
-                push_pou(source, (&header, pou), declarations, body, end);
-                warnings.extend(sfc.notes);
-            }
-            Err(e) => {
-                let reason = format!("its SFC body cannot be imported yet ({e})");
-                skip_pou(out, lang, name, keyword, reason);
-            }
-        },
-        // FBD bodies, and LD functions (a function has no rung grid), are kept as drawn.
-        "FBD" | "LD" if lang.name == "FBD" || pou_type == "function" => {
-            let language =
-                if lang.name == "FBD" { NetworkLanguage::Fbd } else { NetworkLanguage::Ld };
+        // FBD and SFC bodies, and LD functions (a function has no rung grid), are kept as
+        // drawn.
+        "FBD" | "SFC" | "LD" if lang.name != "LD" || pou_type == "function" => {
+            let language = match lang.name.as_str() {
+                "FBD" => NetworkLanguage::Fbd,
+                "SFC" => NetworkLanguage::Sfc,
+                _ => NetworkLanguage::Ld,
+            };
             let kind = network_kind(pou_type);
-            match keep_network(&name, kind, return_type, language, declarations, lang) {
+            let body = (lang, pou);
+            match keep_network(&name, kind, return_type, language, declarations, body) {
                 Ok((net, lines, left_out)) => {
                     out.warnings.extend(left_out);
                     add_network(out, net, lines)
@@ -478,27 +500,6 @@ fn text_holders<'a>(node: &'a Node, out: &mut Vec<&'a Node>) {
     for c in &node.children {
         text_holders(c, out);
     }
-}
-
-/// `declarations` with a `VAR` block for the function block `instances` (name, type) of a
-/// body that they do not declare (OpenPLC declares them; other tools may not).
-fn with_instances(
-    mut declarations: SourceOut,
-    instances: &[(String, String)],
-    body: &Node,
-) -> SourceOut {
-    let missing: Vec<&(String, String)> = instances
-        .iter()
-        .filter(|(i, _)| !crate::network::declares(&declarations.text, i))
-        .collect();
-    if !missing.is_empty() {
-        declarations.push("VAR\n", None);
-        for (inst, ty) in missing {
-            declarations.push_from(&format!("    {inst} : {ty};\n"), body);
-        }
-        declarations.push("END_VAR\n", None);
-    }
-    declarations
 }
 
 /// Parses a task interval such as `T#20ms`, `T#1s`, `PT0.02S` into milliseconds.

@@ -16,12 +16,11 @@
 
 mod decl_xml;
 mod export;
-mod fbd_import;
 mod import;
 mod ld_export;
 mod ld_import;
 mod network_export;
-mod sfc_import;
+mod sfc_read;
 mod source_out;
 mod union_find;
 mod xml;

@@ -1,4 +1,4 @@
-//! Network POU → `<pou>` with its `<LD>` or `<FBD>` body written back as it came: every
+//! Network POU → `<pou>` with its `<LD>`, `<FBD>` or `<SFC>` body written back as it came: every
 //! element at its position and size, its pins at their relative positions, its wires with
 //! the points they are drawn through, and its execution order.
 
@@ -7,8 +7,8 @@ use std::fmt::Write;
 use super::decl_xml::{cdata, section_tag, type_xml, vars_xml};
 use super::ld_export::{coil_attrs, contact_attrs};
 use super::xml::esc;
-use crate::network::PinModifier;
-use crate::network::{NetElement, NetKind, NetworkLanguage, NetworkPou, NetworkPouKind, Pin};
+use crate::network::{NetElement, NetKind, NetworkPou, NetworkPouKind, Pin};
+use crate::network::{PinModifier, SfcActionBody, SfcCondition};
 use crate::syntax::ast::Item;
 
 /// One network POU as a `<pou>` element.
@@ -35,16 +35,42 @@ pub(crate) fn network_pou_xml(net: &NetworkPou) -> String {
             }
         }
     }
-    let tag = match net.language {
-        NetworkLanguage::Ld => "LD",
-        NetworkLanguage::Fbd => "FBD",
-    };
-    let _ = writeln!(out, "        </interface>\n        <body>\n          <{tag}>");
+    let tag = net.language.name();
+    out.push_str("        </interface>\n");
+    named_bodies(&mut out, "actions", "action", &net.actions);
+    named_bodies(&mut out, "transitions", "transition", &net.transitions);
+    let _ = writeln!(out, "        <body>\n          <{tag}>");
     for e in &net.elements {
         element_xml(&mut out, e);
     }
     let _ = writeln!(out, "          </{tag}>\n        </body>\n      </pou>");
     out
+}
+
+/// An SFC POU's `<actions>` or `<transitions>`, each body in ST.
+fn named_bodies(out: &mut String, list: &str, item: &str, bodies: &[crate::network::NamedBody]) {
+    if bodies.is_empty() {
+        return;
+    }
+    let _ = writeln!(out, "        <{list}>");
+    for b in bodies {
+        let _ = writeln!(
+            out,
+            "          <{item} name=\"{}\">\n            <body>\n              <ST>\n                <xhtml:p>{}</xhtml:p>\n              </ST>\n            </body>\n          </{item}>",
+            esc(&b.name),
+            cdata(&b.st)
+        );
+    }
+    let _ = writeln!(out, "        </{list}>");
+}
+
+/// An inline ST body (`<inline><ST>…</ST></inline>`) at `indent`.
+fn inline_st(out: &mut String, st: &str, indent: &str) {
+    let _ = writeln!(
+        out,
+        "{indent}<inline>\n{indent}  <ST>\n{indent}    <xhtml:p>{}</xhtml:p>\n{indent}  </ST>\n{indent}</inline>",
+        cdata(st)
+    );
 }
 
 /// A number as PLCopen writes coordinates (whole numbers without a fraction).
@@ -215,6 +241,118 @@ fn element_xml(out: &mut String, e: &NetElement) {
             position(out, e);
             points(out, e);
             let _ = writeln!(out, "{I}</return>");
+        }
+        NetKind::Step { name, initial } => {
+            let _ = writeln!(
+                out,
+                "{I}<step localId=\"{id}\"{} name=\"{}\" initialStep=\"{initial}\">",
+                size(e),
+                esc(name)
+            );
+            position(out, e);
+            let indent = format!("{I}  ");
+            for p in &e.inputs {
+                point_in(out, p, &indent);
+            }
+            for p in &e.outputs {
+                let tag = if p.name == "action" {
+                    "connectionPointOutAction"
+                } else {
+                    "connectionPointOut"
+                };
+                let _ = writeln!(out, "{indent}<{tag} formalParameter=\"\">");
+                let _ =
+                    writeln!(out, "{indent}  <relPosition x=\"{}\" y=\"{}\"/>", n(p.dx), n(p.dy));
+                let _ = writeln!(out, "{indent}</{tag}>");
+            }
+            let _ = writeln!(out, "{I}</step>");
+        }
+        NetKind::Transition { condition, negated, priority } => {
+            let priority = priority.map(|p| format!(" priority=\"{p}\"")).unwrap_or_default();
+            let _ = writeln!(out, "{I}<transition localId=\"{id}\"{}{priority}>", size(e));
+            position(out, e);
+            let indent = format!("{I}  ");
+            for p in e.inputs.iter().filter(|p| p.name != "condition") {
+                point_in(out, p, &indent);
+            }
+            for p in &e.outputs {
+                point_out(out, p, &indent, false);
+            }
+            let neg = if *negated { " negated=\"true\"" } else { "" };
+            let _ = writeln!(out, "{indent}<condition{neg}>");
+            let inner = format!("{indent}  ");
+            match condition {
+                SfcCondition::Inline { st } => inline_st(out, st, &inner),
+                SfcCondition::Reference { name } => {
+                    let _ = writeln!(out, "{inner}<reference name=\"{}\"/>", esc(name));
+                }
+                SfcCondition::Wired => {
+                    for p in e.inputs.iter().filter(|p| p.name == "condition") {
+                        point_in(out, p, &inner);
+                    }
+                }
+            }
+            let _ = writeln!(out, "{indent}</condition>\n{I}</transition>");
+        }
+        NetKind::SelectionDivergence
+        | NetKind::SelectionConvergence
+        | NetKind::SimultaneousDivergence
+        | NetKind::SimultaneousConvergence => {
+            let tag = match e.kind {
+                NetKind::SelectionDivergence => "selectionDivergence",
+                NetKind::SelectionConvergence => "selectionConvergence",
+                NetKind::SimultaneousDivergence => "simultaneousDivergence",
+                _ => "simultaneousConvergence",
+            };
+            let _ = writeln!(out, "{I}<{tag} localId=\"{id}\"{}>", size(e));
+            position(out, e);
+            let indent = format!("{I}  ");
+            for p in &e.inputs {
+                point_in(out, p, &indent);
+            }
+            for p in &e.outputs {
+                point_out(out, p, &indent, true);
+            }
+            let _ = writeln!(out, "{I}</{tag}>");
+        }
+        NetKind::JumpStep { target } => {
+            let _ = writeln!(
+                out,
+                "{I}<jumpStep localId=\"{id}\"{} targetName=\"{}\">",
+                size(e),
+                esc(target)
+            );
+            position(out, e);
+            points(out, e);
+            let _ = writeln!(out, "{I}</jumpStep>");
+        }
+        NetKind::ActionBlock { actions } => {
+            let _ = writeln!(out, "{I}<actionBlock localId=\"{id}\"{}>", size(e));
+            position(out, e);
+            let indent = format!("{I}  ");
+            for p in &e.inputs {
+                point_in(out, p, &indent);
+            }
+            for a in actions {
+                // Beremiz numbers the rows 0 and places them itself.
+                let mut attrs = format!(" localId=\"0\" qualifier=\"{}\"", esc(&a.qualifier));
+                if let Some(d) = &a.duration {
+                    let _ = write!(attrs, " duration=\"{}\"", esc(d));
+                }
+                if let Some(i) = &a.indicator {
+                    let _ = write!(attrs, " indicator=\"{}\"", esc(i));
+                }
+                let _ = writeln!(out, "{indent}<action{attrs}>");
+                let _ = writeln!(out, "{indent}  <relPosition x=\"0\" y=\"0\"/>");
+                match &a.action {
+                    SfcActionBody::Reference { name } => {
+                        let _ = writeln!(out, "{indent}  <reference name=\"{}\"/>", esc(name));
+                    }
+                    SfcActionBody::Inline { st } => inline_st(out, st, &format!("{indent}  ")),
+                }
+                let _ = writeln!(out, "{indent}</action>");
+            }
+            let _ = writeln!(out, "{I}</actionBlock>");
         }
         NetKind::Connector { name } | NetKind::Continuation { name } => {
             let tag = if matches!(e.kind, NetKind::Connector { .. }) {

@@ -1,7 +1,7 @@
-//! The view of a network POU (LD or FBD kept as the file drew it): every element at its own
+//! The view of a network POU (LD, FBD or SFC kept as the file drew it): every element at its own
 //! position and size, its wires along the paths the file gives, and — while its PROGRAM
 //! runs — the values on them: power in green, values beside the pins that carry them
-//! (`plc_core::network::live`). Problems are marked on their element. Read-only: networks
+//! (`plc_core::network::live`), active SFC steps lit. Problems are marked on their element. Read-only: networks
 //! are imported, not drawn here.
 
 use std::collections::{HashMap, HashSet};
@@ -252,6 +252,14 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
             }
             .into_any(),
         ),
+        NetKind::Step { .. }
+        | NetKind::Transition { .. }
+        | NetKind::SelectionDivergence
+        | NetKind::SelectionConvergence
+        | NetKind::SimultaneousDivergence
+        | NetKind::SimultaneousConvergence
+        | NetKind::JumpStep { .. }
+        | NetKind::ActionBlock { .. } => chart_element(e, is_on(out(""))),
         NetKind::Connector { name } | NetKind::Continuation { name } => {
             let connector = matches!(e.kind, NetKind::Connector { .. });
             (
@@ -271,6 +279,113 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
     }
 }
 
+/// An element of an SFC chart: its accessible name and its drawing (`active`: a step
+/// whose flag is set).
+fn chart_element(e: &NetElement, active: bool) -> (String, AnyView) {
+    let (x, y, w, h) = (e.x, e.y, e.width.max(1.0), e.height.max(1.0));
+    match &e.kind {
+        NetKind::Step { name, initial } => (
+            format!(
+                "{} {name}{}",
+                if *initial { "Initial step" } else { "Step" },
+                if active { ", active" } else { "" }
+            ),
+            view! {
+                <rect class="nw-step" class:active=active x=x y=y width=w height=h/>
+                {initial.then(|| view! {
+                    <rect class="nw-step-inner" x=x + 3.0 y=y + 3.0 width=(w - 6.0).max(1.0) height=(h - 6.0).max(1.0)/>
+                })}
+                <text class="nw-expr" x=x + w / 2.0 y=y + h / 2.0 + 4.0>{clip(name, 14)}</text>
+            }
+            .into_any(),
+        ),
+        NetKind::Transition { condition, negated, .. } => {
+            let text = match condition {
+                plc_core::network::SfcCondition::Inline { st } => st.clone(),
+                plc_core::network::SfcCondition::Reference { name } => name.clone(),
+                plc_core::network::SfcCondition::Wired => String::new(),
+            };
+            let text = if *negated { format!("NOT {text}") } else { text };
+            let cy = y + h / 2.0;
+            (
+                if text.is_empty() {
+                    "Transition".to_string()
+                } else {
+                    format!("Transition {}", clip(&text, 60))
+                },
+                view! {
+                    <line class="nw-chart" x1=x + w / 2.0 y1=y x2=x + w / 2.0 y2=y + h/>
+                    <rect class="nw-bar" x=x y=cy - 2.0 width=w height="4"/>
+                    <text class="nw-cond" x=x + w + 6.0 y=cy + 4.0>{clip(&text, 30)}</text>
+                }
+                .into_any(),
+            )
+        }
+        NetKind::JumpStep { target } => (
+            format!("Jump to step {target}"),
+            view! {
+                <path class="nw-jump" d=format!("M{x} {y} L{} {y} L{} {} Z", x + w, x + w / 2.0, y + h)/>
+                <text class="nw-cond" x=x + w + 4.0 y=y + h / 2.0 + 4.0>{clip(target, 14)}</text>
+            }
+            .into_any(),
+        ),
+        NetKind::ActionBlock { actions } => {
+            let rows = actions.len().max(1) as f64;
+            let row_h = h / rows;
+            let q_w = 30.0_f64.min(w / 3.0);
+            let names: Vec<String> = actions
+                .iter()
+                .map(|a| match &a.action {
+                    plc_core::network::SfcActionBody::Reference { name } => name.clone(),
+                    plc_core::network::SfcActionBody::Inline { st } => st.trim().to_string(),
+                })
+                .collect();
+            let label = actions
+                .iter()
+                .zip(&names)
+                .map(|(a, n)| format!("{} {}", a.qualifier, clip(n, 30)))
+                .collect::<Vec<_>>()
+                .join(", ");
+            (
+                format!("Actions {label}"),
+                view! {
+                    <rect class="nw-box" x=x y=y width=w height=h/>
+                    <line class="nw-chart" x1=x + q_w y1=y x2=x + q_w y2=y + h/>
+                    {actions.iter().zip(names).enumerate().map(|(k, (a, n))| {
+                        let ry = y + row_h * k as f64;
+                        view! {
+                            {(k > 0).then(|| view! { <line class="nw-chart" x1=x y1=ry x2=x + w y2=ry/> })}
+                            <text class="nw-pin" x=x + 4.0 y=ry + row_h / 2.0 + 4.0>{clip(&a.qualifier, 3)}</text>
+                            <text class="nw-pin" x=x + q_w + 4.0 y=ry + row_h / 2.0 + 4.0>{clip(&n, ((w - q_w) / 7.0).max(4.0) as usize)}</text>
+                        }
+                    }).collect_view()}
+                }
+                .into_any(),
+            )
+        }
+        kind => {
+            let simultaneous = matches!(
+                kind,
+                NetKind::SimultaneousDivergence | NetKind::SimultaneousConvergence
+            );
+            let name = match kind {
+                NetKind::SelectionDivergence => "Selection divergence",
+                NetKind::SelectionConvergence => "Selection convergence",
+                NetKind::SimultaneousDivergence => "Simultaneous divergence",
+                _ => "Simultaneous convergence",
+            };
+            (
+                name.to_string(),
+                view! {
+                    <line class="nw-chart" x1=x y1=y x2=x + w y2=y/>
+                    {simultaneous.then(|| view! { <line class="nw-chart" x1=x y1=y + 3.0 x2=x + w y2=y + 3.0/> })}
+                }
+                .into_any(),
+            )
+        }
+    }
+}
+
 /// The drawing of a network.
 fn network_svg(net: &NetworkPou, values: &Values, faulty: &HashSet<String>) -> AnyView {
     let xs = net.elements.iter().flat_map(|e| [e.x, e.x + e.width]);
@@ -282,10 +397,7 @@ fn network_svg(net: &NetworkPou, values: &Values, faulty: &HashSet<String>) -> A
     }
     let (vx, vy) = (x0 - 40.0, y0 - 30.0);
     let (vw, vh) = (x1 - x0 + 100.0, y1 - y0 + 60.0);
-    let language = match net.language {
-        NetworkLanguage::Ld => "LD",
-        NetworkLanguage::Fbd => "FBD",
-    };
+    let language = net.language.name();
     view! {
         <svg class="nw-svg" viewBox=format!("{vx} {vy} {vw} {vh}") width=vw height=vh
             role="group" aria-label=format!("{language} network {}", net.name)>
@@ -356,12 +468,8 @@ pub fn NetworkView(name: String) -> impl IntoView {
             (true, None) => "Not running: the project has errors or no PROGRAM.".to_string(),
         })
     };
-    let language = move || {
-        net.with(|n| match n.as_ref().map(|n| n.language) {
-            Some(NetworkLanguage::Fbd) => "FBD",
-            _ => "LD",
-        })
-    };
+    let language =
+        move || net.with(|n| n.as_ref().map_or(NetworkLanguage::Ld, |n| n.language).name());
     view! {
         <section class="panel network-view" aria-label=move || format!("{} network {title}", language())>
             <div class="ed-toolbar">

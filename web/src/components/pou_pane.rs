@@ -62,10 +62,7 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
             name,
         }));
         items.extend(p.networks.iter().map(|n| {
-            let badge = match n.language {
-                plc_core::network::NetworkLanguage::Ld => "LD",
-                plc_core::network::NetworkLanguage::Fbd => "FBD",
-            };
+            let badge = n.language.name();
             NavItem {
                 view: PouView::Network(n.name.clone()),
                 badge,

@@ -6,7 +6,9 @@ use super::super::xml::Node;
 use super::super::{ImportError, ImportNote};
 use crate::ladder::{CoilKind, ContactKind};
 pub(crate) use crate::network::logical::{Conn, El, Kind, RawBlock};
-use crate::network::model::{NetElement, NetKind, Pin, PinModifier, Wire};
+use crate::network::model::{
+    NetElement, NetKind, Pin, PinModifier, SfcAction, SfcActionBody, SfcCondition, Wire,
+};
 
 /// A number attribute (0 when missing or not a number).
 fn num(n: Option<&Node>, attr: &str) -> f64 {
@@ -37,11 +39,6 @@ fn wires_of(point: &Node) -> Vec<Wire> {
             })
         })
         .collect()
-}
-
-/// The wires into a `connectionPointIn`, logically.
-pub(crate) fn conns_of(point: &Node) -> Vec<Conn> {
-    wires_of(point).into_iter().map(|w| Conn { from: w.from, param: w.param }).collect()
 }
 
 /// One pin per `connectionPointIn` of an element that is not a block.
@@ -196,6 +193,9 @@ pub(crate) fn read_network(
                 }
             }
             "documentation" | "addData" => continue,
+            chart if body.name == "SFC" && CHART.contains(&chart) => {
+                chart_element(n, &mut inputs, &mut outputs, &mut notes, pou).map_err(err)?
+            }
             other => {
                 let id = if id.is_empty() { String::new() } else { format!(" localId {id}") };
                 notes.push(ImportNote::on(
@@ -225,6 +225,132 @@ pub(crate) fn read_network(
         });
     }
     Ok((els, notes))
+}
+
+/// The elements of an SFC body that make its chart (the others are its network).
+const CHART: &[&str] = &[
+    "step",
+    "macroStep",
+    "transition",
+    "selectionDivergence",
+    "selectionConvergence",
+    "simultaneousDivergence",
+    "simultaneousConvergence",
+    "jumpStep",
+    "actionBlock",
+];
+
+/// An element of an SFC chart: its kind, with the pins the generic reading misses (a
+/// step's `action` output, a wired transition condition's `condition` input).
+fn chart_element(
+    n: &Node,
+    inputs: &mut Vec<Pin>,
+    outputs: &mut Vec<Pin>,
+    notes: &mut Vec<ImportNote>,
+    pou: &str,
+) -> Result<NetKind, String> {
+    let pin = |name: &str, p: &Node, wires: Vec<Wire>| {
+        let (dx, dy) = rel(p);
+        Pin { name: name.into(), dx, dy, wires, modifier: None, in_out: false }
+    };
+    let named = |attr: &str, what: &str| {
+        let v = n.attr(attr).map(str::trim).unwrap_or("");
+        if v.is_empty() {
+            Err(format!("{what} without a {attr}"))
+        } else {
+            Ok(v.to_string())
+        }
+    };
+    Ok(match n.name.as_str() {
+        "step" => {
+            if let Some(p) = n.child("connectionPointOutAction") {
+                outputs.push(pin("action", p, Vec::new()));
+            }
+            NetKind::Step {
+                name: named("name", "a step")?,
+                initial: n.attr("initialStep") == Some("true"),
+            }
+        }
+        "macroStep" => return Err("macro steps are not supported yet".into()),
+        "transition" => {
+            let c = n.child("condition").ok_or("a transition without <condition>")?;
+            let condition = if let Some(p) = c.child("connectionPointIn") {
+                inputs.push(pin("condition", p, wires_of(p)));
+                SfcCondition::Wired
+            } else if let Some(inline) = c.child("inline") {
+                let st = inline
+                    .child("ST")
+                    .ok_or("an inline condition not written in ST (not supported yet)")?;
+                SfcCondition::Inline { st: st.deep_text().replace("\r\n", "\n").trim().to_string() }
+            } else if let Some(r) = c.child("reference") {
+                SfcCondition::Reference { name: r.attr("name").unwrap_or("").trim().to_string() }
+            } else {
+                return Err("a condition with neither a wire, inline ST nor a reference".into());
+            };
+            let priority = match n.attr("priority").map(str::trim).filter(|p| !p.is_empty()) {
+                Some(p) => {
+                    Some(p.parse().map_err(|_| format!("priority {p:?} is not a whole number"))?)
+                }
+                None => None,
+            };
+            NetKind::Transition { condition, negated: c.attr("negated") == Some("true"), priority }
+        }
+        "selectionDivergence" => NetKind::SelectionDivergence,
+        "selectionConvergence" => NetKind::SelectionConvergence,
+        "simultaneousDivergence" => NetKind::SimultaneousDivergence,
+        "simultaneousConvergence" => NetKind::SimultaneousConvergence,
+        "jumpStep" => NetKind::JumpStep { target: named("targetName", "a jump")? },
+        _ => {
+            let mut actions = Vec::new();
+            for a in n.children_named("action") {
+                let action = if let Some(r) = a.child("reference") {
+                    let name = r.attr("name").unwrap_or("").trim().to_string();
+                    if name.is_empty() {
+                        return Err("an action with neither a name nor a body".into());
+                    }
+                    SfcActionBody::Reference { name }
+                } else if let Some(body) = a.child("inline") {
+                    let st = body_st(body, pou, notes)?;
+                    SfcActionBody::Inline { st }
+                } else {
+                    return Err("an action with neither a name nor a body".into());
+                };
+                let text = |attr: &str| {
+                    a.attr(attr).map(str::trim).filter(|d| !d.is_empty()).map(str::to_string)
+                };
+                actions.push(SfcAction {
+                    qualifier: text("qualifier").unwrap_or_else(|| "N".into()).to_ascii_uppercase(),
+                    duration: text("duration"),
+                    indicator: text("indicator"),
+                    action,
+                });
+            }
+            NetKind::ActionBlock { actions }
+        }
+    })
+}
+
+/// The ST of an action or transition `<body>` (or an `<inline>` block), FBD lowered.
+pub(crate) fn body_st(
+    body: &Node,
+    pou: &str,
+    notes: &mut Vec<ImportNote>,
+) -> Result<String, String> {
+    if let Some(st) = body.child("ST") {
+        return Ok(st.deep_text().replace("\r\n", "\n"));
+    }
+    if let Some(fbd) = body.child("FBD") {
+        let (els, left_out) = read_elements(fbd, pou).map_err(|e| e.to_string())?;
+        let lowered = crate::network::lower(&els, pou).map_err(|e| e.to_string())?;
+        notes.push(ImportNote::on(
+            fbd,
+            format!("POU {pou}: an FBD action body is kept as the ST it runs as"),
+        ));
+        notes.extend(left_out);
+        return Ok(lowered.statements.into_iter().map(|(s, _)| s).collect());
+    }
+    let lang = body.children.first().map_or("empty", |c| c.name.as_str());
+    Err(format!("an action body in {lang} (not supported yet)"))
 }
 
 /// Reads the elements of an LD or FBD body, with connectors and continuations resolved,
