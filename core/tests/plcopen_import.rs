@@ -1476,3 +1476,63 @@ fn off_grid_programs_keep_the_file_order() {
     let again: Vec<&str> = back.project.networks.iter().map(|n| n.name.as_str()).collect();
     assert_eq!(again, names);
 }
+
+/// A function's output has no variable; the network view shows it through a simulator
+/// watch of its expression (ADD's output beside its pin), never re-running a FUNCTION of
+/// the project.
+#[test]
+fn function_outputs_are_shown_through_watches() {
+    use off_grid::*;
+    let in_var = |id: u32, y: u32, e: &str| {
+        format!(
+            r#"<inVariable localId="{id}"><position x="0" y="{y}"/><connectionPointOut/><expression>{e}</expression></inVariable>"#
+        )
+    };
+    let body = [
+        in_var(1, 0, "N"),
+        in_var(2, 40, "5"),
+        block(3, (60, 0), "ADD", "", &[("IN1", 1, ""), ("IN2", 2, "")], &["OUT"]),
+        r#"<outVariable localId="4"><position x="160" y="0"/><connectionPointIn><connection refLocalId="3" formalParameter="OUT"/></connectionPointIn><expression>M</expression></outVariable>"#.to_string(),
+    ]
+    .concat();
+    let text = doc(&body, &[var("N", "INT"), var("M", "INT")].concat())
+        .replace("<LD>", "<FBD>")
+        .replace("</LD>", "</FBD>");
+    let i = import(&text).unwrap_or_else(|e| panic!("{e}"));
+    let net = &i.project.networks[0];
+    let watches = plc_core::network::live::function_watches(net);
+    assert_eq!(watches, vec![(("3".to_string(), "OUT".to_string()), "ADD(N, 5)".to_string())]);
+    let mut s = project_simulator(&i.project, None).unwrap_or_else(|e| panic!("{e:?}"));
+    for (_, text) in &watches {
+        s.add_watch(text).unwrap();
+    }
+    s.write("N", "3").unwrap();
+    s.scan();
+    let values = plc_core::network::live::output_values(net, &|p: &str| {
+        s.read(p).ok().or_else(|| s.watch(p).cloned())
+    });
+    let out = values.get(&("3".to_string(), "OUT".to_string())).expect("ADD's output");
+    assert_eq!(plc_core::export::value_text(out), "8");
+}
+
+/// Network POUs are renamed and deleted like the other diagram POUs; their names are taken
+/// for new POUs, and a FUNCTION's coil on its result follows its new name.
+#[test]
+fn network_pous_are_renamed_and_deleted() {
+    use plc_core::project::PouError;
+    let mut p = import(&ld_function_doc()).unwrap_or_else(|e| panic!("{e}")).project;
+    assert_eq!(
+        p.add_ladder_pou("majority", plc_core::ladder::LadderPouKind::Program),
+        Err(PouError::Taken("majority".into()))
+    );
+    p.rename_network_pou("Majority", "Vote").unwrap();
+    assert_eq!(p.networks[0].name, "Vote");
+    let st = network_st(&p, "Vote");
+    assert!(st.starts_with("FUNCTION Vote : BOOL"), "{st}");
+    assert!(st.contains("Vote := "), "{st}");
+    assert!(!st.contains("Majority"), "{st}");
+    assert_eq!(p.rename_network_pou("Vote", "Main"), Err(PouError::Taken("Main".into())));
+    assert_eq!(p.rename_network_pou("Nope", "X"), Err(PouError::NoSuchNetwork("Nope".into())));
+    p.delete_network_pou("vote").unwrap();
+    assert!(p.networks.is_empty());
+}

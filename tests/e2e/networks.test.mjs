@@ -148,6 +148,8 @@ test('a rail-less LD network and an FBD network run with live values at the file
   assert.deepEqual(await drawnAt(fbd, '7'), [170, 180]);
   await step.click();
   await fbd.getByRole('img', { name: 'Variable M = 5' }).waitFor();
+  // A function's output has no variable: the simulator watches its expression.
+  await fbd.getByRole('img', { name: 'Block ADD: OUT = 5' }).waitFor();
   await fbd.getByRole('img', { name: /^Block TON T1: Q = FALSE, ET = T#0s$/ }).waitFor();
   await page.getByRole('checkbox', { name: 'Go', exact: true }).check();
   for (let k = 0; k < 5; k += 1) await step.click();
@@ -203,7 +205,7 @@ test('an SFC chart is drawn at the file positions with its active step lit', asy
   await context.close();
 });
 
-test('a problem in a network is marked on its element and its entry reveals it', async () => {
+test('a problem in a network is marked on its element, its entry reveals it, and the POU is renamed and deleted', async () => {
   const { context, page, errors } = await openApp();
   // The output variable writes Lamp9, which the program does not declare.
   // Nothing runs, so the app opens on the ST source; the problem names the element.
@@ -218,6 +220,74 @@ test('a problem in a network is marked on its element and its entry reveals it',
   assert.equal(await fbd.locator('.nw-el.faulty[data-local-id="8"]').count(), 1);
   assert.equal(await fbd.locator('.nw-el.faulty').count(), 1);
   await fbd.getByRole('img', { name: 'Variable Lamp9' }).waitFor();
+  // The POU is renamed and deleted like a ladder POU.
+  await fbd.getByRole('button', { name: 'Rename POU' }).click();
+  const box = page.getByRole('textbox', { name: 'New POU name' });
+  await box.fill('Calc2');
+  await box.press('Enter');
+  const renamed = page.getByRole('region', { name: 'FBD network Calc2' });
+  await renamed.waitFor();
+  page.once('dialog', (d) => d.accept());
+  await renamed.getByRole('button', { name: 'Delete POU' }).click();
+  await page.getByText('Deleted the network POU “Calc2”.').waitFor();
+  assert.equal(await page.getByRole('button', { name: /FBD network/ }).count(), 0);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+// A function block drawn in FBD (a TON between Go and Done) with two instances in an ST
+// PROGRAM: its view shows the chosen instance's values.
+const FB_DOC = `<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="lab" productName="OpenPLC" productVersion="1" creationDateTime="2024-03-01T10:00:00"/>
+  <contentHeader name="Delays"><coordinateInfo><fbd><scaling x="10" y="10"/></fbd><ld><scaling x="10" y="10"/></ld><sfc><scaling x="10" y="10"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Delay" pouType="functionBlock">
+      <interface><inputVars>${v('Go', 'BOOL')}</inputVars><outputVars>${v('Done', 'BOOL')}</outputVars><localVars><variable name="T"><type><derived name="TON"/></type></variable></localVars></interface>
+      <body><FBD>
+        <inVariable localId="1" height="30" width="40"><position x="40" y="40"/><connectionPointOut><relPosition x="40" y="15"/></connectionPointOut><expression>Go</expression></inVariable>
+        <inVariable localId="2" height="30" width="60"><position x="20" y="90"/><connectionPointOut><relPosition x="60" y="15"/></connectionPointOut><expression>T#40ms</expression></inVariable>
+        <block localId="3" typeName="TON" instanceName="T" height="70" width="70"><position x="160" y="30"/>
+          <inputVariables>
+            <variable formalParameter="IN"><connectionPointIn><relPosition x="0" y="25"/><connection refLocalId="1"/></connectionPointIn></variable>
+            <variable formalParameter="PT"><connectionPointIn><relPosition x="0" y="75"/><connection refLocalId="2"/></connectionPointIn></variable>
+          </inputVariables><inOutVariables/>
+          <outputVariables>
+            <variable formalParameter="Q"><connectionPointOut><relPosition x="70" y="25"/></connectionPointOut></variable>
+            <variable formalParameter="ET"><connectionPointOut><relPosition x="70" y="45"/></connectionPointOut></variable>
+          </outputVariables>
+        </block>
+        <outVariable localId="4" height="30" width="50"><position x="300" y="40"/><connectionPointIn><relPosition x="0" y="15"/><connection refLocalId="3" formalParameter="Q"/></connectionPointIn><expression>Done</expression></outVariable>
+      </FBD></body>
+    </pou>
+    <pou name="Main" pouType="program">
+      <interface><inputVars>${v('Start', 'BOOL')}</inputVars><outputVars>${v('Lamp', 'BOOL')}</outputVars><localVars><variable name="D1"><type><derived name="Delay"/></type></variable><variable name="D2"><type><derived name="Delay"/></type></variable></localVars></interface>
+      <body><ST><xhtml:p><![CDATA[D1(Go := Start);
+D2(Go := FALSE);
+Lamp := D1.Done;]]></xhtml:p></ST></body>
+    </pou>
+  </pous></types>
+  <instances><configurations><configuration name="Config0"><resource name="Res0">
+    <task name="task0" priority="0" interval="T#20ms"><pouInstance name="inst0" typeName="Main"/></task>
+  </resource></configuration></configurations></instances>
+</project>`;
+
+test('a function block network shows the values of the chosen instance', async () => {
+  const { context, page, errors } = await openApp();
+  await importXml(page, 'delays.xml', FB_DOC);
+  await page.getByRole('button', { name: 'FBD network Delay' }).click();
+  const fb = page.getByRole('region', { name: 'FBD network Delay' });
+  await fb.waitFor();
+  const picker = fb.getByRole('combobox', { name: 'Instance' });
+  assert.deepEqual(await picker.locator('option').allTextContents(), ['D1', 'D2']);
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
+  const step = page.getByRole('button', { name: 'Step', exact: true });
+  for (let k = 0; k < 3; k += 1) await step.click();
+  await fb.getByRole('img', { name: 'Block TON T: Q = TRUE, ET = T#40ms' }).waitFor();
+  await fb.getByRole('img', { name: 'Variable Go = TRUE' }).waitFor();
+  await picker.selectOption('D2');
+  await fb.getByRole('img', { name: 'Block TON T: Q = FALSE, ET = T#0s' }).waitFor();
+  await fb.getByRole('img', { name: 'Variable Go = FALSE' }).waitFor();
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -2,8 +2,9 @@
 //! from the variables the lowered program keeps (operands, instance outputs, the edge
 //! detectors of edge contacts) and carried through contacts and coils by power flow. A
 //! function's output has no variable of its own (it is written inline): the view works out
-//! the BOOL ones (AND, OR, XOR, NOT, MOVE) from their inputs and `ENO` from `EN`; the
-//! others have no value here. An SFC step's outputs carry whether it is active.
+//! the BOOL ones (AND, OR, XOR, NOT, MOVE) from their inputs and `ENO` from `EN`, and asks
+//! for the others by their ST expression, which the simulator watches
+//! ([`function_watches`]). An SFC step's outputs carry whether it is active.
 
 use std::collections::{HashMap, HashSet};
 
@@ -25,6 +26,10 @@ pub fn output_values(
         read,
         memo: HashMap::new(),
         visiting: HashSet::new(),
+        watches: function_watches(pou)
+            .into_iter()
+            .map(|((id, pin), text)| ((id, pin.to_ascii_uppercase()), text))
+            .collect(),
     };
     let mut out = HashMap::new();
     for e in &pou.elements {
@@ -48,6 +53,52 @@ pub fn output_values(
     out
 }
 
+/// The ST expression of each function output of the network (`(localId, pin)` → `ADD(N,
+/// 5)`), for a simulator watch ([`crate::sim::Simulator::add_watch`]): the outputs of
+/// built-in functions fed by variables, instances, contacts and other built-ins only (a
+/// FUNCTION of the project may write globals, so it is never evaluated twice). `read` in
+/// [`output_values`] is asked for these texts too.
+pub fn function_watches(pou: &NetworkPou) -> Vec<((String, String), String)> {
+    let Ok(els) = super::logical(&pou.elements) else { return Vec::new() };
+    let lower = super::lower::Lower::new(&els);
+    let by_id: HashMap<&str, &NetElement> =
+        pou.elements.iter().map(|e| (e.id.as_str(), e)).collect();
+    let mut out = Vec::new();
+    for e in &pou.elements {
+        let NetKind::Block { instance: None, .. } = &e.kind else { continue };
+        if !built_in_all_the_way(e, &by_id, &mut HashSet::new()) {
+            continue;
+        }
+        for pin in e.outputs.iter().filter(|p| !p.name.eq_ignore_ascii_case("ENO")) {
+            let conn = super::logical::Conn { from: e.id.clone(), param: Some(pin.name.clone()) };
+            if let Ok(text) = lower.joined(&[conn]) {
+                out.push(((e.id.clone(), pin.name.clone()), text));
+            }
+        }
+    }
+    out
+}
+
+/// Whether function `e` and every function wired into it are built-ins.
+fn built_in_all_the_way<'a>(
+    e: &'a NetElement,
+    by_id: &HashMap<&str, &'a NetElement>,
+    seen: &mut HashSet<&'a str>,
+) -> bool {
+    let NetKind::Block { type_name, instance: None } = &e.kind else { return true };
+    if !seen.insert(e.id.as_str()) {
+        return true;
+    }
+    if seen.len() > 2 * crate::limits::MAX_EXPR_HEIGHT
+        || !crate::semantic::is_builtin(&type_name.trim().to_ascii_uppercase())
+    {
+        return false;
+    }
+    e.inputs.iter().flat_map(|p| &p.wires).all(|w| {
+        by_id.get(w.from.as_str()).is_none_or(|src| built_in_all_the_way(src, by_id, seen))
+    })
+}
+
 /// The value a wire carries, from [`output_values`].
 pub fn wire_value<'a>(
     values: &'a HashMap<(String, String), Value>,
@@ -66,6 +117,8 @@ struct Eval<'a> {
     read: &'a dyn Fn(&str) -> Option<Value>,
     memo: HashMap<(String, String), Option<Value>>,
     visiting: HashSet<(String, String)>,
+    /// [`function_watches`], pins in upper case.
+    watches: HashMap<(String, String), String>,
 }
 
 impl<'a> Eval<'a> {
@@ -122,7 +175,10 @@ impl<'a> Eval<'a> {
                 }
                 match instance {
                     Some(inst) => read(&format!("{inst}.{pin}")),
-                    None => self.function(e),
+                    None => self.function(e).or_else(|| {
+                        let text = self.watches.get(&(e.id.clone(), pin.to_ascii_uppercase()))?;
+                        read(text)
+                    }),
                 }
             }
             NetKind::Continuation { name } => {

@@ -1,4 +1,5 @@
-//! Adding, renaming and deleting the ladder and Petri net POUs of a project: the project-level edits of
+//! Adding, renaming and deleting the ladder and Petri net POUs of a project (and renaming
+//! and deleting its network POUs, which come from imported files): the project-level edits of
 //! the POU navigator. Each is checked (a valid, unused name) and applies whole or not at
 //! all, so an editor can keep whole projects in a [`History`](super::History).
 
@@ -21,6 +22,8 @@ pub enum PouError {
     NoSuchPou(String),
     /// No Petri net POU has that name.
     NoSuchNet(String),
+    /// No network POU (LD, FBD or SFC kept as drawn) has that name.
+    NoSuchNetwork(String),
 }
 
 impl fmt::Display for PouError {
@@ -33,6 +36,7 @@ impl fmt::Display for PouError {
             PouError::Taken(n) => write!(f, "the project already has a POU named {n}"),
             PouError::NoSuchPou(n) => write!(f, "the project has no ladder POU named {n}"),
             PouError::NoSuchNet(n) => write!(f, "the project has no Petri net POU named {n}"),
+            PouError::NoSuchNetwork(n) => write!(f, "the project has no network POU named {n}"),
         }
     }
 }
@@ -40,7 +44,7 @@ impl fmt::Display for PouError {
 impl std::error::Error for PouError {}
 
 impl Project {
-    /// Every POU name of the project: its ST POUs, ladder and Petri net POUs.
+    /// Every POU name of the project: its ST POUs, ladder, Petri net and network POUs.
     pub fn pou_names(&self) -> Vec<String> {
         let (file, _) = syntax::parse(&self.source);
         let st = file.items.into_iter().filter_map(|item| match item {
@@ -49,6 +53,7 @@ impl Project {
         });
         st.chain(self.ladder.iter().map(|l| l.name.clone()))
             .chain(self.petri.iter().map(|p| p.name.clone()))
+            .chain(self.networks.iter().map(|n| n.name.clone()))
             .collect()
     }
 
@@ -130,6 +135,53 @@ impl Project {
         self.petri.remove(index);
         self.program_deleted(name);
         Ok(())
+    }
+
+    /// Renames a network POU (the program chosen to run follows it; a FUNCTION's elements
+    /// that write or read its result follow too).
+    pub fn rename_network_pou(&mut self, old: &str, new: &str) -> Result<(), PouError> {
+        let new = new.trim();
+        let index = self.network_index(old)?;
+        self.check_new_name(new, Some(old))?;
+        self.program_renamed(old, new);
+        let net = &mut self.networks[index];
+        if net.kind == crate::network::NetworkPouKind::Function {
+            use crate::network::NetKind;
+            for e in &mut net.elements {
+                match &mut e.kind {
+                    NetKind::OutVar { expr }
+                    | NetKind::InVar { expr }
+                    | NetKind::InOutVar { expr }
+                        if expr.trim().eq_ignore_ascii_case(old) =>
+                    {
+                        *expr = new.to_string();
+                    }
+                    NetKind::Coil { operand, .. } | NetKind::Contact { operand, .. }
+                        if operand.trim().eq_ignore_ascii_case(old) =>
+                    {
+                        *operand = new.to_string();
+                    }
+                    _ => {}
+                }
+            }
+        }
+        net.name = new.to_string();
+        Ok(())
+    }
+
+    /// Deletes a network POU.
+    pub fn delete_network_pou(&mut self, name: &str) -> Result<(), PouError> {
+        let index = self.network_index(name)?;
+        self.networks.remove(index);
+        self.program_deleted(name);
+        Ok(())
+    }
+
+    fn network_index(&self, name: &str) -> Result<usize, PouError> {
+        self.networks
+            .iter()
+            .position(|n| n.name.eq_ignore_ascii_case(name))
+            .ok_or_else(|| PouError::NoSuchNetwork(name.to_string()))
     }
 
     /// The program chosen to run follows a rename of its POU.

@@ -17,6 +17,7 @@ mod prelude;
 mod stmt;
 pub mod types;
 
+pub use builtins::is_builtin;
 pub use ir::{BinOp, Builtin, CallArg, Expr, ExprKind, InitValue, Place, Program, SysVar, UnOp};
 pub use types::{Elem, PouId, Type, TypeTable};
 
@@ -59,6 +60,38 @@ pub fn check_condition(
 ) -> Result<Expr, Vec<Diagnostic>> {
     let expr = syntax::parse_expression(source)?;
     check::check_expression_in(program, pou, &expr, Some(Type::BOOL), true)
+}
+
+/// Checks `source`, an ST expression of a single value (`ADD(N, 5)`, `T1.ET`), in the scope
+/// of POU `pou` of `program`, for a watch evaluated between scans: it may not call a
+/// FUNCTION of the program (one may write globals), and its type must be elementary.
+pub fn check_watch(program: &Program, pou: PouId, source: &str) -> Result<Expr, Vec<Diagnostic>> {
+    let expr = syntax::parse_expression(source)?;
+    let checked = check::check_expression_in(program, pou, &expr, None, true)?;
+    let refuse = |message: &str| {
+        vec![Diagnostic::error(crate::diagnostics::Code::TypeMismatch, checked.span, message)]
+    };
+    if calls_a_function(&checked) {
+        return Err(refuse("a watch cannot call a FUNCTION of the program"));
+    }
+    if !matches!(checked.ty, Type::Elem(_) | Type::Enum(_)) {
+        return Err(refuse("a watch shows a single value of an elementary type"));
+    }
+    Ok(checked)
+}
+
+/// Whether `e` calls a FUNCTION (not a built-in) anywhere in its operands.
+fn calls_a_function(e: &Expr) -> bool {
+    match &e.kind {
+        ir::ExprKind::Call { .. } => true,
+        ir::ExprKind::Unary(_, a) | ir::ExprKind::Convert(a) | ir::ExprKind::Trunc(a) => {
+            calls_a_function(a)
+        }
+        ir::ExprKind::Binary(_, a, b) => calls_a_function(a) || calls_a_function(b),
+        ir::ExprKind::Builtin { args, .. } => args.iter().any(calls_a_function),
+        ir::ExprKind::Const(_) | ir::ExprKind::ConstStr(_) | ir::ExprKind::Load(_) => false,
+        ir::ExprKind::Sys(_) => false,
+    }
 }
 
 /// Parses `text`, an IEC literal or constant expression (`TRUE`, `42`, `-1.5`, `T#2s`,

@@ -145,6 +145,17 @@ pub struct Simulator {
     next_breakpoint: u32,
     trace: Trace,
     watchdog: u64,
+    watches: Vec<Watch>,
+}
+
+/// An expression the simulator evaluates after each run of scans (the network view's
+/// function outputs, which have no variable of their own).
+#[derive(Debug, Clone)]
+struct Watch {
+    source: String,
+    condition: ConditionId,
+    ty: semantic::Type,
+    value: Option<Value>,
 }
 
 impl Simulator {
@@ -167,6 +178,7 @@ impl Simulator {
             next_breakpoint: 0,
             trace: Trace::new(Vec::new(), 0),
             watchdog: DEFAULT_WATCHDOG,
+            watches: Vec::new(),
         })
     }
 
@@ -217,6 +229,12 @@ impl Simulator {
 
     /// Runs one scan.
     pub fn scan(&mut self) -> ScanOutcome {
+        let outcome = self.scan_once();
+        self.refresh_watches();
+        outcome
+    }
+
+    fn scan_once(&mut self) -> ScanOutcome {
         if let SimState::Faulted(info) = &self.state {
             return ScanOutcome::Fault(info.clone());
         }
@@ -240,24 +258,99 @@ impl Simulator {
 
     /// Runs up to `n` scans, stopping early at a breakpoint or fault.
     pub fn run_scans(&mut self, n: u64) -> ScanOutcome {
+        let mut outcome = ScanOutcome::Completed;
         for _ in 0..n {
-            match self.scan() {
-                ScanOutcome::Completed => {}
-                other => return other,
+            outcome = self.scan_once();
+            if !matches!(outcome, ScanOutcome::Completed) {
+                break;
             }
         }
-        ScanOutcome::Completed
+        self.refresh_watches();
+        outcome
     }
 
     /// Runs scans until the virtual clock reaches `time_ns` (or a breakpoint or fault).
     pub fn run_until(&mut self, time_ns: i64) -> ScanOutcome {
+        let mut outcome = ScanOutcome::Completed;
         while self.time_ns < time_ns {
-            match self.scan() {
-                ScanOutcome::Completed => {}
-                other => return other,
+            outcome = self.scan_once();
+            if !matches!(outcome, ScanOutcome::Completed) {
+                break;
             }
         }
-        ScanOutcome::Completed
+        self.refresh_watches();
+        outcome
+    }
+
+    /// The paths (`Mixer1`, `Line.Mixer2`) of the instances of function block `fb` in the
+    /// main program, nested ones too, in declaration order (arrays of instances are left
+    /// out).
+    pub fn instances_of(&self, fb: &str) -> Vec<String> {
+        let mut out = Vec::new();
+        self.collect_instances(self.main_pou(), "", fb, 0, &mut out);
+        out
+    }
+
+    fn collect_instances(
+        &self,
+        pou: PouId,
+        prefix: &str,
+        fb: &str,
+        depth: usize,
+        out: &mut Vec<String>,
+    ) {
+        if depth > 16 || out.len() > 1000 {
+            return;
+        }
+        for v in &self.program.pou(pou).vars {
+            let Type::Fb(id) = v.ty else { continue };
+            let path = format!("{prefix}{}", v.name);
+            if self.program.pou(id).name.eq_ignore_ascii_case(fb) {
+                out.push(path.clone());
+            }
+            if !self.program.pou(id).library {
+                self.collect_instances(id, &format!("{path}."), fb, depth + 1, out);
+            }
+        }
+    }
+
+    /// Watches `source`, an ST expression of one elementary value over the main program's
+    /// variables that calls no FUNCTION of the program (`ADD(N, 5)`): from now on it is
+    /// evaluated after every run of scans, and [`Simulator::watch`] gives its value. The
+    /// same text is watched once.
+    pub fn add_watch(&mut self, source: &str) -> Result<(), SimError> {
+        if self.watches.iter().any(|w| w.source == source) {
+            return Ok(());
+        }
+        let expr = semantic::check_watch(&self.program, self.main_pou(), source)
+            .map_err(SimError::BadCondition)?;
+        let condition =
+            self.exe.compile_condition(&self.program, &expr).map_err(SimError::Compile)?;
+        self.watches.push(Watch {
+            source: source.to_string(),
+            condition,
+            ty: expr.ty,
+            value: None,
+        });
+        self.refresh_watches();
+        Ok(())
+    }
+
+    /// The value of the watched expression `source` after the last run of scans (`None`
+    /// when it is not watched, or faulted: a division by zero).
+    pub fn watch(&self, source: &str) -> Option<&Value> {
+        self.watches.iter().find(|w| w.source == source).and_then(|w| w.value.as_ref())
+    }
+
+    fn refresh_watches(&mut self) {
+        let sys = SysState { first_scan: false, time_ns: self.time_ns };
+        for w in &mut self.watches {
+            w.value = self
+                .machine
+                .eval_bits(&self.exe, w.condition, sys, self.watchdog)
+                .ok()
+                .map(|bits| Value::from_bits(w.ty, bits, &self.program.types));
+        }
     }
 
     /// Cold restart: every variable back to its initial value, clock and scan count to 0,
@@ -282,6 +375,7 @@ impl Simulator {
             bp.was_true = false;
         }
         self.trace.clear();
+        self.refresh_watches();
     }
 
     fn slot(&self, path: &str) -> Result<Slot, SimError> {

@@ -257,3 +257,54 @@ fn the_trace_stays_within_its_memory_budget() {
     s.run_scans(3);
     assert_eq!(s.trace().len(), 3);
 }
+
+#[test]
+fn a_watch_is_evaluated_after_each_run_of_scans() {
+    let src = "
+FUNCTION Bump : INT
+VAR_INPUT x : INT; END_VAR
+VAR_EXTERNAL g : INT; END_VAR
+g := g + 1;
+Bump := x;
+END_FUNCTION
+PROGRAM P
+VAR_GLOBAL g : INT; END_VAR
+VAR n : INT; d : INT; s : STRING; END_VAR
+n := n + 2;
+END_PROGRAM";
+    let mut s = sim(src);
+    s.add_watch("ADD(n, 5)").unwrap();
+    s.add_watch("DIV(10, d)").unwrap();
+    assert_eq!(s.watch("ADD(n, 5)"), Some(&Value::Int(5, semantic::Elem::Int)));
+    s.run_scans(3);
+    assert_eq!(s.watch("ADD(n, 5)"), Some(&Value::Int(11, semantic::Elem::Int)));
+    // A division by zero has no value and does not fault the PLC.
+    assert_eq!(s.watch("DIV(10, d)"), None);
+    assert_eq!(s.state(), &SimState::Ready);
+    s.cold_restart();
+    assert_eq!(s.watch("ADD(n, 5)"), Some(&Value::Int(5, semantic::Elem::Int)));
+    // Evaluating twice must not change the program: no FUNCTION of the program, and
+    // only single elementary values.
+    assert!(matches!(s.add_watch("Bump(n)"), Err(SimError::BadCondition(_))));
+    assert!(matches!(s.add_watch("s"), Err(SimError::BadCondition(_))));
+    assert!(matches!(s.add_watch("n := 1"), Err(SimError::BadCondition(_))));
+    assert_eq!(s.watch("Bump(n)"), None);
+}
+
+#[test]
+fn instances_of_a_function_block_are_found_nested_too() {
+    let src = "
+FUNCTION_BLOCK Mixer
+VAR t : TON; END_VAR
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Line
+VAR m : Mixer; END_VAR
+END_FUNCTION_BLOCK
+PROGRAM P
+VAR a : Mixer; l : Line; b : Mixer; END_VAR
+END_PROGRAM";
+    let s = sim(src);
+    assert_eq!(s.instances_of("mixer"), ["a", "l.m", "b"]);
+    assert_eq!(s.instances_of("TON"), ["a.t", "l.m.t", "b.t"]);
+    assert!(s.instances_of("Nope").is_empty());
+}

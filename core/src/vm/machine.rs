@@ -142,9 +142,21 @@ impl Machine {
         sys: SysState,
         budget: u64,
     ) -> Result<bool, RuntimeError> {
+        self.eval_bits(exe, id, sys, budget).map(|v| v != 0)
+    }
+
+    /// Evaluates a compiled expression (see [`Executable::compile_condition`]) to its
+    /// value's cell bits.
+    pub fn eval_bits(
+        &mut self,
+        exe: &Executable,
+        id: ConditionId,
+        sys: SysState,
+        budget: u64,
+    ) -> Result<u64, RuntimeError> {
         let entry = exe.conditions.get(id.0 as usize).copied().unwrap_or(u32::MAX);
         let trusted = exe.condition_trusted.get(id.0 as usize).copied().unwrap_or(false);
-        self.run(exe, (entry, trusted), exe.main_base, sys, budget).map(|v| v != 0)
+        self.run(exe, (entry, trusted), exe.main_base, sys, budget)
     }
 
     fn run(

@@ -1,8 +1,9 @@
 //! The view of a network POU (LD, FBD or SFC kept as the file drew it): every element at its own
 //! position and size, its wires along the paths the file gives, and — while its PROGRAM
 //! runs — the values on them: power in green, values beside the pins that carry them
-//! (`plc_core::network::live`), active SFC steps lit. Problems are marked on their element. Read-only: networks
-//! are imported, not drawn here.
+//! (`plc_core::network::live`), active SFC steps lit. Problems are marked on their element.
+//! The elements are read-only (networks are imported, not drawn here); the POU can be
+//! renamed and deleted.
 
 use std::collections::{HashMap, HashSet};
 
@@ -11,10 +12,13 @@ use plc_core::build::Site;
 use plc_core::export::value_text;
 use plc_core::ladder::ContactKind;
 use plc_core::network::live::{output_values, wire_value};
-use plc_core::network::{NetElement, NetKind, NetworkLanguage, NetworkPou, Pin, PinModifier};
+use plc_core::network::{
+    NetElement, NetKind, NetworkLanguage, NetworkPou, NetworkPouKind, Pin, PinModifier,
+};
 use plc_core::vm::Value;
 
 use crate::components::ladder::geometry::clip;
+use crate::components::pou_actions::{DiagramKind, PouActions};
 use crate::state::AppState;
 
 /// Values on the network's outputs: (`localId`, pin) → value.
@@ -421,14 +425,41 @@ pub fn NetworkView(name: String) -> impl IntoView {
     let key = name.clone();
     let runs =
         Memo::new(move |_| state.running.get().is_some_and(|r| r.eq_ignore_ascii_case(&key)));
-    let values = Memo::new(move |_| {
-        if !runs.get() {
-            return Values::new();
+    // A function block's network shows one of its instances in the running PROGRAM.
+    let key = name.clone();
+    let is_fb = Memo::new(move |_| {
+        net.with(|n| n.as_ref().is_some_and(|n| n.kind == NetworkPouKind::FunctionBlock))
+    });
+    let instances = Memo::new(move |_| {
+        state.running.track();
+        if !is_fb.get() {
+            return Vec::new();
         }
+        state.sim.with_value(|s| s.as_ref().map(|s| s.instances_of(&key))).unwrap_or_default()
+    });
+    let picked = RwSignal::new(None::<String>);
+    let instance = Memo::new(move |_| {
+        let list = instances.get();
+        picked.get().filter(|i| list.contains(i)).or_else(|| list.first().cloned())
+    });
+    let values = Memo::new(move |_| {
+        let prefix = match (runs.get(), instance.get()) {
+            (true, _) => String::new(),
+            (false, Some(inst)) => format!("{inst}."),
+            (false, None) => return Values::new(),
+        };
         net.with(|n| {
             let Some(n) = n.as_ref() else { return Values::new() };
             state
-                .with_sim(|s| output_values(n, &|path: &str| s.read(path).ok()))
+                .with_sim(|s| {
+                    output_values(n, &|path: &str| {
+                        if prefix.is_empty() {
+                            s.read(path).ok().or_else(|| s.watch(path).cloned())
+                        } else {
+                            s.read(&format!("{prefix}{path}")).ok()
+                        }
+                    })
+                })
                 .unwrap_or_default()
         })
     });
@@ -455,17 +486,33 @@ pub fn NetworkView(name: String) -> impl IntoView {
     });
     let title = name.clone();
     let shown_name = name.clone();
+    let actions_name = name.clone();
     let status = move || {
-        if runs.get() {
+        if runs.get() || instance.get().is_some() {
             return None;
         }
-        let program = net.with(|n| {
-            n.as_ref().is_some_and(|n| n.kind == plc_core::network::NetworkPouKind::Program)
-        });
-        Some(match (program, state.running.get()) {
-            (false, _) => "A function block's or function's network runs inside its callers: shown without values.".to_string(),
-            (true, Some(r)) => format!("The simulator runs PROGRAM {r}: choose {name} under Simulation to see the values on this network."),
-            (true, None) => "Not running: the project has errors or no PROGRAM.".to_string(),
+        let kind = net.with(|n| n.as_ref().map_or(NetworkPouKind::Program, |n| n.kind));
+        Some(match (kind, state.running.get()) {
+            (NetworkPouKind::Function, _) => "A function's network runs inside its callers, which keep none of its values: shown without values.".to_string(),
+            (NetworkPouKind::FunctionBlock, Some(r)) => format!("PROGRAM {r} has no instance of {name}: shown without values."),
+            (NetworkPouKind::Program, Some(r)) => format!("The simulator runs PROGRAM {r}: choose {name} under Simulation to see the values on this network."),
+            (_, None) => "Not running: the project has errors or no PROGRAM.".to_string(),
+        })
+    };
+    let instance_picker = move || {
+        let list = instances.get();
+        (!list.is_empty()).then(|| {
+            let current = instance.get().unwrap_or_default();
+            view! {
+                <label class="nw-instance">"Instance "
+                    <select aria-label="Instance" on:change=move |ev| picked.set(Some(event_target_value(&ev)))>
+                        {list.into_iter().map(|i| {
+                            let selected = i == current;
+                            view! { <option value=i.clone() selected=selected>{i.clone()}</option> }
+                        }).collect_view()}
+                    </select>
+                </label>
+            }
         })
     };
     let language =
@@ -476,7 +523,9 @@ pub fn NetworkView(name: String) -> impl IntoView {
                 <h2>{language}</h2>
                 <span class="pou-title">{shown_name}</span>
                 <span class="ed-spacer"></span>
+                {instance_picker}
                 <span class="view-note-inline">"As drawn in the imported file"</span>
+                <PouActions kind=DiagramKind::Network name=actions_name/>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             {move || focused.get().map(|id| view! {

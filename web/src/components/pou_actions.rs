@@ -1,6 +1,6 @@
 //! `Rename POU` and `Delete POU` (after confirming) in the toolbar of a diagram POU's view:
 //! the project-level edits of the core (`Project::rename_ladder_pou`, …), the same for
-//! ladder and Petri net POUs.
+//! ladder, Petri net and network POUs.
 
 use leptos::prelude::*;
 
@@ -13,6 +13,8 @@ pub enum DiagramKind {
     Ladder,
     /// A Petri net POU.
     Petri,
+    /// A network POU (LD, FBD or SFC kept as an imported file drew it).
+    Network,
 }
 
 impl DiagramKind {
@@ -20,6 +22,7 @@ impl DiagramKind {
         match self {
             DiagramKind::Ladder => "ladder POU",
             DiagramKind::Petri => "Petri net POU",
+            DiagramKind::Network => "network POU",
         }
     }
 
@@ -27,6 +30,7 @@ impl DiagramKind {
         match self {
             DiagramKind::Ladder => PouView::Ladder(name),
             DiagramKind::Petri => PouView::Petri(name),
+            DiagramKind::Network => PouView::Network(name),
         }
     }
 }
@@ -44,6 +48,7 @@ pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
         let done = match kind {
             DiagramKind::Ladder => project.rename_ladder_pou(&old, &text),
             DiagramKind::Petri => project.rename_petri_pou(&old, &text),
+            DiagramKind::Network => project.rename_network_pou(&old, &text),
         };
         match done {
             Ok(()) => {
@@ -73,6 +78,7 @@ pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
         let done = match kind {
             DiagramKind::Ladder => project.delete_ladder_pou(&name),
             DiagramKind::Petri => project.delete_petri_pou(&name),
+            DiagramKind::Network => project.delete_network_pou(&name),
         };
         if done.is_ok() {
             state.project.set(project);

@@ -109,6 +109,15 @@ impl AppState {
                     let _ = sim.hold(&name, &value);
                 }
                 self.restore_sim_settings(&mut sim);
+                // A network PROGRAM's function outputs have no variables: the simulator
+                // watches their expressions so the network view can show them.
+                if let Some(net) =
+                    project.networks.iter().find(|n| n.name.eq_ignore_ascii_case(&chosen))
+                {
+                    for (_, text) in plc_core::network::live::function_watches(net) {
+                        let _ = sim.add_watch(&text);
+                    }
+                }
                 let places = build.source.as_ref().and_then(|s| {
                     s.map.petri.iter().find(|seg| seg.pou.eq_ignore_ascii_case(&chosen))
                 });
