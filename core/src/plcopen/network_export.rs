@@ -140,8 +140,21 @@ fn size(e: &NetElement) -> String {
 fn element_xml(out: &mut String, e: &NetElement) {
     let id = esc(&e.id);
     match &e.kind {
-        NetKind::LeftRail | NetKind::RightRail => {
-            let tag = if e.kind == NetKind::LeftRail { "leftPowerRail" } else { "rightPowerRail" };
+        // Elements of several outputs, each named (`formalParameter`).
+        NetKind::LeftRail
+        | NetKind::RightRail
+        | NetKind::SelectionDivergence
+        | NetKind::SelectionConvergence
+        | NetKind::SimultaneousDivergence
+        | NetKind::SimultaneousConvergence => {
+            let tag = match e.kind {
+                NetKind::LeftRail => "leftPowerRail",
+                NetKind::RightRail => "rightPowerRail",
+                NetKind::SelectionDivergence => "selectionDivergence",
+                NetKind::SelectionConvergence => "selectionConvergence",
+                NetKind::SimultaneousDivergence => "simultaneousDivergence",
+                _ => "simultaneousConvergence",
+            };
             let _ = writeln!(out, "{I}<{tag} localId=\"{id}\"{}>", size(e));
             position(out, e);
             let indent = format!("{I}  ");
@@ -293,27 +306,6 @@ fn element_xml(out: &mut String, e: &NetElement) {
                 }
             }
             let _ = writeln!(out, "{indent}</condition>\n{I}</transition>");
-        }
-        NetKind::SelectionDivergence
-        | NetKind::SelectionConvergence
-        | NetKind::SimultaneousDivergence
-        | NetKind::SimultaneousConvergence => {
-            let tag = match e.kind {
-                NetKind::SelectionDivergence => "selectionDivergence",
-                NetKind::SelectionConvergence => "selectionConvergence",
-                NetKind::SimultaneousDivergence => "simultaneousDivergence",
-                _ => "simultaneousConvergence",
-            };
-            let _ = writeln!(out, "{I}<{tag} localId=\"{id}\"{}>", size(e));
-            position(out, e);
-            let indent = format!("{I}  ");
-            for p in &e.inputs {
-                point_in(out, p, &indent);
-            }
-            for p in &e.outputs {
-                point_out(out, p, &indent, true);
-            }
-            let _ = writeln!(out, "{I}</{tag}>");
         }
         NetKind::JumpStep { target } => {
             let _ = writeln!(
