@@ -25,6 +25,9 @@ pub struct RunOptions {
     /// For a project imported from a file: where its ladder cells and ST lines came from,
     /// so their problems carry the line and column in that file.
     pub file_map: FileMap,
+    /// The plant PROGRAM run after the controller on every scan (a project's settings name
+    /// it); its variables are reported under its name.
+    pub plant: Option<String>,
 }
 
 impl Default for RunOptions {
@@ -35,6 +38,7 @@ impl Default for RunOptions {
             cycle_ms: 10,
             set: Vec::new(),
             file_map: FileMap::default(),
+            plant: None,
         }
     }
 }
@@ -175,10 +179,25 @@ fn run_checked(
             return report;
         }
     };
-    let mut sim = match Simulator::new(program, main) {
+    let plant = match options.plant.as_deref() {
+        Some(name) => match crate::build::find_program(&program, Some(name)) {
+            Ok(q) => Some(q).filter(|&q| q != main),
+            Err((code, message)) => {
+                let message = format!("the plant named in the settings: {message}");
+                report.diagnostics.push(option_error(code, message));
+                return report;
+            }
+        },
+        None => None,
+    };
+    let made = match plant {
+        Some(q) => Simulator::with_plant(program, main, q).map_err(|e| (Code::PlantMismatch, e)),
+        None => Simulator::new(program, main).map_err(|e| (Code::ProgramTooLarge, e)),
+    };
+    let mut sim = match made {
         Ok(sim) => sim,
-        Err(e) => {
-            report.diagnostics.push(option_error(Code::ProgramTooLarge, e.to_string()));
+        Err((code, e)) => {
+            report.diagnostics.push(option_error(code, e.to_string()));
             return report;
         }
     };
@@ -263,6 +282,7 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
         build.diagnostics.iter().map(|d| project_report_in(d, &options.file_map)).collect();
     let program = if build.has_errors() { None } else { build.program.clone() };
     let mut options = options.clone();
+    options.plant = project.settings.plant.clone();
     if options.program.is_none() {
         options.program = project.settings.program.clone().filter(|name| {
             program.as_ref().is_some_and(|p| crate::build::find_program(p, Some(name)).is_ok())
@@ -288,7 +308,7 @@ pub fn project_simulator(
     if build.has_errors() {
         return Err(build.diagnostics.iter().map(project_report).collect());
     }
-    build.simulator(program).map_err(|d| {
+    build.simulator_with_plant(program, project.settings.plant.as_deref()).map_err(|d| {
         let mut reports: Vec<DiagnosticReport> =
             build.diagnostics.iter().map(project_report).collect();
         reports.push(option_error(d.code, d.message));

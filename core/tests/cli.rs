@@ -443,3 +443,45 @@ fn st_view_prints_a_network_pou() {
     assert!(!out.status.success());
     assert!(String::from_utf8_lossy(&out.stderr).contains("they are: Main"));
 }
+
+/// A project whose settings name a plant PROGRAM runs it after the controller on every
+/// scan; `--json` reports its variables under its name (issue 17, "A plant is a program").
+#[test]
+fn run_runs_the_plant_named_in_the_settings() {
+    let source = "PROGRAM Control\nVAR_INPUT Level : INT; END_VAR\nVAR_OUTPUT Fill : BOOL; END_VAR\nIF Level < 40 THEN Fill := TRUE; ELSIF Level > 60 THEN Fill := FALSE; END_IF;\nEND_PROGRAM\nPROGRAM Tank\nVAR_INPUT Fill : BOOL; END_VAR\nVAR_OUTPUT Level : INT; END_VAR\nVAR Scans : INT; END_VAR\nIF Fill THEN Level := Level + 5; ELSIF Level > 0 THEN Level := Level - 1; END_IF;\nScans := Scans + 1;\nEND_PROGRAM\n";
+    let project = |plant_source: &str| {
+        serde_json::json!({
+            "schema": 1,
+            "name": "Tank",
+            "source": plant_source,
+            "settings": { "cycle_ms": 10, "traced": [], "breakpoints": [], "plant": "Tank" }
+        })
+        .to_string()
+    };
+    let path = source_file("tank.plcproj.json", &project(source));
+    let out = plc(&["run", &path.to_string_lossy(), "--cycles", "3", "--json"]);
+    assert!(out.status.success(), "{}", stdout(&out));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
+    assert_eq!(v["vars"]["Level"], 15, "{v}");
+    assert_eq!(v["vars"]["Tank"]["Scans"], 3, "{v}");
+    assert_eq!(v["vars"]["Tank"]["Fill"], true, "{v}");
+    // The plant run on its own has no plant.
+    let out =
+        plc(&["run", &path.to_string_lossy(), "--cycles", "3", "--program", "Tank", "--json"]);
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
+    assert_eq!(v["vars"]["Scans"], 3, "{v}");
+    assert!(v["vars"].get("Tank").is_none(), "{v}");
+    // Linked variables of two types: E0306, named.
+    let bad = source.replace(
+        "VAR_OUTPUT Level : INT; END_VAR\nVAR Scans",
+        "VAR_OUTPUT Level : DINT; END_VAR\nVAR Scans",
+    );
+    let path = source_file("tank-bad.plcproj.json", &project(&bad));
+    let out = plc(&["run", &path.to_string_lossy(), "--json"]);
+    assert!(!out.status.success());
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
+    assert_eq!(v["status"], "error");
+    let d =
+        v["diagnostics"].as_array().unwrap().iter().find(|d| d["code"] == "E0306").expect("E0306");
+    assert!(d["message"].as_str().unwrap().contains("Level of the plant Tank"), "{d}");
+}

@@ -134,7 +134,7 @@ enum Command {
 /// What a file holds: plain ST text or a whole project (with ladder POUs).
 enum Input {
     Source(String),
-    Project(Project),
+    Project(Box<Project>),
 }
 
 /// A file opened: what it holds, and what its import skipped or changed.
@@ -189,7 +189,7 @@ fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
         LoadFailure { message: e.to_string(), line, column }
     })?;
     Ok(Loaded {
-        input: Input::Project(opened.project),
+        input: Input::Project(Box::new(opened.project)),
         notes: opened.warnings,
         skipped: opened.skipped,
         file_map: opened.file_map,
@@ -265,7 +265,7 @@ fn skipped_program(loaded: &Loaded, program: Option<&str>) -> Option<DiagnosticR
 /// Loads a project file (JSON) or a PLCopen XML file as a project.
 fn load_project(path: &Path) -> Result<Project, String> {
     match load_input(path)? {
-        Input::Project(p) => Ok(p),
+        Input::Project(p) => Ok(*p),
         Input::Source(text) => {
             let mut p = Project::new(
                 path.file_stem().map_or("project".into(), |s| s.to_string_lossy().into_owned()),
@@ -504,7 +504,14 @@ fn main() -> ExitCode {
             }
             run(
                 &file,
-                RunOptions { program, cycles, cycle_ms, set: pairs, file_map: Default::default() },
+                RunOptions {
+                    program,
+                    cycles,
+                    cycle_ms,
+                    set: pairs,
+                    file_map: Default::default(),
+                    plant: None,
+                },
                 json,
             )
         }

@@ -248,6 +248,17 @@ impl ProjectBuild {
 
     /// Powers a simulator on for PROGRAM `name` (or the first one).
     pub fn simulator(&self, name: Option<&str>) -> Result<Simulator, ProjectDiagnostic> {
+        self.simulator_with_plant(name, None)
+    }
+
+    /// [`ProjectBuild::simulator`] with PROGRAM `plant` (the project's settings name it)
+    /// run after the chosen one on every scan; no plant runs when the plant is itself the
+    /// PROGRAM chosen.
+    pub fn simulator_with_plant(
+        &self,
+        name: Option<&str>,
+        plant: Option<&str>,
+    ) -> Result<Simulator, ProjectDiagnostic> {
         let error = |code, message| ProjectDiagnostic {
             severity: Severity::Error,
             code,
@@ -258,8 +269,21 @@ impl ProjectBuild {
             return Err(error(Code::NoProgram, "the project has errors".to_string()));
         };
         let main = find_program(program, name).map_err(|(code, message)| error(code, message))?;
-        Simulator::new(program.clone(), main)
-            .map_err(|e| error(Code::ProgramTooLarge, e.to_string()))
+        let plant = match plant {
+            Some(p) => {
+                let q = find_program(program, Some(p)).map_err(|(code, message)| {
+                    error(code, format!("the plant named in the settings: {message}"))
+                })?;
+                Some(q).filter(|&q| q != main)
+            }
+            None => None,
+        };
+        match plant {
+            Some(q) => Simulator::with_plant(program.clone(), main, q)
+                .map_err(|e| error(Code::PlantMismatch, e.to_string())),
+            None => Simulator::new(program.clone(), main)
+                .map_err(|e| error(Code::ProgramTooLarge, e.to_string())),
+        }
     }
 
     /// The site of a byte span of the combined source (a fault, a running statement).

@@ -129,10 +129,12 @@ impl Layouts {
 }
 
 /// Builds the executable (see [`super::compile`]).
-pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError> {
-    match p.pous.get(main as usize) {
-        Some(m) if m.kind == PouKind::Program => {}
-        _ => return Err(CompileError::NotAProgram(main)),
+pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executable, CompileError> {
+    for &q in std::iter::once(&main).chain(more) {
+        match p.pous.get(q as usize) {
+            Some(m) if m.kind == PouKind::Program => {}
+            _ => return Err(CompileError::NotAProgram(q)),
+        }
     }
     let mut lay = Layouts::new(p);
     let mut at = 0u32;
@@ -145,6 +147,12 @@ pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError
     let main_size = lay.pou(p, main)?.size;
     lay.main_base = at;
     at = add(at, u64::from(main_size))?;
+    let mut instances = Vec::with_capacity(more.len());
+    for &q in more {
+        let size = lay.pou(p, q)?.size;
+        instances.push((q, at));
+        at = add(at, u64::from(size))?;
+    }
     let mut exe = Executable {
         out: Code::default(),
         pous: vec![
@@ -169,6 +177,7 @@ pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError
         type_table: p.types.clone(),
         vars: Vec::new(),
         lay,
+        instances,
     };
     exe.out.init = vec![0; at as usize];
     for (i, g) in p.globals.iter().enumerate() {
@@ -178,6 +187,9 @@ pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError
     let mb = exe.main_base;
     write_instance(&mut exe, p, mb, main, None)?;
     exe.pous[main as usize].frame = Some(exe.main_base);
+    for (q, base) in exe.instances.clone() {
+        write_instance(&mut exe, p, base, q, None)?;
+    }
     finish_new_pous(&mut exe, p)?;
     // Variables and RETAIN ranges.
     let mut ranges = Vec::new();
@@ -191,6 +203,28 @@ pub(crate) fn build(p: &Program, main: PouId) -> Result<Executable, CompileError
             global: false,
         });
         retain_ranges(&mut exe.lay, p, v, addr, &mut ranges)?;
+    }
+    // Each further PROGRAM is one variable of the main scope, named as its POU.
+    for (q, base) in exe.instances.clone() {
+        let pou = p.pou(q);
+        let var = Var {
+            name: pou.name.clone(),
+            ty: Type::Fb(q),
+            section: VarSection::Var,
+            retain: false,
+            constant: false,
+            location: None,
+            init: None,
+            range: None,
+            comment: None,
+            span: pou.span,
+        };
+        retain_ranges(&mut exe.lay, p, &var, base, &mut ranges)?;
+        exe.vars.push(VarEntry {
+            var,
+            slot: Slot { addr: base, ty: Type::Fb(q), bit: None },
+            global: false,
+        });
     }
     for (i, g) in p.globals.iter().enumerate() {
         let addr = exe.lay.globals[i];
@@ -232,12 +266,15 @@ fn finish_new_pous(exe: &mut Executable, p: &Program) -> Result<(), CompileError
     exe.lay.real = true;
     for q in exe.lay.laid_out() {
         let pou = p.pou(q);
-        if exe.pous[q as usize].entry != u32::MAX || (pou.kind == PouKind::Program && q != exe.main)
+        let instance = exe.instances.iter().any(|(i, _)| *i == q);
+        if exe.pous[q as usize].entry != u32::MAX
+            || (pou.kind == PouKind::Program && q != exe.main && !instance)
         {
             continue;
         }
         let frame = match pou.kind {
             PouKind::FunctionBlock => Frame::Instance,
+            PouKind::Program if instance => Frame::Instance,
             _ => Frame::Static,
         };
         exe.pous[q as usize].entry = exe.out.code.len() as u32;

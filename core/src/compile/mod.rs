@@ -33,7 +33,17 @@ pub use error::CompileError;
 
 /// Compiles `program` to run PROGRAM `main`.
 pub fn compile(program: &Program, main: PouId) -> Result<Executable, CompileError> {
-    layout::build(program, main)
+    layout::build(program, main, &[])
+}
+
+/// Compiles PROGRAM `main` and, after it, the PROGRAMs `more` (each one instance, named
+/// as its POU: `Plant.Level`), all in one memory image; see [`Executable::instances`].
+pub fn compile_with_programs(
+    program: &Program,
+    main: PouId,
+    more: &[PouId],
+) -> Result<Executable, CompileError> {
+    layout::build(program, main, more)
 }
 
 impl Executable {

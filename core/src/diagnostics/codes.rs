@@ -120,6 +120,7 @@ problem_codes! {
     BadCycleTime = "E0303": "a scan cycle time outside 1 ms to 1 minute",
     FileNotOpened = "E0304": "a file that cannot be opened (unreadable, malformed, or not a project, PLCopen XML, PNML or ST file)",
     ProgramSkipped = "E0305": "the PROGRAM asked for was left out when its file was imported",
+    PlantMismatch = "E0306": "a plant PROGRAM whose inputs or outputs do not match the controller's variables",
 
     // ---- ladder diagrams: E0400–E0449 ----
     LadderOpenCircuit = "E0400": "a ladder element that no power path reaches, or that leads nowhere",

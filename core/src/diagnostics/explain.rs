@@ -259,9 +259,12 @@ explanations! {
     FileNotOpened: "The file given to `plc run` or `plc check` could not be opened: it cannot be read, it is not well-formed (XML, JSON), or it is XML but not a PLCopen project. The report says where in the file the problem is when it can.",
         drawn("`plc run plc.xml` on a file cut off in the middle of an element"),
         drawn("The complete file, as OpenPLC Editor or Beremiz saved it");
-    ProgramSkipped: "The PROGRAM named with `--program` is in the file, but the import had to leave it out (its body is in a language the trainer does not import yet, such as FBD or SFC in PLCopen XML). The message says why; run another PROGRAM of the file, or rewrite this one in ST or LD.",
-        drawn("`plc run --program Traffic plc.xml` where `Traffic` is an SFC body"),
+    ProgramSkipped: "The PROGRAM named with `--program` is in the file, but the import had to leave it out (its body is in a language the trainer does not import yet, such as IL in PLCopen XML). The message says why; run another PROGRAM of the file, or rewrite this one in ST or LD.",
+        drawn("`plc run --program Traffic plc.xml` where `Traffic` is an IL body"),
         drawn("`plc run --program Main plc.xml` where `Main` is an ST or LD body");
+    PlantMismatch: "The project's settings name a plant PROGRAM that runs after the controller on every scan; each of its VAR_INPUTs reads the controller's variable of the same name and each VAR_OUTPUT writes one, so both must have one elementary type (BOOL, INT, REAL…). Declare them alike, or rename one of them.",
+        drawn("`\"plant\": \"Tank\"` with `Level : REAL` in PROGRAM Tank and `Level : INT` in the controller"),
+        drawn("`Level : INT` in both PROGRAMs");
     LadderOpenCircuit: "An element of the rung cannot carry power: no path from the left rail reaches it, or it leads nowhere (no coil after it).",
         drawn("A contact `Start` on row 1, column 3, with empty cells before it: `|-    -| Start |--( Motor )-`."),
         drawn("Wire the gap: `|-------| Start |--( Motor )-`.");

@@ -115,6 +115,9 @@ pub struct Executable {
     pub(crate) type_table: TypeTable,
     pub(crate) vars: Vec<VarEntry>,
     pub(crate) lay: Layouts,
+    /// Further PROGRAM instances run after the main one (a plant): `(POU, instance base)`,
+    /// each compiled like a function block's body, relative to its base.
+    pub(crate) instances: Vec<(PouId, u32)>,
 }
 
 impl Executable {

@@ -60,11 +60,21 @@ pub struct Settings {
     /// The PROGRAM the web app runs when the project has several (`None`: the first one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub program: Option<String>,
+    /// The PROGRAM that models the plant (`docs/plants.md`): run after the controller on
+    /// every scan, its inputs and outputs linked to the controller's variables by name.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plant: Option<String>,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { cycle_ms: 10, traced: Vec::new(), breakpoints: Vec::new(), program: None }
+        Settings {
+            cycle_ms: 10,
+            traced: Vec::new(),
+            breakpoints: Vec::new(),
+            program: None,
+            plant: None,
+        }
     }
 }
 

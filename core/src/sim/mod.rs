@@ -18,6 +18,7 @@ use crate::compile::{self, ConditionId, Executable, Slot};
 use crate::diagnostics::{Diagnostic, Span};
 use crate::limits;
 use crate::semantic::{self, InitValue, PouId, Program, Type};
+use crate::syntax::VarSection;
 use crate::vm::{self, Fault, Machine, RuntimeError, SysState, Value};
 
 pub use crate::limits::DEFAULT_WATCHDOG;
@@ -86,6 +87,8 @@ pub enum SimError {
     BadCondition(Vec<Diagnostic>),
     /// No breakpoint with that id.
     UnknownBreakpoint(BreakpointId),
+    /// The plant cannot be run with this controller.
+    Plant(String),
     /// The variable is an array, structure or FB instance: the timeline records single
     /// values.
     NotTraceable(String),
@@ -102,6 +105,7 @@ impl fmt::Display for SimError {
                 write!(f, "breakpoint condition: {first}")
             }
             SimError::UnknownBreakpoint(id) => write!(f, "no breakpoint #{}", id.0),
+            SimError::Plant(m) => write!(f, "plant: {m}"),
             SimError::NotTraceable(p) => write!(
                 f,
                 "`{p}` is not a single value: the timeline records single values, so choose its elements or members (e.g. `{p}[1]` or `{p}.x`)"
@@ -146,6 +150,18 @@ pub struct Simulator {
     trace: Trace,
     watchdog: u64,
     watches: Vec<Watch>,
+    plant: Option<Plant>,
+}
+
+/// A plant PROGRAM run after the controller on every scan (`docs/plants.md`): its inputs
+/// are the controller's variables of the same names, copied in before it runs; its
+/// outputs are copied to the controller's variables of the same names after it.
+#[derive(Debug, Clone)]
+struct Plant {
+    /// Controller slot → plant input slot.
+    inputs: Vec<(Slot, Slot)>,
+    /// Plant output slot → controller slot.
+    outputs: Vec<(Slot, Slot)>,
 }
 
 /// An expression the simulator evaluates after each run of scans (the network view's
@@ -163,7 +179,55 @@ impl Simulator {
     pub fn new(program: Program, main: PouId) -> Result<Self, SimError> {
         let exe = compile::compile(&program, main).map_err(SimError::Compile)?;
         let machine = Machine::new(&exe);
-        Ok(Simulator {
+        Ok(Simulator::new_compiled(program, exe, machine))
+    }
+
+    /// Like [`Simulator::new`], with PROGRAM `plant` run after `main` on every scan, on the
+    /// same virtual clock: each VAR_INPUT of the plant reads the controller's variable of
+    /// its name, each VAR_OUTPUT is written to the controller's variable of its name (a
+    /// sensor), matched case-insensitively and of the same elementary type. The plant's
+    /// variables are read as `Plant.Name`.
+    pub fn with_plant(program: Program, main: PouId, plant: PouId) -> Result<Self, SimError> {
+        if plant == main {
+            return Err(SimError::Plant("the plant is the PROGRAM being run".into()));
+        }
+        let exe =
+            compile::compile_with_programs(&program, main, &[plant]).map_err(SimError::Compile)?;
+        let machine = Machine::new(&exe);
+        let plant_pou = program.pou(plant);
+        let main_pou = program.pou(main);
+        let mut links = Plant { inputs: Vec::new(), outputs: Vec::new() };
+        for v in &plant_pou.vars {
+            let into_plant = match v.section {
+                VarSection::Input => true,
+                VarSection::Output => false,
+                _ => continue,
+            };
+            let Some(k) = main_pou.find_var(&v.name.to_ascii_uppercase()) else { continue };
+            let c = &main_pou.vars[k as usize];
+            if c.ty != v.ty || !matches!(v.ty, Type::Elem(_) | Type::Enum(_)) {
+                return Err(SimError::Plant(format!(
+                    "{} of the plant {} and of the controller {} must be of one elementary type",
+                    v.name, plant_pou.name, main_pou.name
+                )));
+            }
+            let ctrl =
+                exe.locate(&c.name).ok_or_else(|| SimError::UnknownVariable(c.name.clone()))?;
+            let path = format!("{}.{}", plant_pou.name, v.name);
+            let own = exe.locate(&path).ok_or(SimError::UnknownVariable(path))?;
+            if into_plant {
+                links.inputs.push((ctrl, own));
+            } else {
+                links.outputs.push((own, ctrl));
+            }
+        }
+        let mut sim = Simulator::new_compiled(program, exe, machine);
+        sim.plant = Some(links);
+        Ok(sim)
+    }
+
+    fn new_compiled(program: Program, exe: Executable, machine: Machine) -> Self {
+        Simulator {
             program,
             exe,
             machine,
@@ -179,7 +243,30 @@ impl Simulator {
             trace: Trace::new(Vec::new(), 0),
             watchdog: DEFAULT_WATCHDOG,
             watches: Vec::new(),
-        })
+            plant: None,
+        }
+    }
+
+    /// The name of the plant PROGRAM run after the controller, if any.
+    pub fn plant_name(&self) -> Option<&str> {
+        self.exe.instances.first().map(|(q, _)| self.program.pou(*q).name.as_str())
+    }
+
+    /// Runs the plant after the controller: its inputs copied in, then its outputs out.
+    fn run_plant(&mut self, sys: SysState) -> Result<(), RuntimeError> {
+        let Some(plant) = &self.plant else { return Ok(()) };
+        let mem = self.machine.memory_mut();
+        for (from, to) in &plant.inputs {
+            let v = vm::read(mem, &self.exe, from);
+            let _ = vm::write(mem, &self.exe, to, &v);
+        }
+        self.machine.run_instance(&self.exe, 0, sys, self.watchdog)?;
+        let mem = self.machine.memory_mut();
+        for (from, to) in &plant.outputs {
+            let v = vm::read(mem, &self.exe, from);
+            let _ = vm::write(mem, &self.exe, to, &v);
+        }
+        Ok(())
     }
 
     /// The checked program.
@@ -242,7 +329,7 @@ impl Simulator {
         self.apply_pinned();
         let sys = SysState { first_scan: self.first_scan, time_ns: self.time_ns };
         if let Err(RuntimeError { fault, span, pou }) =
-            self.machine.run_scan(&self.exe, sys, self.watchdog)
+            self.machine.run_scan(&self.exe, sys, self.watchdog).and_then(|()| self.run_plant(sys))
         {
             let info = FaultInfo { fault, span, pou, scan: self.scans + 1, time_ns: self.time_ns };
             self.state = SimState::Faulted(info.clone());

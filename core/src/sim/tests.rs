@@ -308,3 +308,75 @@ END_PROGRAM";
     assert_eq!(s.instances_of("TON"), ["a.t", "l.m.t", "b.t"]);
     assert!(s.instances_of("Nope").is_empty());
 }
+
+/// A controller and a tank plant: the controller fills while the level is low; the plant
+/// integrates the level from the valve over the scan's time and reports it back.
+const TANK: &str = "
+PROGRAM Control
+VAR_INPUT Level : INT; END_VAR
+VAR_OUTPUT Fill : BOOL; END_VAR
+IF Level < 40 THEN Fill := TRUE; ELSIF Level > 60 THEN Fill := FALSE; END_IF;
+END_PROGRAM
+PROGRAM Tank
+VAR_INPUT Fill : BOOL; END_VAR
+VAR_OUTPUT Level : INT; END_VAR
+VAR Scans : INT; END_VAR
+IF Fill THEN Level := Level + 5; ELSIF Level > 0 THEN Level := Level - 1; END_IF;
+Scans := Scans + 1;
+END_PROGRAM";
+
+fn tank_sim() -> Simulator {
+    let analysis = semantic::analyze(TANK);
+    assert!(!crate::diagnostics::has_errors(&analysis.diagnostics), "{:?}", analysis.diagnostics);
+    let program = analysis.program.unwrap();
+    let find = |n: &str| program.programs().find(|&p| program.pou(p).name == n).unwrap();
+    let (main, plant) = (find("Control"), find("Tank"));
+    Simulator::with_plant(program, main, plant).unwrap()
+}
+
+#[test]
+fn a_plant_runs_after_the_controller_on_every_scan() {
+    let mut s = tank_sim();
+    assert_eq!(s.plant_name(), Some("Tank"));
+    // Scan 1: the controller sees Level 0 and fills; the plant then rises to 5, which
+    // the controller reads on scan 2.
+    s.scan();
+    assert!(boolean(&s, "Fill"));
+    assert_eq!(int(&s, "Tank.Level"), 5);
+    assert_eq!(int(&s, "Level"), 5);
+    // Filling stops above 60 (at 65) and the level falls back to 39 before it starts again.
+    let mut levels = Vec::new();
+    for _ in 0..60 {
+        s.scan();
+        levels.push(int(&s, "Level"));
+    }
+    assert_eq!(levels.iter().copied().max(), Some(65));
+    let peak = levels.iter().position(|&l| l == 65).unwrap();
+    assert_eq!(levels[peak..].iter().copied().min(), Some(39));
+    assert_eq!(levels[peak + 1], 64, "the controller stops filling once it reads 65");
+    assert_eq!(int(&s, "Tank.Scans"), 61);
+    // The plant's variables are in the JSON report under its name.
+    let vars = s.vars_json();
+    assert_eq!(vars["Tank"]["Scans"], 61);
+    // A cold restart starts both over.
+    s.cold_restart();
+    assert_eq!(int(&s, "Tank.Level"), 0);
+}
+
+#[test]
+fn a_plant_whose_links_do_not_match_is_refused() {
+    let src = TANK.replace(
+        "VAR_OUTPUT Level : INT; END_VAR\nVAR Scans",
+        "VAR_OUTPUT Level : REAL; END_VAR\nVAR Scans",
+    );
+    let analysis = semantic::analyze(&src.replace(
+        "Level := Level + 5; ELSIF Level > 0 THEN Level := Level - 1;",
+        "Level := Level + 5.0;",
+    ));
+    let program = analysis.program.unwrap();
+    let find = |n: &str| program.programs().find(|&p| program.pou(p).name == n).unwrap();
+    let (main, plant) = (find("Control"), find("Tank"));
+    let err = Simulator::with_plant(program.clone(), main, plant).unwrap_err();
+    assert!(err.to_string().contains("Level of the plant Tank"), "{err}");
+    assert!(Simulator::with_plant(program, main, main).is_err());
+}

@@ -133,6 +133,22 @@ impl Machine {
         self.run(exe, (entry, trusted), exe.main_base, sys, budget).map(|_| ())
     }
 
+    /// Runs the body of further PROGRAM instance `k` of the executable (a plant, after the
+    /// main program in the same scan).
+    pub fn run_instance(
+        &mut self,
+        exe: &Executable,
+        k: usize,
+        sys: SysState,
+        budget: u64,
+    ) -> Result<(), RuntimeError> {
+        let Some(&(pou, base)) = exe.instances.get(k) else { return Ok(()) };
+        let code = exe.pous.get(pou as usize);
+        let entry = code.map_or(u32::MAX, |p| p.entry);
+        let trusted = code.is_some_and(|p| p.trusted);
+        self.run(exe, (entry, trusted), base, sys, budget).map(|_| ())
+    }
+
     /// Evaluates a breakpoint condition (in the main program's scope) with at most
     /// `budget` instructions.
     pub fn eval_condition(

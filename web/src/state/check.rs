@@ -100,7 +100,7 @@ impl AppState {
             self.bump();
             return;
         };
-        match build.simulator(Some(&chosen)) {
+        match build.simulator_with_plant(Some(&chosen), project.settings.plant.as_deref()) {
             Ok(mut sim) => {
                 sim.set_cycle_ns(
                     plc_core::limits::cycle_ns(project.settings.cycle_ms).unwrap_or(10_000_000),
