@@ -298,8 +298,9 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
     })
 }
 
-/// Compiles a project and powers a simulator on for PROGRAM `program` (or the first one),
-/// for scan-by-scan use (tests, the web app). Errors come as [`run_project`] reports them.
+/// Compiles a project and powers a simulator on for PROGRAM `program` (or the one the
+/// project's settings choose, else the first one), with the plant the settings name, for
+/// scan-by-scan use (tests, the web app). Errors come as [`run_project`] reports them.
 pub fn project_simulator(
     project: &crate::project::Project,
     program: Option<&str>,
@@ -308,6 +309,10 @@ pub fn project_simulator(
     if build.has_errors() {
         return Err(build.diagnostics.iter().map(project_report).collect());
     }
+    let chosen = project.settings.program.as_deref().filter(|name| {
+        build.program.as_ref().is_some_and(|p| crate::build::find_program(p, Some(name)).is_ok())
+    });
+    let program = program.or(chosen);
     build.simulator_with_plant(program, project.settings.plant.as_deref()).map_err(|d| {
         let mut reports: Vec<DiagnosticReport> =
             build.diagnostics.iter().map(project_report).collect();

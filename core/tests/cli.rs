@@ -157,7 +157,7 @@ fn bench_quick_prints_every_figure() {
     let out = plc(&["bench", "--quick", "--json"]);
     assert!(out.status.success());
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
-    for key in ["B1", "B2", "B3", "B4", "B5", "B6"] {
+    for key in ["B1", "B2", "B3", "B4", "B5", "B6", "B7"] {
         assert!(v.get(key).is_some(), "{key} missing");
     }
     assert!(v["B1"]["ratio"].as_f64().is_some_and(|r| r > 0.0));

@@ -9,6 +9,9 @@ use crate::petri::{Arc, Net, PetriPou, Place, Transition};
 /// Petri net POU), shipped in `examples/`.
 pub const WEIGHING: &str = include_str!("../../../examples/weighing-sequential.plcproj.json");
 
+/// B7's project: the same controller with its plant PROGRAM (`examples/weighing-plant.plcproj.json`).
+pub const WEIGHING_PLANT: &str = include_str!("../../../examples/weighing-plant.plcproj.json");
+
 /// B1 in ST: `n` iterations of `d := REAL_TO_DINT(a * b)` with a and b changing.
 pub fn b1(n: u32) -> String {
     format!(

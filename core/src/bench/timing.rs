@@ -7,7 +7,7 @@ use std::time::Instant;
 use serde::Serialize;
 use serde_json::{json, Value as Json};
 
-use super::workload::{check_and_compile, load, run_weighing, scan, weighing, BenchError};
+use super::workload::{check_and_compile, err, load, run_weighing, scan, weighing, BenchError};
 use super::{ladder, programs};
 
 /// How much work each benchmark does.
@@ -180,8 +180,47 @@ pub fn b6(effort: Effort) -> Result<Json, BenchError> {
     )
 }
 
+/// B7: ns per scan of the weighing controller alone, and with its plant PROGRAM run after
+/// it on every scan (`examples/weighing-plant.plcproj.json`), Start held, best of 3 runs.
+/// Alone, nothing moves the scale, so the controller stays filling; with its plant it
+/// goes through every step.
+pub fn b7(effort: Effort) -> Result<Json, BenchError> {
+    let scans: u64 = if effort == Effort::Full { 360_000 } else { 3_600 };
+    let with_plant = crate::project::Project::from_file(programs::WEIGHING_PLANT).map_err(err)?;
+    let mut alone = with_plant.clone();
+    alone.settings.plant = None;
+    let per_scan = |project: &crate::project::Project| -> Result<f64, BenchError> {
+        let mut sim = crate::run::project_simulator(project, None).map_err(|d| {
+            BenchError(d.first().map_or("B7 does not build".into(), |d| d.message.clone()))
+        })?;
+        sim.set_watchdog(u64::MAX / 2);
+        sim.hold("Start", "TRUE").map_err(err)?;
+        let mut failed = None;
+        let t = best_of(3, || {
+            for _ in 0..scans {
+                if let Err(e) = scan(&mut sim) {
+                    failed = Some(e);
+                    return;
+                }
+            }
+        });
+        match failed {
+            Some(e) => Err(e),
+            None => Ok(t * 1e6 / scans as f64),
+        }
+    };
+    let controller_ns = per_scan(&alone)?;
+    let with_plant_ns = per_scan(&with_plant)?;
+    Ok(json!({
+        "controller_ns": controller_ns,
+        "with_plant_ns": with_plant_ns,
+        "ratio": with_plant_ns / controller_ns.max(1e-9),
+        "scans": scans,
+    }))
+}
+
 /// The figures `plc bench` measures, in the order it prints them.
-pub const FIGURES: [&str; 6] = ["B1", "B2", "B3", "B4", "B5", "B6"];
+pub const FIGURES: [&str; 7] = ["B1", "B2", "B3", "B4", "B5", "B6", "B7"];
 
 /// Runs every benchmark and returns the `plc bench --json` object.
 pub fn run_all(effort: Effort) -> Result<Json, BenchError> {
@@ -206,7 +245,8 @@ pub fn run_selected(effort: Effort, only: &[String]) -> Result<Json, BenchError>
             "B3" => b3(effort)?,
             "B4" => b4(effort)?,
             "B5" => b5(effort)?,
-            _ => b6(effort)?,
+            "B6" => b6(effort)?,
+            _ => b7(effort)?,
         };
         out.insert(f.to_string(), v);
     }
@@ -257,6 +297,15 @@ pub fn report_text(report: &Json, effort: Effort) -> String {
         let t = num("B5", "native_ms");
         let text = format!("{t:.0} ms for {} scans (native)", report["B5"]["scans"]);
         out += &line("B5", text, "<= 1000 ms (Chromium)", t <= 1000.0);
+    }
+    if report.get("B7").is_some() {
+        let r = num("B7", "ratio");
+        let text = format!(
+            "{:.0} ns/scan with the plant / {:.0} alone = {r:.2}x",
+            num("B7", "with_plant_ns"),
+            num("B7", "controller_ns")
+        );
+        out += &line("B7", text, "ratio <= 2", r <= 2.0);
     }
     if report.get("B6").is_some() {
         let t = num("B6", "native_ms");

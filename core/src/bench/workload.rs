@@ -23,7 +23,7 @@ impl fmt::Display for BenchError {
 
 impl std::error::Error for BenchError {}
 
-fn err(e: impl fmt::Display) -> BenchError {
+pub(crate) fn err(e: impl fmt::Display) -> BenchError {
     BenchError(e.to_string())
 }
 

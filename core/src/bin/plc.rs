@@ -117,7 +117,7 @@ enum Command {
         #[command(subcommand)]
         command: petri::PetriCommand,
     },
-    /// Run the benchmark suite (B1–B6) and print each figure with its ratio.
+    /// Run the benchmark suite (B1–B7) and print each figure with its ratio.
     Bench {
         /// Print one JSON object.
         #[arg(long)]

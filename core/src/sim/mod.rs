@@ -153,6 +153,21 @@ pub struct Simulator {
     plant: Option<Plant>,
 }
 
+/// Copies each `(from, to)` pair of linked variables (one elementary type): the cell
+/// itself, or through its value for a bit of a located variable.
+fn copy_links(mem: &mut crate::program::memory::Memory, exe: &Executable, links: &[(Slot, Slot)]) {
+    for (from, to) in links {
+        let cells = (from.addr as usize, to.addr as usize);
+        match (from.bit, to.bit, mem.cells.get(cells.0).copied()) {
+            (None, None, Some(bits)) if cells.1 < mem.cells.len() => mem.cells[cells.1] = bits,
+            _ => {
+                let v = vm::read(mem, exe, from);
+                let _ = vm::write(mem, exe, to, &v);
+            }
+        }
+    }
+}
+
 /// A plant PROGRAM run after the controller on every scan (`docs/plants.md`): its inputs
 /// are the controller's variables of the same names, copied in before it runs; its
 /// outputs are copied to the controller's variables of the same names after it.
@@ -255,17 +270,9 @@ impl Simulator {
     /// Runs the plant after the controller: its inputs copied in, then its outputs out.
     fn run_plant(&mut self, sys: SysState) -> Result<(), RuntimeError> {
         let Some(plant) = &self.plant else { return Ok(()) };
-        let mem = self.machine.memory_mut();
-        for (from, to) in &plant.inputs {
-            let v = vm::read(mem, &self.exe, from);
-            let _ = vm::write(mem, &self.exe, to, &v);
-        }
+        copy_links(self.machine.memory_mut(), &self.exe, &plant.inputs);
         self.machine.run_instance(&self.exe, 0, sys, self.watchdog)?;
-        let mem = self.machine.memory_mut();
-        for (from, to) in &plant.outputs {
-            let v = vm::read(mem, &self.exe, from);
-            let _ = vm::write(mem, &self.exe, to, &v);
-        }
+        copy_links(self.machine.memory_mut(), &self.exe, &plant.outputs);
         Ok(())
     }
 
