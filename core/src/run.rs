@@ -172,32 +172,12 @@ fn run_checked(
         diagnostics,
     };
     let Some(program) = program else { return report };
-    let main = match crate::build::find_program(&program, options.program.as_deref()) {
-        Ok(p) => p,
-        Err((code, message)) => {
-            report.diagnostics.push(option_error(code, message));
-            return report;
-        }
-    };
-    let plant = match options.plant.as_deref() {
-        Some(name) => match crate::build::find_program(&program, Some(name)) {
-            Ok(q) => Some(q).filter(|&q| q != main),
-            Err((code, message)) => {
-                let message = format!("the plant named in the settings: {message}");
-                report.diagnostics.push(option_error(code, message));
-                return report;
-            }
-        },
-        None => None,
-    };
-    let made = match plant {
-        Some(q) => Simulator::with_plant(program, main, q).map_err(|e| (Code::PlantMismatch, e)),
-        None => Simulator::new(program, main).map_err(|e| (Code::ProgramTooLarge, e)),
-    };
+    let made =
+        crate::build::simulator_for(program, options.program.as_deref(), options.plant.as_deref());
     let mut sim = match made {
         Ok(sim) => sim,
-        Err((code, e)) => {
-            report.diagnostics.push(option_error(code, e.to_string()));
+        Err((code, message)) => {
+            report.diagnostics.push(option_error(code, message));
             return report;
         }
     };
@@ -284,9 +264,7 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
     let mut options = options.clone();
     options.plant = project.settings.plant.clone();
     if options.program.is_none() {
-        options.program = project.settings.program.clone().filter(|name| {
-            program.as_ref().is_some_and(|p| crate::build::find_program(p, Some(name)).is_ok())
-        });
+        options.program = build.chosen_program(&project.settings).map(str::to_string);
     }
     run_checked(program, &options, diagnostics, |info| {
         let site = build.site_of(info.span);
@@ -309,10 +287,7 @@ pub fn project_simulator(
     if build.has_errors() {
         return Err(build.diagnostics.iter().map(project_report).collect());
     }
-    let chosen = project.settings.program.as_deref().filter(|name| {
-        build.program.as_ref().is_some_and(|p| crate::build::find_program(p, Some(name)).is_ok())
-    });
-    let program = program.or(chosen);
+    let program = program.or(build.chosen_program(&project.settings));
     build.simulator_with_plant(program, project.settings.plant.as_deref()).map_err(|d| {
         let mut reports: Vec<DiagnosticReport> =
             build.diagnostics.iter().map(project_report).collect();

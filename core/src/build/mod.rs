@@ -213,6 +213,29 @@ pub struct ProjectBuild {
     pub program: Option<Program>,
 }
 
+/// Powers a simulator on for PROGRAM `name` of a checked program (or the first one), with
+/// PROGRAM `plant` run after it on every scan (none when the plant is the one chosen); the
+/// error is the code and message `plc run` reports.
+pub fn simulator_for(
+    program: Program,
+    name: Option<&str>,
+    plant: Option<&str>,
+) -> Result<Simulator, (Code, String)> {
+    let main = find_program(&program, name)?;
+    let plant = match plant {
+        Some(p) => find_program(&program, Some(p)).map_err(|(code, message)| {
+            (code, format!("the plant named in the settings: {message}"))
+        })?,
+        None => main,
+    };
+    if plant == main {
+        Simulator::new(program, main).map_err(|e| (Code::ProgramTooLarge, e.to_string()))
+    } else {
+        Simulator::with_plant(program, main, plant)
+            .map_err(|e| (Code::PlantMismatch, e.to_string()))
+    }
+}
+
 /// Finds PROGRAM `name` (or, without a name, the first PROGRAM of the user) in a checked
 /// program; the error is the code and message `plc run` reports.
 pub fn find_program(program: &Program, name: Option<&str>) -> Result<PouId, (Code, String)> {
@@ -268,22 +291,14 @@ impl ProjectBuild {
         let Some(program) = &self.program else {
             return Err(error(Code::NoProgram, "the project has errors".to_string()));
         };
-        let main = find_program(program, name).map_err(|(code, message)| error(code, message))?;
-        let plant = match plant {
-            Some(p) => {
-                let q = find_program(program, Some(p)).map_err(|(code, message)| {
-                    error(code, format!("the plant named in the settings: {message}"))
-                })?;
-                Some(q).filter(|&q| q != main)
-            }
-            None => None,
-        };
-        match plant {
-            Some(q) => Simulator::with_plant(program.clone(), main, q)
-                .map_err(|e| error(Code::PlantMismatch, e.to_string())),
-            None => Simulator::new(program.clone(), main)
-                .map_err(|e| error(Code::ProgramTooLarge, e.to_string())),
-        }
+        simulator_for(program.clone(), name, plant).map_err(|(code, message)| error(code, message))
+    }
+
+    /// The PROGRAM the project's `settings` choose to run, when the build still has it.
+    pub fn chosen_program<'s>(&self, settings: &'s crate::project::Settings) -> Option<&'s str> {
+        settings.program.as_deref().filter(|name| {
+            self.program.as_ref().is_some_and(|p| find_program(p, Some(name)).is_ok())
+        })
     }
 
     /// The site of a byte span of the combined source (a fault, a running statement).
