@@ -9,6 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 (cd web && trunk build --release)
+node scripts/minify-js.mjs dist
 node scripts/csp.mjs dist/index.html
 gz() { gzip -9 -c "$1" | wc -c; }
 first=0

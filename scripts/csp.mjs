@@ -27,10 +27,12 @@ const policy = [
 ].join('; ');
 const meta = `<meta http-equiv="Content-Security-Policy" content="${policy}">`;
 html = html.replace(/<meta http-equiv="Content-Security-Policy"[^>]*>\n?/g, '');
-if (!/<meta charset="utf-8">/.test(html)) {
+// Trunk's minified index.html writes `<meta charset=utf-8>`.
+const charset = /<meta charset="?utf-8"?>/i;
+if (!charset.test(html)) {
   console.error(`csp.mjs: no <meta charset="utf-8"> in ${file} to put the policy after`);
   process.exit(1);
 }
-html = html.replace('<meta charset="utf-8">', `<meta charset="utf-8">\n  ${meta}`);
+html = html.replace(charset, (m) => `${m}\n  ${meta}`);
 writeFileSync(file, html);
 console.log(`  Content-Security-Policy set (inline start-up script sha256-${hash})`);

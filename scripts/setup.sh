@@ -44,8 +44,9 @@ command -v npm >/dev/null 2>&1 || { log "installing npm"; apt_install npm; }
 # Debian's Chromium for the browser tests (never a downloaded browser).
 command -v chromium >/dev/null 2>&1 || { log "installing Chromium"; apt_install chromium chromium-driver; }
 
-# playwright-core (drives Chromium) and binaryen's wasm-opt 132 (used by trunk).
-if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/playwright-core ]; then
+# playwright-core (drives Chromium), binaryen's wasm-opt 132 (used by trunk) and terser
+# (minifies the app's JS glue in scripts/build-web.sh).
+if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/terser ]; then
   log "installing npm packages"
   npm ci --no-audit --no-fund
 fi
