@@ -64,3 +64,41 @@ test('the plant named in the settings runs after the controller and drives its s
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('the weighing plant: the scene\'s Start button starts a batch and the scale climbs to the set point', async () => {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 1000 } });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(server.url);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor({ state: 'attached' });
+  await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: 'Weighing with its plant (Petri net and ST plant)' });
+  const scene = page.getByRole('region', { name: 'Plant' });
+  await scene.getByRole('img', { name: 'Scale: 0 g' }).waitFor();
+  await scene.getByRole('img', { name: 'Feed valve: closed' }).waitFor();
+  // Pressed while paused, the button holds Start until a scan has seen it.
+  await scene.getByRole('button', { name: 'Start button' }).click();
+  const step = page.getByRole('button', { name: 'Step', exact: true });
+  for (let k = 0; k < 3; k += 1) await step.click();
+  await scene.getByRole('img', { name: 'Feed valve: open' }).waitFor();
+  assert.equal(await scene.getByRole('button', { name: 'Start button' }).getAttribute('aria-pressed'), 'false');
+  const scale = async () => Number((await scene.getByRole('img', { name: /^Scale: / }).getAttribute('aria-label')).match(/Scale: ([0-9.]+) g/)[1]);
+  const before = await scale();
+  for (let k = 0; k < 5; k += 1) await step.click();
+  assert.ok(await scale() > before, 'the scale climbs while the feed valve is open');
+  // 200 scans more: filled to the set point (50 g) and settling, the valve closed.
+  await page.getByRole('spinbutton', { name: 'Scans per step' }).fill('200');
+  await page.getByRole('button', { name: 'Step N' }).click();
+  await scene.getByRole('img', { name: 'Feed valve: closed' }).waitFor();
+  const filled = await scale();
+  assert.ok(filled >= 50 && filled <= 50.5, `the scale stops at the set point, not ${filled}`);
+  await scene.getByRole('img', { name: 'Hopper: 50 %' }).waitFor();
+  // After the 2 s settling time: discharging into the running mixer.
+  await page.getByRole('spinbutton', { name: 'Scans per step' }).fill('150');
+  await page.getByRole('button', { name: 'Step N' }).click();
+  await scene.getByRole('img', { name: 'Discharge valve: open' }).waitFor();
+  await scene.getByRole('img', { name: 'Mixer: running' }).waitFor();
+  await page.screenshot({ path: path.join(root, 'docs/screenshots/plant-weighing.png'), fullPage: true });
+  assert.deepEqual(errors, []);
+  await context.close();
+});

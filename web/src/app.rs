@@ -4,8 +4,8 @@
 use leptos::prelude::*;
 
 use crate::components::{
-    controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, timeline::Timeline,
-    variables::Variables,
+    controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, scene::ScenePanel,
+    timeline::Timeline, variables::Variables,
 };
 use crate::exercises::{Catalogue, ExercisePanel, Exercises, Screen};
 use crate::state::AppState;
@@ -33,6 +33,7 @@ pub fn App() -> impl IntoView {
             </section>
             <section class="sim-pane" aria-label="Simulation">
                 <Controls/>
+                <ScenePanel/>
                 <IoPanel/>
                 <Variables/>
                 <Timeline/>

@@ -118,6 +118,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         ladder,
         petri: Vec::new(),
         networks,
+        scene: None,
     };
     let catalog = project.catalog();
     // LD networks that do not fit the rung grid stay networks, run by power flow.

@@ -8,11 +8,13 @@
 mod codec;
 mod history;
 mod pous;
+mod scene;
 mod store;
 
 pub use codec::{decode_share, encode_share, pack, unpack, ShareError, SHARE_PREFIX};
 pub use history::{History, DEFAULT_HISTORY_LIMIT};
 pub use pous::PouError;
+pub use scene::{Scene, Widget, WidgetKind};
 pub use store::{
     MemoryBackend, Opened, ProjectStore, ProjectSummary, StorageBackend, StoreError, STORE_LAYOUT,
 };
@@ -45,6 +47,9 @@ pub struct Project {
     /// positions and lowered by power flow and execution order).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub networks: Vec<crate::network::NetworkPou>,
+    /// The scene that draws the plant (`docs/plants.md`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scene: Option<Scene>,
 }
 
 /// Simulation settings kept with a project.
@@ -115,6 +120,7 @@ impl Project {
             ladder: Vec::new(),
             petri: Vec::new(),
             networks: Vec::new(),
+            scene: None,
         }
     }
 

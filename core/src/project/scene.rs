@@ -1,0 +1,79 @@
+//! A plant's scene (`docs/plants.md`, "Scenes"): widgets placed on a canvas and bound to
+//! variables, which the web app draws from the values of each scan. Buttons and switches
+//! write the controller's inputs as the I/O panel does.
+
+use serde::{Deserialize, Serialize};
+
+/// A scene: a canvas and its widgets.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Scene {
+    /// The canvas width.
+    pub width: f64,
+    /// The canvas height.
+    pub height: f64,
+    /// The widgets, drawn in this order.
+    pub widgets: Vec<Widget>,
+}
+
+/// One widget of a scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Widget {
+    /// What it draws.
+    pub kind: WidgetKind,
+    /// Its name, the start of its accessible name (`Tank T1`, `Start`).
+    pub label: String,
+    /// The variable it shows or writes (`Weight`, `WeighingPlant.Content`).
+    pub var: String,
+    /// Its top-left corner.
+    pub x: f64,
+    /// Its top-left corner.
+    pub y: f64,
+    /// Its size.
+    #[serde(default = "default_size")]
+    pub width: f64,
+    /// Its size.
+    #[serde(default = "default_size")]
+    pub height: f64,
+    /// The value that fills a tank or a gauge (100 %), or a scale's range.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max: Option<f64>,
+    /// The unit written after a readout's value (`g`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unit: Option<String>,
+    /// A readout's value is the variable's divided by this (`10` for grams × 10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub scale: Option<f64>,
+}
+
+fn default_size() -> f64 {
+    40.0
+}
+
+/// The kinds of widget.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum WidgetKind {
+    /// A vessel filled to the variable's share of `max`.
+    Tank,
+    /// A valve, open while its BOOL is TRUE.
+    Valve,
+    /// A motor (a mixer, a pump), running while its BOOL is TRUE.
+    Motor,
+    /// A lamp, lit while its BOOL is TRUE.
+    Lamp,
+    /// A scale with a digital readout of its variable.
+    Scale,
+    /// A push button: holds its BOOL input TRUE while pressed (momentary).
+    Button,
+    /// A selector switch: toggles its BOOL input.
+    Switch,
+    /// A text with the variable's value.
+    Text,
+}
+
+impl WidgetKind {
+    /// Whether the widget writes its variable (the controller's input).
+    pub fn writes(self) -> bool {
+        matches!(self, WidgetKind::Button | WidgetKind::Switch)
+    }
+}
