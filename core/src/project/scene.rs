@@ -43,6 +43,19 @@ pub struct Widget {
     /// A readout's value is the variable's divided by this (`10` for grams × 10).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub scale: Option<f64>,
+    /// A tank's overflow (a BOOL): while TRUE the tank spills and its name says
+    /// `overflow`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub alarm: Option<String>,
+    /// A conveyor's item position (0 to `max` along the belt); no item while negative.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub at: Option<String>,
+    /// A traffic light's yellow lamp (its red lamp is `var`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub yellow: Option<String>,
+    /// A traffic light's green lamp.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub green: Option<String>,
 }
 
 fn default_size() -> f64 {
@@ -57,8 +70,20 @@ pub enum WidgetKind {
     Tank,
     /// A valve, open while its BOOL is TRUE.
     Valve,
-    /// A motor (a mixer, a pump), running while its BOOL is TRUE.
+    /// A motor (a mixer, a fan), running while its BOOL is TRUE.
     Motor,
+    /// A pump, running while its BOOL is TRUE.
+    Pump,
+    /// A conveyor belt, moving while its BOOL is TRUE, with an item at `at`.
+    Conveyor,
+    /// A photo-eye (light barrier): its BOOL is TRUE while something blocks the beam.
+    PhotoEye,
+    /// A limit switch: its BOOL is TRUE while it is pressed.
+    LimitSwitch,
+    /// A traffic light: red (`var`), yellow and green lamps.
+    TrafficLight,
+    /// A round gauge with a needle at the variable's share of `max`, and a readout.
+    Gauge,
     /// A lamp, lit while its BOOL is TRUE.
     Lamp,
     /// A scale with a digital readout of its variable.
@@ -67,6 +92,9 @@ pub enum WidgetKind {
     Button,
     /// A selector switch: toggles its BOOL input.
     Switch,
+    /// A fault switch: turns one of the plant's faults on or off (a stuck sensor, a valve
+    /// that does not open), for an instructor or a scenario to test the controller.
+    Fault,
     /// A text with the variable's value.
     Text,
 }
@@ -74,6 +102,6 @@ pub enum WidgetKind {
 impl WidgetKind {
     /// Whether the widget writes its variable (the controller's input).
     pub fn writes(self) -> bool {
-        matches!(self, WidgetKind::Button | WidgetKind::Switch)
+        matches!(self, WidgetKind::Button | WidgetKind::Switch | WidgetKind::Fault)
     }
 }

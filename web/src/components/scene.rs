@@ -43,33 +43,59 @@ fn esc(text: &str) -> String {
     out
 }
 
-/// The SVG markup of one widget that only shows its variable (written as text: one
+/// Whether the BOOL at `path` (when the widget names one) is TRUE.
+fn lit(state: AppState, path: Option<&String>) -> bool {
+    path.is_some_and(|p| matches!(read(state, p), Some(Value::Bool(true))))
+}
+
+/// The SVG markup of one widget that only shows its variables (written as text: one
 /// formatter for every kind keeps the page's code small; every name is escaped).
-fn shown(w: &Widget, v: Option<Value>) -> String {
+fn shown(state: AppState, w: &Widget) -> String {
+    let v = read(state, &w.var);
     let (x, y, wd, h) = (w.x, w.y, w.width, w.height);
     let on = matches!(v, Some(Value::Bool(true)));
     let label = esc(&w.label);
     let (cx, cy) = (x + wd / 2.0, y + h / 2.0);
-    let caption = format!(r#"<text class="sc-label" x="{cx}" y="{}">{label}</text>"#, y - 6.0);
-    let lit = if on { " on" } else { "" };
+    // A conveyor's items ride above the belt: its caption goes under it.
+    let caption_y = if w.kind == WidgetKind::Conveyor { y + 28.0 } else { y - 6.0 };
+    let caption = format!(r#"<text class="sc-label" x="{cx}" y="{caption_y}">{label}</text>"#);
+    let mut lit_class = if on { " on" } else { "" };
+    let max = w.max.unwrap_or(100.0).max(f64::MIN_POSITIVE);
+    let share = v.as_ref().and_then(number).map(|x| (x / max).clamp(0.0, 1.0));
+    let words = |yes: &str, no: &str| format!("{label}: {}", if on { yes } else { no });
     let (name, class, body) = match w.kind {
         WidgetKind::Tank => {
-            let max = w.max.unwrap_or(100.0).max(f64::MIN_POSITIVE);
-            let share = v.as_ref().and_then(number).map(|x| (x / max).clamp(0.0, 1.0));
             let pct = share.map(|s| (s * 100.0).round() as i64);
             let fill = share.unwrap_or(0.0) * h;
             let text = pct.map(|p| format!("{p} %")).unwrap_or_default();
+            let overflow = lit(state, w.alarm.as_ref());
+            let spill = if overflow {
+                lit_class = " alarm";
+                format!(
+                    r#"<path class="sc-spill" d="M{} {y} q10 0 12 {} l-4 0 q-2 -{} -8 -{} Z"/>"#,
+                    x + wd,
+                    h,
+                    h - 6.0,
+                    h - 6.0
+                )
+            } else {
+                String::new()
+            };
             (
-                pct.map_or(format!("{label}: no value"), |p| format!("{label}: {p} %")),
+                if overflow {
+                    format!("{label}: overflow")
+                } else {
+                    pct.map_or(format!("{label}: no value"), |p| format!("{label}: {p} %"))
+                },
                 "",
                 format!(
-                    r#"<rect class="sc-liquid" x="{x}" y="{}" width="{wd}" height="{fill}"/><rect class="sc-vessel" x="{x}" y="{y}" width="{wd}" height="{h}" rx="4"/><text class="sc-value" x="{cx}" y="{cy}">{text}</text>"#,
+                    r#"<rect class="sc-liquid" x="{x}" y="{}" width="{wd}" height="{fill}"/><rect class="sc-vessel" x="{x}" y="{y}" width="{wd}" height="{h}" rx="4"/>{spill}<text class="sc-value" x="{cx}" y="{cy}">{text}</text>"#,
                     y + h - fill
                 ),
             )
         }
         WidgetKind::Valve => (
-            format!("{label}: {}", if on { "open" } else { "closed" }),
+            words("open", "closed"),
             "sc-valve",
             format!(
                 r#"<path d="M{x} {y} L{cx} {cy} L{x} {} Z M{} {y} L{cx} {cy} L{} {} Z"/>"#,
@@ -79,23 +105,137 @@ fn shown(w: &Widget, v: Option<Value>) -> String {
                 y + h
             ),
         ),
-        WidgetKind::Motor | WidgetKind::Lamp => {
-            let motor = w.kind == WidgetKind::Motor;
-            let word = match (motor, on) {
-                (true, true) => "running",
-                (true, false) => "stopped",
-                (false, true) => "on",
-                (false, false) => "off",
-            };
-            let mark = if motor {
+        WidgetKind::Motor | WidgetKind::Pump => {
+            let r = wd.min(h) / 2.0;
+            let mark = if w.kind == WidgetKind::Motor {
                 format!(r#"<text class="sc-mark" x="{cx}" y="{}">M</text>"#, cy + 5.0)
             } else {
-                String::new()
+                format!(
+                    r#"<path class="sc-mark-shape" d="M{} {} L{} {cy} L{} {} Z"/>"#,
+                    cx - r * 0.5,
+                    cy - r * 0.6,
+                    cx + r * 0.6,
+                    cx - r * 0.5,
+                    cy + r * 0.6
+                )
             };
             (
-                format!("{label}: {word}"),
-                if motor { "sc-motor" } else { "sc-lamp" },
-                format!(r#"<circle cx="{cx}" cy="{cy}" r="{}"/>{mark}"#, wd.min(h) / 2.0),
+                words("running", "stopped"),
+                "sc-motor",
+                format!(r#"<circle cx="{cx}" cy="{cy}" r="{r}"/>{mark}"#),
+            )
+        }
+        WidgetKind::Lamp => (
+            words("on", "off"),
+            "sc-lamp",
+            format!(r#"<circle cx="{cx}" cy="{cy}" r="{}"/>"#, wd.min(h) / 2.0),
+        ),
+        WidgetKind::Conveyor => {
+            let item = w.at.as_ref().and_then(|p| read(state, p)).as_ref().and_then(number);
+            let item = item.filter(|p| *p >= 0.0).map(|p| (p / max).clamp(0.0, 1.0));
+            let size = (h - 10.0).max(6.0);
+            let (box_svg, at) = match item {
+                Some(s) => (
+                    format!(
+                        r#"<rect class="sc-item" x="{}" y="{}" width="{size}" height="{size}"/>"#,
+                        x + s * (wd - size),
+                        y - size + 2.0
+                    ),
+                    format!(", item at {} %", (s * 100.0).round() as i64),
+                ),
+                None => (String::new(), String::new()),
+            };
+            let r = 5.0;
+            (
+                format!("{}{at}", words("running", "stopped")),
+                "sc-conveyor",
+                format!(
+                    r#"{box_svg}<rect class="sc-belt" x="{x}" y="{}" width="{wd}" height="{}" rx="{r}"/><line class="sc-belt-run" x1="{}" y1="{}" x2="{}" y2="{}"/><circle class="sc-roller" cx="{}" cy="{}" r="{}"/><circle class="sc-roller" cx="{}" cy="{}" r="{}"/>"#,
+                    y + 2.0,
+                    2.0 * r,
+                    x + r,
+                    y + 2.0,
+                    x + wd - r,
+                    y + 2.0,
+                    x + r,
+                    y + 2.0 + r,
+                    r - 1.5,
+                    x + wd - r,
+                    y + 2.0 + r,
+                    r - 1.5
+                ),
+            )
+        }
+        WidgetKind::PhotoEye => (
+            words("blocked", "clear"),
+            "sc-eye",
+            format!(
+                r#"<rect x="{x}" y="{y}" width="10" height="{h}"/><line class="sc-beam" x1="{}" y1="{cy}" x2="{}" y2="{cy}"/><rect x="{}" y="{y}" width="10" height="{h}"/>"#,
+                x + 10.0,
+                x + wd - 10.0,
+                x + wd - 10.0
+            ),
+        ),
+        WidgetKind::LimitSwitch => (
+            words("pressed", "released"),
+            "sc-limit",
+            format!(
+                r#"<rect x="{x}" y="{}" width="{wd}" height="{}" rx="2"/><line class="sc-lever" x1="{cx}" y1="{}" x2="{}" y2="{y}"/><circle cx="{}" cy="{y}" r="3"/>"#,
+                cy,
+                h / 2.0,
+                cy,
+                if on { cx } else { x + wd },
+                if on { cx } else { x + wd }
+            ),
+        ),
+        WidgetKind::TrafficLight => {
+            let lamps =
+                [("red", Some(&w.var)), ("yellow", w.yellow.as_ref()), ("green", w.green.as_ref())];
+            let lamps: Vec<(&str, bool)> = lamps
+                .into_iter()
+                .filter_map(|(colour, var)| var.map(|v| (colour, lit(state, Some(v)))))
+                .collect();
+            let step = h / lamps.len().max(1) as f64;
+            let r = (wd.min(step) / 2.0 - 3.0).max(2.0);
+            let circles: String = lamps
+                .iter()
+                .enumerate()
+                .map(|(i, (colour, on))| {
+                    format!(
+                        r#"<circle class="sc-tl-{colour}{}" cx="{cx}" cy="{}" r="{r}"/>"#,
+                        if *on { " on" } else { "" },
+                        y + step * (i as f64 + 0.5)
+                    )
+                })
+                .collect();
+            let showing: Vec<&str> = lamps.iter().filter(|l| l.1).map(|l| l.0).collect();
+            lit_class = "";
+            (
+                format!(
+                    "{label}: {}",
+                    if showing.is_empty() { "dark".to_string() } else { showing.join(" and ") }
+                ),
+                "sc-traffic",
+                format!(
+                    r#"<rect class="sc-housing" x="{x}" y="{y}" width="{wd}" height="{h}" rx="6"/>{circles}"#
+                ),
+            )
+        }
+        WidgetKind::Gauge => {
+            let text = esc(&readout(w, v.as_ref()));
+            let r = (wd / 2.0).min(h - 12.0).max(4.0);
+            let base = y + r + 2.0;
+            let angle = std::f64::consts::PI * (1.0 - share.unwrap_or(0.0));
+            let (nx, ny) = (cx + r * 0.85 * angle.cos(), base - r * 0.85 * angle.sin());
+            (
+                format!("{label}: {text}"),
+                "sc-gauge",
+                format!(
+                    r#"<path class="sc-dial" d="M{} {base} A{r} {r} 0 0 1 {} {base}"/><line class="sc-needle" x1="{cx}" y1="{base}" x2="{nx:.1}" y2="{ny:.1}"/><text class="sc-value" x="{cx}" y="{}">{text}</text>"#,
+                    cx - r,
+                    cx + r,
+                    base + 12.0
+                ),
             )
         }
         _ => {
@@ -121,7 +261,7 @@ fn shown(w: &Widget, v: Option<Value>) -> String {
         }
     };
     format!(
-        r#"<g class="sc-widget {class}{lit}" role="img" aria-label="{name}">{body}{caption}</g>"#
+        r#"<g class="sc-widget {class}{lit_class}" role="img" aria-label="{name}">{body}{caption}</g>"#
     )
 }
 
@@ -166,11 +306,12 @@ fn Control(widget: Widget) -> impl IntoView {
     };
     let (x, y, w, h) = (widget.x, widget.y, widget.width, widget.height);
     let label = widget.label.clone();
-    if widget.kind == WidgetKind::Switch {
-        let name = label.clone();
+    if widget.kind != WidgetKind::Button {
+        let fault = widget.kind == WidgetKind::Fault;
+        let name = format!("{label} {}", if fault { "fault" } else { "switch" });
         return view! {
-            <g class="sc-widget sc-switch" class:on=move || on.get() role="switch" tabindex="0"
-                aria-label=format!("{name} switch") aria-checked=move || if on.get() { "true" } else { "false" }
+            <g class="sc-widget sc-switch" class:sc-fault=fault class:on=move || on.get() role="switch" tabindex="0"
+                aria-label=name aria-checked=move || if on.get() { "true" } else { "false" }
                 on:click=move |_| set(!on.get_untracked())
                 on:keydown=move |ev| if ev.key() == " " || ev.key() == "Enter" {
                     ev.prevent_default();
@@ -214,9 +355,7 @@ pub fn ScenePanel() -> impl IntoView {
         scene.get().map(|scene| {
             let (controls, shown_widgets): (Vec<Widget>, Vec<Widget>) =
                 scene.widgets.iter().cloned().partition(|w| w.kind.writes());
-            let drawn = move || {
-                shown_widgets.iter().map(|w| shown(w, read(state, &w.var))).collect::<String>()
-            };
+            let drawn = move || shown_widgets.iter().map(|w| shown(state, w)).collect::<String>();
             view! {
                 <section class="panel scene-panel" aria-label="Plant">
                     <h2>"Plant"</h2>
