@@ -28,6 +28,9 @@ pub struct RunOptions {
     /// The plant PROGRAM run after the controller on every scan (a project's settings name
     /// it); its variables are reported under its name.
     pub plant: Option<String>,
+    /// Variables recorded after every scan (`plc run --trace`); the report then carries
+    /// the trace as CSV (the web app's timeline export).
+    pub trace: Vec<String>,
 }
 
 impl Default for RunOptions {
@@ -39,6 +42,7 @@ impl Default for RunOptions {
             set: Vec::new(),
             file_map: FileMap::default(),
             plant: None,
+            trace: Vec::new(),
         }
     }
 }
@@ -102,6 +106,10 @@ pub struct RunReport {
     pub fault: Option<FaultReport>,
     /// Diagnostics from compiling (warnings included), and option errors.
     pub diagnostics: Vec<DiagnosticReport>,
+    /// The variables of [`RunOptions::trace`] after every scan, as CSV
+    /// (`time_ms,scan,<path>…`, as the web app's timeline exports them).
+    #[serde(skip)]
+    pub trace_csv: Option<String>,
 }
 
 impl RunReport {
@@ -114,6 +122,7 @@ impl RunReport {
             vars: serde_json::Map::new(),
             fault: None,
             diagnostics: vec![diagnostic],
+            trace_csv: None,
         }
     }
 
@@ -170,6 +179,7 @@ fn run_checked(
         vars: serde_json::Map::new(),
         fault: None,
         diagnostics,
+        trace_csv: None,
     };
     let Some(program) = program else { return report };
     let made =
@@ -203,11 +213,22 @@ fn run_checked(
             report.diagnostics.push(option_error(code, format!("--set {name}={value}: {e}")));
         }
     }
+    if !options.trace.is_empty() {
+        let paths: Vec<&str> = options.trace.iter().map(String::as_str).collect();
+        let capacity = usize::try_from(options.cycles).unwrap_or(usize::MAX).saturating_add(1);
+        if let Err(e) = sim.set_trace(&paths, capacity) {
+            let message = format!("--trace: {e}");
+            report.diagnostics.push(option_error(Code::UnknownSetVariable, message));
+        }
+    }
     if report.diagnostics.iter().any(|d| d.severity == Severity::Error) {
         report.vars = visible_vars(&sim);
         return report;
     }
     let outcome = sim.run_scans(options.cycles);
+    if !options.trace.is_empty() {
+        report.trace_csv = Some(crate::export::trace_csv(sim.trace()));
+    }
     report.cycles = sim.scan_count();
     report.vars = visible_vars(&sim);
     match outcome {

@@ -53,6 +53,15 @@ enum Command {
         /// Print one JSON object instead of text.
         #[arg(long)]
         json: bool,
+        /// Record VAR after every scan (repeatable; a plant's variables as `Plant.Name`).
+        /// With `--csv` the recording is printed.
+        #[arg(long = "trace", value_name = "VAR")]
+        trace: Vec<String>,
+        /// Print the recorded variables as CSV, one row per scan (`time_ms,scan,VAR…`,
+        /// as the web app's timeline exports them) instead of the report. Without
+        /// `--trace`, a project's timeline variables are recorded.
+        #[arg(long, conflicts_with = "json")]
+        csv: bool,
     },
     /// Explain a problem code such as E0150: what it means, how to fix it, and a wrong and a
     /// right example.
@@ -438,13 +447,46 @@ fn print_text(path: &Path, report: &RunReport) {
     }
 }
 
-fn run(path: &Path, options: RunOptions, json: bool) -> ExitCode {
-    let print = |report: &RunReport| {
-        if json {
-            println!("{}", report.to_json());
-        } else {
-            print_text(path, report);
+/// How `plc run` prints its result.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Output {
+    Text,
+    Json,
+    /// The trace as CSV; problems go to standard error.
+    Csv,
+}
+
+fn run(path: &Path, mut options: RunOptions, output: Output) -> ExitCode {
+    let print = |report: &RunReport| match (output, &report.trace_csv) {
+        (Output::Json, _) => println!("{}", report.to_json()),
+        (Output::Csv, csv) => {
+            for d in &report.diagnostics {
+                let (line, column, severity) = (d.line, d.column, d.severity.as_str());
+                eprintln!(
+                    "{}:{line}:{column}: {severity}[{}]: {}",
+                    path.display(),
+                    d.code,
+                    d.message
+                );
+            }
+            if let Some(f) = &report.fault {
+                eprintln!(
+                    "{}:{}:{}: FAULT after {} scan(s): {}",
+                    path.display(),
+                    f.line,
+                    f.column,
+                    report.cycles,
+                    f.message
+                );
+            }
+            match csv {
+                Some(csv) if report.status != RunStatus::Error => print!("{csv}"),
+                _ => {
+                    eprintln!("{}: nothing was recorded (the program did not run)", path.display())
+                }
+            }
         }
+        (Output::Text, _) => print_text(path, report),
     };
     let loaded = match open_file(path) {
         Ok(l) => l,
@@ -460,6 +502,9 @@ fn run(path: &Path, options: RunOptions, json: bool) -> ExitCode {
         None => match &loaded.input {
             Input::Source(source) => run_source(source, &options),
             Input::Project(project) => {
+                if output == Output::Csv && options.trace.is_empty() {
+                    options.trace = project.settings.traced.clone();
+                }
                 run_project(project, &RunOptions { file_map: loaded.file_map.clone(), ..options })
             }
         },
@@ -491,7 +536,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Check { file } => check(&file),
-        Command::Run { file, program, cycles, cycle_ms, set, json } => {
+        Command::Run { file, program, cycles, cycle_ms, set, json, trace, csv } => {
             let mut pairs = Vec::new();
             for s in set {
                 match s.split_once('=') {
@@ -511,8 +556,15 @@ fn main() -> ExitCode {
                     set: pairs,
                     file_map: Default::default(),
                     plant: None,
+                    trace,
                 },
-                json,
+                if csv {
+                    Output::Csv
+                } else if json {
+                    Output::Json
+                } else {
+                    Output::Text
+                },
             )
         }
         Command::Explain { markdown: true, .. } => {
