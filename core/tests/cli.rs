@@ -444,44 +444,78 @@ fn st_view_prints_a_network_pou() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("they are: Main"));
 }
 
+fn tank_example() -> String {
+    format!("{}/../examples/tank-plant.plcproj.json", env!("CARGO_MANIFEST_DIR"))
+}
+
 /// A project whose settings name a plant PROGRAM runs it after the controller on every
 /// scan; `--json` reports its variables under its name (issue 17, "A plant is a program").
 #[test]
 fn run_runs_the_plant_named_in_the_settings() {
-    let source = "PROGRAM Control\nVAR_INPUT Level : INT; END_VAR\nVAR_OUTPUT Fill : BOOL; END_VAR\nIF Level < 40 THEN Fill := TRUE; ELSIF Level > 60 THEN Fill := FALSE; END_IF;\nEND_PROGRAM\nPROGRAM Tank\nVAR_INPUT Fill : BOOL; END_VAR\nVAR_OUTPUT Level : INT; END_VAR\nVAR Scans : INT; END_VAR\nIF Fill THEN Level := Level + 5; ELSIF Level > 0 THEN Level := Level - 1; END_IF;\nScans := Scans + 1;\nEND_PROGRAM\n";
-    let project = |plant_source: &str| {
-        serde_json::json!({
-            "schema": 1,
-            "name": "Tank",
-            "source": plant_source,
-            "settings": { "cycle_ms": 10, "traced": [], "breakpoints": [], "plant": "Tank" }
-        })
-        .to_string()
-    };
-    let path = source_file("tank.plcproj.json", &project(source));
-    let out = plc(&["run", &path.to_string_lossy(), "--cycles", "3", "--json"]);
+    let tank = tank_example();
+    let out = plc(&["run", &tank, "--cycles", "3", "--set", "Auto=TRUE", "--json"]);
     assert!(out.status.success(), "{}", stdout(&out));
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
-    assert_eq!(v["vars"]["Level"], 15, "{v}");
-    assert_eq!(v["vars"]["Tank"]["Scans"], 3, "{v}");
-    assert_eq!(v["vars"]["Tank"]["Fill"], true, "{v}");
+    // The controller runs the pump; the plant's tank loses 20 l/s over the two scans that
+    // had time (the first scan's clock has not moved).
+    assert_eq!(v["vars"]["OutletPump"], true, "{v}");
+    assert_eq!(v["vars"]["TankPlant"]["OutletPump"], true, "{v}");
+    let volume = v["vars"]["TankPlant"]["Volume"].as_f64().expect("a number");
+    assert!((volume - 299.6).abs() < 1e-3, "{v}");
+    assert_eq!(v["vars"]["TankPlant"]["Fills"], 0, "{v}");
     // The plant run on its own has no plant.
-    let out =
-        plc(&["run", &path.to_string_lossy(), "--cycles", "3", "--program", "Tank", "--json"]);
+    let out = plc(&["run", &tank, "--cycles", "3", "--program", "TankPlant", "--json"]);
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
-    assert_eq!(v["vars"]["Scans"], 3, "{v}");
-    assert!(v["vars"].get("Tank").is_none(), "{v}");
+    assert!(v["vars"]["Volume"].is_number(), "{v}");
+    assert!(v["vars"].get("TankPlant").is_none(), "{v}");
     // Linked variables of two types: E0306, named.
-    let bad = source.replace(
-        "VAR_OUTPUT Level : INT; END_VAR\nVAR Scans",
-        "VAR_OUTPUT Level : DINT; END_VAR\nVAR Scans",
+    let text = std::fs::read_to_string(&tank).expect("the example");
+    let bad = text.replacen("HighSwitch : BOOL;", "HighSwitch : INT;", 1).replace(
+        "HighSwitch := Volume >= 850.0 AND NOT FaultHighStuck;",
+        "HighSwitch := BOOL_TO_INT(Volume >= 850.0 AND NOT FaultHighStuck);",
     );
-    let path = source_file("tank-bad.plcproj.json", &project(&bad));
+    assert_ne!(bad, text);
+    let path = source_file("tank-bad.plcproj.json", &bad);
     let out = plc(&["run", &path.to_string_lossy(), "--json"]);
     assert!(!out.status.success());
     let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("json");
     assert_eq!(v["status"], "error");
     let d =
         v["diagnostics"].as_array().unwrap().iter().find(|d| d["code"] == "E0306").expect("E0306");
-    assert!(d["message"].as_str().unwrap().contains("Level of the plant Tank"), "{d}");
+    assert!(d["message"].as_str().unwrap().contains("HighSwitch of the plant TankPlant"), "{d}");
+}
+
+/// `plc run --csv` prints the recorded variables scan by scan, as the web app's timeline
+/// exports them: the project's timeline variables, or those `--trace` names.
+#[test]
+fn run_csv_prints_the_trace_scan_by_scan() {
+    let tank = tank_example();
+    let out = plc(&["run", &tank, "--cycles", "3", "--set", "Auto=TRUE", "--csv"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = stdout(&out);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(
+        lines[0], "time_ms,scan,TankPlant.Volume,InletValve,OutletPump,HighSwitch,LowSwitch",
+        "{text}"
+    );
+    assert_eq!(lines.len(), 4, "{text}");
+    assert!(lines[1].starts_with("10,1,300,0,1,0,0"), "{text}");
+    let out = plc(&[
+        "run",
+        &tank,
+        "--cycles",
+        "2",
+        "--trace",
+        "TankPlant.Fills",
+        "--trace",
+        "Auto",
+        "--csv",
+    ]);
+    assert_eq!(stdout(&out), "time_ms,scan,TankPlant.Fills,Auto\r\n10,1,0,0\r\n20,2,0,0\r\n");
+    // A name the program does not have: E0300 on standard error, nothing recorded.
+    let out = plc(&["run", &tank, "--trace", "Nope", "--csv"]);
+    assert!(!out.status.success());
+    assert_eq!(stdout(&out), "");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("error[E0300]: --trace: the program has no variable `Nope`"), "{err}");
 }

@@ -5,6 +5,8 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
+import { readFile } from 'node:fs/promises';
+import { execFileSync } from 'node:child_process';
 import { startServer } from './server.mjs';
 import { launch } from './browser.mjs';
 
@@ -101,4 +103,104 @@ test('the weighing plant: the scene\'s Start button starts a batch and the scale
   await page.screenshot({ path: path.join(root, 'docs/screenshots/plant-weighing.png'), fullPage: true });
   assert.deepEqual(errors, []);
   await context.close();
+});
+
+/** `plc ARGS…` from the workspace (built by `cargo test` before the browser tests). */
+function plc(args) {
+  return execFileSync('cargo', ['run', '-q', '-p', 'plc-core', '--bin', 'plc', '--', ...args], { cwd: root }).toString();
+}
+
+/** Opens the shipped example titled `title` in a fresh page. */
+async function openExample(title) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 1000 }, acceptDownloads: true });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(server.url);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor({ state: 'attached' });
+  await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: title });
+  return { context, page, errors, scene: page.getByRole('region', { name: 'Plant' }) };
+}
+
+/** Runs `n` scans with the Step N button. */
+async function stepN(page, n) {
+  await page.getByRole('spinbutton', { name: 'Scans per step' }).fill(String(n));
+  await page.getByRole('button', { name: 'Step N' }).click();
+}
+
+test('the tank: the browser and plc run give the same values scan by scan, a plant hour passes without a fault, and the wrong controller runs it over', async () => {
+  const { context, page, errors, scene } = await openExample('Tank with level switches (ST plant)');
+  await scene.getByRole('img', { name: 'Tank T1: 30 %' }).waitFor();
+  await scene.getByRole('switch', { name: 'Auto switch' }).click();
+  await stepN(page, 500);
+  await page.getByText('Scan 500', { exact: false }).waitFor();
+  await scene.getByRole('img', { name: 'Pump: running' }).waitFor();
+  // The timeline's CSV is what `plc run --csv` prints for the same run.
+  const download = page.waitForEvent('download');
+  await page.getByRole('region', { name: 'Timeline' }).getByRole('button', { name: 'Export CSV' }).click();
+  const browserCsv = await readFile(await (await download).path(), 'utf8');
+  const cliCsv = plc(['run', path.join(root, 'examples/tank-plant.plcproj.json'), '--cycles', '500', '--set', 'Auto=TRUE', '--csv']);
+  assert.equal(browserCsv.split('\r\n').length, 502, browserCsv.slice(0, 200));
+  assert.equal(browserCsv, cliCsv);
+  // The rest of a plant hour (360 000 scans of 10 ms): never over the rim, no alarm.
+  await stepN(page, 359_500);
+  await page.getByText('Scan 360000', { exact: false }).waitFor({ timeout: 60_000 });
+  const fills = await scene.getByRole('img', { name: /^Fills: / }).getAttribute('aria-label');
+  const count = Number(fills.match(/Fills: (\d+)/)[1]);
+  assert.ok(count >= 58 && count <= 64, fills);
+  assert.doesNotMatch(await scene.getByRole('img', { name: /^Tank T1: / }).getAttribute('aria-label'), /overflow/);
+  await scene.getByRole('img', { name: 'Alarm: off' }).waitFor();
+  const json = JSON.parse(plc(['run', path.join(root, 'examples/tank-plant.plcproj.json'), '--cycles', '360000', '--set', 'Auto=TRUE', '--json']));
+  assert.equal(json.vars.TankPlant.Faults, 0);
+  assert.equal(json.vars.TankPlant.Fills, count, 'the CLI counts the same fills');
+  // The controller with the mistake: chosen under Program, restarted, it overflows.
+  await page.getByRole('combobox', { name: 'Program to run' }).selectOption('TankWrong');
+  await page.getByRole('button', { name: 'Reset', exact: true }).click();
+  // Drawn down to the low switch (7.5 s), then filled for good (850 l at 30 l/s net).
+  await stepN(page, 6000);
+  await scene.getByRole('img', { name: 'Tank T1: overflow' }).waitFor();
+  await page.screenshot({ path: path.join(root, 'docs/screenshots/plant-tank.png'), fullPage: true });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
+/** The shipped plants: each runs a plant hour with its reference controller. */
+const PLANT_HOURS = [
+  { title: 'Weighing with its plant (Petri net and ST plant)', file: 'weighing-plant', press: ['Start'], set: ['Start=TRUE'], counters: [['Batches', 'WeighingPlant.Batches']], faults: null },
+  { title: 'Conveyor with photo-eye and reject pusher (ST plant)', file: 'conveyor-plant', press: ['Start'], set: ['Start=TRUE'], counters: [['Good', 'ConveyorPlant.Good'], ['Rejected', 'ConveyorPlant.Rejected']], faults: 'ConveyorPlant' },
+  { title: 'Pedestrian crossing with request button (ST plant)', file: 'traffic-crossing', press: [], set: [], counters: [['Crossings', 'CrossingPlant.Crossings'], ['Cars passed', 'CrossingPlant.Cars']], faults: 'CrossingPlant' },
+  { title: 'Garage door with limit switches and obstruction sensor (ST plant)', file: 'garage-door', press: [], set: [], counters: [['Cycles', 'DoorPlant.Cycles'], ['Cars', 'DoorPlant.Cars']], faults: 'DoorPlant' },
+  { title: 'Star-delta motor starter (ST plant)', file: 'star-delta', press: [], set: [], counters: [['Starts', 'MotorPlant.Starts']], faults: 'MotorPlant' },
+];
+
+/** The number a scene readout (`Label: 42`) shows. */
+async function readout(scene, label) {
+  const name = await scene.getByRole('img', { name: new RegExp(`^${label}: `) }).getAttribute('aria-label');
+  return Number(name.slice(label.length + 2));
+}
+
+/** `vars` at a dotted path (`Plant.Name`). */
+const at = (vars, dotted) => dotted.split('.').reduce((v, k) => v?.[k], vars);
+
+test('every shipped plant runs a plant hour in the browser without a fault, with the counts plc run gives', async () => {
+  for (const p of PLANT_HOURS) {
+    const { context, page, errors, scene } = await openExample(p.title);
+    await scene.waitFor();
+    for (const b of p.press) await scene.getByRole('button', { name: `${b} button` }).click();
+    await stepN(page, 360_000);
+    await page.getByText('Scan 360000', { exact: false }).waitFor({ timeout: 60_000 });
+    const cli = JSON.parse(plc(['run', path.join(root, `examples/${p.file}.plcproj.json`), '--cycles', '360000', ...p.set.flatMap((s) => ['--set', s]), '--json'])).vars;
+    if (p.faults) {
+      assert.equal(await readout(scene, 'Faults'), 0, `${p.title}: faults in the browser`);
+      assert.equal(at(cli, `${p.faults}.Faults`), 0, `${p.title}: faults on the command line`);
+    }
+    for (const [label, variable] of p.counters) {
+      const shown = await readout(scene, label);
+      assert.ok(shown > 0, `${p.title}: ${label} counted nothing`);
+      assert.equal(shown, at(cli, variable), `${p.title}: ${label} in the browser and ${variable} from plc run`);
+    }
+    await page.screenshot({ path: path.join(root, `docs/screenshots/plant-${p.file}.png`), fullPage: false });
+    assert.deepEqual(errors, [], p.title);
+    await context.close();
+  }
 });
