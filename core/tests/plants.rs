@@ -195,3 +195,17 @@ fn a_welded_star_contactor_is_caught() {
     assert_eq!(int(&s, "MotorPlant.Starts"), 0);
     assert!(boolean(&s, "FaultLamp"));
 }
+
+/// A breakpoint or an exercise's expectation may name the plant's variables.
+#[test]
+fn conditions_name_the_plants_variables() {
+    let project = example("tank-plant.plcproj.json");
+    let mut s = project_simulator(&project, Some("TankWrong")).unwrap();
+    s.set_cycle_ns(10_000_000);
+    s.hold("Auto", "TRUE").unwrap();
+    let overflow = s.add_probe("TankPlant.Overflow AND TankPlant.Volume >= 1000.0").unwrap();
+    assert!(!s.probe(overflow));
+    assert_eq!(s.run_scans(6_000), ScanOutcome::Completed);
+    assert!(s.probe(overflow));
+    assert!(s.add_probe("TankPlant.Nope").is_err());
+}

@@ -35,6 +35,25 @@ pub struct Exercise {
     /// The scenarios that grade it.
     #[serde(default, rename = "scenario")]
     pub scenarios: Vec<Scenario>,
+    /// The plant the solution drives (`docs/plants.md`): the exercise's own, always — the
+    /// grader replaces any copy a submission carries.
+    #[serde(default)]
+    pub plant: Option<ExercisePlant>,
+}
+
+/// A plant an exercise ships: its PROGRAM, run after the solution on every scan, and the
+/// scene the exercise page draws beside the editor. Written inline in the exercise file,
+/// so a link carries it.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ExercisePlant {
+    /// The plant PROGRAM's name (`TankPlant`).
+    pub name: String,
+    /// Its ST source: the PROGRAM, and any POU it needs.
+    pub source: String,
+    /// The scene drawn beside the editor.
+    #[serde(default)]
+    pub scene: Option<crate::project::Scene>,
 }
 
 /// One variable of the interface.
@@ -357,7 +376,63 @@ impl Exercise {
         for s in &exercise.scenarios {
             s.check()?;
         }
+        if let Some(plant) = &exercise.plant {
+            let (file, _) = crate::syntax::parse(&plant.source);
+            let named = file.items.iter().any(|item| {
+                matches!(item, crate::syntax::ast::Item::Pou(p)
+                    if p.kind == crate::syntax::ast::PouKind::Program
+                        && p.name.name.eq_ignore_ascii_case(&plant.name))
+            });
+            if !named {
+                return Err(ExerciseError {
+                    message: format!("the plant's source has no PROGRAM {}", plant.name),
+                });
+            }
+        }
         Ok(exercise)
+    }
+
+    /// `project` as the exercise runs it: with the exercise's plant (when it has one) in
+    /// place of any POU of the plant's name, named as the plant in the settings, and its
+    /// scene. The student's own PROGRAM stays the one that runs.
+    pub fn with_plant(&self, project: &crate::project::Project) -> crate::project::Project {
+        let mut project = project.clone();
+        let Some(plant) = &self.plant else { return project };
+        let (file, _) = crate::syntax::parse(&project.source);
+        let mut spans: Vec<(usize, usize)> = file
+            .items
+            .iter()
+            .filter_map(|item| match item {
+                crate::syntax::ast::Item::Pou(p)
+                    if p.name.name.eq_ignore_ascii_case(&plant.name) =>
+                {
+                    Some((p.span.start as usize, p.span.end as usize))
+                }
+                _ => None,
+            })
+            .collect();
+        spans.sort_unstable();
+        for (start, end) in spans.into_iter().rev() {
+            if start <= end && end <= project.source.len() {
+                project.source.replace_range(start..end, "");
+            }
+        }
+        if project.settings.program.is_none() {
+            // The PROGRAM that ran before the plant joined (the first one) keeps running.
+            let names = crate::build::build_project(&project).program_names();
+            project.settings.program = names.into_iter().next();
+        }
+        let source = project.source.trim_end();
+        project.source = if source.is_empty() {
+            format!("{}\n", plant.source.trim_end())
+        } else {
+            format!("{source}\n\n{}\n", plant.source.trim_end())
+        };
+        project.settings.plant = Some(plant.name.clone());
+        if plant.scene.is_some() {
+            project.scene = plant.scene.clone();
+        }
+        project
     }
 }
 

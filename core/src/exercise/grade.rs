@@ -147,6 +147,10 @@ pub fn grade_with(
     options: GradeOptions,
 ) -> Result<Report, ExerciseError> {
     let total = exercise.scenarios.iter().map(|s| s.weight).sum();
+    // The exercise's plant, never the submission's copy; without one, the scenarios
+    // alone drive the inputs (a plant the submission names is not run).
+    let project = &exercise.with_plant(project);
+    let plant = exercise.plant.as_ref().map(|p| p.name.as_str());
     let build = build_project(project);
     let not_run =
         |message: String| Report { error: Some(message), scenarios: Vec::new(), score: 0, total };
@@ -159,7 +163,7 @@ pub fn grade_with(
         )));
     }
     let chosen = project.settings.program.clone();
-    let sim = match build.simulator(chosen.as_deref()) {
+    let sim = match build.simulator_with_plant(chosen.as_deref(), plant) {
         Ok(sim) => sim,
         Err(d) => return Ok(not_run(format!("the program cannot run: {}", d.message))),
     };

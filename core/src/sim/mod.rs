@@ -236,6 +236,27 @@ impl Simulator {
                 links.outputs.push((own, ctrl));
             }
         }
+        // Conditions and watches compiled later (breakpoints, an exercise's expectations)
+        // name the plant's variables as `Plant.Name`: the instance is known to their
+        // checker as a global at its base (the image and the variable list are unchanged).
+        let mut program = program;
+        let mut exe = exe;
+        for &(q, base) in &exe.instances.clone() {
+            let pou = program.pou(q);
+            program.globals.push(crate::semantic::ir::Var {
+                name: pou.name.clone(),
+                ty: Type::Fb(q),
+                section: VarSection::Global,
+                retain: false,
+                constant: false,
+                location: None,
+                init: None,
+                range: None,
+                comment: None,
+                span: pou.span,
+            });
+            exe.lay.globals.push(base);
+        }
         let mut sim = Simulator::new_compiled(program, exe, machine);
         sim.plant = Some(links);
         Ok(sim)

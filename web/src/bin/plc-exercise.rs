@@ -69,13 +69,15 @@ fn open(link: ExerciseLink, base: Option<String>) -> Reply {
         (None, _) => {
             let mut p = Project::new(&exercise.title);
             p.source = exercise.blank_program();
-            Some(p.to_file())
+            Some(exercise.with_plant(&p).to_file())
         }
         (Some(_), None) => None,
         (Some(_), Some(file)) => {
             let stem = file.name.split('.').next().unwrap_or("starter");
             match open_text(stem, &file.text) {
-                Ok(opened) => Some(opened.project.to_file()),
+                // The exercise's plant and its scene join the starter (the grader puts
+                // its own plant back in whatever the student changes).
+                Ok(opened) => Some(exercise.with_plant(&opened.project).to_file()),
                 Err(e) => {
                     return Reply::Error(format!("the starter {} cannot be opened: {e}", file.name))
                 }
@@ -130,6 +132,27 @@ mod tests {
             assert_eq!(opened.view.id, *id);
             assert!(Project::from_file(opened.starter.as_deref().unwrap()).is_ok(), "{id}");
         }
+    }
+
+    /// An exercise with a plant opens with the plant and its scene in the starter, and
+    /// the grader runs its own plant even when the student deleted theirs.
+    #[test]
+    fn a_plant_exercise_brings_its_plant_and_grades_with_it() {
+        let Reply::Opened(opened) = ask(Request::Shipped("tank-plant".into())) else { panic!() };
+        let starter = Project::from_file(opened.starter.as_deref().unwrap()).unwrap();
+        assert_eq!(starter.settings.plant.as_deref(), Some("TankPlant"));
+        assert_eq!(starter.settings.program.as_deref(), Some("TankControl"));
+        assert!(starter.source.contains("PROGRAM TankPlant"));
+        assert!(starter.scene.is_some());
+        let mut solved = starter.clone();
+        let reference = include_str!("../../../exercises/tank-plant/reference.st");
+        solved.source = reference.to_string();
+        let graded = ask(Request::Grade {
+            exercise: opened.link.exercise.clone(),
+            project: solved.to_file(),
+        });
+        let Reply::Graded(report) = graded else { panic!("{graded:?}") };
+        assert_eq!(report.score, report.total, "{report:?}");
     }
 
     #[test]
