@@ -204,3 +204,34 @@ test('every shipped plant runs a plant hour in the browser without a fault, with
     await context.close();
   }
 });
+
+test('an exercise with a plant shows its scene beside the editor and grades against its own plant', async () => {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(server.url);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  await page.getByRole('button', { name: 'Exercises', exact: true }).click();
+  await page.getByRole('list', { name: 'Exercise list' }).getByRole('button', { name: 'Tank with level switches and a watchdog (plant)' }).click();
+  const panel = page.getByRole('region', { name: 'Exercise' });
+  await panel.getByRole('heading', { name: 'Tank with level switches and a watchdog (plant)' }).waitFor();
+  const scene = page.getByRole('region', { name: 'Plant' });
+  await scene.getByRole('img', { name: 'Tank T1: 30 %' }).waitFor();
+  // The starter does nothing: the grader's plant never fills, so the fills expectation fails.
+  await page.getByRole('button', { name: 'Check', exact: true }).click();
+  const report = page.getByRole('region', { name: 'Report' });
+  await report.waitFor();
+  await report.getByText(/TankPlant\.Fills >= 9/).first().waitFor();
+  // The reference controller in place of the starter's: every scenario passes.
+  const source = await page.getByRole('textbox', { name: 'ST source' }).inputValue();
+  const reference = await readFile(path.join(root, 'exercises/tank-plant/reference.st'), 'utf8');
+  const solved = source.replace(/PROGRAM TankControl[\s\S]*?END_PROGRAM/, reference.slice(reference.indexOf('PROGRAM TankControl')));
+  await page.getByRole('textbox', { name: 'ST source' }).fill(solved);
+  await page.waitForTimeout(500);
+  await page.getByRole('button', { name: 'Check', exact: true }).click();
+  await page.getByText('Score 5 of 5').waitFor({ timeout: 60_000 });
+  await page.screenshot({ path: path.join(root, 'docs/screenshots/exercise-plant.png') });
+  assert.deepEqual(errors, []);
+  await context.close();
+});
