@@ -84,6 +84,10 @@ test('the weighing plant: the scene\'s Start button starts a batch and the scale
   for (let k = 0; k < 3; k += 1) await step.click();
   await scene.getByRole('img', { name: 'Feed valve: open' }).waitFor();
   assert.equal(await scene.getByRole('button', { name: 'Start button' }).getAttribute('aria-pressed'), 'false');
+  // The Petri view's token moved from the idle place P1 to the filling place P31.
+  const net = page.getByRole('region', { name: 'Petri net Weighing' });
+  await net.getByRole('button', { name: /^Place P31\b.*: 1 token$/ }).waitFor();
+  await net.getByRole('button', { name: /^Place P1\b.*: 0 tokens$/ }).waitFor();
   const scale = async () => Number((await scene.getByRole('img', { name: /^Scale: / }).getAttribute('aria-label')).match(/Scale: ([0-9.]+) g/)[1]);
   const before = await scale();
   for (let k = 0; k < 5; k += 1) await step.click();
@@ -100,6 +104,8 @@ test('the weighing plant: the scene\'s Start button starts a batch and the scale
   await page.getByRole('button', { name: 'Step N' }).click();
   await scene.getByRole('img', { name: 'Discharge valve: open' }).waitFor();
   await scene.getByRole('img', { name: 'Mixer: running' }).waitFor();
+  await net.getByRole('button', { name: /^Place P33\b.*: 1 token$/ }).waitFor();
+  await net.getByRole('button', { name: /^Place P31\b.*: 0 tokens$/ }).waitFor();
   await page.screenshot({ path: path.join(root, 'docs/screenshots/plant-weighing.png'), fullPage: true });
   assert.deepEqual(errors, []);
   await context.close();
