@@ -1,4 +1,5 @@
-// Times B5 (the weighing example fast-forwarded 360,000 scans of 10 ms against its plant)
+// Times B5 (the weighing example fast-forwarded 360,000 scans of 10 ms against its plant),
+// B7 (a plant hour of the weighing controller alone and with its plant PROGRAM)
 // and B6 (check + compile of the generated 5,000-line program) in headless Chromium, with
 // performance.now() in the page. Usage: node scripts/bench-browser.mjs DIR [--quick], where
 // DIR holds bench_wasm.js and bench_wasm_bg.wasm (scripts/bench-browser.sh builds them).
@@ -27,6 +28,18 @@ try {
     const batches = w.run(scans);
     const b5 = performance.now() - t;
     w.free();
+    // B7: a plant hour of the weighing controller alone and with its plant PROGRAM.
+    const hour = (withPlant) => {
+      const sim = new m.WeighingPlant(withPlant);
+      const start = performance.now();
+      const counted = sim.run(scans);
+      const ms = performance.now() - start;
+      sim.free();
+      return { ms, counted };
+    };
+    hour(true);
+    const alone = hour(false);
+    const plant = hour(true);
     // B6: best of 5 (after one warm-up), as natively.
     const source = m.b6_source(lines);
     m.check_and_compile(source);
@@ -40,6 +53,7 @@ try {
     return {
       B5: { chromium_ms: b5, scans, batches },
       B6: { wasm_ms: b6, lines: source.split('\n').length - 1, instructions },
+      B7: { controller_ms: alone.ms, with_plant_ms: plant.ms, ratio: plant.ms / alone.ms, scans, batches: plant.counted },
       userAgent: navigator.userAgent,
     };
   }, quick ? { scans: 3600, lines: 200 } : { scans: 360000, lines: 5000 });

@@ -33,6 +33,43 @@ impl Weighing {
     }
 }
 
+/// B7: the weighing controller (the Petri net of `examples/weighing-plant.plcproj.json`)
+/// with its plant PROGRAM run after it on every scan, or alone, Start held.
+#[wasm_bindgen]
+pub struct WeighingPlant {
+    sim: Simulator,
+}
+
+#[wasm_bindgen]
+impl WeighingPlant {
+    /// Builds the project, with its plant or (`with_plant` false) the controller alone.
+    #[wasm_bindgen(constructor)]
+    pub fn new(with_plant: bool) -> Result<WeighingPlant, JsValue> {
+        let mut project = plc_core::project::Project::from_file(programs::WEIGHING_PLANT)
+            .map_err(|e| JsValue::from_str(&e.to_string()))?;
+        if !with_plant {
+            project.settings.plant = None;
+        }
+        let mut sim = plc_core::run::project_simulator(&project, None).map_err(|d| {
+            JsValue::from_str(&d.first().map_or("B7 does not build".into(), |d| d.message.clone()))
+        })?;
+        sim.set_watchdog(u64::MAX / 2);
+        sim.hold("Start", "TRUE").map_err(|e| JsValue::from_str(&e.to_string()))?;
+        Ok(WeighingPlant { sim })
+    }
+
+    /// Runs `scans` scans of 10 ms; returns the batches the plant counted (0 alone).
+    pub fn run(&mut self, scans: u32) -> Result<u32, JsValue> {
+        for _ in 0..scans {
+            workload::scan(&mut self.sim).map_err(js)?;
+        }
+        Ok(match self.sim.read("WeighingPlant.Batches") {
+            Ok(plc_core::vm::Value::Int(n, _)) => n as u32,
+            _ => 0,
+        })
+    }
+}
+
 /// B6's program: generated ST of about `lines` lines.
 #[wasm_bindgen]
 pub fn b6_source(lines: u32) -> String {
