@@ -137,6 +137,12 @@ async function stepN(page, n) {
 test('the tank: the browser and plc run give the same values scan by scan, a plant hour passes without a fault, and the wrong controller runs it over', async () => {
   const { context, page, errors, scene } = await openExample('Tank with level switches (ST plant)');
   await scene.getByRole('img', { name: 'Tank T1: 30 %' }).waitFor();
+  // The level switches are the plant's sensors: shown as lamps, not offered as inputs.
+  const io = page.getByRole('region', { name: 'Inputs and outputs' });
+  await io.getByRole('img', { name: 'HighSwitch: OFF' }).waitFor();
+  assert.equal(await io.getByRole('checkbox', { name: 'HighSwitch', exact: true }).count(), 0);
+  assert.equal(await io.getByText('from TankPlant').count(), 2);
+  await io.getByRole('checkbox', { name: 'Auto', exact: true }).waitFor();
   await scene.getByRole('switch', { name: 'Auto switch' }).click();
   await stepN(page, 500);
   await page.getByText('Scan 500', { exact: false }).waitFor();

@@ -177,6 +177,8 @@ struct Plant {
     inputs: Vec<(Slot, Slot)>,
     /// Plant output slot → controller slot.
     outputs: Vec<(Slot, Slot)>,
+    /// The controller's variables the plant writes (its sensors), as declared.
+    sensors: Vec<String>,
 }
 
 /// An expression the simulator evaluates after each run of scans (the network view's
@@ -211,7 +213,7 @@ impl Simulator {
         let machine = Machine::new(&exe);
         let plant_pou = program.pou(plant);
         let main_pou = program.pou(main);
-        let mut links = Plant { inputs: Vec::new(), outputs: Vec::new() };
+        let mut links = Plant { inputs: Vec::new(), outputs: Vec::new(), sensors: Vec::new() };
         for v in &plant_pou.vars {
             let into_plant = match v.section {
                 VarSection::Input => true,
@@ -234,6 +236,7 @@ impl Simulator {
                 links.inputs.push((ctrl, own));
             } else {
                 links.outputs.push((own, ctrl));
+                links.sensors.push(c.name.clone());
             }
         }
         // Conditions and watches compiled later (breakpoints, an exercise's expectations)
@@ -286,6 +289,12 @@ impl Simulator {
     /// The name of the plant PROGRAM run after the controller, if any.
     pub fn plant_name(&self) -> Option<&str> {
         self.exe.instances.first().map(|(q, _)| self.program.pou(*q).name.as_str())
+    }
+
+    /// Whether the plant writes the controller's variable `name` on every scan (one of its
+    /// sensors): a value written from outside lasts only until the plant's next scan.
+    pub fn plant_drives(&self, name: &str) -> bool {
+        self.plant.as_ref().is_some_and(|p| p.sensors.iter().any(|s| s.eq_ignore_ascii_case(name)))
     }
 
     /// Runs the plant after the controller: its inputs copied in, then its outputs out.

@@ -338,6 +338,9 @@ fn tank_sim() -> Simulator {
 fn a_plant_runs_after_the_controller_on_every_scan() {
     let mut s = tank_sim();
     assert_eq!(s.plant_name(), Some("Tank"));
+    // The plant writes the controller's Level (a sensor), not its Fill.
+    assert!(s.plant_drives("level"));
+    assert!(!s.plant_drives("Fill"));
     // Scan 1: the controller sees Level 0 and fills; the plant then rises to 5, which
     // the controller reads on scan 2.
     s.scan();

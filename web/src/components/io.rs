@@ -24,6 +24,8 @@ struct IoVar {
     kind: Kind,
     range: Option<(i64, i64)>,
     comment: Option<String>,
+    /// The plant writes it on every scan (one of its sensors): shown, not set.
+    from_plant: Option<String>,
 }
 
 fn kind_of(ty: Type) -> Option<Kind> {
@@ -46,11 +48,15 @@ fn io_vars(state: AppState) -> (Vec<IoVar>, Vec<IoVar>) {
             let mut outputs = Vec::new();
             for e in s.executable().main_vars() {
                 let Some(kind) = kind_of(e.var.ty) else { continue };
+                let from_plant = s
+                    .plant_drives(&e.var.name)
+                    .then(|| s.plant_name().unwrap_or_default().to_string());
                 let v = IoVar {
                     name: e.var.name.clone(),
                     kind,
                     range: e.var.range,
                     comment: e.var.comment.clone(),
+                    from_plant,
                 };
                 if e.var.is_input() {
                     inputs.push(v);
@@ -116,9 +122,11 @@ pub fn IoPanel() -> impl IntoView {
                         if inputs.is_empty() {
                             view! { <p class="muted">"No BOOL or numeric inputs (VAR_INPUT or AT %I…)."</p> }.into_any()
                         } else {
-                            inputs.into_iter().map(|v| match v.kind {
-                                Kind::Bool => view! { <BoolInput var=v/> }.into_any(),
-                                _ => view! { <NumberInput var=v/> }.into_any(),
+                            inputs.into_iter().map(|v| match (v.kind, v.from_plant.is_some()) {
+                                (Kind::Bool, false) => view! { <BoolInput var=v/> }.into_any(),
+                                (_, false) => view! { <NumberInput var=v/> }.into_any(),
+                                (Kind::Bool, true) => view! { <Lamp var=v/> }.into_any(),
+                                (_, true) => view! { <Bar var=v/> }.into_any(),
                             }).collect_view().into_any()
                         }
                     }}
@@ -269,7 +277,14 @@ fn NumberInput(var: IoVar) -> impl IntoView {
     }
 }
 
-/// A BOOL output: a lamp.
+/// For a sensor the plant writes: which plant, in place of a control.
+fn plant_note(var: &IoVar) -> Option<impl IntoView> {
+    var.from_plant.as_ref().map(|plant| {
+        view! { <span class="io-from-plant small-text muted">{format!("from {plant}")}</span> }
+    })
+}
+
+/// A BOOL output (or a sensor the plant writes): a lamp.
 #[component]
 fn Lamp(var: IoVar) -> impl IntoView {
     let state = expect_context::<AppState>();
@@ -280,11 +295,12 @@ fn Lamp(var: IoVar) -> impl IntoView {
             <span class="lamp" class:on=on role="img"
                 aria-label=move || format!("{}: {}", name.get_value(), if on() { "ON" } else { "OFF" })></span>
             <span class="io-name">{var.name.clone()}</span>
+            {plant_note(&var)}
         </div>
     }
 }
 
-/// A numeric output: a horizontal bar with its value.
+/// A numeric output (or a sensor the plant writes): a horizontal bar with its value.
 #[component]
 fn Bar(var: IoVar) -> impl IntoView {
     let state = expect_context::<AppState>();
@@ -318,6 +334,7 @@ fn Bar(var: IoVar) -> impl IntoView {
                 <span class="bar-fill" style=move || format!("width: {:.1}%", fraction() * 100.0)></span>
             </span>
             <output class="bar-value">{move || number_text(value(), kind)}</output>
+            {plant_note(&var)}
         </div>
     }
 }
