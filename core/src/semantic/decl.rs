@@ -481,13 +481,40 @@ impl<'a> Checker<'a> {
         }
     }
 
+    /// The variables of POU `id` while its blocks are declared: `vars` so far, then the
+    /// constants of later blocks (`known`) not declared yet, so that they can size arrays.
+    /// The name index is rebuilt: the list does not only grow.
+    fn set_declared_vars(&mut self, id: PouId, mut vars: Vec<Var>, known: &[Var]) {
+        for k in known {
+            if !vars.iter().any(|v| v.name.eq_ignore_ascii_case(&k.name)) {
+                vars.push(k.clone());
+            }
+        }
+        self.pous[id as usize].vars = vars;
+        self.var_index.remove(&(id as usize));
+    }
+
     /// Declares the variables of POU `id` (and a FUNCTION's result variable).
     pub fn declare_pou_vars(&mut self, id: PouId) {
         let ast = self.pou_asts[id as usize];
         let kind = ast.kind;
         let mut vars = Vec::new();
-        // Constants declared in earlier blocks may size later arrays.
+        // Constants may size arrays declared before or after them (`VAR A : ARRAY[1..N]
+        // …` then `VAR CONSTANT N …`, as CODESYS reads it): a quiet first pass over the
+        // CONSTANT blocks makes them known, then every block is declared in order.
         self.body.pou = id;
+        let constant_later = ast.var_blocks.iter().skip_while(|b| b.constant).any(|b| b.constant);
+        let mut known = Vec::new();
+        if constant_later {
+            let quiet = self.diags.len();
+            for block in
+                ast.var_blocks.iter().filter(|b| b.constant && b.section != VarSection::Global)
+            {
+                self.declare_block(block, kind, &mut known);
+            }
+            self.diags.truncate(quiet);
+            self.set_declared_vars(id, Vec::new(), &known);
+        }
         for block in &ast.var_blocks {
             if block.section == VarSection::Global {
                 if kind != PouKind::Program {
@@ -503,7 +530,11 @@ impl<'a> Checker<'a> {
                 // Allowed: functions may read globals.
             }
             self.declare_block(block, kind, &mut vars);
-            self.pous[id as usize].vars = vars.clone();
+            if constant_later {
+                self.set_declared_vars(id, vars.clone(), &known);
+            } else {
+                self.pous[id as usize].vars = vars.clone();
+            }
         }
         let mut result = None;
         if kind == PouKind::Function {
@@ -535,6 +566,9 @@ impl<'a> Checker<'a> {
         let pou = &mut self.pous[id as usize];
         pou.vars = vars;
         pou.result = result;
+        if constant_later {
+            self.var_index.remove(&(id as usize));
+        }
     }
 }
 
