@@ -14,7 +14,8 @@ pub fn export(project: &Project) -> String {
     let mut data_types = String::new();
     let mut pous = String::new();
     let mut globals = String::new();
-    let mut first_program: Option<String> = None;
+    // The PROGRAMs written to the file, in order (Petri net POUs are not: PNML carries them).
+    let mut programs: Vec<String> = Vec::new();
     for item in &file.items {
         match item {
             Item::Types(defs) => {
@@ -45,8 +46,8 @@ pub fn export(project: &Project) -> String {
                     PouKind::Function => "function",
                     PouKind::FunctionBlock => "functionBlock",
                 };
-                if p.kind == PouKind::Program && first_program.is_none() {
-                    first_program = Some(p.name.name.clone());
+                if p.kind == PouKind::Program {
+                    programs.push(p.name.name.clone());
                 }
                 let _ = writeln!(
                     pous,
@@ -82,14 +83,14 @@ pub fn export(project: &Project) -> String {
         }
     }
     for lp in &project.ladder {
-        if lp.kind == LadderPouKind::Program && first_program.is_none() {
-            first_program = Some(lp.name.clone());
+        if lp.kind == LadderPouKind::Program {
+            programs.push(lp.name.clone());
         }
         pous.push_str(&super::ld_export::ld_pou_xml(lp));
     }
     for net in &project.networks {
-        if net.kind == crate::network::NetworkPouKind::Program && first_program.is_none() {
-            first_program = Some(net.name.clone());
+        if net.kind == crate::network::NetworkPouKind::Program {
+            programs.push(net.name.clone());
         }
         pous.push_str(&super::network_export::network_pou_xml(net));
     }
@@ -115,7 +116,14 @@ pub fn export(project: &Project) -> String {
         let _ = write!(out, "    <pous>\n{pous}    </pous>\n");
     }
     out.push_str("  </types>\n  <instances>\n    <configurations>\n      <configuration name=\"config\">\n        <resource name=\"resource1\">\n");
-    if let Some(prog) = &first_program {
+    // The task runs the PROGRAM the settings choose, when it is in the file.
+    let chosen = project
+        .settings
+        .program
+        .as_ref()
+        .and_then(|p| programs.iter().find(|n| n.eq_ignore_ascii_case(p)))
+        .cloned();
+    if let Some(prog) = chosen.as_ref().or(programs.first()) {
         let _ = writeln!(
             out,
             "          <task name=\"task0\" priority=\"0\" interval=\"T#{}ms\">",
@@ -130,6 +138,36 @@ pub fn export(project: &Project) -> String {
     }
     out.push_str("        </resource>\n");
     out.push_str(&globals);
-    out.push_str("      </configuration>\n    </configurations>\n  </instances>\n</project>\n");
+    out.push_str("      </configuration>\n    </configurations>\n  </instances>\n");
+    out.push_str(&trainer_data(project, chosen.as_deref()));
+    out.push_str("</project>\n");
+    out
+}
+
+/// The trainer's own settings as project `addData` (other tools discard it): the PROGRAM
+/// chosen to run, the plant and the scene; empty when there is none of them.
+fn trainer_data(project: &Project, program: Option<&str>) -> String {
+    let plant = project.settings.plant.as_deref();
+    if program.is_none() && plant.is_none() && project.scene.is_none() {
+        return String::new();
+    }
+    let mut out = format!(
+        "  <addData>\n    <data name=\"{}\" handleUnknown=\"discard\">\n      <trainer",
+        super::import::TRAINER_DATA
+    );
+    if let Some(p) = program {
+        let _ = write!(out, " program=\"{}\"", esc(p));
+    }
+    if let Some(p) = plant {
+        let _ = write!(out, " plant=\"{}\"", esc(p));
+    }
+    match &project.scene {
+        Some(scene) => {
+            let json = serde_json::to_string(scene).unwrap_or_default();
+            let _ = write!(out, ">\n        <scene>{}</scene>\n      </trainer>\n", cdata(&json));
+        }
+        None => out.push_str("/>\n"),
+    }
+    out.push_str("    </data>\n  </addData>\n");
     out
 }

@@ -120,6 +120,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         networks,
         scene: None,
     };
+    trainer_settings(&root, &mut project);
     let catalog = project.catalog();
     // LD networks that do not fit the rung grid stay networks, run by power flow.
     let mut off_grid = Vec::new();
@@ -717,4 +718,25 @@ pub(crate) fn value_text(wrapper: &Node) -> Result<String, String> {
         }
         other => Err(format!("unsupported initial value <{other}>")),
     }
+}
+
+/// The `addData` name under which the trainer keeps what PLCopen has no place for.
+pub(crate) const TRAINER_DATA: &str = "urn:plc-trainer:settings";
+
+/// Reads the trainer's own settings from a file it exported (the PROGRAM chosen to run, the
+/// plant, the scene): other tools discard this `addData`, the trainer takes it back.
+fn trainer_settings(root: &super::xml::Node, project: &mut Project) {
+    let Some(trainer) = root
+        .child("addData")
+        .into_iter()
+        .flat_map(|a| a.children_named("data"))
+        .find(|d| d.attr("name") == Some(TRAINER_DATA))
+        .and_then(|d| d.child("trainer"))
+    else {
+        return;
+    };
+    project.settings.program = trainer.attr("program").map(str::to_string);
+    project.settings.plant = trainer.attr("plant").map(str::to_string);
+    project.scene =
+        trainer.child("scene").and_then(|s| serde_json::from_str(s.deep_text().trim()).ok());
 }
