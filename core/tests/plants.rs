@@ -209,3 +209,58 @@ fn conditions_name_the_plants_variables() {
     assert!(s.probe(overflow));
     assert!(s.add_probe("TankPlant.Nope").is_err());
 }
+
+/// Every shipped plant's scene is bound to variables its programs have; a mistyped one is
+/// W0033, naming the widget and the path.
+#[test]
+fn scenes_name_only_variables_the_programs_have() {
+    use plc_core::build::build_project;
+    for file in [
+        "weighing-plant.plcproj.json",
+        "tank-plant.plcproj.json",
+        "conveyor-plant.plcproj.json",
+        "traffic-crossing.plcproj.json",
+        "garage-door.plcproj.json",
+        "star-delta.plcproj.json",
+    ] {
+        let build = build_project(&example(file));
+        assert!(build.diagnostics.is_empty(), "{file}: {:?}", build.diagnostics);
+    }
+    let mut project = example("tank-plant.plcproj.json");
+    let scene = project.scene.as_mut().unwrap();
+    scene.widgets[5].var = "TankPlant.Volme".into();
+    scene.widgets[5].alarm = Some("Overflow".into());
+    scene.widgets[0].var = "Auto".into();
+    let build = build_project(&project);
+    let messages: Vec<String> =
+        build.diagnostics.iter().map(|d| format!("{} {}", d.code.as_str(), d.message)).collect();
+    assert_eq!(
+        messages,
+        [
+            "W0033 the scene's widget “Tank T1” is bound to `TankPlant.Volme`, which the program does not have",
+            "W0033 the scene's widget “Tank T1” is bound to `Overflow`, which the program does not have",
+        ]
+    );
+}
+
+/// Exported as PLCopen XML and imported back, a plant project keeps the PROGRAM it runs,
+/// its plant and its scene (in the file's `addData`, which other tools discard), and runs
+/// the same.
+#[test]
+fn a_plant_project_round_trips_through_plcopen_xml() {
+    let project = example("tank-plant.plcproj.json");
+    let xml = plc_core::plcopen::export(&project);
+    assert!(xml.contains("<pouInstance name=\"instance0\" typeName=\"TankControl\"/>"), "{xml}");
+    let back = plc_core::open::open_text("tank", &xml).unwrap().project;
+    assert_eq!(back.settings.program.as_deref(), Some("TankControl"));
+    assert_eq!(back.settings.plant.as_deref(), Some("TankPlant"));
+    assert_eq!(back.scene, project.scene);
+    let volume = |p: &Project| {
+        let mut s = project_simulator(p, None).unwrap();
+        s.set_cycle_ns(10_000_000);
+        s.hold("Auto", "TRUE").unwrap();
+        assert_eq!(s.run_scans(3_000), ScanOutcome::Completed);
+        s.read("TankPlant.Volume").unwrap()
+    };
+    assert_eq!(volume(&back), volume(&project));
+}

@@ -377,7 +377,59 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         message: d.message,
         site: site_in(&source, &index, d.span),
     }));
+    if let (Some(scene), Some(program)) = (&project.scene, &analysis.program) {
+        diagnostics.extend(scene_diagnostics(scene, &project.settings, program));
+    }
     ProjectBuild { diagnostics, source: Some(source), program: analysis.program }
+}
+
+/// W0033 for each binding of the scene that names a variable neither the PROGRAM that
+/// runs (its variables, the globals) nor the plant (`Plant.Name`) has. Only the first
+/// one or two parts of a path are checked (`T1.Q`, `Arr[2]` are taken as their variable).
+fn scene_diagnostics(
+    scene: &crate::project::Scene,
+    settings: &crate::project::Settings,
+    program: &semantic::Program,
+) -> Vec<ProjectDiagnostic> {
+    let programs: Vec<PouId> = program.programs().filter(|&p| !program.pou(p).library).collect();
+    let named = |name: Option<&str>| {
+        name.and_then(|n| {
+            programs.iter().copied().find(|&p| program.pou(p).name.eq_ignore_ascii_case(n))
+        })
+    };
+    let Some(main) = named(settings.program.as_deref()).or(programs.first().copied()) else {
+        return Vec::new();
+    };
+    let plant = named(settings.plant.as_deref()).filter(|&p| p != main);
+    let head = |part: &str| part.split('[').next().unwrap_or_default().trim().to_string();
+    let known = |path: &str| {
+        let mut parts = path.split('.');
+        let first = head(parts.next().unwrap_or_default());
+        if program.pou(main).find_var(&first).is_some()
+            || program.globals.iter().any(|g| g.name.eq_ignore_ascii_case(&first))
+        {
+            return true;
+        }
+        match (plant, parts.next()) {
+            (Some(q), Some(second)) if program.pou(q).name.eq_ignore_ascii_case(&first) => {
+                program.pou(q).find_var(&head(second)).is_some()
+            }
+            _ => false,
+        }
+    };
+    scene
+        .bindings()
+        .into_iter()
+        .filter(|(_, path)| !known(path))
+        .map(|(label, path)| ProjectDiagnostic {
+            severity: Severity::Warning,
+            code: Code::SceneUnknownVariable,
+            message: format!(
+                "the scene's widget “{label}” is bound to `{path}`, which the program does not have"
+            ),
+            site: Site::Project,
+        })
+        .collect()
 }
 
 /// Whether `name` is a hidden variable that a front-end generated (ladder power flow and

@@ -206,6 +206,7 @@ problem_codes! {
     VariableShadowsEnumValue = "W0030": "a name that is both a variable and a value of the enumeration expected there (read as the value)",
     ImportChanged = "W0031": "part of an imported file that was skipped or changed to fit the trainer",
     FunctionInputWritten = "W0032": "a FUNCTION writes one of its inputs (only its own copy changes)",
+    SceneUnknownVariable = "W0033": "a widget of the plant's scene bound to a variable the program does not have",
 }
 
 impl std::fmt::Display for Code {

@@ -490,6 +490,9 @@ explanations! {
     FunctionInputWritten: "A FUNCTION assigns to one of its VAR_INPUTs. The input is the function's own copy of the argument: the assignment changes that copy for the rest of the call, and the caller's variable stays as it was. CODESYS, OpenPLC and Beremiz accept this (files from them do it); write the value to a local variable to make the code clear.",
         st("FUNCTION Twice : INT VAR_INPUT a : INT; END_VAR a := a * 2; Twice := a; END_FUNCTION PROGRAM Main VAR x : INT; END_VAR x := Twice(3); END_PROGRAM"),
         st("FUNCTION Twice : INT VAR_INPUT a : INT; END_VAR VAR d : INT; END_VAR d := a * 2; Twice := d; END_FUNCTION PROGRAM Main VAR x : INT; END_VAR x := Twice(3); END_PROGRAM");
+    SceneUnknownVariable: "A widget of the project's scene (the Plant panel, `docs/plants.md`) is bound to a variable that neither the PROGRAM that runs nor its plant has, so it shows no value (and a button writes nothing). Names are the controller's variables and globals, and the plant's as `Plant.Name`; fix the widget's `var` (or `alarm`, `at`, `yellow`, `green`), or declare the variable.",
+        drawn("a tank widget with `\"var\": \"TankPlant.Volme\"` in a project whose plant TankPlant declares `Volume`"),
+        drawn("the same widget with `\"var\": \"TankPlant.Volume\"`");
     VariableShadowsEnumValue: "A name is both a variable and a value of the enumeration expected here; it is read as the enumeration value (as CODESYS does). Rename the variable to make the code clear.",
         st("TYPE Mode : (Off, Hand, Auto); END_TYPE PROGRAM Main VAR m : Mode; Hand : BOOL; END_VAR m := Hand; END_PROGRAM"),
         st("TYPE Mode : (Off, Hand, Auto); END_TYPE PROGRAM Main VAR m : Mode; HandSwitch : BOOL; END_VAR m := Hand; END_PROGRAM");

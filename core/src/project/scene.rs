@@ -99,6 +99,21 @@ pub enum WidgetKind {
     Text,
 }
 
+impl Scene {
+    /// Every variable the scene's widgets are bound to: `(widget label, path)`, in widget
+    /// order (a widget's `var`, then its `alarm`, `at`, `yellow` and `green`).
+    pub fn bindings(&self) -> Vec<(&str, &str)> {
+        let mut out = Vec::new();
+        for w in &self.widgets {
+            out.push((w.label.as_str(), w.var.as_str()));
+            for extra in [&w.alarm, &w.at, &w.yellow, &w.green].into_iter().flatten() {
+                out.push((w.label.as_str(), extra.as_str()));
+            }
+        }
+        out
+    }
+}
+
 impl WidgetKind {
     /// Whether the widget writes its variable (the controller's input).
     pub fn writes(self) -> bool {
