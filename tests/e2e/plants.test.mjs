@@ -68,14 +68,7 @@ test('the plant named in the settings runs after the controller and drives its s
 });
 
 test('the weighing plant: the scene\'s Start button starts a batch and the scale climbs to the set point', async () => {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 1000 }, acceptDownloads: true });
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(server.url);
-  await page.getByRole('textbox', { name: 'ST source' }).waitFor({ state: 'attached' });
-  await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: 'Weighing with its plant (Petri net and ST plant)' });
-  const scene = page.getByRole('region', { name: 'Plant' });
+  const { context, page, errors, scene } = await openExample('Weighing with its plant (Petri net and ST plant)');
   await scene.getByRole('img', { name: 'Scale: 0 g' }).waitFor();
   await scene.getByRole('img', { name: 'Feed valve: closed' }).waitFor();
   // Pressed while paused, the button holds Start until a scan has seen it.

@@ -206,19 +206,7 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
     }
     // Each further PROGRAM is one variable of the main scope, named as its POU.
     for (q, base) in exe.instances.clone() {
-        let pou = p.pou(q);
-        let var = Var {
-            name: pou.name.clone(),
-            ty: Type::Fb(q),
-            section: VarSection::Var,
-            retain: false,
-            constant: false,
-            location: None,
-            init: None,
-            range: None,
-            comment: None,
-            span: pou.span,
-        };
+        let var = Var::program_instance(p, q, VarSection::Var);
         retain_ranges(&mut exe.lay, p, &var, base, &mut ranges)?;
         exe.vars.push(VarEntry {
             var,

@@ -101,6 +101,24 @@ pub struct Var {
 }
 
 impl Var {
+    /// The variable that stands for an instance of PROGRAM `q` (a plant) in the main
+    /// scope: named as the POU, of its type, declared in `section`.
+    pub(crate) fn program_instance(program: &Program, q: PouId, section: VarSection) -> Var {
+        let pou = program.pou(q);
+        Var {
+            name: pou.name.clone(),
+            ty: Type::Fb(q),
+            section,
+            retain: false,
+            constant: false,
+            location: None,
+            init: None,
+            range: None,
+            comment: None,
+            span: pou.span,
+        }
+    }
+
     /// An input of the program: VAR_INPUT or located at `%I`.
     pub fn is_input(&self) -> bool {
         self.section == VarSection::Input

@@ -245,19 +245,8 @@ impl Simulator {
         let mut program = program;
         let mut exe = exe;
         for &(q, base) in &exe.instances.clone() {
-            let pou = program.pou(q);
-            program.globals.push(crate::semantic::ir::Var {
-                name: pou.name.clone(),
-                ty: Type::Fb(q),
-                section: VarSection::Global,
-                retain: false,
-                constant: false,
-                location: None,
-                init: None,
-                range: None,
-                comment: None,
-                span: pou.span,
-            });
+            let var = crate::semantic::ir::Var::program_instance(&program, q, VarSection::Global);
+            program.globals.push(var);
             exe.lay.globals.push(base);
         }
         let mut sim = Simulator::new_compiled(program, exe, machine);
