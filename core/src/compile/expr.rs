@@ -419,7 +419,7 @@ impl Emitter<'_> {
                 self.patch(j, end);
                 self.finish(t, hint)
             }
-            Builtin::Max | Builtin::Min | Builtin::Limit => {
+            Builtin::Max | Builtin::Min | Builtin::Limit | Builtin::Subrange => {
                 let elem = self.elem_of(ty)?;
                 let n = u8::try_from(args.len()).map_err(|_| bad("argument count"))?;
                 let block = self.alloc(u32::from(n))?;
@@ -428,8 +428,11 @@ impl Emitter<'_> {
                 }
                 let dst = self.dst(hint)?;
                 self.emit(match func {
-                    Builtin::Limit if n == 3 => Op::Limit { elem, dst, args: block },
-                    Builtin::Limit => return Err(bad("LIMIT arguments")),
+                    Builtin::Limit if n == 3 => Op::Limit { elem, check: false, dst, args: block },
+                    Builtin::Subrange if n == 3 => {
+                        Op::Limit { elem, check: true, dst, args: block }
+                    }
+                    Builtin::Limit | Builtin::Subrange => return Err(bad("LIMIT arguments")),
                     _ => Op::MinMax { max: func == Builtin::Max, elem, n, dst, args: block },
                 });
                 Ok(dst)

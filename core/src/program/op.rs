@@ -510,10 +510,13 @@ pub enum Op {
         /// First value.
         args: Reg,
     },
-    /// LIMIT(mn, in, mx) with the three values at `args..`.
+    /// LIMIT(mn, in, mx) with the three values at `args..`; with `check`, a value outside
+    /// the limits faults instead (a store into a subrange variable).
     Limit {
         /// Value type.
         elem: Elem,
+        /// Fault instead of clamping.
+        check: bool,
         /// Destination.
         dst: Reg,
         /// mn; in and mx follow.

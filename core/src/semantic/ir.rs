@@ -290,6 +290,9 @@ pub enum Builtin {
     Min,
     /// LIMIT(mn, in, mx)
     Limit,
+    /// A value stored into a subrange variable, checked: `(low, value, high)` gives the
+    /// value, or faults outside the limits (the checker puts it around such stores).
+    Subrange,
     /// MUX(k, in0, in1, ...)
     Mux,
     /// LEN, LEFT, RIGHT, MID, CONCAT, INSERT, DELETE, REPLACE, FIND.

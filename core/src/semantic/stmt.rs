@@ -2,7 +2,7 @@
 
 use super::check::Checker;
 use super::consts;
-use super::ir::{Expr, ExprKind, Place, Stmt, StmtKind};
+use super::ir::{Builtin, Expr, ExprKind, Place, Stmt, StmtKind};
 use super::types::Type;
 use crate::diagnostics::Code;
 use crate::syntax::{self as ast};
@@ -58,6 +58,7 @@ impl<'a> Checker<'a> {
                 }
                 let v = self.coerce(t, ty, value.span)?;
                 self.check_subrange(&place, &v);
+                let v = self.guard_subrange(&place, v);
                 if let (Type::Array(_) | Type::Struct(_), false) =
                     (ty, matches!(v.kind, ExprKind::Load(_)))
                 {
@@ -175,6 +176,25 @@ impl<'a> Checker<'a> {
             Place::Global(i) => self.globals.get(*i as usize)?.range,
             Place::Field(_, _) | Place::Bit(..) => None,
             Place::Element(_, id, _) => self.types.arrays.get(*id as usize)?.element_range,
+        }
+    }
+
+    /// A value stored into a subrange variable, checked when the scan stores it (a FAULT
+    /// outside the limits, located at the assignment); constants are checked here already.
+    fn guard_subrange(&self, place: &Place, value: Expr) -> Expr {
+        let Some((lo, hi)) = self.place_range(place) else { return value };
+        if consts::int_value(&value).is_some() {
+            return value;
+        }
+        let (ty, span) = (value.ty, value.span);
+        let limit = |v: i64| Expr { kind: ExprKind::Const(v as u64), ty, span };
+        Expr {
+            kind: ExprKind::Builtin {
+                func: Builtin::Subrange,
+                args: vec![limit(lo), value, limit(hi)],
+            },
+            ty,
+            span,
         }
     }
 

@@ -26,6 +26,16 @@ pub enum Fault {
         /// The string's length.
         length: usize,
     },
+    /// A value stored into a variable outside the subrange it is declared with
+    /// (`level : INT(0..100)`).
+    SubrangeViolation {
+        /// The value stored.
+        value: i64,
+        /// The subrange's lower limit.
+        low: i64,
+        /// Its upper limit.
+        high: i64,
+    },
     /// A FOR loop whose step evaluated to zero.
     ForStepZero,
     /// The scan ran more instructions than the watchdog allows.
@@ -58,6 +68,9 @@ impl fmt::Display for Fault {
                 f,
                 "{function}: position or length {position} is outside the string of length {length}"
             ),
+            Fault::SubrangeViolation { value, low, high } => {
+                write!(f, "{value} is outside the subrange {low}..{high} of the variable it is stored in")
+            }
             Fault::ForStepZero => f.write_str("FOR loop step is zero: the loop would never end"),
             Fault::Watchdog { budget } => write!(
                 f,

@@ -69,10 +69,19 @@ pub(crate) fn exec(
             }
             w!(dst, best);
         }
-        Op::Limit { elem, dst, args } => {
+        Op::Limit { elem, check, dst, args } => {
             let mn = get(cells, args)?;
             let x = get(cells, args.wrapping_add(1))?;
             let mx = get(cells, args.wrapping_add(2))?;
+            let outside = arith::compare(BinOp::Cmp(Cmp::Lt), elem, x, mn)
+                || arith::compare(BinOp::Cmp(Cmp::Gt), elem, x, mx);
+            if check && outside {
+                return Err(Fault::SubrangeViolation {
+                    value: x as i64,
+                    low: mn as i64,
+                    high: mx as i64,
+                });
+            }
             let v = if arith::compare(BinOp::Cmp(Cmp::Lt), elem, x, mn) {
                 mn
             } else if arith::compare(BinOp::Cmp(Cmp::Gt), elem, x, mx) {
