@@ -1,7 +1,7 @@
 //! Expressions: names and places, literals, operators, implicit conversions, folding.
 
 use super::check::Checker;
-use super::ir::{BinOp, Cmp, Expr, ExprKind, InitValue, Place, SysVar, UnOp, Var};
+use super::ir::{BinOp, Builtin, Cmp, Expr, ExprKind, InitValue, MathFn, Place, SysVar, UnOp, Var};
 use super::types::{Elem, Type};
 use crate::diagnostics::{Code, Span};
 use crate::syntax::{self as ast, AddressArea, AddressSize, LiteralValue, VarSection};
@@ -137,49 +137,154 @@ impl<'a> Checker<'a> {
                 t.e.span = span;
                 Some(t)
             }
-            K::Name(id) => match self.lookup(id, expected)? {
-                NameRef::Var { place, var } => {
-                    if var.constant {
-                        if let Some(InitValue::Scalar(bits)) = var.init {
-                            return Some(Typed::fixed(self.const_expr(bits, var.ty, span)));
-                        }
-                        if let Some(InitValue::Str(s)) = &var.init {
-                            let e = Expr { kind: ExprKind::ConstStr(s.clone()), ty: var.ty, span };
-                            return Some(Typed::fixed(e));
-                        }
-                    }
-                    self.check_readable(&var, span)?;
-                    Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty: var.ty, span }))
-                }
-                NameRef::Enumerator(ty, v) => {
-                    Some(Typed::fixed(self.const_expr(v as u64, ty, span)))
-                }
-                NameRef::Sys(s) => {
-                    Some(Typed::fixed(Expr { kind: ExprKind::Sys(s), ty: s.ty(), span }))
-                }
-                NameRef::Pou => {
-                    self.error(
-                        Code::NotAVariable,
-                        span,
-                        format!(
-                            "`{}` is a POU, not a value; call it with `{}(…)`",
-                            id.name, id.name
-                        ),
-                    );
-                    None
-                }
-            },
+            K::Name(id) => self.name_expr(id, expected, span),
             K::EnumValue { type_name, value } => self.enum_value(type_name, value, span),
             K::Member(..) | K::Bit(..) | K::Index(..) | K::Direct(_) => {
                 let (place, ty) = self.place(e, false)?;
                 Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty, span }))
             }
+            K::Part { base, width, index } => self.part_expr(base, *width, *index, span),
             K::Unary(op, operand) => self.unary(*op, operand, span, expected),
             K::Binary(op, l, r) => self.binary(*op, l, r, span, expected),
             K::Call { callee, args } => {
                 self.call_expr(callee, args, span, expected).map(Typed::fixed)
             }
         }
+    }
+
+    /// A name read as a value (its own function: `expr` recurses through deeply nested
+    /// expressions, so its frame stays small).
+    #[inline(never)]
+    fn name_expr(&mut self, id: &ast::Ident, expected: Option<Type>, span: Span) -> Option<Typed> {
+        match self.lookup(id, expected)? {
+            NameRef::Var { place, var } => {
+                if var.constant {
+                    if let Some(InitValue::Scalar(bits)) = var.init {
+                        return Some(Typed::fixed(self.const_expr(bits, var.ty, span)));
+                    }
+                    if let Some(InitValue::Str(s)) = &var.init {
+                        let e = Expr { kind: ExprKind::ConstStr(s.clone()), ty: var.ty, span };
+                        return Some(Typed::fixed(e));
+                    }
+                }
+                self.check_readable(&var, span)?;
+                Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty: var.ty, span }))
+            }
+            NameRef::Enumerator(ty, v) => Some(Typed::fixed(self.const_expr(v as u64, ty, span))),
+            NameRef::Sys(s) => {
+                Some(Typed::fixed(Expr { kind: ExprKind::Sys(s), ty: s.ty(), span }))
+            }
+            NameRef::Pou => {
+                self.error(
+                    Code::NotAVariable,
+                    span,
+                    format!("`{}` is a POU, not a value; call it with `{}(…)`", id.name, id.name),
+                );
+                None
+            }
+        }
+    }
+
+    /// Reads a partial access `base.%B1` (its own function: `expr` recurses through deeply
+    /// nested expressions, so its frame stays small).
+    #[inline(never)]
+    fn part_expr(&mut self, base: &ast::Expr, width: u32, index: u32, span: Span) -> Option<Typed> {
+        let b = self.expr(base, None)?.e;
+        let part = self.part_of(b.ty, width, index, span)?;
+        Some(Typed::fixed(self.read_part(b, part, index, span)))
+    }
+
+    /// The type of part `index`, `width` bits wide, of a value of type `base` (a bit
+    /// string wide enough), or the error.
+    pub(super) fn part_of(
+        &mut self,
+        base: Type,
+        width: u32,
+        index: u32,
+        span: Span,
+    ) -> Option<Elem> {
+        let part = match width {
+            8 => Elem::Byte,
+            16 => Elem::Word,
+            32 => Elem::DWord,
+            _ => Elem::LWord,
+        };
+        let Some(el) = base
+            .elem()
+            .filter(|e| matches!(e, Elem::Byte | Elem::Word | Elem::DWord | Elem::LWord))
+        else {
+            let msg = format!(
+                "partial access `.%{}{index}` needs a bit string (BYTE, WORD, DWORD, LWORD), not {}",
+                part_letter(part),
+                self.tname(base)
+            );
+            self.error(Code::NotAStruct, span, msg);
+            return None;
+        };
+        if u64::from(width) * (u64::from(index) + 1) > u64::from(el.bits()) {
+            let count = el.bits() / width;
+            let msg = if count == 0 {
+                format!("{} has no {} (it is narrower)", el.name(), part.name())
+            } else {
+                format!(
+                    "{} has {}s 0..{}; there is no {} {index}",
+                    el.name(),
+                    part.name(),
+                    count - 1,
+                    part.name()
+                )
+            };
+            self.error(Code::BitOutOfRange, span, msg);
+            return None;
+        }
+        Some(part)
+    }
+
+    /// `(b SHR (width × index)) AND mask`, as the part's type.
+    pub(super) fn read_part(&self, b: Expr, part: Elem, index: u32, span: Span) -> Expr {
+        let ty = b.ty;
+        let shift = part.bits() * index;
+        let shifted = if shift == 0 {
+            b
+        } else {
+            let n = self.const_expr(u64::from(shift), Type::Elem(Elem::LInt), span);
+            Expr {
+                kind: ExprKind::Builtin { func: Builtin::Math(MathFn::Shr), args: vec![b, n] },
+                ty,
+                span,
+            }
+        };
+        let mask = part_mask(part);
+        let masked = if ty.elem().is_some_and(|e| e.bits() == part.bits()) {
+            shifted
+        } else {
+            let m = self.const_expr(mask, ty, span);
+            Expr { kind: ExprKind::Binary(BinOp::And, Box::new(shifted), Box::new(m)), ty, span }
+        };
+        self.convert(masked, Type::Elem(part))
+    }
+
+    /// `b` with part `index` replaced by `v` (already of the part's type):
+    /// `(b AND NOT (mask SHL shift)) OR (v SHL shift)`.
+    pub(super) fn write_part(&self, b: Expr, part: Elem, index: u32, v: Expr, span: Span) -> Expr {
+        let ty = b.ty;
+        let shift = part.bits() * index;
+        let keep = !(part_mask(part) << shift);
+        let keep = self.const_expr(keep & type_mask(ty), ty, span);
+        let kept =
+            Expr { kind: ExprKind::Binary(BinOp::And, Box::new(b), Box::new(keep)), ty, span };
+        let wide = self.convert(v, ty);
+        let placed = if shift == 0 {
+            wide
+        } else {
+            let n = self.const_expr(u64::from(shift), Type::Elem(Elem::LInt), span);
+            Expr {
+                kind: ExprKind::Builtin { func: Builtin::Math(MathFn::Shl), args: vec![wide, n] },
+                ty,
+                span,
+            }
+        };
+        Expr { kind: ExprKind::Binary(BinOp::Or, Box::new(kept), Box::new(placed)), ty, span }
     }
 
     fn check_readable(&mut self, var: &Var, span: Span) -> Option<()> {
@@ -645,7 +750,8 @@ impl<'a> Checker<'a> {
             match &root.kind {
                 ast::ExprKind::Member(b, _)
                 | ast::ExprKind::Index(b, _)
-                | ast::ExprKind::Bit(b, _) => root = b,
+                | ast::ExprKind::Bit(b, _)
+                | ast::ExprKind::Part { base: b, .. } => root = b,
                 ast::ExprKind::Paren(b) => root = b,
                 _ => break,
             }
@@ -1128,4 +1234,27 @@ impl<'a> Checker<'a> {
         };
         Some(self.const_expr(bits, e.ty, e.span))
     }
+}
+
+/// The letter of a part's size in `.%B1`.
+fn part_letter(part: Elem) -> char {
+    match part {
+        Elem::Byte => 'B',
+        Elem::Word => 'W',
+        Elem::DWord => 'D',
+        _ => 'L',
+    }
+}
+
+/// All ones over a part's width.
+fn part_mask(part: Elem) -> u64 {
+    match part.bits() {
+        64 => u64::MAX,
+        n => (1u64 << n) - 1,
+    }
+}
+
+/// All ones over a bit string type's width.
+fn type_mask(ty: Type) -> u64 {
+    ty.elem().map_or(u64::MAX, part_mask)
 }

@@ -44,6 +44,9 @@ impl<'a> Checker<'a> {
         let span = s.span;
         let kind = match &s.kind {
             K::Empty => return None,
+            K::Assign { target, value } if matches!(target.kind, ast::ExprKind::Part { .. }) => {
+                self.part_assign(target, value)?
+            }
             K::Assign { target, value } => {
                 let place = self.place(target, true);
                 let t = self.expr(value, place.as_ref().map(|p| p.1));
@@ -177,6 +180,21 @@ impl<'a> Checker<'a> {
             Place::Field(_, _) | Place::Bit(..) => None,
             Place::Element(_, id, _) => self.types.arrays.get(*id as usize)?.element_range,
         }
+    }
+
+    /// `w.%B1 := v` as `w := (w AND NOT 16#FF00) OR SHL(v, 8)` (its own function: `stmt`
+    /// recurses through nested statements, so its frame stays small).
+    #[inline(never)]
+    fn part_assign(&mut self, target: &ast::Expr, value: &ast::Expr) -> Option<StmtKind> {
+        let ast::ExprKind::Part { base, width, index } = &target.kind else { return None };
+        let place = self.place(base, true);
+        let part = place.as_ref().and_then(|p| self.part_of(p.1, *width, *index, target.span));
+        let t = self.expr(value, part.map(Type::Elem));
+        let ((place, ty), part, t) = (place?, part?, t?);
+        let v = self.coerce(t, Type::Elem(part), value.span)?;
+        let current = Expr { kind: ExprKind::Load(place.clone()), ty, span: target.span };
+        let whole = self.write_part(current, part, *index, v, target.span);
+        Some(StmtKind::Assign(place, whole))
     }
 
     /// A value stored into a subrange variable, checked when the scan stores it (a FAULT

@@ -67,7 +67,10 @@ fn each_call<'a>(e: &'a Expr, f: &mut impl FnMut(&'a [Arg])) {
                 }
             }
         }
-        ExprKind::Member(b, _) | ExprKind::Bit(b, _) | ExprKind::Unary(_, b) => each_call(b, f),
+        ExprKind::Member(b, _)
+        | ExprKind::Bit(b, _)
+        | ExprKind::Part { base: b, .. }
+        | ExprKind::Unary(_, b) => each_call(b, f),
         ExprKind::Paren(b) => each_call(b, f),
         ExprKind::Index(b, ix) => {
             each_call(b, f);
@@ -87,7 +90,10 @@ fn each_call<'a>(e: &'a Expr, f: &mut impl FnMut(&'a [Arg])) {
 pub(super) fn root(e: &Expr) -> Option<&Ident> {
     match &e.kind {
         ExprKind::Name(id) => Some(id),
-        ExprKind::Member(b, _) | ExprKind::Bit(b, _) | ExprKind::Index(b, _) => root(b),
+        ExprKind::Member(b, _)
+        | ExprKind::Bit(b, _)
+        | ExprKind::Part { base: b, .. }
+        | ExprKind::Index(b, _) => root(b),
         ExprKind::Paren(b) => root(b),
         _ => None,
     }

@@ -486,6 +486,24 @@ pub(crate) fn parse_bit_address(text: &str) -> Option<u32> {
     digits.parse().ok()
 }
 
+/// A partial access after a `.`: `%B1`, `%W0`, `%D1`, `%L0` → (width in bits, index).
+pub(crate) fn parse_part_address(text: &str) -> Option<(u32, u32)> {
+    let rest = text.strip_prefix('%')?;
+    let mut chars = rest.chars();
+    let width = match chars.next()?.to_ascii_uppercase() {
+        'B' => 8,
+        'W' => 16,
+        'D' => 32,
+        'L' => 64,
+        _ => return None,
+    };
+    let digits = chars.as_str();
+    if digits.is_empty() || !digits.chars().all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    Some((width, digits.parse().ok()?))
+}
+
 /// What kind of value a type prefix such as `DINT#` or `REAL#` accepts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum PrefixClass {

@@ -48,7 +48,10 @@ fn root_name(text: &str) -> Option<String> {
     fn root(e: &syntax::Expr) -> Option<String> {
         match &e.kind {
             ExprKind::Name(id) => Some(id.name.clone()),
-            ExprKind::Member(b, _) | ExprKind::Bit(b, _) | ExprKind::Index(b, _) => root(b),
+            ExprKind::Member(b, _)
+            | ExprKind::Bit(b, _)
+            | ExprKind::Part { base: b, .. }
+            | ExprKind::Index(b, _) => root(b),
             ExprKind::Paren(b) => root(b),
             _ => None,
         }

@@ -79,7 +79,9 @@ fn is_operand(text: &str) -> bool {
     fn place(e: &syntax::Expr) -> bool {
         match &e.kind {
             ExprKind::Name(_) | ExprKind::Direct(_) => true,
-            ExprKind::Member(b, _) | ExprKind::Bit(b, _) => place(b),
+            ExprKind::Member(b, _) | ExprKind::Bit(b, _) | ExprKind::Part { base: b, .. } => {
+                place(b)
+            }
             ExprKind::Index(b, _) => place(b),
             _ => false,
         }

@@ -414,6 +414,16 @@ pub enum ExprKind {
     Member(Box<Expr>, Ident),
     /// `base.3` or `base.%X3` — one bit of an integer or bit string.
     Bit(Box<Expr>, u32),
+    /// `base.%B1`, `.%W0`, `.%D1`, `.%L0` — partial access (IEC 61131-3 ed. 3): byte,
+    /// word, double or long word number `index` of a bit string, `width` bits wide.
+    Part {
+        /// The bit string.
+        base: Box<Expr>,
+        /// 8, 16, 32 or 64.
+        width: u32,
+        /// Which one, from the least significant.
+        index: u32,
+    },
     /// `base[i, j]` — an array element.
     Index(Box<Expr>, Vec<Expr>),
     /// A prefix operator.
@@ -448,6 +458,7 @@ impl Expr {
                 | ExprKind::Direct(_) => {}
                 ExprKind::Member(b, _)
                 | ExprKind::Bit(b, _)
+                | ExprKind::Part { base: b, .. }
                 | ExprKind::Unary(_, b)
                 | ExprKind::Paren(b) => todo.push((b, h + 1)),
                 ExprKind::Index(b, indices) => {

@@ -121,10 +121,13 @@ impl Parser<'_> {
                 let bit = self.bit_number(tok, self.text(tok).parse().ok())?;
                 ExprKind::Bit(Box::new(base), bit)
             }
-            TokenKind::Direct => {
-                let bit = self.bit_number(tok, literal::parse_bit_address(self.text(tok)))?;
-                ExprKind::Bit(Box::new(base), bit)
-            }
+            TokenKind::Direct => match literal::parse_part_address(self.text(tok)) {
+                Some((width, index)) => ExprKind::Part { base: Box::new(base), width, index },
+                None => {
+                    let bit = self.bit_number(tok, literal::parse_bit_address(self.text(tok)))?;
+                    ExprKind::Bit(Box::new(base), bit)
+                }
+            },
             _ => return Err(self.expected("a member name or a bit number after `.`")),
         };
         self.bump();
@@ -139,7 +142,9 @@ impl Parser<'_> {
                 self.error(
                     Code::UnexpectedToken,
                     tok.span,
-                    format!("expected a bit number such as `.3` or `.%X3`, found {found}"),
+                    format!(
+                        "expected a bit number such as `.3` or `.%X3` (or a part such as `.%B1`), found {found}"
+                    ),
                 );
                 Err(Fail)
             }

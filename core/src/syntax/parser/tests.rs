@@ -68,6 +68,7 @@ fn sx(e: &Expr) -> String {
         ExprKind::EnumValue { type_name, value } => format!("{}#{}", type_name.name, value.name),
         ExprKind::Member(b, m) => format!("{}.{}", sx(b), m.name),
         ExprKind::Bit(b, n) => format!("{}.bit{n}", sx(b)),
+        ExprKind::Part { base, width, index } => format!("{}.part{width}:{index}", sx(base)),
         ExprKind::Index(b, ix) => {
             format!("{}[{}]", sx(b), ix.iter().map(sx).collect::<Vec<_>>().join(","))
         }
@@ -138,6 +139,10 @@ fn postfix_calls_members_bits() {
     assert_eq!(ex("w.3"), "w.bit3");
     assert_eq!(ex("s.w.15"), "s.w.bit15");
     assert_eq!(ex("w.%X7"), "w.bit7");
+    assert_eq!(ex("w.%B1"), "w.part8:1");
+    assert_eq!(ex("l.%W3"), "l.part16:3");
+    assert_eq!(ex("l.%d1"), "l.part32:1");
+    assert_eq!(ex("l.%L0"), "l.part64:0");
     assert_eq!(ex("timers[2].Q"), "timers[2].Q");
     assert_eq!(ex("F()"), "F()");
 }
