@@ -303,7 +303,7 @@ impl<'a> Checker<'a> {
                 }
                 out.push(CallArg::InOut(index, place));
             } else {
-                let pty = param.ty;
+                let (pty, range) = (param.ty, param.range);
                 let Some(t) = self.expr(value_expr, Some(pty)) else {
                     ok = false;
                     continue;
@@ -312,7 +312,9 @@ impl<'a> Checker<'a> {
                     ok = false;
                     continue;
                 };
-                out.push(CallArg::In(index, v));
+                // An input declared with a subrange takes only values inside it.
+                self.check_range(range, &v);
+                out.push(CallArg::In(index, self.guard_range(range, v)));
             }
         }
         for &i in &params {

@@ -200,7 +200,13 @@ impl<'a> Checker<'a> {
     /// A value stored into a subrange variable, checked when the scan stores it (a FAULT
     /// outside the limits, located at the assignment); constants are checked here already.
     fn guard_subrange(&self, place: &Place, value: Expr) -> Expr {
-        let Some((lo, hi)) = self.place_range(place) else { return value };
+        self.guard_range(self.place_range(place), value)
+    }
+
+    /// `value` checked against `range` when the scan computes it (see
+    /// [`Checker::guard_subrange`]): a variable's subrange, or a parameter's.
+    pub(super) fn guard_range(&self, range: Option<(i64, i64)>, value: Expr) -> Expr {
+        let Some((lo, hi)) = range else { return value };
         if consts::int_value(&value).is_some() {
             return value;
         }
@@ -218,7 +224,12 @@ impl<'a> Checker<'a> {
 
     /// Reports a constant stored into a subrange variable outside its limits.
     fn check_subrange(&mut self, place: &Place, value: &Expr) {
-        let (Some((lo, hi)), Some(v)) = (self.place_range(place), consts::int_value(value)) else {
+        self.check_range(self.place_range(place), value);
+    }
+
+    /// Reports a constant outside `range` (a variable's or a parameter's subrange).
+    pub(super) fn check_range(&mut self, range: Option<(i64, i64)>, value: &Expr) {
+        let (Some((lo, hi)), Some(v)) = (range, consts::int_value(value)) else {
             return;
         };
         if v < lo || v > hi {
