@@ -77,7 +77,15 @@ pub fn convert(from: Elem, to: Elem, bits: u64) -> u64 {
         _ => 1,
     };
     if from.is_temporal() && to.is_temporal() {
-        return bits;
+        // DT_TO_TOD keeps the time within the day, DT_TO_DATE the day's start (both
+        // count from midnight, also before 1970).
+        const NS_PER_DAY: i64 = 86_400 * NS_PER_S;
+        let ns = bits as i64;
+        return match (from, to) {
+            (Elem::Dt, Elem::Tod) => ns.rem_euclid(NS_PER_DAY) as u64,
+            (Elem::Dt, Elem::Date) => (ns - ns.rem_euclid(NS_PER_DAY)) as u64,
+            _ => bits,
+        };
     }
     if from.is_temporal() {
         let ns = bits as i64;
