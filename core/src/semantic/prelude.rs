@@ -234,9 +234,107 @@ END_FUNCTION_BLOCK
     };
 }
 
-/// The prelude's source text: the blocks above and the typed counters.
+/// The date and time functions of edition 3 (IEC 61131-3 ed. 3, table 36): CONCAT_DATE,
+/// CONCAT_TOD, CONCAT_DT, CONCAT_DATE_TOD, SPLIT_DATE, SPLIT_TOD, SPLIT_DT and
+/// DAY_OF_WEEK (0 is Sunday). Dates convert through their days since 1970-01-01 with the
+/// proleptic Gregorian calendar (the days-from-civil algorithm).
+macro_rules! date_functions {
+    () => {
+        r#"
+FUNCTION CONCAT_DATE : DATE
+VAR_INPUT YEAR : INT; MONTH : INT; DAY : INT; END_VAR
+VAR y, m, era, yoe, doy, doe : LINT; END_VAR
+y := INT_TO_LINT(YEAR);
+m := INT_TO_LINT(MONTH);
+IF m <= 2 THEN
+    y := y - 1;
+    doy := (153 * (m + 9) + 2) / 5 + INT_TO_LINT(DAY) - 1;
+ELSE
+    doy := (153 * (m - 3) + 2) / 5 + INT_TO_LINT(DAY) - 1;
+END_IF;
+IF y >= 0 THEN era := y / 400; ELSE era := (y - 399) / 400; END_IF;
+yoe := y - era * 400;
+doe := yoe * 365 + yoe / 4 - yoe / 100 + doy;
+CONCAT_DATE := LINT_TO_DATE((era * 146097 + doe - 719468) * 86400);
+END_FUNCTION
+
+FUNCTION CONCAT_TOD : TOD
+VAR_INPUT HOUR : INT; MINUTE : INT; SECOND : INT; MILLISECOND : INT; END_VAR
+CONCAT_TOD := LINT_TO_TOD(((INT_TO_LINT(HOUR) * 60 + INT_TO_LINT(MINUTE)) * 60
+    + INT_TO_LINT(SECOND)) * 1000 + INT_TO_LINT(MILLISECOND));
+END_FUNCTION
+
+FUNCTION CONCAT_DATE_TOD : DT
+VAR_INPUT DATE1 : DATE; TOD1 : TOD; END_VAR
+CONCAT_DATE_TOD := LINT_TO_DT(DATE_TO_LINT(DATE1)) + (TOD1 - TOD#00:00:00);
+END_FUNCTION
+
+FUNCTION CONCAT_DT : DT
+VAR_INPUT YEAR : INT; MONTH : INT; DAY : INT; HOUR : INT; MINUTE : INT; SECOND : INT;
+    MILLISECOND : INT; END_VAR
+CONCAT_DT := CONCAT_DATE_TOD(CONCAT_DATE(YEAR, MONTH, DAY),
+    CONCAT_TOD(HOUR, MINUTE, SECOND, MILLISECOND));
+END_FUNCTION
+
+FUNCTION SPLIT_DATE
+VAR_INPUT IN : DATE; END_VAR
+VAR_OUTPUT YEAR : INT; MONTH : INT; DAY : INT; END_VAR
+VAR secs, z, era, doe, yoe, y, doy, mp, m : LINT; END_VAR
+secs := DATE_TO_LINT(IN);
+z := secs / 86400;
+IF secs < 0 AND secs MOD 86400 <> 0 THEN z := z - 1; END_IF;
+z := z + 719468;
+IF z >= 0 THEN era := z / 146097; ELSE era := (z - 146096) / 146097; END_IF;
+doe := z - era * 146097;
+yoe := (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+y := yoe + era * 400;
+doy := doe - (365 * yoe + yoe / 4 - yoe / 100);
+mp := (5 * doy + 2) / 153;
+DAY := LINT_TO_INT(doy - (153 * mp + 2) / 5 + 1);
+IF mp < 10 THEN m := mp + 3; ELSE m := mp - 9; END_IF;
+IF m <= 2 THEN y := y + 1; END_IF;
+MONTH := LINT_TO_INT(m);
+YEAR := LINT_TO_INT(y);
+END_FUNCTION
+
+FUNCTION SPLIT_TOD
+VAR_INPUT IN : TOD; END_VAR
+VAR_OUTPUT HOUR : INT; MINUTE : INT; SECOND : INT; MILLISECOND : INT; END_VAR
+VAR ms : LINT; END_VAR
+ms := TOD_TO_LINT(IN);
+HOUR := LINT_TO_INT(ms / 3600000);
+MINUTE := LINT_TO_INT((ms / 60000) MOD 60);
+SECOND := LINT_TO_INT((ms / 1000) MOD 60);
+MILLISECOND := LINT_TO_INT(ms MOD 1000);
+END_FUNCTION
+
+FUNCTION SPLIT_DT
+VAR_INPUT IN : DT; END_VAR
+VAR_OUTPUT YEAR : INT; MONTH : INT; DAY : INT; HOUR : INT; MINUTE : INT; SECOND : INT;
+    MILLISECOND : INT; END_VAR
+SPLIT_DATE(IN := DT_TO_DATE(IN), YEAR => YEAR, MONTH => MONTH, DAY => DAY);
+SPLIT_TOD(IN := DT_TO_TOD(IN), HOUR => HOUR, MINUTE => MINUTE, SECOND => SECOND,
+    MILLISECOND => MILLISECOND);
+END_FUNCTION
+
+FUNCTION DAY_OF_WEEK : INT
+VAR_INPUT IN : DATE; END_VAR
+VAR secs, days : LINT; END_VAR
+secs := DATE_TO_LINT(IN);
+days := secs / 86400;
+IF secs < 0 AND secs MOD 86400 <> 0 THEN days := days - 1; END_IF;
+days := (days + 4) MOD 7;
+IF days < 0 THEN days := days + 7; END_IF;
+DAY_OF_WEEK := LINT_TO_INT(days);
+END_FUNCTION
+"#
+    };
+}
+
+/// The prelude's source text: the blocks above, the typed counters and the date functions.
 pub const SOURCE: &str = concat!(
     blocks!(),
+    date_functions!(),
     typed_counters!("INT", "32767", "-32768"),
     typed_counters!("DINT", "2147483647", "-2147483648"),
     typed_counters!("LINT", "9223372036854775807", "-9223372036854775808"),
