@@ -419,7 +419,19 @@ fn print_diagnostic(
     code: &str,
     message: &str,
 ) {
-    println!("{}:{line}:{column}: {}[{code}]: {message}", path.display(), severity.as_str());
+    println!("{}", diagnostic_line(path, severity, line, column, code, message));
+}
+
+/// One diagnostic as `FILE:LINE:COL: severity[CODE]: message`.
+fn diagnostic_line(
+    path: &Path,
+    severity: plc_core::diagnostics::Severity,
+    line: u32,
+    column: u32,
+    code: &str,
+    message: &str,
+) -> String {
+    format!("{}:{line}:{column}: {}[{code}]: {message}", path.display(), severity.as_str())
 }
 
 fn print_text(path: &Path, report: &RunReport) {
@@ -461,12 +473,9 @@ fn run(path: &Path, mut options: RunOptions, output: Output) -> ExitCode {
         (Output::Json, _) => println!("{}", report.to_json()),
         (Output::Csv, csv) => {
             for d in &report.diagnostics {
-                let (line, column, severity) = (d.line, d.column, d.severity.as_str());
                 eprintln!(
-                    "{}:{line}:{column}: {severity}[{}]: {}",
-                    path.display(),
-                    d.code,
-                    d.message
+                    "{}",
+                    diagnostic_line(path, d.severity, d.line, d.column, &d.code, &d.message)
                 );
             }
             if let Some(f) = &report.fault {

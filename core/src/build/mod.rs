@@ -391,16 +391,11 @@ fn scene_diagnostics(
     settings: &crate::project::Settings,
     program: &semantic::Program,
 ) -> Vec<ProjectDiagnostic> {
-    let programs: Vec<PouId> = program.programs().filter(|&p| !program.pou(p).library).collect();
-    let named = |name: Option<&str>| {
-        name.and_then(|n| {
-            programs.iter().copied().find(|&p| program.pou(p).name.eq_ignore_ascii_case(n))
-        })
-    };
-    let Some(main) = named(settings.program.as_deref()).or(programs.first().copied()) else {
+    let find = |name: Option<&str>| find_program(program, name).ok();
+    let Some(main) = find(settings.program.as_deref()).or_else(|| find(None)) else {
         return Vec::new();
     };
-    let plant = named(settings.plant.as_deref()).filter(|&p| p != main);
+    let plant = settings.plant.as_deref().and_then(|n| find(Some(n))).filter(|&p| p != main);
     let head = |part: &str| part.split('[').next().unwrap_or_default().trim().to_string();
     let known = |path: &str| {
         let mut parts = path.split('.');
