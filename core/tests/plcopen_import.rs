@@ -1536,3 +1536,76 @@ fn network_pous_are_renamed_and_deleted() {
     p.delete_network_pou("vote").unwrap();
     assert!(p.networks.is_empty());
 }
+
+/// A file as OpenPLC and Beremiz write one with two tasks: each PROGRAM's instance under its
+/// own task (no CONFIGURATION text in any POU).
+const TWO_TASKS_XML: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="x" productName="x" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="TwoTasks"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types>
+    <dataTypes/>
+    <pous>
+      <pou name="FastCount" pouType="program">
+        <interface><localVars><variable name="n"><type><INT/></type></variable></localVars></interface>
+        <body><ST><xhtml:p><![CDATA[n := n + 1;]]></xhtml:p></ST></body>
+      </pou>
+      <pou name="SlowCount" pouType="program">
+        <interface><localVars><variable name="n"><type><INT/></type></variable></localVars>
+        <externalVars><variable name="Ticks"><type><INT/></type></variable></externalVars></interface>
+        <body><ST><xhtml:p><![CDATA[n := n + 1; Ticks := Ticks + 10;]]></xhtml:p></ST></body>
+      </pou>
+    </pous>
+  </types>
+  <instances>
+    <configurations>
+      <configuration name="Config0">
+        <resource name="Res0">
+          <task name="task0" priority="1" interval="T#20ms">
+            <pouInstance name="instance0" typeName="FastCount"/>
+          </task>
+          <task name="task1" priority="0" interval="T#100ms">
+            <pouInstance name="instance1" typeName="SlowCount"/>
+          </task>
+        </resource>
+        <globalVars><variable name="Ticks"><type><INT/></type></variable></globalVars>
+      </configuration>
+    </configurations>
+  </instances>
+</project>
+"#;
+
+#[test]
+fn every_program_instance_of_a_file_with_several_tasks_runs_under_its_task() {
+    let i = import(TWO_TASKS_XML).expect("imports");
+    let p = &i.project;
+    assert!(p.source.contains("CONFIGURATION Config0"), "{}", p.source);
+    assert!(p.source.contains("TASK task1 (INTERVAL := T#100ms, PRIORITY := 0);"), "{}", p.source);
+    assert!(p.source.contains("PROGRAM instance0 WITH task0 : FastCount;"), "{}", p.source);
+    // The clock ticks at the tasks' greatest common interval.
+    assert_eq!(p.settings.cycle_ms, 20);
+    let mut sim = project_simulator(p, None).expect("builds");
+    sim.set_cycle_ns(p.settings.cycle_ms as i64 * 1_000_000);
+    assert!(matches!(sim.run_scans(10), plc_core::sim::ScanOutcome::Completed));
+    // 10 ticks of 20 ms: task0 runs on each, task1 (100 ms) on ticks 0 and 5.
+    assert_eq!(sim.read("instance0.n"), Ok(Value::Int(10, plc_core::semantic::Elem::Int)));
+    assert_eq!(sim.read("instance1.n"), Ok(Value::Int(2, plc_core::semantic::Elem::Int)));
+    assert_eq!(sim.read("Ticks"), Ok(Value::Int(20, plc_core::semantic::Elem::Int)));
+    let vars = sim.vars_json();
+    assert!(vars["instance0"].is_object() && vars["instance1"].is_object(), "{vars:?}");
+    // Export writes the tasks back, and the file imports to the same project.
+    let xml = export(p);
+    assert!(xml.contains("<task name=\"task1\" interval=\"T#100ms\" priority=\"0\">"), "{xml}");
+    assert!(xml.contains("<pouInstance name=\"instance1\" typeName=\"SlowCount\"/>"), "{xml}");
+    assert!(xml.contains("<configuration name=\"Config0\">"), "{xml}");
+    assert_round_trip(p);
+}
+
+#[test]
+fn an_instance_of_a_program_left_out_of_the_import_is_noted_not_run() {
+    let xml = TWO_TASKS_XML.replace("typeName=\"SlowCount\"", "typeName=\"Missing\"");
+    let i = import(&xml).expect("imports");
+    // One instance left: the file's program runs on its own, as before.
+    assert!(!i.project.source.contains("CONFIGURATION"), "{}", i.project.source);
+    assert!(i.warnings.iter().any(|w| w.message.contains("instance1")), "{:?}", i.warnings);
+}

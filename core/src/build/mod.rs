@@ -236,7 +236,8 @@ pub fn simulator_for(
     }
 }
 
-/// Finds PROGRAM `name` (or, without a name, the first PROGRAM of the user) in a checked
+/// Finds PROGRAM `name` (or, without a name, the CONFIGURATION when there is one, else the
+/// first PROGRAM of the user) in a checked
 /// program; the error is the code and message `plc run` reports.
 pub fn find_program(program: &Program, name: Option<&str>) -> Result<PouId, (Code, String)> {
     match name {
@@ -246,7 +247,11 @@ pub fn find_program(program: &Program, name: Option<&str>) -> Result<PouId, (Cod
             )
         }
         None => program
-            .programs()
+            .config
+            .as_ref()
+            .map(|c| c.pou)
+            .into_iter()
+            .chain(program.programs())
             .find(|&p| !program.pou(p).library)
             .ok_or_else(|| (Code::NoProgram, "the source holds no PROGRAM to run".to_string())),
     }
@@ -259,11 +264,14 @@ impl ProjectBuild {
     }
 
     /// The names of the user's PROGRAMs, in source order (ST first, then ladder, then
-    /// Petri net POUs); empty when the project did not build.
+    /// Petri net POUs), after the CONFIGURATION's name when there is one (it runs every
+    /// program instance under its task); empty when the project did not build.
     pub fn program_names(&self) -> Vec<String> {
         let Some(program) = &self.program else { return Vec::new() };
-        program
-            .programs()
+        let config = program.config.as_ref().map(|c| c.pou);
+        config
+            .into_iter()
+            .chain(program.programs().filter(|&p| Some(p) != config))
             .filter(|&p| !program.pou(p).library)
             .map(|p| program.pou(p).name.clone())
             .collect()

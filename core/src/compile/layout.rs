@@ -100,7 +100,13 @@ impl Layouts {
             let mut scratch = Code::default();
             let frame =
                 if pou.kind == PouKind::FunctionBlock { Frame::Instance } else { Frame::Static };
-            let temps = emit::compile_pou(self, p, q, &mut scratch, frame)?;
+            let mut temps = emit::compile_pou(self, p, q, &mut scratch, frame)?;
+            if pou.kind == PouKind::Program {
+                // A PROGRAM also runs as an instance (of a configuration, or a plant), where
+                // reaching a global takes registers that its static frame does not.
+                let mut scratch = Code::default();
+                temps = temps.max(emit::compile_pou(self, p, q, &mut scratch, Frame::Instance)?);
+            }
             if let Some(Some(l)) = self.pous.get_mut(qi) {
                 l.size = add(at, u64::from(temps))?;
                 l.complete = true;
@@ -146,8 +152,17 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
     lay.globals = globals;
     let main_size = lay.pou(p, main)?.size;
     lay.main_base = at;
+    // A configuration's PROGRAM holds its program instances as variables of PROGRAM type.
+    let mut instances = Vec::new();
+    for (i, v) in p.pou(main).vars.iter().enumerate() {
+        if let Type::Fb(q) = v.ty {
+            if p.pous.get(q as usize).is_some_and(|x| x.kind == PouKind::Program) {
+                instances.push((q, add(at, u64::from(lay.var_offset(p, main, i as u32)?))?));
+            }
+        }
+    }
+    let inline = instances.len();
     at = add(at, u64::from(main_size))?;
-    let mut instances = Vec::with_capacity(more.len());
     for &q in more {
         let size = lay.pou(p, q)?.size;
         instances.push((q, at));
@@ -187,7 +202,8 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
     let mb = exe.main_base;
     write_instance(&mut exe, p, mb, main, None)?;
     exe.pous[main as usize].frame = Some(exe.main_base);
-    for (q, base) in exe.instances.clone() {
+    let more: Vec<(PouId, u32)> = exe.instances[inline..].to_vec();
+    for &(q, base) in &more {
         write_instance(&mut exe, p, base, q, None)?;
     }
     finish_new_pous(&mut exe, p)?;
@@ -205,7 +221,7 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
         retain_ranges(&mut exe.lay, p, v, addr, &mut ranges)?;
     }
     // Each further PROGRAM is one variable of the main scope, named as its POU.
-    for (q, base) in exe.instances.clone() {
+    for &(q, base) in &more {
         let var = Var::program_instance(p, q, VarSection::Var);
         retain_ranges(&mut exe.lay, p, &var, base, &mut ranges)?;
         exe.vars.push(VarEntry {

@@ -114,7 +114,7 @@ pub fn program(
     let mut pous = others;
     pous.push(pou("Main", PouKind::Program, vars, body));
     let main = pous.len() as PouId - 1;
-    (Program { types, globals, pous, library_pous: 0 }, main)
+    (Program { types, globals, pous, library_pous: 0, config: None }, main)
 }
 
 pub fn simple(vars: Vec<Var>, body: Vec<Stmt>) -> (Program, PouId) {

@@ -7,7 +7,7 @@
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
 //! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder
 //! diagrams (W0005–W0009 are ladder warnings), E0500–E0549 Petri nets (W0010–W0019 are Petri
-//! net warnings), E0550–E0599 textual SFC (W0020–W0029 are SFC warnings), W0001–W0004 and
+//! net warnings), E0550–E0599 textual SFC (W0020–W0029 are SFC warnings), E0620–E0639 configurations and tasks, W0001–W0004 and
 //! W0030– other warnings.
 
 use serde::Serialize;
@@ -182,6 +182,13 @@ problem_codes! {
     SfcStepListedTwice = "E0564": "a step listed twice in one FROM or TO list",
     SfcBooleanActionNotBool = "E0565": "a boolean action whose variable is not BOOL",
     SfcReturnInAction = "E0566": "RETURN inside an ACTION or a transition body",
+
+    // ---- configurations, resources and tasks: E0620–E0639 ----
+    UnsupportedConfiguration = "E0620": "a VAR_ACCESS block, or a second CONFIGURATION in one program",
+    UnknownTask = "E0621": "a program instance WITH a task its resource does not declare",
+    NotAProgramType = "E0622": "a program instance whose type is not a PROGRAM",
+    BadTaskSetting = "E0623": "a task INTERVAL that is not a constant TIME above zero, a PRIORITY that is not a constant 0 to 9999, or a SINGLE that is not a BOOL variable",
+    BadProgramConnection = "E0624": "a program connection naming no input or output of the program, or a variable of another type",
 
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",

@@ -490,6 +490,21 @@ explanations! {
     FunctionInputWritten: "A FUNCTION assigns to one of its VAR_INPUTs. The input is the function's own copy of the argument: the assignment changes that copy for the rest of the call, and the caller's variable stays as it was. CODESYS, OpenPLC and Beremiz accept this (files from them do it); write the value to a local variable to make the code clear.",
         st("FUNCTION Twice : INT VAR_INPUT a : INT; END_VAR a := a * 2; Twice := a; END_FUNCTION PROGRAM Main VAR x : INT; END_VAR x := Twice(3); END_PROGRAM"),
         st("FUNCTION Twice : INT VAR_INPUT a : INT; END_VAR VAR d : INT; END_VAR d := a * 2; Twice := d; END_FUNCTION PROGRAM Main VAR x : INT; END_VAR x := Twice(3); END_PROGRAM");
+    UnsupportedConfiguration: "A program has one CONFIGURATION, and `VAR_ACCESS` blocks (access paths for other devices on a network) are not supported. Declare the variables in the configuration's VAR_GLOBAL, and put every resource in one configuration.",
+        st("PROGRAM P VAR x : INT; END_VAR x := x + 1; END_PROGRAM CONFIGURATION C VAR_ACCESS A : P1.x : INT READ_ONLY; END_VAR PROGRAM P1 : P; END_CONFIGURATION"),
+        st("PROGRAM P VAR x : INT; END_VAR x := x + 1; END_PROGRAM CONFIGURATION C PROGRAM P1 : P; END_CONFIGURATION");
+    UnknownTask: "A program instance runs `WITH` a task that its resource does not declare. Declare the task (`TASK Fast (INTERVAL := T#10ms, PRIORITY := 1);`) in the same resource, or fix the name.",
+        st("PROGRAM P VAR x : INT; END_VAR x := x + 1; END_PROGRAM CONFIGURATION C RESOURCE R ON PLC TASK Fast (INTERVAL := T#10ms, PRIORITY := 1); PROGRAM P1 WITH Fats : P; END_RESOURCE END_CONFIGURATION"),
+        st("PROGRAM P VAR x : INT; END_VAR x := x + 1; END_PROGRAM CONFIGURATION C RESOURCE R ON PLC TASK Fast (INTERVAL := T#10ms, PRIORITY := 1); PROGRAM P1 WITH Fast : P; END_RESOURCE END_CONFIGURATION");
+    NotAProgramType: "A program instance (`PROGRAM Name WITH Task : Type;`) must name a PROGRAM; a FUNCTION_BLOCK is instantiated inside a PROGRAM instead.",
+        st("FUNCTION_BLOCK F VAR x : INT; END_VAR x := x + 1; END_FUNCTION_BLOCK CONFIGURATION C PROGRAM P1 : F; END_CONFIGURATION"),
+        st("FUNCTION_BLOCK F VAR x : INT; END_VAR x := x + 1; END_FUNCTION_BLOCK PROGRAM P VAR f : F; END_VAR f(); END_PROGRAM CONFIGURATION C PROGRAM P1 : P; END_CONFIGURATION");
+    BadTaskSetting: "A task's INTERVAL must be a constant TIME above zero, its PRIORITY a constant from 0 (most urgent) to 9999, and its SINGLE a BOOL variable of the configuration whose rising edge starts the task.",
+        st("PROGRAM P VAR x : INT; END_VAR x := x + 1; END_PROGRAM CONFIGURATION C TASK T (INTERVAL := T#0ms, PRIORITY := 1); PROGRAM P1 WITH T : P; END_CONFIGURATION"),
+        st("PROGRAM P VAR x : INT; END_VAR x := x + 1; END_PROGRAM CONFIGURATION C TASK T (INTERVAL := T#20ms, PRIORITY := 1); PROGRAM P1 WITH T : P; END_CONFIGURATION");
+    BadProgramConnection: "A connection of a program instance joins one of the program's VAR_INPUTs (`In := Variable`) or VAR_OUTPUTs (`Out => Variable`) to a global variable of the same type.",
+        st("PROGRAM P VAR_INPUT i : INT; END_VAR VAR x : INT; END_VAR x := i; END_PROGRAM CONFIGURATION C VAR_GLOBAL g : BOOL; END_VAR PROGRAM P1 : P (i := g); END_CONFIGURATION"),
+        st("PROGRAM P VAR_INPUT i : INT; END_VAR VAR x : INT; END_VAR x := i; END_PROGRAM CONFIGURATION C VAR_GLOBAL g : INT; END_VAR PROGRAM P1 : P (i := g); END_CONFIGURATION");
     SceneUnknownVariable: "A widget of the project's scene (the Plant panel, `docs/plants.md`) is bound to a variable that neither the PROGRAM that runs nor its plant has, so it shows no value (and a button writes nothing). Names are the controller's variables and globals, and the plant's as `Plant.Name`; fix the widget's `var` (or `alarm`, `at`, `yellow`, `green`), or declare the variable.",
         drawn("a tank widget with `\"var\": \"TankPlant.Volme\"` in a project whose plant TankPlant declares `Volume`"),
         drawn("the same widget with `\"var\": \"TankPlant.Volume\"`");

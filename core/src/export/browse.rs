@@ -61,7 +61,8 @@ pub fn children(exe: &Executable, path: &str, ty: Type) -> Vec<Child> {
             .map(|code| {
                 code.vars
                     .iter()
-                    .filter(|v| v.section != VarSection::InOut)
+                    // VAR_EXTERNAL members are the globals, listed as such.
+                    .filter(|v| !matches!(v.section, VarSection::InOut | VarSection::External))
                     .map(|v| Child {
                         path: format!("{path}.{}", v.name),
                         label: v.name.clone(),

@@ -14,6 +14,7 @@ pub fn export(project: &Project) -> String {
     let mut data_types = String::new();
     let mut pous = String::new();
     let mut globals = String::new();
+    let mut configuration = None;
     // The PROGRAMs written to the file, in order (Petri net POUs are not: PNML carries them).
     let mut programs: Vec<String> = Vec::new();
     for item in &file.items {
@@ -39,6 +40,11 @@ pub fn export(project: &Project) -> String {
             }
             Item::Globals(block) => {
                 globals.push_str(&vars_xml(block, src, "globalVars", "        "))
+            }
+            Item::Configuration(c) => {
+                if configuration.is_none() {
+                    configuration = Some(c);
+                }
             }
             Item::Pou(p) => {
                 let pou_type = match p.kind {
@@ -115,7 +121,16 @@ pub fn export(project: &Project) -> String {
     } else {
         let _ = write!(out, "    <pous>\n{pous}    </pous>\n");
     }
-    out.push_str("  </types>\n  <instances>\n    <configurations>\n      <configuration name=\"config\">\n        <resource name=\"resource1\">\n");
+    out.push_str("  </types>\n  <instances>\n    <configurations>\n");
+    if let Some(config) = configuration {
+        // The source's own configuration, with its tasks and program instances.
+        out.push_str(&super::tasks::configuration_xml(config, src, &globals));
+        out.push_str("    </configurations>\n  </instances>\n");
+        out.push_str(&trainer_data(project, None));
+        out.push_str("</project>\n");
+        return out;
+    }
+    out.push_str("      <configuration name=\"config\">\n        <resource name=\"resource1\">\n");
     // The task runs the PROGRAM the settings choose, when it is in the file.
     let chosen = project
         .settings

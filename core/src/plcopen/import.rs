@@ -58,7 +58,8 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     // Globals of configurations and resources.
     let mut settings = Settings::default();
     let mut globals = SourceOut::default();
-    if let Some(confs) = root.child("instances").and_then(|i| i.child("configurations")) {
+    let confs = root.child("instances").and_then(|i| i.child("configurations"));
+    if let Some(confs) = confs {
         for conf in confs.children_named("configuration") {
             let cname = conf.attr("name").unwrap_or("config");
             for g in conf.children_named("globalVars") {
@@ -75,7 +76,7 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
                 }
                 if let Some(ms) = res
                     .children_named("task")
-                    .find_map(|t| t.attr("interval").and_then(parse_interval_ms))
+                    .find_map(|t| t.attr("interval").and_then(super::tasks::parse_interval_ms))
                     .filter(|&ms| crate::limits::cycle_ns(ms).is_ok())
                 {
                     settings.cycle_ms = ms;
@@ -221,6 +222,29 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     for (_, net) in off_grid {
         places.extend(network_places(&net));
         project.networks.push(net);
+    }
+    // Several program instances: a CONFIGURATION runs each under its task.
+    let programs: Vec<String> = types
+        .and_then(|t| t.child("pous"))
+        .into_iter()
+        .flat_map(|p| p.children_named("pou"))
+        .filter(|p| p.attr("pouType") == Some("program"))
+        .filter_map(|p| p.attr("name"))
+        .filter(|n| !skipped.iter().any(|s| s.name.eq_ignore_ascii_case(n)))
+        .map(str::to_string)
+        .collect();
+    if let Some(conf) = confs.and_then(|c| c.children_named("configuration").next()) {
+        if let Some((text, tick)) = super::tasks::configuration_text(conf, &programs, &mut warnings)
+        {
+            source.push("\n", None);
+            source.append(text);
+            if tick > 0
+                && crate::limits::cycle_ns(tick).is_ok()
+                && project.settings.program.is_none()
+            {
+                project.settings.cycle_ms = tick;
+            }
+        }
     }
     project.source = source.text;
     let file_map =
@@ -502,27 +526,6 @@ fn text_holders<'a>(node: &'a Node, out: &mut Vec<&'a Node>) {
     for c in &node.children {
         text_holders(c, out);
     }
-}
-
-/// Parses a task interval such as `T#20ms`, `T#1s`, `PT0.02S` into milliseconds.
-fn parse_interval_ms(text: &str) -> Option<u64> {
-    let t = text.trim().to_ascii_lowercase();
-    if let Some(iso) = t.strip_prefix("pt") {
-        let secs: f64 = iso.strip_suffix('s')?.parse().ok()?;
-        return Some((secs * 1000.0).round() as u64).filter(|&m| m > 0);
-    }
-    let body = t.strip_prefix("t#").or_else(|| t.strip_prefix("time#"))?.replace('_', "");
-    let (num, factor) = if let Some(n) = body.strip_suffix("ms") {
-        (n, 1.0)
-    } else if let Some(n) = body.strip_suffix('s') {
-        (n, 1000.0)
-    } else if let Some(n) = body.strip_suffix('m') {
-        (n, 60000.0)
-    } else {
-        return None;
-    };
-    let v: f64 = num.parse().ok()?;
-    Some((v * factor).round() as u64).filter(|&m| m > 0)
 }
 
 /// One interface section (`<inputVars retain=…>`) as an ST `VAR… END_VAR` block, each

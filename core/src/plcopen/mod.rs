@@ -22,6 +22,7 @@ mod ld_import;
 mod network_export;
 mod sfc_read;
 mod source_out;
+mod tasks;
 mod union_find;
 mod xml;
 

@@ -76,10 +76,17 @@ pub(crate) fn locate(exe: &Executable, path: &str) -> Option<Slot> {
                 let code = exe.pous.get(q as usize)?;
                 let i = code.vars.iter().position(|v| v.name.eq_ignore_ascii_case(n))?;
                 let v = &code.vars[i];
-                if v.section == VarSection::InOut {
-                    return None;
+                match v.section {
+                    VarSection::InOut => return None,
+                    // A VAR_EXTERNAL member is the global of its name.
+                    VarSection::External => {
+                        exe.vars
+                            .iter()
+                            .find(|e| e.global && e.var.name.eq_ignore_ascii_case(n))?
+                            .slot
+                    }
+                    _ => Slot { addr: slot.addr + code.offsets.get(i)?, ty: v.ty, bit: None },
                 }
-                Slot { addr: slot.addr + code.offsets.get(i)?, ty: v.ty, bit: None }
             }
             (Step::Bit(n), Type::Elem(e)) if e.is_integral() && n < e.bits() => {
                 Slot { addr: slot.addr, ty: Type::BOOL, bit: Some((n, e)) }

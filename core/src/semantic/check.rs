@@ -164,7 +164,7 @@ impl<'a> Checker<'a> {
                         span: pou.span,
                     });
                 }
-                Item::Globals(_) => {}
+                Item::Globals(_) | Item::Configuration(_) => {}
             }
         }
     }
@@ -172,8 +172,10 @@ impl<'a> Checker<'a> {
     /// Declares the top-level VAR_GLOBAL blocks of a file.
     fn declare_file_globals(&mut self, file: &'a ast::SourceFile) {
         for item in &file.items {
-            if let Item::Globals(block) = item {
-                self.declare_globals(block);
+            match item {
+                Item::Globals(block) => self.declare_globals(block),
+                Item::Configuration(c) => c.global_blocks().for_each(|b| self.declare_globals(b)),
+                _ => {}
             }
         }
     }
@@ -204,6 +206,7 @@ impl<'a> Checker<'a> {
             globals: self.globals,
             pous: self.pous,
             library_pous: self.library_pous,
+            config: None,
         };
         (program, self.diags)
     }
@@ -270,9 +273,11 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
     for i in 0..checker.pous.len() {
         checker.check_body(i as PouId);
     }
+    let config = checker.check_configurations(file);
     checker.check_recursion();
     checker.check_type_nesting();
-    let (program, mut diags) = checker.finish();
+    let (mut program, mut diags) = checker.finish();
+    program.config = config;
     if !lib_diags.is_empty() {
         diags.extend(lib_diags.into_iter().map(|mut d| {
             d.message = format!("standard library: {}", d.message);
@@ -308,6 +313,15 @@ impl<'a> Checker<'a> {
         let body = self.stmts(&ast.body);
         self.pous[id as usize].body = body;
     }
+}
+
+/// The subrange declared for the variable `expr` names (`Level`, `Arr[2]`) in the scope
+/// of `pou`, if it has one.
+pub(super) fn subrange_in(program: &Program, pou: PouId, expr: &ast::Expr) -> Option<(i64, i64)> {
+    let mut c = Checker::around(program);
+    c.body = BodyState { pou, loop_depth: 0, read_only: true };
+    let (place, _) = c.place(expr, false)?;
+    c.place_range(&place)
 }
 
 /// Checks one expression in the scope of `pou` of an already checked program.

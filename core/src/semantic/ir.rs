@@ -20,6 +20,62 @@ pub struct Program {
     pub pous: Vec<Pou>,
     /// How many of `pous` come from the standard library prelude.
     pub library_pous: usize,
+    /// The CONFIGURATION, when the source declares one.
+    pub config: Option<Configuration>,
+}
+
+/// A checked CONFIGURATION: its tasks and program instances, and the PROGRAM (`pou`, named
+/// like the configuration, with an empty body) whose variables are the instances.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Configuration {
+    /// The configuration's name.
+    pub name: String,
+    /// The PROGRAM holding one variable per instance, of the instance's PROGRAM type.
+    pub pou: PouId,
+    /// Every task of every resource, in source order.
+    pub tasks: Vec<Task>,
+    /// Every program instance, in source order (as `pou`'s variables).
+    pub instances: Vec<ProgramInstance>,
+    /// The whole CONFIGURATION block.
+    pub span: Span,
+}
+
+/// A task: cyclic (`interval_ns` above 0), an event task (`single`), or, with neither,
+/// one that runs on every scan.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Task {
+    /// The task's name.
+    pub name: String,
+    /// The resource declaring it.
+    pub resource: String,
+    /// The period in nanoseconds (0: none).
+    pub interval_ns: i64,
+    /// 0 is the most urgent; tasks due on one scan run in this order.
+    pub priority: u32,
+    /// The BOOL global whose rising edge starts the task.
+    pub single: Option<String>,
+    /// Where the task is declared.
+    pub span: Span,
+}
+
+/// A program instance of a configuration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProgramInstance {
+    /// The instance's name.
+    pub name: String,
+    /// Its PROGRAM.
+    pub pou: PouId,
+    /// Its task, as an index into [`Configuration::tasks`] (none: every scan, after the
+    /// tasks).
+    pub task: Option<u32>,
+    /// The resource declaring it.
+    pub resource: String,
+    /// `(VAR_INPUT, global)` pairs copied in before the instance runs.
+    pub inputs: Vec<(String, String)>,
+    /// `(VAR_OUTPUT, global)` pairs copied out after it runs.
+    pub outputs: Vec<(String, String)>,
+    /// Where it is declared.
+    pub span: Span,
 }
 
 impl Program {

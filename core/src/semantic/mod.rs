@@ -8,6 +8,7 @@
 mod builtins;
 mod calls;
 mod check;
+mod config;
 mod consts;
 mod decl;
 mod expr;
@@ -78,6 +79,14 @@ pub fn check_watch(program: &Program, pou: PouId, source: &str) -> Result<Expr, 
         return Err(refuse("a watch shows a single value of an elementary type"));
     }
     Ok(checked)
+}
+
+/// The subrange declared for the variable at `path` (`Level`, `Arr[2]`) in the scope of
+/// POU `pou`, if it has one (values written from outside the program are checked
+/// against it).
+pub fn subrange_of(program: &Program, pou: PouId, path: &str) -> Option<(i64, i64)> {
+    let expr = syntax::parse_expression(path).ok()?;
+    check::subrange_in(program, pou, &expr)
 }
 
 /// Whether `e` calls a FUNCTION (not a built-in) anywhere in its operands.

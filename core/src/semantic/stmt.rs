@@ -135,6 +135,7 @@ impl<'a> Checker<'a> {
                 let body = self.stmts(body);
                 self.body.loop_depth -= 1;
                 let ((place, _), el, from, to, by) = (place?, el?, f?, t?, b?);
+                let (from, to) = self.guard_for_limits(&place, from, to);
                 StmtKind::For { var: place, ty: el, from, to, by, body }
             }
             K::While { cond, body } => {
@@ -173,7 +174,7 @@ impl<'a> Checker<'a> {
     }
 
     /// The subrange a place is declared with, if any.
-    fn place_range(&self, place: &Place) -> Option<(i64, i64)> {
+    pub(super) fn place_range(&self, place: &Place) -> Option<(i64, i64)> {
         match place {
             Place::Local(i) => self.pous.get(self.body.pou as usize)?.vars.get(*i as usize)?.range,
             Place::Global(i) => self.globals.get(*i as usize)?.range,
@@ -220,6 +221,18 @@ impl<'a> Checker<'a> {
             ty,
             span,
         }
+    }
+
+    /// The limits of a FOR loop over a subrange variable, checked against its subrange
+    /// (constants here, others when the loop starts): the first value is stored in the
+    /// variable, and the last one the body sees is `to`. The value that ends the loop
+    /// (one step past `to`) is not checked, as no statement of the body sees it.
+    #[inline(never)]
+    fn guard_for_limits(&mut self, place: &Place, from: Expr, to: Expr) -> (Expr, Expr) {
+        let range = self.place_range(place);
+        self.check_range(range, &from);
+        self.check_range(range, &to);
+        (self.guard_range(range, from), self.guard_range(range, to))
     }
 
     /// Reports a constant stored into a subrange variable outside its limits.

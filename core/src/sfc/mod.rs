@@ -179,7 +179,7 @@ fn check_reserved(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> bool {
         match item {
             Item::Types(defs) => defs.iter().for_each(|d| report(&d.name)),
             Item::Pou(p) => report(&p.name),
-            Item::Globals(_) => {}
+            Item::Globals(_) | Item::Configuration(_) => {}
         }
     }
     clash
@@ -191,6 +191,7 @@ fn global_names(file: &SourceFile) -> HashMap<String, Span> {
     let blocks = file.items.iter().flat_map(|item| match item {
         Item::Globals(b) => vec![b],
         Item::Pou(p) => p.var_blocks.iter().filter(|b| b.section == VarSection::Global).collect(),
+        Item::Configuration(c) => c.global_blocks().collect(),
         Item::Types(_) => Vec::new(),
     });
     for b in blocks {

@@ -7,6 +7,7 @@
 //! The simulator never reads a wall clock: the caller decides how many scans to run and
 //! when, so runs are reproducible natively and in the browser.
 
+mod tasks;
 mod trace;
 
 pub use trace::{Trace, TraceSample};
@@ -151,6 +152,8 @@ pub struct Simulator {
     watchdog: u64,
     watches: Vec<Watch>,
     plant: Option<Plant>,
+    /// The configuration's tasks, when the main program is a CONFIGURATION.
+    schedule: Option<tasks::Schedule>,
 }
 
 /// Copies each `(from, to)` pair of linked variables (one elementary type): the cell
@@ -193,10 +196,15 @@ struct Watch {
 
 impl Simulator {
     /// Compiles PROGRAM `main` of a checked program and powers the PLC on (cold start).
+    /// When `main` is a CONFIGURATION's PROGRAM ([`semantic::ir::Configuration::pou`]),
+    /// its program instances run under their tasks (`tasks.rs`).
     pub fn new(program: Program, main: PouId) -> Result<Self, SimError> {
         let exe = compile::compile(&program, main).map_err(SimError::Compile)?;
         let machine = Machine::new(&exe);
-        Ok(Simulator::new_compiled(program, exe, machine))
+        let schedule = tasks::Schedule::new(&program, &exe)?;
+        let mut sim = Simulator::new_compiled(program, exe, machine);
+        sim.schedule = schedule;
+        Ok(sim)
     }
 
     /// Like [`Simulator::new`], with PROGRAM `plant` run after `main` on every scan, on the
@@ -244,13 +252,15 @@ impl Simulator {
         // checker as a global at its base (the image and the variable list are unchanged).
         let mut program = program;
         let mut exe = exe;
-        for &(q, base) in &exe.instances.clone() {
+        if let Some(&(q, base)) = exe.instances.last() {
             let var = crate::semantic::ir::Var::program_instance(&program, q, VarSection::Global);
             program.globals.push(var);
             exe.lay.globals.push(base);
         }
+        let schedule = tasks::Schedule::new(&program, &exe)?;
         let mut sim = Simulator::new_compiled(program, exe, machine);
         sim.plant = Some(links);
+        sim.schedule = schedule;
         Ok(sim)
     }
 
@@ -272,12 +282,14 @@ impl Simulator {
             watchdog: DEFAULT_WATCHDOG,
             watches: Vec::new(),
             plant: None,
+            schedule: None,
         }
     }
 
     /// The name of the plant PROGRAM run after the controller, if any.
     pub fn plant_name(&self) -> Option<&str> {
-        self.exe.instances.first().map(|(q, _)| self.program.pou(*q).name.as_str())
+        self.plant.as_ref()?;
+        self.exe.instances.last().map(|(q, _)| self.program.pou(*q).name.as_str())
     }
 
     /// Whether the plant writes the controller's variable `name` on every scan (one of its
@@ -290,7 +302,8 @@ impl Simulator {
     fn run_plant(&mut self, sys: SysState) -> Result<(), RuntimeError> {
         let Some(plant) = &self.plant else { return Ok(()) };
         copy_links(self.machine.memory_mut(), &self.exe, &plant.inputs);
-        self.machine.run_instance(&self.exe, 0, sys, self.watchdog)?;
+        let k = self.exe.instances.len().saturating_sub(1);
+        self.machine.run_instance(&self.exe, k, sys, self.watchdog)?;
         copy_links(self.machine.memory_mut(), &self.exe, &plant.outputs);
         Ok(())
     }
@@ -354,8 +367,11 @@ impl Simulator {
         self.state = SimState::Ready;
         self.apply_pinned();
         let sys = SysState { first_scan: self.first_scan, time_ns: self.time_ns };
-        if let Err(RuntimeError { fault, span, pou }) =
-            self.machine.run_scan(&self.exe, sys, self.watchdog).and_then(|()| self.run_plant(sys))
+        if let Err(RuntimeError { fault, span, pou }) = self
+            .machine
+            .run_scan(&self.exe, sys, self.watchdog)
+            .and_then(|()| self.run_tasks(sys))
+            .and_then(|()| self.run_plant(sys))
         {
             let info = FaultInfo { fault, span, pou, scan: self.scans + 1, time_ns: self.time_ns };
             self.state = SimState::Faulted(info.clone());
@@ -484,6 +500,9 @@ impl Simulator {
         self.scans = 0;
         self.first_scan = true;
         self.state = SimState::Ready;
+        if let Some(schedule) = &mut self.schedule {
+            schedule.reset();
+        }
         for bp in &mut self.breakpoints {
             bp.was_true = false;
         }
@@ -510,6 +529,17 @@ impl Simulator {
                 })
             }
         };
+        // A subrange variable takes only values inside its limits, from outside too.
+        if let (Value::Int(v, _), Some((lo, hi))) =
+            (&value, semantic::subrange_of(&self.program, self.main_pou(), path))
+        {
+            if *v < i128::from(lo) || *v > i128::from(hi) {
+                return Err(SimError::BadValue {
+                    path: path.to_string(),
+                    message: format!("{v} is outside its subrange {lo}..{hi}"),
+                });
+            }
+        }
         Ok((slot, value))
     }
 

@@ -383,3 +383,81 @@ fn a_plant_whose_links_do_not_match_is_refused() {
     assert!(err.to_string().contains("Level of the plant Tank"), "{err}");
     assert!(Simulator::with_plant(program, main, main).is_err());
 }
+
+const TWO_TASKS: &str = "
+PROGRAM Count
+VAR_INPUT Step : INT := 1; END_VAR
+VAR_OUTPUT n : INT; END_VAR
+VAR_EXTERNAL Total : INT; END_VAR
+n := n + Step; Total := Total + 1;
+END_PROGRAM
+CONFIGURATION Cell
+  VAR_GLOBAL Total : INT; Two : INT := 2; Go : BOOL; END_VAR
+  TASK Fast (INTERVAL := T#10ms, PRIORITY := 1);
+  TASK Slow (INTERVAL := T#40ms, PRIORITY := 0);
+  TASK OnGo (SINGLE := Go);
+  PROGRAM A WITH Fast : Count;
+  PROGRAM B WITH Slow : Count (Step := Two);
+  PROGRAM E WITH OnGo : Count;
+END_CONFIGURATION
+";
+
+fn config_sim(source: &str) -> Simulator {
+    let analysis = semantic::analyze(source);
+    let errors: Vec<_> = analysis.diagnostics.iter().filter(|d| d.is_error()).collect();
+    assert!(errors.is_empty(), "{errors:?}");
+    let program = analysis.program.unwrap();
+    let main = crate::build::find_program(&program, None).unwrap();
+    Simulator::new(program, main).unwrap()
+}
+
+#[test]
+fn a_configuration_runs_each_instance_under_its_task_and_restarts_its_clock() {
+    let mut s = config_sim(TWO_TASKS);
+    assert_eq!(s.configuration().map(|c| c.name.as_str()), Some("Cell"));
+    s.run_scans(9);
+    assert_eq!(
+        (s.task_runs("fast"), s.task_runs("SLOW"), s.task_runs("OnGo")),
+        (Some(9), Some(3), Some(0))
+    );
+    assert_eq!((int(&s, "A.n"), int(&s, "B.n")), (9, 6));
+    s.write("Go", "TRUE").unwrap();
+    s.run_scans(3);
+    assert_eq!((int(&s, "E.n"), s.task_runs("OnGo")), (1, Some(1)), "one run per rising edge");
+    // Inside an instance, a VAR_EXTERNAL is the global.
+    assert_eq!(int(&s, "A.Total"), int(&s, "Total"));
+    // 12 scans: Fast on each, Slow at 0, 40 and 80 ms, OnGo once.
+    assert_eq!(int(&s, "Total"), 12 + 3 + 1);
+    s.cold_restart();
+    s.scan();
+    assert_eq!((s.task_runs("Fast"), s.task_runs("Slow")), (Some(1), Some(1)));
+    assert_eq!(int(&s, "B.n"), 2);
+    assert_eq!(s.task_runs("Nope"), None);
+}
+
+#[test]
+fn the_panels_list_each_instances_own_variables_by_path() {
+    let s = config_sim(TWO_TASKS);
+    let names: Vec<String> = s.listed_vars().into_iter().map(|(n, _)| n).collect();
+    // B.Step is driven by the global Two, and Total is listed once, as the global.
+    assert_eq!(names, ["A.Step", "A.n", "B.n", "E.Step", "E.n", "Total", "Two", "Go"]);
+    let json = s.vars_json();
+    assert!(json["A"].is_object() && json["B"].is_object() && json["E"].is_object());
+    assert!(json["A"].get("Total").is_none(), "{json:?}");
+    // Without a configuration the panels list the main program's variables as they are.
+    let plain = sim(LATCH);
+    assert!(plain.configuration().is_none());
+    assert_eq!(plain.listed_vars().len(), plain.executable().main_vars().len());
+}
+
+#[test]
+fn a_value_written_from_outside_stays_inside_its_subrange() {
+    let mut s = sim("PROGRAM P VAR_INPUT Level : INT(0..100); END_VAR VAR a : ARRAY[1..2] OF INT(1..5); n : INT; END_VAR n := Level; END_PROGRAM");
+    let err = s.write("Level", "150").unwrap_err();
+    assert!(err.to_string().contains("150 is outside its subrange 0..100"), "{err}");
+    assert!(s.hold("level", "-1").is_err());
+    s.write("Level", "100").unwrap();
+    assert!(s.write("a[2]", "6").is_err(), "an array's element subrange");
+    s.write("a[2]", "5").unwrap();
+    s.write("n", "-7").unwrap();
+}

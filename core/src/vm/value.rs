@@ -126,7 +126,8 @@ fn read_at(mem: &Memory, exe: &Executable, addr: u32, ty: Type) -> Value {
                 .vars
                 .iter()
                 .zip(&code.offsets)
-                .filter(|(v, _)| v.section != VarSection::InOut)
+                // VAR_EXTERNAL members are the globals, shown as such.
+                .filter(|(v, _)| !matches!(v.section, VarSection::InOut | VarSection::External))
                 .map(|(v, off)| (v.name.clone(), read_at(mem, exe, addr + off, v.ty)))
                 .collect();
             Value::Struct(fields)

@@ -46,21 +46,20 @@ fn io_vars(state: AppState) -> (Vec<IoVar>, Vec<IoVar>) {
         .with_sim(|s| {
             let mut inputs = Vec::new();
             let mut outputs = Vec::new();
-            for e in s.executable().main_vars() {
-                let Some(kind) = kind_of(e.var.ty) else { continue };
-                let from_plant = s
-                    .plant_drives(&e.var.name)
-                    .then(|| s.plant_name().unwrap_or_default().to_string());
+            for (name, var) in s.listed_vars() {
+                let Some(kind) = kind_of(var.ty) else { continue };
+                let from_plant =
+                    s.plant_drives(&name).then(|| s.plant_name().unwrap_or_default().to_string());
                 let v = IoVar {
-                    name: e.var.name.clone(),
+                    name,
                     kind,
-                    range: e.var.range,
-                    comment: e.var.comment.clone(),
+                    range: var.range,
+                    comment: var.comment.clone(),
                     from_plant,
                 };
-                if e.var.is_input() {
+                if var.is_input() {
                     inputs.push(v);
-                } else if e.var.is_output() {
+                } else if var.is_output() {
                     outputs.push(v);
                 }
             }

@@ -86,6 +86,24 @@ fn rows(exe: &Executable, open: &HashSet<String>) -> Vec<Row> {
 pub fn Variables() -> impl IntoView {
     let state = expect_context::<AppState>();
     let open = RwSignal::new(HashSet::<String>::new());
+    // A configuration's program instances start expanded, each once (a row the user
+    // collapses stays so across recompiles).
+    let shown = StoredValue::new(HashSet::<String>::new());
+    Effect::new(move |_| {
+        let names: Vec<String> = state
+            .with_sim(|s| {
+                s.configuration()
+                    .map(|c| c.instances.iter().map(|i| i.name.to_ascii_lowercase()).collect())
+                    .unwrap_or_default()
+            })
+            .unwrap_or_default();
+        let new: Vec<String> =
+            names.into_iter().filter(|n| shown.with_value(|s| !s.contains(n))).collect();
+        if !new.is_empty() {
+            shown.update_value(|s| s.extend(new.iter().cloned()));
+            open.update(|o| o.extend(new));
+        }
+    });
     let table = Memo::new(move |_| {
         let open = open.get();
         state.with_sim(|s| rows(s.executable(), &open)).unwrap_or_default()

@@ -5,7 +5,10 @@
 //! spelling the user wrote; comparisons are case-insensitive (see [`Ident::key`]).
 //! This module holds data only: no parsing, no checking.
 
+mod config;
 pub(crate) mod sfc;
+
+pub use config::{Configuration, Connection, ProgramDecl, Resource, TaskDecl};
 
 use crate::diagnostics::Span;
 
@@ -41,6 +44,8 @@ pub enum Item {
     Globals(VarBlock),
     /// A PROGRAM, FUNCTION or FUNCTION_BLOCK.
     Pou(Pou),
+    /// A `CONFIGURATION` with its resources, tasks and program instances.
+    Configuration(Configuration),
 }
 
 /// The kind of a program organisation unit.

@@ -9,6 +9,7 @@
 //! Files: `mod.rs` (cursor, diagnostics, top level and POUs), `decl.rs` (VAR blocks,
 //! types, initial values), `stmt.rs` (statements), `expr.rs` (expressions).
 
+mod config;
 mod decl;
 mod expr;
 mod sfc;
@@ -251,7 +252,10 @@ impl<'a> Parser<'a> {
                 TokenKind::Program | TokenKind::Function | TokenKind::FunctionBlock => {
                     items.push(Item::Pou(self.parse_pou()));
                 }
-                TokenKind::Configuration | TokenKind::Resource => self.skip_configuration(),
+                TokenKind::Configuration => {
+                    items.push(Item::Configuration(self.parse_configuration()));
+                }
+                TokenKind::Resource => self.skip_configuration(),
                 k if is_var_keyword(k) => {
                     let tok = self.tok();
                     let text = self.text(tok);
@@ -278,18 +282,15 @@ impl<'a> Parser<'a> {
         SourceFile { items }
     }
 
+    /// A `RESOURCE` outside any configuration: reported and skipped.
     fn skip_configuration(&mut self) {
         let opener = self.bump();
-        let (end, name) = if opener.kind == TokenKind::Configuration {
-            (TokenKind::EndConfiguration, "END_CONFIGURATION")
-        } else {
-            (TokenKind::EndResource, "END_RESOURCE")
-        };
+        let (end, name) = (TokenKind::EndResource, "END_RESOURCE");
         let text = self.text(opener);
         self.error(
             Code::UnexpectedToken,
             opener.span,
-            format!("`{text}` blocks are not supported here and are skipped up to `{name}`; write the PROGRAMs on their own"),
+            format!("`{text}` must stand inside a CONFIGURATION; it is skipped up to `{name}`"),
         );
         while !self.at(end) && !self.at(TokenKind::Eof) {
             self.bump();

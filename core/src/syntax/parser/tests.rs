@@ -627,12 +627,64 @@ fn wrong_end_keyword_is_one_error() {
 }
 
 #[test]
-fn configuration_is_skipped_with_an_error() {
-    let src = "CONFIGURATION C RESOURCE R ON PLC TASK t(INTERVAL := T#10ms); PROGRAM p WITH t : Main; END_RESOURCE END_CONFIGURATION\nPROGRAM Main x := 1; END_PROGRAM";
+fn configuration_with_resources_tasks_and_program_instances() {
+    let src = "CONFIGURATION C VAR_GLOBAL g : INT; END_VAR RESOURCE R ON PLC TASK t(INTERVAL := T#10ms, PRIORITY := 2); TASK e (SINGLE := g); PROGRAM p WITH t : Main (i := g, o => g); PROGRAM q : Main; END_RESOURCE END_CONFIGURATION\nPROGRAM Main x := 1; END_PROGRAM";
     let (f, d) = parse_source(src);
+    assert!(d.is_empty(), "{d:#?}");
+    let [Item::Configuration(c), Item::Pou(_)] = &f.items[..] else { panic!("{:#?}", f.items) };
+    assert_eq!(c.globals.len(), 1);
+    let [r] = &c.resources[..] else { panic!() };
+    assert_eq!((r.name.name.as_str(), r.on.as_ref().map(|o| o.name.as_str())), ("R", Some("PLC")));
+    assert_eq!(r.tasks.len(), 2);
+    assert!(r.tasks[0].interval.is_some() && r.tasks[0].priority.is_some());
+    assert!(r.tasks[1].single.is_some() && r.tasks[1].interval.is_none());
+    let names: Vec<_> = r
+        .programs
+        .iter()
+        .map(|p| (p.name.name.as_str(), p.task.as_ref().map(|t| t.name.as_str())))
+        .collect();
+    assert_eq!(names, [("p", Some("t")), ("q", None)]);
+    assert_eq!(
+        r.programs[0].connections.iter().map(|c| c.output).collect::<Vec<_>>(),
+        [false, true]
+    );
+}
+
+#[test]
+fn configuration_without_resource_forms_one() {
+    let (f, d) = parse_source("CONFIGURATION C TASK t (INTERVAL := T#1s); PROGRAM p WITH t : Main; END_CONFIGURATION PROGRAM Main END_PROGRAM");
+    assert!(d.is_empty(), "{d:#?}");
+    let Item::Configuration(c) = &f.items[0] else { panic!() };
+    assert_eq!(c.resources.len(), 1);
+    assert_eq!(c.resources[0].name.name, "C");
+}
+
+#[test]
+fn broken_configuration_lines_are_one_error_each() {
+    let src = "CONFIGURATION C TASK t INTERVAL; PROGRAM p WITH : Main; PROGRAM q : Main; VAR_ACCESS a : q.x : INT READ_ONLY; END_VAR END_CONFIGURATION\nPROGRAM Main END_PROGRAM";
+    let (f, d) = parse_source(src);
+    let codes: Vec<_> = d.iter().map(|d| d.code.as_str()).collect();
+    assert_eq!(codes, ["E0006", "E0006", "E0620"], "{d:#?}");
+    let Item::Configuration(c) = &f.items[0] else { panic!() };
+    assert_eq!(c.resources[0].programs.len(), 1);
+    assert!(matches!(&f.items[1], Item::Pou(_)));
+}
+
+#[test]
+fn resource_outside_a_configuration_is_skipped_with_an_error() {
+    let (f, d) = parse_source(
+        "RESOURCE R ON PLC TASK t (INTERVAL := T#1s); END_RESOURCE\nPROGRAM Main END_PROGRAM",
+    );
     assert_eq!(d.len(), 1, "{d:#?}");
-    assert_eq!(d[0].code.as_str(), "E0006");
     assert!(matches!(&f.items[..], [Item::Pou(_)]));
+}
+
+#[test]
+fn unclosed_configuration_stops_at_the_next_pou() {
+    let (f, d) =
+        parse_source("CONFIGURATION C PROGRAM p : Main;\nPROGRAM Main x := 1; END_PROGRAM");
+    assert_eq!(d.iter().map(|d| d.code.as_str()).collect::<Vec<_>>(), ["E0007"], "{d:#?}");
+    assert!(matches!(&f.items[..], [Item::Configuration(_), Item::Pou(_)]));
 }
 
 #[test]

@@ -59,15 +59,15 @@ impl View {
     }
 }
 
-/// The variables one can chart: the main program's BOOL and numeric variables.
+/// The variables one can chart: the main program's BOOL and numeric variables (each
+/// program instance's, when a configuration runs).
 fn candidates(state: AppState) -> Vec<String> {
     state
         .with_sim(|s| {
-            s.executable()
-                .main_vars()
-                .iter()
-                .filter(|e| !plc_core::build::is_hidden_variable(&e.var.name))
-                .filter(|e| match e.var.ty {
+            s.listed_vars()
+                .into_iter()
+                .filter(|(name, _)| !plc_core::build::is_hidden_variable(name))
+                .filter(|(_, var)| match var.ty {
                     Type::Elem(el) => {
                         el.is_integral()
                             || el.is_real()
@@ -77,7 +77,7 @@ fn candidates(state: AppState) -> Vec<String> {
                     Type::Enum(_) => true,
                     _ => false,
                 })
-                .map(|e| e.var.name.clone())
+                .map(|(name, _)| name)
                 .collect()
         })
         .unwrap_or_default()

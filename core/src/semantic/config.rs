@@ -1,0 +1,290 @@
+//! Checking a CONFIGURATION: its tasks (constant INTERVAL and PRIORITY, a BOOL global for
+//! SINGLE), its program instances (a PROGRAM type, a task of their resource, connections
+//! to globals of the parameter's type), and the PROGRAM that holds the instances.
+//!
+//! The configuration becomes [`ir::Configuration`] and one more PROGRAM POU named like
+//! the configuration, whose variables are the program instances (each of its PROGRAM's
+//! type): the simulator runs that POU as its main program (its body is empty) and each
+//! instance under its task, so `Main1.Count` names a variable of instance `Main1`
+//! everywhere a path is read. The configuration's and resources' VAR_GLOBAL blocks are
+//! declared with the file's other globals (`check.rs`).
+
+use std::collections::HashMap;
+
+use super::check::Checker;
+use super::ir::{self, Pou, Var};
+use super::types::{Elem, PouId, Type};
+use crate::diagnostics::Code;
+use crate::syntax::{self as ast, PouKind, VarSection};
+
+/// The highest task PRIORITY accepted (0 is the most urgent).
+pub const MAX_PRIORITY: i64 = 9999;
+
+impl Checker<'_> {
+    /// Checks the file's configuration (the first one; others are E0620) and adds the
+    /// PROGRAM holding its instances.
+    pub(super) fn check_configurations(
+        &mut self,
+        file: &ast::SourceFile,
+    ) -> Option<ir::Configuration> {
+        let mut configs = file.items.iter().filter_map(|i| match i {
+            ast::Item::Configuration(c) => Some(c),
+            _ => None,
+        });
+        let first = configs.next()?;
+        for other in configs {
+            self.error(
+                Code::UnsupportedConfiguration,
+                other.name.span,
+                format!(
+                    "a program has one CONFIGURATION; `{}` is a second one (put its resources in `{}`)",
+                    other.name.name, first.name.name
+                ),
+            );
+        }
+        Some(self.check_configuration(first))
+    }
+
+    fn check_configuration(&mut self, c: &ast::Configuration) -> ir::Configuration {
+        self.body.pou = PouId::MAX;
+        let mut tasks = Vec::new();
+        let mut instances: Vec<ir::ProgramInstance> = Vec::new();
+        let mut names: HashMap<String, &str> = HashMap::new();
+        for r in &c.resources {
+            let first_task = tasks.len();
+            for t in &r.tasks {
+                if self.clash(&mut names, &t.name, "task") {
+                    continue;
+                }
+                tasks.push(self.task(t, &r.name.name));
+            }
+            for p in &r.programs {
+                if self.clash(&mut names, &p.name, "program instance") {
+                    continue;
+                }
+                if self.global_index.contains_key(&p.name.key()) {
+                    self.error(
+                        Code::DuplicateDeclaration,
+                        p.name.span,
+                        format!("`{}` is already a global variable; name the program instance otherwise", p.name.name),
+                    );
+                    continue;
+                }
+                if let Some(inst) =
+                    self.program_instance(p, &tasks[first_task..], first_task, &r.name.name)
+                {
+                    instances.push(inst);
+                }
+            }
+        }
+        let pou = self.pous.len() as PouId;
+        let vars = instances
+            .iter()
+            .map(|i| Var {
+                name: i.name.clone(),
+                ty: Type::Fb(i.pou),
+                section: VarSection::Var,
+                retain: false,
+                constant: false,
+                location: None,
+                init: None,
+                range: None,
+                comment: Some(match i.task.and_then(|t| tasks.get(t as usize)) {
+                    Some(t) => describe_task(t),
+                    None => "no task: runs on every scan, after the tasks".to_string(),
+                }),
+                span: i.span,
+            })
+            .collect();
+        self.types.pou_names.push(c.name.name.clone());
+        self.calls.push(Default::default());
+        self.pous.push(Pou {
+            name: c.name.name.clone(),
+            kind: PouKind::Program,
+            vars,
+            result: None,
+            body: Vec::new(),
+            library: false,
+            span: c.span,
+        });
+        ir::Configuration { name: c.name.name.clone(), pou, tasks, instances, span: c.span }
+    }
+
+    /// Reports `name` when a task or program instance of the configuration has it already.
+    fn clash<'n>(
+        &mut self,
+        names: &mut HashMap<String, &'n str>,
+        name: &'n ast::Ident,
+        what: &'n str,
+    ) -> bool {
+        if let Some(other) = names.get(&name.key()) {
+            let msg = format!("`{}` already names a {other} of this configuration", name.name);
+            self.error(Code::DuplicateDeclaration, name.span, msg);
+            return true;
+        }
+        names.insert(name.key(), what);
+        false
+    }
+
+    fn task(&mut self, t: &ast::TaskDecl, resource: &str) -> ir::Task {
+        let mut task = ir::Task {
+            name: t.name.name.clone(),
+            resource: resource.to_string(),
+            interval_ns: 0,
+            priority: 0,
+            single: None,
+            span: t.span,
+        };
+        if let Some(e) = &t.interval {
+            let ns = self
+                .expr(e, Some(Type::Elem(Elem::Time)))
+                .and_then(|v| self.coerce(v, Type::Elem(Elem::Time), e.span));
+            // A value of another type is reported by the checker already.
+            let ns = ns.map(|v| match v.kind {
+                ir::ExprKind::Const(bits) => bits as i64,
+                _ => 0,
+            });
+            match ns {
+                None => {}
+                Some(ns) if ns > 0 => task.interval_ns = ns,
+                Some(_) => self.error(
+                    Code::BadTaskSetting,
+                    e.span,
+                    format!("the INTERVAL of task `{}` must be a constant TIME above zero, such as T#20ms", t.name.name),
+                ),
+            }
+        }
+        if let Some(e) = &t.priority {
+            let p = self.expr(e, None).as_ref().and_then(|v| super::consts::int_value(&v.e));
+            match p {
+                Some(p) if (0..=MAX_PRIORITY).contains(&p) => task.priority = p as u32,
+                _ => self.error(
+                    Code::BadTaskSetting,
+                    e.span,
+                    format!("the PRIORITY of task `{}` must be a constant from 0 (most urgent) to {MAX_PRIORITY}", t.name.name),
+                ),
+            }
+        }
+        if let Some(e) = &t.single {
+            match self.global_bool(e) {
+                Some(name) => task.single = Some(name),
+                None => self.error(
+                    Code::BadTaskSetting,
+                    e.span,
+                    format!("the SINGLE of task `{}` must be a BOOL global variable; its rising edge starts the task", t.name.name),
+                ),
+            }
+        }
+        task
+    }
+
+    /// The name of the global variable `e` names, when it is one of type BOOL.
+    fn global_bool(&self, e: &ast::Expr) -> Option<String> {
+        let (name, ty) = self.global_named(e)?;
+        (ty == Type::BOOL).then_some(name)
+    }
+
+    /// The name (as declared) and type of the global variable `e` names.
+    fn global_named(&self, e: &ast::Expr) -> Option<(String, Type)> {
+        let ast::ExprKind::Name(id) = &e.kind else { return None };
+        let g = &self.globals[*self.global_index.get(&id.key())? as usize];
+        Some((g.name.clone(), g.ty))
+    }
+
+    fn program_instance(
+        &mut self,
+        p: &ast::ProgramDecl,
+        tasks: &[ir::Task],
+        first_task: usize,
+        resource: &str,
+    ) -> Option<ir::ProgramInstance> {
+        let pou = match self.pou_index.get(&p.type_name.key()) {
+            Some(&q) if self.pous[q as usize].kind == PouKind::Program => q,
+            found => {
+                let what = if found.is_some() { "is not a PROGRAM" } else { "is not declared" };
+                self.error(
+                    Code::NotAProgramType,
+                    p.type_name.span,
+                    format!("`{}` {what}; a program instance names a PROGRAM", p.type_name.name),
+                );
+                return None;
+            }
+        };
+        let task = match &p.task {
+            None => None,
+            Some(t) => match tasks.iter().position(|k| k.name.eq_ignore_ascii_case(&t.name)) {
+                Some(k) => Some((first_task + k) as u32),
+                None => {
+                    self.error(
+                        Code::UnknownTask,
+                        t.span,
+                        format!("resource `{resource}` declares no task `{}`", t.name),
+                    );
+                    return None;
+                }
+            },
+        };
+        let mut inst = ir::ProgramInstance {
+            name: p.name.name.clone(),
+            pou,
+            task,
+            resource: resource.to_string(),
+            inputs: Vec::new(),
+            outputs: Vec::new(),
+            span: p.span,
+        };
+        for conn in &p.connections {
+            self.connection(&mut inst, conn);
+        }
+        Some(inst)
+    }
+
+    fn connection(&mut self, inst: &mut ir::ProgramInstance, conn: &ast::Connection) {
+        let prog = &self.pous[inst.pou as usize];
+        let wanted = if conn.output { VarSection::Output } else { VarSection::Input };
+        let param = prog
+            .find_var(&conn.param.name)
+            .map(|k| &prog.vars[k as usize])
+            .filter(|v| v.section == wanted)
+            .map(|v| (v.name.clone(), v.ty));
+        let Some((param, ty)) = param else {
+            let what = if conn.output { "VAR_OUTPUT (`=>`)" } else { "VAR_INPUT (`:=`)" };
+            let msg = format!("`{}` is no {what} of PROGRAM `{}`", conn.param.name, prog.name);
+            self.error(Code::BadProgramConnection, conn.param.span, msg);
+            return;
+        };
+        match self.global_named(&conn.variable) {
+            Some((global, gty)) if gty == ty && matches!(ty, Type::Elem(_) | Type::Enum(_)) => {
+                let list = if conn.output { &mut inst.outputs } else { &mut inst.inputs };
+                list.push((param, global));
+            }
+            found => {
+                let msg = match found {
+                    Some((g, gty)) => format!(
+                        "`{param}` is {} and the global `{g}` is {}; connect a global of the same elementary type",
+                        self.tname(ty),
+                        self.tname(gty)
+                    ),
+                    None => format!("connect `{param}` to a global variable of the configuration"),
+                };
+                self.error(Code::BadProgramConnection, conn.variable.span, msg);
+            }
+        }
+    }
+}
+
+/// How a task runs, as the variable table describes its instances: `task Fast: every
+/// 10 ms, priority 1`.
+fn describe_task(t: &ir::Task) -> String {
+    let period = |ns: i64| match ns % 1_000_000_000 {
+        0 => format!("every {} s", ns / 1_000_000_000),
+        _ => format!("every {} ms", ns as f64 / 1e6),
+    };
+    let when = match (&t.single, t.interval_ns) {
+        (Some(g), 0) => format!("when {g} turns TRUE"),
+        (Some(g), ns) => format!("{}, and when {g} turns TRUE", period(ns)),
+        (None, 0) => "every scan".to_string(),
+        (None, ns) => period(ns),
+    };
+    format!("task {}: {when}, priority {}", t.name, t.priority)
+}
