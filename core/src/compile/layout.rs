@@ -212,7 +212,12 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
     let mpou = p.pou(main);
     for (i, v) in mpou.vars.iter().enumerate() {
         let off = exe.lay.var_offset(p, main, i as u32)?;
-        let addr = exe.main_base + off;
+        // A VAR_EXTERNAL is its global (the code reaches the global; its own cell is unused).
+        let global = (v.section == VarSection::External)
+            .then(|| p.globals.iter().position(|g| g.name.eq_ignore_ascii_case(&v.name)))
+            .flatten()
+            .and_then(|g| exe.lay.globals.get(g).copied());
+        let addr = global.unwrap_or(exe.main_base + off);
         exe.vars.push(VarEntry {
             var: v.clone(),
             slot: Slot { addr, ty: v.ty, bit: None },

@@ -461,3 +461,14 @@ fn a_value_written_from_outside_stays_inside_its_subrange() {
     s.write("a[2]", "5").unwrap();
     s.write("n", "-7").unwrap();
 }
+
+#[test]
+fn a_var_external_of_the_main_program_reads_and_writes_its_global() {
+    let mut s = sim("VAR_GLOBAL Total : INT; END_VAR PROGRAM P VAR_EXTERNAL Total : INT; END_VAR Total := Total + 1; END_PROGRAM");
+    s.run_scans(3);
+    assert_eq!(int(&s, "Total"), 3);
+    assert_eq!(s.vars_json()["Total"], serde_json::json!(3));
+    s.write("Total", "10").unwrap();
+    s.scan();
+    assert_eq!(int(&s, "Total"), 11);
+}
