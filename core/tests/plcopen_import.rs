@@ -1536,3 +1536,16 @@ fn network_pous_are_renamed_and_deleted() {
     p.delete_network_pou("vote").unwrap();
     assert!(p.networks.is_empty());
 }
+
+#[test]
+fn references_round_trip_as_tc6_pointers() {
+    let mut p = Project::new("Refs");
+    p.source = "TYPE PInt : REF_TO INT; END_TYPE\nPROGRAM Main\nVAR a : INT; r : REF_TO INT; q : PInt; END_VAR\nr := REF(a);\nq := r;\nq^ := 3;\nEND_PROGRAM\n".into();
+    let xml = plc_core::plcopen::export(&p);
+    assert!(xml.contains("<pointer><baseType><INT/></baseType></pointer>"), "{xml}");
+    let back = plc_core::plcopen::import(&xml).unwrap().project;
+    let report = plc_core::run::run_project(&back, &plc_core::run::RunOptions::default());
+    assert_eq!(report.status, plc_core::run::RunStatus::Ok, "{:?}", report.diagnostics);
+    assert_eq!(report.vars["a"], 3);
+    assert_eq!(report.vars["q"], "REF(a)");
+}

@@ -91,7 +91,10 @@ enum ConvTarget {
 
 /// True when `key` (upper case) names a built-in function.
 pub fn is_builtin(key: &str) -> bool {
-    FIXED.iter().any(|(n, _)| *n == key) || VARIADIC.contains(&key) || conversion(key).is_some()
+    FIXED.iter().any(|(n, _)| *n == key)
+        || VARIADIC.contains(&key)
+        || conversion(key).is_some()
+        || key == "REF"
 }
 
 impl<'a> Checker<'a> {
@@ -433,6 +436,11 @@ impl<'a> Checker<'a> {
             }
             "MAX" | "MIN" | "LIMIT" => {
                 let items = a.iter().map(|e| self.expr(e, hint)).collect::<Option<Vec<_>>>()?;
+                if let Some(r) = items.iter().find(|t| t.e.ty.is_ref()) {
+                    let msg = format!("{key} compares its inputs; references have no order");
+                    self.error(Code::OperatorTypeMismatch, r.e.span, msg);
+                    return None;
+                }
                 let (ty, args) = self.unify(items, span, &key, expected)?;
                 let f = match key.as_str() {
                     "MAX" => Builtin::Max,

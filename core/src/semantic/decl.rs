@@ -94,6 +94,10 @@ impl<'a> Checker<'a> {
                 self.error(Code::UnknownType, id.span, format!("unknown type `{}`", id.name));
                 None
             }
+            TypeRef::Ref { target, .. } => {
+                let t = self.resolve_type(target, owner)?;
+                plain(self.types.reference(t.ty))
+            }
             TypeRef::String { wide, length, span } => {
                 let len = match length {
                     Some(e) => self.const_int(e)?,

@@ -173,11 +173,11 @@ impl<'a> Checker<'a> {
     }
 
     /// The subrange a place is declared with, if any.
-    fn place_range(&self, place: &Place) -> Option<(i64, i64)> {
+    pub(super) fn place_range(&self, place: &Place) -> Option<(i64, i64)> {
         match place {
             Place::Local(i) => self.pous.get(self.body.pou as usize)?.vars.get(*i as usize)?.range,
             Place::Global(i) => self.globals.get(*i as usize)?.range,
-            Place::Field(_, _) | Place::Bit(..) => None,
+            Place::Field(_, _) | Place::Bit(..) | Place::Deref(_) => None,
             Place::Element(_, id, _) => self.types.arrays.get(*id as usize)?.element_range,
         }
     }

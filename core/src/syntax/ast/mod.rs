@@ -216,6 +216,13 @@ pub enum TypeRef {
         /// The whole type text.
         span: Span,
     },
+    /// `REF_TO T`: a reference to a variable of type `T` (IEC 61131-3 ed. 3).
+    Ref {
+        /// The referenced type.
+        target: Box<TypeRef>,
+        /// The whole type text.
+        span: Span,
+    },
 }
 
 impl TypeRef {
@@ -227,7 +234,8 @@ impl TypeRef {
             | TypeRef::Array { span, .. }
             | TypeRef::Subrange { span, .. }
             | TypeRef::Enum { span, .. }
-            | TypeRef::Struct { span, .. } => *span,
+            | TypeRef::Struct { span, .. }
+            | TypeRef::Ref { span, .. } => *span,
         }
     }
 }
@@ -441,6 +449,8 @@ pub enum ExprKind {
     Direct(DirectAddress),
     /// An expression in parentheses (kept so spans and ST views stay faithful).
     Paren(Box<Expr>),
+    /// `r^` — the variable a reference points to (IEC 61131-3 ed. 3).
+    Deref(Box<Expr>),
 }
 
 impl Expr {
@@ -460,7 +470,8 @@ impl Expr {
                 | ExprKind::Bit(b, _)
                 | ExprKind::Part { base: b, .. }
                 | ExprKind::Unary(_, b)
-                | ExprKind::Paren(b) => todo.push((b, h + 1)),
+                | ExprKind::Paren(b)
+                | ExprKind::Deref(b) => todo.push((b, h + 1)),
                 ExprKind::Index(b, indices) => {
                     todo.push((b, h + 1));
                     todo.extend(indices.iter().map(|i| (i, h + 1)));

@@ -95,6 +95,7 @@ fn sx(e: &Expr) -> String {
         }
         ExprKind::Direct(d) => format!("{}:{:?}{:?}{:?}", d.text, d.area, d.size, d.path),
         ExprKind::Paren(x) => format!("[{}]", sx(x)),
+        ExprKind::Deref(x) => format!("{}^", sx(x)),
     }
 }
 
@@ -145,6 +146,31 @@ fn postfix_calls_members_bits() {
     assert_eq!(ex("l.%L0"), "l.part64:0");
     assert_eq!(ex("timers[2].Q"), "timers[2].Q");
     assert_eq!(ex("F()"), "F()");
+}
+
+#[test]
+fn dereference_is_a_postfix_operator() {
+    assert_eq!(ex("r^"), "r^");
+    assert_eq!(ex("r^.x"), "r^.x");
+    assert_eq!(ex("r^[i]^"), "r^[i]^");
+    assert_eq!(ex("a[1]^.b^"), "a[1]^.b^");
+    assert_eq!(ex("-r^ + 1"), "(Add (Neg r^) 1)");
+    assert_eq!(ex("REF(x)^"), "REF(x)^");
+    assert_eq!(ex("r^ = NULL"), "(Eq r^ NULL)");
+}
+
+#[test]
+fn reference_types() {
+    let d = decls("r : REF_TO INT;\np : REF_TO ARRAY[1..2] OF REF_TO Pt;\nREF_TO : INT;");
+    let TypeRef::Ref { target, .. } = &d[0].ty else { panic!("{:?}", d[0].ty) };
+    assert!(matches!(&**target, TypeRef::Named(n) if n.name == "INT"));
+    let TypeRef::Ref { target, .. } = &d[1].ty else { panic!("{:?}", d[1].ty) };
+    let TypeRef::Array { element, .. } = &**target else { panic!("{target:?}") };
+    assert!(matches!(&**element, TypeRef::Ref { .. }));
+    // `REF_TO` alone stays a name.
+    assert_eq!(d[2].names[0].name, "REF_TO");
+    let t = types("PInt : REF_TO INT;");
+    assert!(matches!(&t[0].ty, TypeRef::Ref { .. }));
 }
 
 #[test]
