@@ -1190,8 +1190,17 @@ impl<'a> Checker<'a> {
         let result = match (op, ae, be) {
             (BinOp::Add | BinOp::Sub, Time, Time) => Time,
             (BinOp::Add | BinOp::Sub, Tod, Time) => Tod,
-            (BinOp::Add | BinOp::Sub, Dt, Time) => Dt,
-            (BinOp::Sub, Tod, Tod) | (BinOp::Sub, Dt, Dt) | (BinOp::Sub, Date, Date) => Time,
+            // DT counts microseconds, TIME nanoseconds: the TIME is converted first (its
+            // part below a microsecond dropped), the difference of two DT or DATE after.
+            (BinOp::Add | BinOp::Sub, Dt, Time) => {
+                let y = self.convert(b.e, Type::Elem(Dt));
+                return make(self, Dt, a.e, y);
+            }
+            (BinOp::Sub, Dt, Dt) | (BinOp::Sub, Date, Date) => {
+                let diff = make(self, ae, a.e, b.e)?;
+                return Some(Typed::fixed(self.convert(diff.e, Type::Elem(Time))));
+            }
+            (BinOp::Sub, Tod, Tod) => Time,
             (BinOp::Mul | BinOp::Div, t, n) if t.is_temporal() && t == Time && n.is_num() => {
                 let f = if n.is_real() { LReal } else { LInt };
                 let y = self.convert(b.e, Type::Elem(f));

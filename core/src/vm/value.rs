@@ -26,11 +26,11 @@ pub enum Value {
     WStr(Vec<u16>),
     /// TIME in nanoseconds.
     Time(i64),
-    /// DATE in nanoseconds since 1970-01-01.
+    /// DATE in microseconds since 1970-01-01 (a whole number of days).
     Date(i64),
     /// TIME_OF_DAY in nanoseconds since midnight.
     Tod(i64),
-    /// DATE_AND_TIME in nanoseconds since 1970-01-01.
+    /// DATE_AND_TIME in microseconds since 1970-01-01.
     Dt(i64),
     /// An enumeration value, with the name of its enumerator (`None` for a value that
     /// has no name).

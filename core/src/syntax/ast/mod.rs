@@ -660,10 +660,10 @@ pub enum LiteralValue {
     WString(Vec<u16>),
     /// `T#…` / `TIME#…` / `LTIME#…`: nanoseconds.
     Time(i64),
-    /// `D#…` / `DATE#…`: nanoseconds since 1970-01-01 00:00 (a whole number of days).
+    /// `D#…` / `DATE#…`: microseconds since 1970-01-01 00:00 (a whole number of days).
     Date(i64),
     /// `TOD#…` / `TIME_OF_DAY#…`: nanoseconds since midnight.
     TimeOfDay(i64),
-    /// `DT#…` / `DATE_AND_TIME#…`: nanoseconds since 1970-01-01 00:00.
+    /// `DT#…` / `DATE_AND_TIME#…`: microseconds since 1970-01-01 00:00.
     DateTime(i64),
 }

@@ -196,9 +196,9 @@ fn literals_in_expressions() {
     assert_eq!(ex("T#1s"), "time:1000000000");
     assert_eq!(ex("T#-14ms"), "time:-14000000");
     assert_eq!(ex("LTIME#1ms"), "time:1000000");
-    assert_eq!(ex("D#1970-01-02"), "date:86400000000000");
+    assert_eq!(ex("D#1970-01-02"), "date:86400000000", "DATE counts microseconds");
     assert_eq!(ex("TOD#00:00:01"), "tod:1000000000");
-    assert_eq!(ex("DT#1970-01-01-00:00:01.5"), "dt:1500000000");
+    assert_eq!(ex("DT#1970-01-01-00:00:01.5"), "dt:1500000");
     assert_eq!(ex("Color#Red"), "Color#Red");
     assert_eq!(ex("%IX0.1"), "%IX0.1:InputBit[0, 1]");
     assert_eq!(ex("%QW4 + %MW6"), "(Add %QW4:OutputWord[4] %MW6:MemoryWord[6])");
