@@ -223,7 +223,14 @@ impl<'a> Checker<'a> {
                 acc.e.ty
             }
             other => {
-                if items.iter().any(|t| t.e.ty != other) {
+                // NULL mixes with references of any one type (`MUX(k, REF(a), NULL)`).
+                let null = Type::Ref(super::types::NULL_REF);
+                let other = match items.iter().map(|t| t.e.ty).find(|t| *t != null) {
+                    Some(r) if other == null && r.is_ref() => r,
+                    _ => other,
+                };
+                let fits = |t: Type| t == other || (t == null && other.is_ref());
+                if !items.iter().all(|t| fits(t.e.ty)) {
                     self.error(
                         Code::TypeMismatch,
                         span,
@@ -234,7 +241,7 @@ impl<'a> Checker<'a> {
                 other
             }
         };
-        let exprs = items.into_iter().map(|t| self.convert(t.e, ty)).collect();
+        let exprs = items.into_iter().map(|t| self.convert(self.null_as(t.e, ty), ty)).collect();
         Some((ty, exprs))
     }
 

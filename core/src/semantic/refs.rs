@@ -15,9 +15,11 @@ impl Checker<'_> {
     /// `NULL` as a value, when `id` is `NULL` and no variable of that name is in scope.
     #[inline(never)]
     pub(super) fn null_literal(&mut self, id: &ast::Ident, span: Span) -> Option<Typed> {
+        if !id.name.eq_ignore_ascii_case("NULL") {
+            return None;
+        }
         let key = id.key();
-        if key != "NULL"
-            || self.local_var(self.body.pou as usize, &key).is_some()
+        if self.local_var(self.body.pou as usize, &key).is_some()
             || self.global_index.contains_key(&key)
         {
             return None;
@@ -91,13 +93,59 @@ impl Checker<'_> {
         Some(Expr { kind: ExprKind::RefOf(place), ty, span })
     }
 
+    /// `REF_TO X` where `X` is the named type being resolved right now (a field of struct
+    /// `X` referring to `X`: a linked list): a reference type whose target is filled in
+    /// when `X` is complete ([`Self::complete_pending_refs`]). `None` for any other target.
+    pub(super) fn ref_to_resolving(&mut self, target: &ast::TypeRef) -> Option<Type> {
+        let ast::TypeRef::Named(id) = target else { return None };
+        let key = id.key();
+        if !matches!(self.type_slots.get(&key), Some(super::check::TypeSlot::Resolving(_))) {
+            return None;
+        }
+        if let Some((r, _)) = self.pending_refs.iter().find(|(_, k)| *k == key) {
+            return Some(Type::Ref(*r));
+        }
+        self.types.refs.push(Type::Void);
+        let r = self.types.refs.len() as u32 - 1;
+        self.pending_refs.push((r, key));
+        Some(Type::Ref(r))
+    }
+
+    /// Completes the reference types that wait for named type `key`, now resolved to `ty`
+    /// (`None` when it failed). Only a struct may refer to itself: an alias or array that
+    /// does (`TYPE P : REF_TO P;`) is E0108 at its `name`.
+    pub(super) fn complete_pending_refs(&mut self, key: &str, ty: Option<Type>, name: &ast::Ident) {
+        let mut still = Vec::new();
+        for (r, k) in std::mem::take(&mut self.pending_refs) {
+            if k != key {
+                still.push((r, k));
+                continue;
+            }
+            match ty {
+                Some(t @ Type::Struct(_)) => {
+                    if let Some(slot) = self.types.refs.get_mut(r as usize) {
+                        *slot = t;
+                    }
+                }
+                Some(_) => {
+                    let msg = format!("type `{}` refers to itself; only a STRUCT may", name.name);
+                    self.error(Code::RecursiveType, name.span, msg);
+                }
+                None => {}
+            }
+        }
+        self.pending_refs = still;
+    }
+
     /// Whether `callee` names `REF` (and no variable or POU of the program is so named).
     #[inline(never)]
     pub(super) fn is_ref_call(&mut self, callee: &ast::Expr) -> bool {
         let ast::ExprKind::Name(id) = &callee.kind else { return false };
+        if !id.name.eq_ignore_ascii_case("REF") {
+            return false;
+        }
         let key = id.key();
-        key == "REF"
-            && !self.pou_index.contains_key(&key)
+        !self.pou_index.contains_key(&key)
             && self.local_var(self.body.pou as usize, &key).is_none()
             && !self.global_index.contains_key(&key)
     }
