@@ -1609,3 +1609,29 @@ fn an_instance_of_a_program_left_out_of_the_import_is_noted_not_run() {
     assert!(!i.project.source.contains("CONFIGURATION"), "{}", i.project.source);
     assert!(i.warnings.iter().any(|w| w.message.contains("instance1")), "{:?}", i.warnings);
 }
+
+#[test]
+fn references_round_trip_as_tc6_pointers() {
+    let mut p = Project::new("Refs");
+    p.source = "TYPE PInt : REF_TO INT; END_TYPE\nPROGRAM Main\nVAR a : INT; r : REF_TO INT; q : PInt; END_VAR\nr := REF(a);\nq := r;\nq^ := 3;\nEND_PROGRAM\n".into();
+    let xml = plc_core::plcopen::export(&p);
+    assert!(xml.contains("<pointer><baseType><INT/></baseType></pointer>"), "{xml}");
+    let back = plc_core::plcopen::import(&xml).unwrap().project;
+    let report = plc_core::run::run_project(&back, &plc_core::run::RunOptions::default());
+    assert_eq!(report.status, plc_core::run::RunStatus::Ok, "{:?}", report.diagnostics);
+    assert_eq!(report.vars["a"], 3);
+    assert_eq!(report.vars["q"], "REF(a)");
+}
+
+#[test]
+fn date_literals_at_the_ends_of_the_range_round_trip() {
+    let mut p = Project::new("Dates");
+    p.source = "PROGRAM Main\nVAR d : DATE := D#0001-01-01; t : DT := DT#9999-12-31-23:59:59.999; END_VAR\nd := d;\nEND_PROGRAM\n".into();
+    let xml = plc_core::plcopen::export(&p);
+    assert!(xml.contains("D#0001-01-01") && xml.contains("DT#9999-12-31-23:59:59.999"), "{xml}");
+    let back = plc_core::plcopen::import(&xml).unwrap().project;
+    let report = plc_core::run::run_project(&back, &plc_core::run::RunOptions::default());
+    assert_eq!(report.status, plc_core::run::RunStatus::Ok, "{:?}", report.diagnostics);
+    assert_eq!(report.vars["d"], "D#0001-01-01");
+    assert_eq!(report.vars["t"], "DT#9999-12-31-23:59:59.999");
+}

@@ -172,6 +172,32 @@ pub fn all() -> Vec<Hostile> {
             outcome: error("E0014", 1),
         },
         Hostile {
+            name: "a 20,000-step dereference chain",
+            text: format!(
+                "PROGRAM Main VAR r : REF_TO INT; x : INT; END_VAR x := r{}; END_PROGRAM",
+                "^".repeat(20_000)
+            ),
+            outcome: error("E0014", 1),
+        },
+        Hostile {
+            name: "a reference type nested 20,000 deep",
+            text: format!(
+                "PROGRAM Main VAR r : {}INT; END_VAR END_PROGRAM",
+                "REF_TO ".repeat(20_000)
+            ),
+            outcome: error("E0014", 1),
+        },
+        Hostile {
+            name: "dereferences and REF() alternating 40 deep (at the limit)",
+            text: format!(
+                "PROGRAM Main VAR a : INT := 7; r : REF_TO INT; x : INT; END_VAR \
+                 r := REF(a); x := {}r{}; END_PROGRAM",
+                "REF(".repeat(40),
+                ")^".repeat(40) + "^"
+            ),
+            outcome: Outcome::Runs { var: "x", value: 7.into() },
+        },
+        Hostile {
             name: "parentheses around a chain at the limit",
             text: format!(
                 "PROGRAM Main VAR x : DINT; END_VAR x := {}{}{}; END_PROGRAM",

@@ -261,6 +261,7 @@ impl<'a> Emitter<'a> {
                 p.types.arrays.get(*a as usize).ok_or_else(|| bad("array"))?.element
             }
             Place::Bit(..) => Type::BOOL,
+            Place::Deref(r) => p.types.ref_target(r.ty).ok_or_else(|| bad("dereference"))?,
         })
     }
 
@@ -304,7 +305,18 @@ impl<'a> Emitter<'a> {
             }
             Place::Element(b, arr, idx) => self.element_addr(b, *arr, idx),
             Place::Bit(..) => Err(bad("bit place used as an address")),
+            Place::Deref(r) => self.deref_addr(r),
         }
+    }
+
+    /// The address a reference holds, checked against NULL when the code runs (its own
+    /// function: places and expressions recurse into each other).
+    #[inline(never)]
+    fn deref_addr(&mut self, r: &Expr) -> Result<Addr, CompileError> {
+        let a = self.expr(r, None)?;
+        let dst = self.alloc(1)?;
+        self.emit(Op::Deref { dst, a });
+        Ok(Addr::Ptr(dst, 0))
     }
 
     fn element_addr(&mut self, b: &Place, arr: u32, idx: &[Expr]) -> Result<Addr, CompileError> {
@@ -579,6 +591,8 @@ impl<'a> Emitter<'a> {
         match ty {
             Type::Elem(e) => Ok(e),
             Type::Enum(_) => Ok(Elem::LInt),
+            // A reference is compared (`=`, `<>`) and moved as the bits of its cell.
+            Type::Ref(_) => Ok(Elem::LWord),
             _ => Err(CompileError::Unsupported(format!(
                 "a value of type {} where a scalar is needed",
                 self.p.types.display(ty)

@@ -97,7 +97,21 @@ impl Emitter<'_> {
             }
             ExprKind::Call { pou, args } => self.call_fn(*pou, args, hint),
             ExprKind::Builtin { func, args } => self.builtin(*func, args, e.ty, hint),
+            ExprKind::RefOf(place) => self.ref_of(place, hint),
         }
+    }
+
+    /// `REF(place)`: the reference holds the address plus one, so that 0 stays NULL (its
+    /// own function: `expr` recurses through deeply nested expressions).
+    #[inline(never)]
+    fn ref_of(
+        &mut self,
+        place: &crate::semantic::ir::Place,
+        hint: Option<Reg>,
+    ) -> Result<Reg, CompileError> {
+        let a = self.place_addr(place)?;
+        let t = self.pointer(a.plus(1))?;
+        self.finish(t, hint)
     }
 
     /// Moves `r` into `hint` when one is given.

@@ -38,6 +38,7 @@ fn writes_nothing(e: &Expr) -> bool {
         ExprKind::Unary(_, a) | ExprKind::Convert(a) | ExprKind::Trunc(a) => writes_nothing(a),
         ExprKind::Binary(_, a, b) => writes_nothing(a) && writes_nothing(b),
         ExprKind::Builtin { args, .. } => args.iter().all(writes_nothing),
+        ExprKind::RefOf(place) => place_writes_nothing(place),
         ExprKind::Call { .. } => false,
     }
 }
@@ -48,6 +49,7 @@ fn place_writes_nothing(place: &Place) -> bool {
         Place::Local(_) | Place::Global(_) => true,
         Place::Field(b, _) | Place::Bit(b, ..) => place_writes_nothing(b),
         Place::Element(b, _, idx) => place_writes_nothing(b) && idx.iter().all(writes_nothing),
+        Place::Deref(r) => writes_nothing(r),
     }
 }
 
@@ -148,6 +150,7 @@ impl Emitter<'_> {
                 let divides = *op == BinOp::Div && !a.ty.elem().is_some_and(Elem::is_real);
                 !divides && self.is_pure(a) && self.is_pure(b)
             }
+            ExprKind::RefOf(place) => self.is_pure_place(place),
             ExprKind::Call { .. } | ExprKind::Builtin { .. } => false,
         }
     }
@@ -163,6 +166,8 @@ impl Emitter<'_> {
                 });
                 in_range && idx.len() == def.dims.len() && self.is_pure_place(b)
             }
+            // NULL faults.
+            Place::Deref(_) => false,
         }
     }
 }
@@ -207,6 +212,8 @@ fn place_reads_local(place: &Place, i: u32) -> bool {
         Place::Element(p, _, idx) => {
             place_reads_local(p, i) || idx.iter().any(|e| expr_reads_local(e, i))
         }
+        // The reference may point at local `i`.
+        Place::Deref(_) => true,
     }
 }
 
@@ -216,6 +223,7 @@ fn expr_reads_local(e: &Expr, i: u32) -> bool {
         ExprKind::Unary(_, a) | ExprKind::Convert(a) | ExprKind::Trunc(a) => expr_reads_local(a, i),
         ExprKind::Binary(_, a, b) => expr_reads_local(a, i) || expr_reads_local(b, i),
         ExprKind::Const(_) | ExprKind::ConstStr(_) | ExprKind::Sys(_) => false,
+        ExprKind::RefOf(p) => place_reads_local(p, i),
         // Not pure, never cached; answer conservatively.
         ExprKind::Call { .. } | ExprKind::Builtin { .. } => true,
     }

@@ -27,7 +27,7 @@ impl Layouts {
     /// Cells taken by a value of type `ty`.
     pub fn size_of(&mut self, p: &Program, ty: Type) -> Result<u32, CompileError> {
         Ok(match ty {
-            Type::Elem(_) | Type::Enum(_) => 1,
+            Type::Elem(_) | Type::Enum(_) | Type::Ref(_) => 1,
             Type::Str { wide, len } => {
                 let bytes = u64::from(len) * if wide { 2 } else { 1 };
                 if bytes > MAX_CELLS * 8 {
@@ -328,7 +328,7 @@ fn write_init(
 ) -> Result<(), CompileError> {
     let a = addr as usize;
     match ty {
-        Type::Elem(_) | Type::Enum(_) => {
+        Type::Elem(_) | Type::Enum(_) | Type::Ref(_) => {
             let bits = match (init, range, ty) {
                 (Some(InitValue::Scalar(b)), _, _) => *b,
                 (_, Some((lo, _)), _) => lo as u64,

@@ -98,6 +98,8 @@ problem_codes! {
     SubrangeViolation = "E0169": "a constant outside the subrange of its variable",
     InvalidArraySize = "E0170": "an array or string too large, or with bad bounds",
     TooManyInitializers = "E0171": "more initial values than array elements",
+    NotAReference = "E0180": "`^` applied to something that is not a reference (or to NULL)",
+    RefNotAVariable = "E0181": "`REF()` of something that has no address of its own: a bit, a subrange variable",
 
     // ---- calls (checker): E0200–E0249 ----
     UnknownFunction = "E0200": "a call of something that is not a function or function block",

@@ -208,6 +208,12 @@ explanations! {
     TooManyInitializers: "An array's initial value lists more elements than the array has.",
         st("PROGRAM Main VAR a : ARRAY[1..3] OF INT := [1, 2, 3, 4]; END_VAR a[1] := 0; END_PROGRAM"),
         st("PROGRAM Main VAR a : ARRAY[1..3] OF INT := [1, 2, 3]; END_VAR a[1] := 0; END_PROGRAM");
+    NotAReference: "`r^` reads or writes the variable the reference `r` points to, so `r` must be declared `REF_TO` a type; NULL points nowhere. A NULL reference met while the program runs is a FAULT at that statement.",
+        st("PROGRAM Main VAR x : INT; y : INT; END_VAR y := x^; END_PROGRAM"),
+        st("PROGRAM Main VAR x : INT; r : REF_TO INT; y : INT; END_VAR r := REF(x); y := r^; END_PROGRAM");
+    RefNotAVariable: "`REF(x)` takes a whole variable, an array element or a struct field. A single bit has no address of its own, and a write through a reference to a subrange variable would skip its range check.",
+        st("PROGRAM Main VAR w : WORD; r : REF_TO BOOL; END_VAR r := REF(w.3); END_PROGRAM"),
+        st("PROGRAM Main VAR w : WORD; r : REF_TO WORD; END_VAR r := REF(w); END_PROGRAM");
     UnknownFunction: "The name called is neither a standard function, a FUNCTION, nor a function block instance.",
         st("PROGRAM Main VAR x : REAL; END_VAR x := SQUARE(2.0); END_PROGRAM"),
         st("PROGRAM Main VAR x : REAL; END_VAR x := EXPT(2.0, 2.0); END_PROGRAM");

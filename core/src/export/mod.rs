@@ -49,6 +49,10 @@ fn push_value(out: &mut String, v: &Value) {
                 let _ = write!(out, "{value}");
             }
         },
+        Value::Ref(None) => out.push_str("NULL"),
+        Value::Ref(Some(path)) => {
+            let _ = write!(out, "REF({path})");
+        }
         Value::Array(items) => {
             out.push('[');
             for (k, x) in items.iter().enumerate() {

@@ -465,6 +465,6 @@ fn key_of(t: &TypeRef) -> Option<TypeKey> {
         TypeRef::String { wide, .. } => TypeKey::named(if *wide { "WSTRING" } else { "STRING" }),
         TypeRef::Array { element, .. } => TypeKey::Array(Box::new(key_of(element)?)),
         TypeRef::Subrange { base, .. } => key_of(&TypeRef::Named(base.clone()))?,
-        TypeRef::Enum { .. } | TypeRef::Struct { .. } => return None,
+        TypeRef::Enum { .. } | TypeRef::Struct { .. } | TypeRef::Ref { .. } => return None,
     })
 }

@@ -84,6 +84,9 @@ pub(crate) fn type_xml(t: &TypeRef, src: &str) -> String {
                 format!("<derived name=\"{}\"/>", esc(&id.name))
             }
         }
+        TypeRef::Ref { target, .. } => {
+            format!("<pointer><baseType>{}</baseType></pointer>", type_xml(target, src))
+        }
         TypeRef::String { wide, length, .. } => {
             let tag = if *wide { "wstring" } else { "string" };
             match length {

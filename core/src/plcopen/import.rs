@@ -672,7 +672,11 @@ fn type_node_text(t: &Node) -> Result<String, String> {
             out.push_str("    END_STRUCT");
             out
         }
-        "pointer" => return Err("pointer types are not supported".into()),
+        // TC6 XML's `pointer` is edition 3's REF_TO.
+        "pointer" => {
+            let base = t.child("baseType").ok_or("a <pointer> without <baseType>")?;
+            format!("REF_TO {}", type_text(base)?)
+        }
         other => {
             let upper = other.to_ascii_uppercase();
             if ELEMENTARY.contains(&upper.as_str()) || upper == "DATE_AND_TIME" {

@@ -117,7 +117,7 @@ pub(crate) fn locate(exe: &Executable, path: &str) -> Option<Slot> {
 /// Cells taken by a value of `ty`, from the layout already computed.
 pub(crate) fn element_size(exe: &Executable, ty: Type) -> Option<u32> {
     Some(match ty {
-        Type::Elem(_) | Type::Enum(_) => 1,
+        Type::Elem(_) | Type::Enum(_) | Type::Ref(_) => 1,
         Type::Str { wide, len } => super::memory::string_cells(len * if wide { 2 } else { 1 }),
         Type::Array(a) => {
             let def = exe.type_table.arrays.get(a as usize)?;

@@ -7,6 +7,7 @@ mod layout;
 pub(crate) mod locate;
 pub(crate) mod memory;
 pub(crate) mod op;
+pub(crate) mod refpath;
 mod tables;
 pub(crate) mod verify;
 

@@ -71,6 +71,14 @@ pub enum Op {
         /// Frame offset.
         off: u32,
     },
+    /// `dst := cells[a] - 1`: the address a reference (`REF_TO`) holds, as a pointer; a
+    /// NULL reference (0) faults, and so does one that points outside memory.
+    Deref {
+        /// Destination pointer register.
+        dst: Reg,
+        /// The reference.
+        a: Reg,
+    },
     /// `dst := ptr + off` (pointer arithmetic).
     PtrAdd {
         /// Destination pointer register.
@@ -613,6 +621,7 @@ macro_rules! outer_loop_ops {
             | $crate::program::op::Op::Halt { .. }
             | $crate::program::op::Op::Copy { .. }
             | $crate::program::op::Op::StrCopy { .. }
+            | $crate::program::op::Op::Deref { .. }
             | $crate::program::op::builtin_ops!()
     };
 }

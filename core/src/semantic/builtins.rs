@@ -91,7 +91,10 @@ enum ConvTarget {
 
 /// True when `key` (upper case) names a built-in function.
 pub fn is_builtin(key: &str) -> bool {
-    FIXED.iter().any(|(n, _)| *n == key) || VARIADIC.contains(&key) || conversion(key).is_some()
+    FIXED.iter().any(|(n, _)| *n == key)
+        || VARIADIC.contains(&key)
+        || conversion(key).is_some()
+        || key == "REF"
 }
 
 impl<'a> Checker<'a> {
@@ -220,7 +223,14 @@ impl<'a> Checker<'a> {
                 acc.e.ty
             }
             other => {
-                if items.iter().any(|t| t.e.ty != other) {
+                // NULL mixes with references of any one type (`MUX(k, REF(a), NULL)`).
+                let null = Type::Ref(super::types::NULL_REF);
+                let other = match items.iter().map(|t| t.e.ty).find(|t| *t != null) {
+                    Some(r) if other == null && r.is_ref() => r,
+                    _ => other,
+                };
+                let fits = |t: Type| t == other || (t == null && other.is_ref());
+                if !items.iter().all(|t| fits(t.e.ty)) {
                     self.error(
                         Code::TypeMismatch,
                         span,
@@ -231,7 +241,7 @@ impl<'a> Checker<'a> {
                 other
             }
         };
-        let exprs = items.into_iter().map(|t| self.convert(t.e, ty)).collect();
+        let exprs = items.into_iter().map(|t| self.convert(self.null_as(t.e, ty), ty)).collect();
         Some((ty, exprs))
     }
 
@@ -433,6 +443,11 @@ impl<'a> Checker<'a> {
             }
             "MAX" | "MIN" | "LIMIT" => {
                 let items = a.iter().map(|e| self.expr(e, hint)).collect::<Option<Vec<_>>>()?;
+                if let Some(r) = items.iter().find(|t| t.e.ty.is_ref()) {
+                    let msg = format!("{key} compares its inputs; references have no order");
+                    self.error(Code::OperatorTypeMismatch, r.e.span, msg);
+                    return None;
+                }
                 let (ty, args) = self.unify(items, span, &key, expected)?;
                 let f = match key.as_str() {
                     "MAX" => Builtin::Max,

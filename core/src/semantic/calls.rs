@@ -274,6 +274,7 @@ impl<'a> Checker<'a> {
                         | ast::ExprKind::Member(..)
                         | ast::ExprKind::Index(..)
                         | ast::ExprKind::Paren(_)
+                        | ast::ExprKind::Deref(_)
                 );
                 if !is_place {
                     let msg = format!(

@@ -64,6 +64,10 @@ pub(super) struct Checker<'a> {
     /// How many type resolutions are under way (a named type resolving the types of its
     /// fields recurses), capped by `limits::MAX_TYPE_NESTING`.
     pub resolve_depth: usize,
+    /// `REF_TO X` met while the named type `X` is being resolved (a struct with a field
+    /// referring to its own type): the reference type's id and `X`'s key, completed when
+    /// `X` is (`refs.rs`).
+    pub pending_refs: Vec<(super::types::RefId, String)>,
 }
 
 impl<'a> Checker<'a> {
@@ -83,6 +87,7 @@ impl<'a> Checker<'a> {
             library_pous: 0,
             var_index: HashMap::new(),
             resolve_depth: 0,
+            pending_refs: Vec::new(),
         }
     }
 

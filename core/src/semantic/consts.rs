@@ -28,7 +28,7 @@ pub fn to_init_value(e: &Expr) -> Option<InitValue> {
 /// The value a variable of type `ty` starts with when nothing is declared.
 pub fn default_value(types: &TypeTable, pous: &[Pou], ty: Type) -> InitValue {
     match ty {
-        Type::Elem(_) | Type::Void => InitValue::Scalar(0),
+        Type::Elem(_) | Type::Ref(_) | Type::Void => InitValue::Scalar(0),
         Type::Str { .. } => InitValue::Str(Vec::new()),
         Type::Enum(id) => InitValue::Scalar(
             types.enums.get(id as usize).and_then(|e| e.values.first()).map_or(0, |v| v.1 as u64),

@@ -34,6 +34,7 @@ impl<'a> Checker<'a> {
         if matches!(self.type_slots.get(key), Some(TypeSlot::Failed)) {
             return None;
         }
+        self.complete_pending_refs(key, resolved.as_ref().map(|r| r.ty), &def.name);
         let slot = match &resolved {
             Some(r) => TypeSlot::Done(r.clone()),
             None => TypeSlot::Failed,
@@ -93,6 +94,13 @@ impl<'a> Checker<'a> {
                 }
                 self.error(Code::UnknownType, id.span, format!("unknown type `{}`", id.name));
                 None
+            }
+            TypeRef::Ref { target, .. } => {
+                if let Some(r) = self.ref_to_resolving(target) {
+                    return plain(r);
+                }
+                let t = self.resolve_type(target, owner)?;
+                plain(self.types.reference(t.ty))
             }
             TypeRef::String { wide, length, span } => {
                 let len = match length {

@@ -139,13 +139,16 @@ impl<'a> Checker<'a> {
             }
             K::Name(id) => self.name_expr(id, expected, span),
             K::EnumValue { type_name, value } => self.enum_value(type_name, value, span),
-            K::Member(..) | K::Bit(..) | K::Index(..) | K::Direct(_) => {
+            K::Member(..) | K::Bit(..) | K::Index(..) | K::Direct(_) | K::Deref(_) => {
                 let (place, ty) = self.place(e, false)?;
                 Some(Typed::fixed(Expr { kind: ExprKind::Load(place), ty, span }))
             }
             K::Part { base, width, index } => self.part_expr(base, *width, *index, span),
             K::Unary(op, operand) => self.unary(*op, operand, span, expected),
             K::Binary(op, l, r) => self.binary(*op, l, r, span, expected),
+            K::Call { callee, args } if self.is_ref_call(callee) => {
+                self.ref_call(args, span).map(Typed::fixed)
+            }
             K::Call { callee, args } => {
                 self.call_expr(callee, args, span, expected).map(Typed::fixed)
             }
@@ -156,6 +159,9 @@ impl<'a> Checker<'a> {
     /// expressions, so its frame stays small).
     #[inline(never)]
     fn name_expr(&mut self, id: &ast::Ident, expected: Option<Type>, span: Span) -> Option<Typed> {
+        if let Some(null) = self.null_literal(id, span) {
+            return Some(null);
+        }
         match self.lookup(id, expected)? {
             NameRef::Var { place, var } => {
                 if var.constant {
@@ -704,6 +710,7 @@ impl<'a> Checker<'a> {
                 Some((Place::Element(Box::new(bp), aid, out), def.element))
             }
             K::Direct(addr) => Some(self.direct_place(addr)),
+            K::Deref(base) => self.deref_place(base, e.span, write),
             _ => {
                 let what = if write { "assigned to" } else { "used here" };
                 self.error(
@@ -971,6 +978,7 @@ impl<'a> Checker<'a> {
                 );
                 None
             }
+            (Type::Ref(super::types::NULL_REF), Type::Ref(_)) => Some(self.null_as(t.e, target)),
             (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b => {
                 let mut e = t.e;
                 if let ExprKind::ConstStr(_) = e.kind {
@@ -1075,6 +1083,7 @@ impl<'a> Checker<'a> {
                     return Some(Typed::fixed(make(self, Type::BOOL, a.e, b.e)?));
                 }
                 (Type::Enum(x), Type::Enum(y)) if x == y => at,
+                (Type::Ref(_), Type::Ref(_)) => return self.ref_compare(op, a.e, b.e, span),
                 (Type::Elem(x), Type::Elem(y)) if x == y => at,
                 (Type::Elem(_), Type::Elem(_)) => match self.common_elem(&a, &b) {
                     Some(el) => Type::Elem(el),
@@ -1181,8 +1190,17 @@ impl<'a> Checker<'a> {
         let result = match (op, ae, be) {
             (BinOp::Add | BinOp::Sub, Time, Time) => Time,
             (BinOp::Add | BinOp::Sub, Tod, Time) => Tod,
-            (BinOp::Add | BinOp::Sub, Dt, Time) => Dt,
-            (BinOp::Sub, Tod, Tod) | (BinOp::Sub, Dt, Dt) | (BinOp::Sub, Date, Date) => Time,
+            // DT counts microseconds, TIME nanoseconds: the TIME is converted first (its
+            // part below a microsecond dropped), the difference of two DT or DATE after.
+            (BinOp::Add | BinOp::Sub, Dt, Time) => {
+                let y = self.convert(b.e, Type::Elem(Dt));
+                return make(self, Dt, a.e, y);
+            }
+            (BinOp::Sub, Dt, Dt) | (BinOp::Sub, Date, Date) => {
+                let diff = make(self, ae, a.e, b.e)?;
+                return Some(Typed::fixed(self.convert(diff.e, Type::Elem(Time))));
+            }
+            (BinOp::Sub, Tod, Tod) => Time,
             (BinOp::Mul | BinOp::Div, t, n) if t.is_temporal() && t == Time && n.is_num() => {
                 let f = if n.is_real() { LReal } else { LInt };
                 let y = self.convert(b.e, Type::Elem(f));

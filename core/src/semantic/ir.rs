@@ -260,6 +260,9 @@ pub enum Place {
     Element(Box<Place>, ArrayId, Vec<Expr>),
     /// Bit `n` of an integral value of type `Elem`.
     Bit(Box<Place>, u32, Elem),
+    /// `r^`: the variable the reference `r` (an expression of a `REF_TO` type) points to;
+    /// a NULL reference faults when the place is reached.
+    Deref(Box<Expr>),
 }
 
 /// A typed expression.
@@ -311,6 +314,8 @@ pub enum ExprKind {
         /// Arguments bound to the function's variables.
         args: Vec<CallArg>,
     },
+    /// `REF(place)`: a reference to the place (of this expression's `REF_TO` type).
+    RefOf(Place),
     /// A call of a built-in function compiled inline.
     Builtin {
         /// Which.

@@ -15,6 +15,7 @@ mod expr;
 pub mod ir;
 mod nesting;
 mod prelude;
+mod refs;
 mod stmt;
 pub mod types;
 
@@ -98,7 +99,10 @@ fn calls_a_function(e: &Expr) -> bool {
         }
         ir::ExprKind::Binary(_, a, b) => calls_a_function(a) || calls_a_function(b),
         ir::ExprKind::Builtin { args, .. } => args.iter().any(calls_a_function),
-        ir::ExprKind::Const(_) | ir::ExprKind::ConstStr(_) | ir::ExprKind::Load(_) => false,
+        ir::ExprKind::Const(_)
+        | ir::ExprKind::ConstStr(_)
+        | ir::ExprKind::Load(_)
+        | ir::ExprKind::RefOf(_) => false,
         ir::ExprKind::Sys(_) => false,
     }
 }

@@ -13,6 +13,10 @@ pub type ArrayId = u32;
 pub type StructId = u32;
 /// Index of a POU in the checked program.
 pub type PouId = u32;
+/// Index of a reference type in [`TypeTable::refs`]; [`NULL_REF`] is the type of `NULL`.
+pub type RefId = u32;
+/// The [`RefId`] of `NULL`'s own type, which converts to every reference type.
+pub const NULL_REF: RefId = u32::MAX;
 
 /// A resolved type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -34,6 +38,8 @@ pub enum Type {
     Struct(StructId),
     /// An instance of a function block.
     Fb(PouId),
+    /// `REF_TO T` (one cell: the referenced cell's address plus one, 0 for NULL).
+    Ref(RefId),
     /// No value (a function without result).
     Void,
 }
@@ -62,7 +68,12 @@ impl Type {
 
     /// True for values that live in one memory cell (everything but strings and aggregates).
     pub fn is_scalar(self) -> bool {
-        matches!(self, Type::Elem(_) | Type::Enum(_))
+        matches!(self, Type::Elem(_) | Type::Enum(_) | Type::Ref(_))
+    }
+
+    /// True for `REF_TO …` types and `NULL`'s type.
+    pub fn is_ref(self) -> bool {
+        matches!(self, Type::Ref(_))
     }
 }
 
@@ -140,6 +151,8 @@ pub struct TypeTable {
     pub structs: Vec<StructDef>,
     /// Names of POUs (for naming FB types in messages).
     pub pou_names: Vec<String>,
+    /// The referenced type of each reference type (`REF_TO T`).
+    pub refs: Vec<Type>,
 }
 
 impl TypeTable {
@@ -150,6 +163,23 @@ impl TypeTable {
         }
         self.arrays.push(def);
         Type::Array(self.arrays.len() as ArrayId - 1)
+    }
+
+    /// Adds the reference type `REF_TO target` (re-using an identical one) and returns it.
+    pub fn reference(&mut self, target: Type) -> Type {
+        if let Some(i) = self.refs.iter().position(|t| *t == target) {
+            return Type::Ref(i as RefId);
+        }
+        self.refs.push(target);
+        Type::Ref(self.refs.len() as RefId - 1)
+    }
+
+    /// The type a reference type points to (`None` for `NULL`'s type and non-references).
+    pub fn ref_target(&self, ty: Type) -> Option<Type> {
+        match ty {
+            Type::Ref(r) => self.refs.get(r as usize).copied(),
+            _ => None,
+        }
     }
 
     /// A readable name of `ty` for messages.
@@ -188,6 +218,11 @@ impl fmt::Display for TypeName<'_> {
                     write!(f, "] OF {}", t.display(a.element))
                 }
                 None => f.write_str("ARRAY"),
+            },
+            Type::Ref(NULL_REF) => f.write_str("NULL"),
+            Type::Ref(r) => match t.refs.get(r as usize) {
+                Some(target) => write!(f, "REF_TO {}", t.display(*target)),
+                None => f.write_str("REF_TO ?"),
             },
             Type::Void => f.write_str("nothing"),
         }

@@ -150,7 +150,8 @@ fn class_of(kind: TokenKind, text: &str) -> Option<TokenClass> {
         | T::Le
         | T::Gt
         | T::Ge
-        | T::Ampersand => TokenClass::Operator,
+        | T::Ampersand
+        | T::Caret => TokenClass::Operator,
         _ => TokenClass::Keyword,
     })
 }

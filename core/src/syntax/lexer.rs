@@ -88,6 +88,8 @@ pub enum TokenKind {
     Ge,
     /// `&`
     Ampersand,
+    /// `^` (dereference of a reference, IEC 61131-3 ed. 3)
+    Caret,
     /// `PROGRAM`
     Program,
     /// `END_PROGRAM`
@@ -678,6 +680,7 @@ impl Lexer<'_> {
             (b'<', _) => (Lt, 1),
             (b'>', _) => (Gt, 1),
             (b'&', _) => (Ampersand, 1),
+            (b'^', _) => (Caret, 1),
             _ => {
                 self.pos += 1;
                 let shown = if b.is_ascii_graphic() {

@@ -408,15 +408,24 @@ fn daytime_ns(full: &str, body: &str) -> LitResult<i64> {
     i64::try_from(ns).map_err(|_| date_error(full, "out of range"))
 }
 
-fn days_to_ns(full: &str, days: i64) -> LitResult<i64> {
-    i64::try_from(i128::from(days) * NS_PER_DAY)
-        .map_err(|_| date_error(full, "dates must lie between 1678-01-01 and 2262-04-11"))
+/// Microseconds in a day: DATE and DT count microseconds since 1970-01-01 (`values::arith`).
+const US_PER_DAY: i64 = 86_400_000_000;
+
+/// The microseconds since 1970-01-01 of a day's start, for days of the years 1 to 9999
+/// (the range of IEC 61131-3's date literals, `D#0001-01-01` to `D#9999-12-31`).
+fn days_to_us(full: &str, days: i64) -> LitResult<i64> {
+    const FIRST: i64 = -719_162; // 0001-01-01
+    const LAST: i64 = 2_932_896; // 9999-12-31
+    if !(FIRST..=LAST).contains(&days) {
+        return Err(date_error(full, "dates must lie between 0001-01-01 and 9999-12-31"));
+    }
+    Ok(days * US_PER_DAY)
 }
 
-/// `D#2006-03-20` → nanoseconds since 1970-01-01.
+/// `D#2006-03-20` → microseconds since 1970-01-01.
 pub(crate) fn parse_date(text: &str) -> LitResult<i64> {
     let days = date_days(text, after_hash(text))?;
-    days_to_ns(text, days)
+    days_to_us(text, days)
 }
 
 /// `TOD#10:42:23.78` → nanoseconds since midnight.
@@ -424,7 +433,8 @@ pub(crate) fn parse_time_of_day(text: &str) -> LitResult<i64> {
     daytime_ns(text, after_hash(text))
 }
 
-/// `DT#2006-03-20-10:42:23.78` → nanoseconds since 1970-01-01 00:00.
+/// `DT#2006-03-20-10:42:23.78` → microseconds since 1970-01-01 00:00 (digits of the
+/// seconds past the microsecond are dropped).
 pub(crate) fn parse_date_time(text: &str) -> LitResult<i64> {
     let body = after_hash(text);
     // The date has exactly two `-`; the third separates the time of day.
@@ -434,8 +444,8 @@ pub(crate) fn parse_date_time(text: &str) -> LitResult<i64> {
     };
     let days = date_days(text, &body[..split])?;
     let tod = daytime_ns(text, &body[split + 1..])?;
-    let ns = days_to_ns(text, days)?;
-    ns.checked_add(tod).ok_or_else(|| date_error(text, "out of range"))
+    let us = days_to_us(text, days)?;
+    Ok(us + tod / NS_PER_US as i64)
 }
 
 /// A parsed directly represented address: area, size and the dotted numbers.

@@ -4,14 +4,38 @@
 //!
 //! Cell encoding (one `u64` per scalar):
 //! - BOOL: 0 or 1;
-//! - signed integers, TIME, DATE, TOD, DT, enumerations: the value sign-extended to 64 bits;
+//! - signed integers, TIME, DATE, TOD, DT, enumerations: the value sign-extended to 64 bits
+//!   (TIME and TOD in nanoseconds, DATE and DT in microseconds since 1970-01-01, which
+//!   covers the years 1 to 9999 of IEC's date literals and far beyond);
 //! - unsigned integers and bit strings: the value zero-extended;
 //! - REAL: the f64 bits of a value already rounded to f32 precision; LREAL: its f64 bits.
 
 use super::{BinOp, Cmp, Elem, Fault};
 
 const NS_PER_MS: i64 = 1_000_000;
-const NS_PER_S: i64 = 1_000_000_000;
+const NS_PER_US: i64 = 1_000;
+const US_PER_S: i64 = 1_000_000;
+const US_PER_DAY: i64 = 86_400 * US_PER_S;
+
+/// A temporal cell in nanoseconds (DATE and DT count microseconds), without overflow.
+fn temporal_ns(e: Elem, bits: u64) -> i128 {
+    let v = i128::from(bits as i64);
+    if matches!(e, Elem::Date | Elem::Dt) {
+        v * i128::from(NS_PER_US)
+    } else {
+        v
+    }
+}
+
+/// Nanoseconds as a cell of temporal type `e`: DATE and DT drop the part below a
+/// microsecond (toward zero); every type wraps in its 64 bits, as integers do.
+fn temporal_from_ns(e: Elem, ns: i128) -> u64 {
+    if matches!(e, Elem::Date | Elem::Dt) {
+        (ns / i128::from(NS_PER_US)) as i64 as u64
+    } else {
+        ns as i64 as u64
+    }
+}
 
 /// Wraps an integer to `elem` (two's complement) and encodes it.
 pub fn norm(elem: Elem, v: i128) -> u64 {
@@ -64,6 +88,8 @@ pub fn round_half_even(f: f64) -> f64 {
 /// Converts a cell of type `from` to type `to` (the `*_TO_*` functions and implicit
 /// widening). Out-of-range values wrap; reals round half to even; TIME counts milliseconds
 /// when converted to or from a number; DATE and DT count seconds, TOD milliseconds.
+/// Between temporal types the value keeps its meaning (DT_TO_TIME is the time since
+/// 1970, TIME_TO_DT drops the nanoseconds below a microsecond).
 pub fn convert(from: Elem, to: Elem, bits: u64) -> u64 {
     if from == to {
         return bits;
@@ -73,18 +99,17 @@ pub fn convert(from: Elem, to: Elem, bits: u64) -> u64 {
     }
     let temporal_unit = |e: Elem| match e {
         Elem::Time | Elem::Tod => NS_PER_MS,
-        Elem::Date | Elem::Dt => NS_PER_S,
+        Elem::Date | Elem::Dt => US_PER_S,
         _ => 1,
     };
     if from.is_temporal() && to.is_temporal() {
         // DT_TO_TOD keeps the time within the day, DT_TO_DATE the day's start (both
         // count from midnight, also before 1970).
-        const NS_PER_DAY: i64 = 86_400 * NS_PER_S;
-        let ns = bits as i64;
+        let us = bits as i64;
         return match (from, to) {
-            (Elem::Dt, Elem::Tod) => ns.rem_euclid(NS_PER_DAY) as u64,
-            (Elem::Dt, Elem::Date) => (ns - ns.rem_euclid(NS_PER_DAY)) as u64,
-            _ => bits,
+            (Elem::Dt | Elem::Date, Elem::Tod) => (us.rem_euclid(US_PER_DAY) * NS_PER_US) as u64,
+            (Elem::Dt, Elem::Date) => (us - us.rem_euclid(US_PER_DAY)) as u64,
+            _ => temporal_from_ns(to, temporal_ns(from, bits)),
         };
     }
     if from.is_temporal() {
@@ -319,6 +344,26 @@ mod tests {
 
     fn int(e: Elem, v: i128) -> u64 {
         norm(e, v)
+    }
+
+    #[test]
+    fn dates_count_microseconds_and_convert_by_meaning() {
+        let (dt, time, tod, date) = (Elem::Dt, Elem::Time, Elem::Tod, Elem::Date);
+        // 1.5 s after 1970 as a DT is 1,500,000 µs; as a TIME 1.5e9 ns.
+        assert_eq!(convert(dt, time, 1_500_000), 1_500_000_000);
+        assert_eq!(convert(time, dt, 1_500_000_999), 1_500_000, "below a µs is dropped");
+        assert_eq!(convert(time, dt, -999i64 as u64), 0, "toward zero");
+        // 1969-12-31-23:00 is -3,600 s: its time of day 23:00, its date the day before.
+        let before = (-3_600_000_000i64) as u64;
+        assert_eq!(convert(dt, tod, before), 23 * 3_600_000_000_000);
+        assert_eq!(convert(dt, date, before) as i64, -86_400_000_000);
+        assert_eq!(convert(date, tod, 86_400_000_000), 0);
+        // As numbers DATE and DT count seconds, whatever the representation.
+        assert_eq!(convert(dt, Elem::LInt, 1_500_000), 1);
+        assert_eq!(convert(Elem::LInt, date, 86_400), 86_400_000_000);
+        // A DT far from 1970 as a TIME wraps like any overflow.
+        let far = 300 * 365 * 86_400_000_000i64;
+        assert_eq!(convert(dt, time, far as u64), (i128::from(far) * 1000) as i64 as u64);
     }
 
     #[test]

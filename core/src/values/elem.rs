@@ -35,11 +35,12 @@ pub enum Elem {
     LReal,
     /// TIME (and LTIME): signed nanoseconds
     Time,
-    /// DATE: nanoseconds since 1970-01-01 (whole days)
+    /// DATE: microseconds since 1970-01-01 (whole days), 0001-01-01 to 9999-12-31 and
+    /// beyond
     Date,
     /// TIME_OF_DAY: nanoseconds since midnight
     Tod,
-    /// DATE_AND_TIME: nanoseconds since 1970-01-01
+    /// DATE_AND_TIME: microseconds since 1970-01-01
     Dt,
 }
 

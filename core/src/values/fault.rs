@@ -38,6 +38,8 @@ pub enum Fault {
     },
     /// A FOR loop whose step evaluated to zero.
     ForStepZero,
+    /// `r^` (a read, a write, a member or an element through it) with `r` NULL.
+    NullReference,
     /// The scan ran more instructions than the watchdog allows.
     Watchdog {
         /// The instruction budget per scan.
@@ -71,6 +73,7 @@ impl fmt::Display for Fault {
             Fault::SubrangeViolation { value, low, high } => {
                 write!(f, "{value} is outside the subrange {low}..{high} of the variable it is stored in")
             }
+            Fault::NullReference => f.write_str("dereference of a NULL reference"),
             Fault::ForStepZero => f.write_str("FOR loop step is zero: the loop would never end"),
             Fault::Watchdog { budget } => write!(
                 f,

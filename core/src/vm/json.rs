@@ -34,6 +34,8 @@ pub fn to_json(v: &Value) -> Json {
             Some(n) => Json::String(n.clone()),
             None => Json::Number((*value).into()),
         },
+        Value::Ref(None) => Json::String("NULL".into()),
+        Value::Ref(Some(path)) => Json::String(format!("REF({path})")),
         Value::Array(items) => Json::Array(items.iter().map(to_json).collect()),
         Value::Struct(fields) => {
             let mut m = Map::new();

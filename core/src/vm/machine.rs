@@ -268,6 +268,13 @@ impl Machine {
                     w!(dst, arith::set_bit(elem, r!(dst), u32::from(n), r!(v) != 0))
                 }
                 Op::Sys { var, dst } => w!(dst, sys_var(var, sys)),
+                Op::Deref { dst, a } => {
+                    let addr = r!(a).checked_sub(1).ok_or(Fault::NullReference)?;
+                    if addr >= cells.len() as u64 {
+                        return Err(Fault::Internal("a reference points outside memory"));
+                    }
+                    w!(dst, addr);
+                }
                 Op::ForStart { lim } => {
                     if r!(lim.wrapping_add(1)) == 0 {
                         return Err(Fault::ForStepZero);

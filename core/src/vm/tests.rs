@@ -243,17 +243,27 @@ fn time_literals() {
     assert_eq!(parse_time("T#1h_30m"), Some(5_400_000_000_000));
     assert_eq!(parse_time("t#-1.5s"), Some(-1_500_000_000));
     assert_eq!(parse_time("T#1.5s2ms"), None);
-    assert_eq!(format_date(days_from_civil(2006, 3, 20) * 86_400_000_000_000), "D#2006-03-20");
+    // DATE and DT count microseconds, TOD nanoseconds.
+    assert_eq!(format_date(days_from_civil(2006, 3, 20) * 86_400_000_000), "D#2006-03-20");
     assert_eq!(
         format_tod(((10 * 60 + 42) * 60 + 23) * 1_000_000_000 + 780_000_000),
         "TOD#10:42:23.78"
     );
-    let dt = days_from_civil(2006, 3, 20) * 86_400_000_000_000
-        + ((10 * 60 + 42) * 60 + 23) * 1_000_000_000
-        + 780_000_000;
+    let dt = days_from_civil(2006, 3, 20) * 86_400_000_000
+        + ((10 * 60 + 42) * 60 + 23) * 1_000_000
+        + 780_000;
     assert_eq!(format_dt(dt), "DT#2006-03-20-10:42:23.78");
     assert_eq!(parse_text("DT#2006-03-20-10:42:23.78", Elem::Dt), Some(dt as u64));
     assert_eq!(civil_from_days(-1), (1969, 12, 31));
+    // The ends of IEC's range, and the whole i64 of microseconds without a panic.
+    let first = days_from_civil(1, 1, 1) * 86_400_000_000;
+    assert_eq!(format_date(first), "D#0001-01-01");
+    assert_eq!(parse_text("D#0001-01-01", Elem::Date), Some(first as u64));
+    assert_eq!(parse_text("D#0000-12-31", Elem::Date), None);
+    let last = days_from_civil(9999, 12, 31) * 86_400_000_000 + 86_399_999_999;
+    assert_eq!(format_dt(last), "DT#9999-12-31-23:59:59.999999");
+    assert!(format_dt(i64::MIN).starts_with("DT#-"));
+    assert!(format_dt(i64::MAX).starts_with("DT#294247-"));
 }
 
 #[test]

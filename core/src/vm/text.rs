@@ -9,6 +9,8 @@ use crate::values::arith;
 use crate::values::Fault;
 
 const NS_PER_DAY: i64 = 86_400_000_000_000;
+/// DATE and DT count microseconds since 1970-01-01 (`values::arith`).
+const US_PER_DAY: i64 = 86_400_000_000;
 
 /// The canonical TIME literal of `ns` nanoseconds: largest unit first among d, h, m, s,
 /// ms, us, ns, zero units left out (`T#1s500ms`, `T#0s`, `T#-14ms`).
@@ -66,8 +68,10 @@ pub fn days_from_civil(y: i64, m: u32, d: u32) -> i64 {
     era * 146_097 + doe - 719_468
 }
 
-fn push_date(s: &mut String, ns: i64) {
-    let (y, m, d) = civil_from_days(ns.div_euclid(NS_PER_DAY));
+/// The date of `us` microseconds since 1970-01-01 (a year past 9999, which only
+/// arithmetic reaches, is written with its digits; one before 1 as astronomers count it).
+fn push_date(s: &mut String, us: i64) {
+    let (y, m, d) = civil_from_days(us.div_euclid(US_PER_DAY));
     let _ = write!(s, "{y:04}-{m:02}-{d:02}");
 }
 
@@ -83,10 +87,10 @@ fn push_tod(s: &mut String, ns: i64) {
     }
 }
 
-/// The literal of a DATE (`D#2006-03-20`).
-pub fn format_date(ns: i64) -> String {
+/// The literal of a DATE (`D#2006-03-20`) of `us` microseconds since 1970-01-01.
+pub fn format_date(us: i64) -> String {
     let mut s = String::from("D#");
-    push_date(&mut s, ns);
+    push_date(&mut s, us);
     s
 }
 
@@ -97,12 +101,13 @@ pub fn format_tod(ns: i64) -> String {
     s
 }
 
-/// The literal of a DATE_AND_TIME (`DT#2006-03-20-10:42:23.78`).
-pub fn format_dt(ns: i64) -> String {
+/// The literal of a DATE_AND_TIME (`DT#2006-03-20-10:42:23.78`) of `us` microseconds
+/// since 1970-01-01.
+pub fn format_dt(us: i64) -> String {
     let mut s = String::from("DT#");
-    push_date(&mut s, ns);
+    push_date(&mut s, us);
     s.push('-');
-    push_tod(&mut s, ns);
+    push_tod(&mut s, us.rem_euclid(US_PER_DAY) * 1000);
     s
 }
 
@@ -189,10 +194,10 @@ fn parse_date(t: &str) -> Option<i64> {
     let y: i64 = it.next()?.trim().parse().ok()?;
     let m: u32 = it.next()?.trim().parse().ok()?;
     let d: u32 = it.next()?.trim().parse().ok()?;
-    if !(1..=12).contains(&m) || !(1..=31).contains(&d) || !(-300_000..=300_000).contains(&y) {
+    if !(1..=12).contains(&m) || !(1..=31).contains(&d) || !(1..=9999).contains(&y) {
         return None;
     }
-    days_from_civil(y, m, d).checked_mul(NS_PER_DAY)
+    days_from_civil(y, m, d).checked_mul(US_PER_DAY)
 }
 
 fn parse_tod(t: &str) -> Option<i64> {
@@ -234,7 +239,7 @@ pub fn parse_text(text: &str, elem: Elem) -> Option<u64> {
         Elem::Dt => {
             let b = strip_prefix_ci(t, &["DATE_AND_TIME#", "DT#"]);
             let (d, tod) = b.rsplit_once('-').filter(|(d, _)| d.matches('-').count() == 2)?;
-            Some(parse_date(d)?.checked_add(parse_tod(tod)?)? as u64)
+            Some(parse_date(d)?.checked_add(parse_tod(tod)? / 1000)? as u64)
         }
         _ => {
             let s = t.replace('_', "");

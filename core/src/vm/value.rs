@@ -26,11 +26,11 @@ pub enum Value {
     WStr(Vec<u16>),
     /// TIME in nanoseconds.
     Time(i64),
-    /// DATE in nanoseconds since 1970-01-01.
+    /// DATE in microseconds since 1970-01-01 (a whole number of days).
     Date(i64),
     /// TIME_OF_DAY in nanoseconds since midnight.
     Tod(i64),
-    /// DATE_AND_TIME in nanoseconds since 1970-01-01.
+    /// DATE_AND_TIME in microseconds since 1970-01-01.
     Dt(i64),
     /// An enumeration value, with the name of its enumerator (`None` for a value that
     /// has no name).
@@ -44,6 +44,8 @@ pub enum Value {
     Array(Vec<Value>),
     /// Struct fields or FB instance variables, in declaration order.
     Struct(Vec<(String, Value)>),
+    /// A reference (`REF_TO`): the path of the variable it points to, `None` for NULL.
+    Ref(Option<String>),
 }
 
 impl Value {
@@ -68,6 +70,8 @@ impl Value {
                 Elem::Dt => Value::Dt(bits as i64),
                 _ => Value::Int(arith::to_i128(e, bits), e),
             },
+            // Without the executable only the address can be shown.
+            Type::Ref(_) => Value::Ref(bits.checked_sub(1).map(|a| format!("@{a}"))),
             _ => Value::Int(0, Elem::LInt),
         }
     }
@@ -131,6 +135,15 @@ fn read_at(mem: &Memory, exe: &Executable, addr: u32, ty: Type) -> Value {
                 .map(|(v, off)| (v.name.clone(), read_at(mem, exe, addr + off, v.ty)))
                 .collect();
             Value::Struct(fields)
+        }
+        Type::Ref(_) => {
+            let target = exe.type_table.ref_target(ty).unwrap_or(Type::Void);
+            Value::Ref(cell(addr).checked_sub(1).map(|a| {
+                u32::try_from(a)
+                    .ok()
+                    .and_then(|a| crate::program::refpath::path_of(exe, a, target))
+                    .unwrap_or_else(|| format!("@{a}"))
+            }))
         }
         Type::Void => Value::Struct(Vec::new()),
     }
@@ -239,6 +252,8 @@ fn write_at(
         | (Type::Elem(Elem::Tod), Value::Tod(t))
         | (Type::Elem(Elem::Dt), Value::Dt(t)) => *t as u64,
         (Type::Enum(_), Value::Enum { value, .. }) => *value as u64,
+        // Only NULL: an address typed in could point at a cell of another type.
+        (Type::Ref(_), Value::Ref(None)) => 0,
         (Type::Enum(_), Value::Int(value, _)) => *value as i64 as u64,
         (Type::Str { wide: false, .. }, Value::Str(b)) => {
             return write_str(&mut mem.cells, addr as usize, b, 1)
@@ -314,7 +329,8 @@ fn init_at(
 ) -> Result<(), WriteError> {
     let mismatch = || WriteError::TypeMismatch { expected: exe.type_table.display(ty).to_string() };
     match (ty, init) {
-        (Type::Elem(_) | Type::Enum(_), InitValue::Scalar(b)) => {
+        (Type::Elem(_) | Type::Enum(_), InitValue::Scalar(b))
+        | (Type::Ref(_), InitValue::Scalar(b @ 0)) => {
             mem.set(addr as usize, *b).map_err(|_| WriteError::BadAddress)
         }
         (Type::Str { wide, len }, InitValue::Str(b)) => {

@@ -221,6 +221,13 @@ pub enum TypeRef {
         /// The whole type text.
         span: Span,
     },
+    /// `REF_TO T`: a reference to a variable of type `T` (IEC 61131-3 ed. 3).
+    Ref {
+        /// The referenced type.
+        target: Box<TypeRef>,
+        /// The whole type text.
+        span: Span,
+    },
 }
 
 impl TypeRef {
@@ -232,7 +239,8 @@ impl TypeRef {
             | TypeRef::Array { span, .. }
             | TypeRef::Subrange { span, .. }
             | TypeRef::Enum { span, .. }
-            | TypeRef::Struct { span, .. } => *span,
+            | TypeRef::Struct { span, .. }
+            | TypeRef::Ref { span, .. } => *span,
         }
     }
 }
@@ -446,6 +454,8 @@ pub enum ExprKind {
     Direct(DirectAddress),
     /// An expression in parentheses (kept so spans and ST views stay faithful).
     Paren(Box<Expr>),
+    /// `r^` — the variable a reference points to (IEC 61131-3 ed. 3).
+    Deref(Box<Expr>),
 }
 
 impl Expr {
@@ -465,7 +475,8 @@ impl Expr {
                 | ExprKind::Bit(b, _)
                 | ExprKind::Part { base: b, .. }
                 | ExprKind::Unary(_, b)
-                | ExprKind::Paren(b) => todo.push((b, h + 1)),
+                | ExprKind::Paren(b)
+                | ExprKind::Deref(b) => todo.push((b, h + 1)),
                 ExprKind::Index(b, indices) => {
                     todo.push((b, h + 1));
                     todo.extend(indices.iter().map(|i| (i, h + 1)));
@@ -654,10 +665,10 @@ pub enum LiteralValue {
     WString(Vec<u16>),
     /// `T#…` / `TIME#…` / `LTIME#…`: nanoseconds.
     Time(i64),
-    /// `D#…` / `DATE#…`: nanoseconds since 1970-01-01 00:00 (a whole number of days).
+    /// `D#…` / `DATE#…`: microseconds since 1970-01-01 00:00 (a whole number of days).
     Date(i64),
     /// `TOD#…` / `TIME_OF_DAY#…`: nanoseconds since midnight.
     TimeOfDay(i64),
-    /// `DT#…` / `DATE_AND_TIME#…`: nanoseconds since 1970-01-01 00:00.
+    /// `DT#…` / `DATE_AND_TIME#…`: microseconds since 1970-01-01 00:00.
     DateTime(i64),
 }

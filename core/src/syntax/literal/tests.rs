@@ -98,7 +98,8 @@ fn durations() {
 #[test]
 fn dates_and_times() {
     assert_eq!(parse_date("D#1970-01-01"), Ok(0));
-    let day = 86_400 * S;
+    // DATE and DT count microseconds.
+    let day = 86_400 * S / 1000;
     assert_eq!(parse_date("DATE#2006-03-20"), Ok(13_227 * day));
     assert_eq!(parse_date("D#2000-03-01"), Ok(11_017 * day));
     assert_eq!(parse_date("D#1969-12-31"), Ok(-day));
@@ -107,16 +108,21 @@ fn dates_and_times() {
     assert_eq!(parse_time_of_day("TIME_OF_DAY#00:00:00"), Ok(0));
     assert_eq!(
         parse_date_time("DT#2006-03-20-10:42:23.78"),
-        Ok(13_227 * day + (10 * 3600 + 42 * 60 + 23) * S + 780 * MS)
+        Ok(13_227 * day + ((10 * 3600 + 42 * 60 + 23) * S + 780 * MS) / 1000)
     );
-    for bad in [
-        "D#2006-13-01",
-        "D#2023-02-29",
-        "D#2006-04-31",
-        "D#2006-03",
-        "D#0001-01-01",
-        "D#2006-00-10",
-    ] {
+    // The ends of the range: 0001-01-01 is 719,162 days before 1970-01-01, 9999-12-31
+    // 2,932,896 days after it (365 days a year, a leap day every 4 years but 100 but 400).
+    assert_eq!(parse_date("D#0001-01-01"), Ok(-719_162 * day));
+    assert_eq!(parse_date("D#9999-12-31"), Ok(2_932_896 * day));
+    assert_eq!(
+        parse_date_time("DT#9999-12-31-23:59:59.999999999"),
+        Ok(2_932_897 * day - 1),
+        "digits past the microsecond are dropped"
+    );
+    for bad in ["D#0000-12-31", "D#10000-01-01"] {
+        assert_eq!(code(parse_date(bad)), "E0010", "{bad}");
+    }
+    for bad in ["D#2006-13-01", "D#2023-02-29", "D#2006-04-31", "D#2006-03", "D#2006-00-10"] {
         assert_eq!(code(parse_date(bad)), "E0010", "{bad}");
     }
     for bad in ["TOD#24:00:00", "TOD#10:60:00", "TOD#10:00:61", "TOD#10", "TOD#1:2:3."] {

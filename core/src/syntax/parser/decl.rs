@@ -176,6 +176,11 @@ impl Parser<'_> {
                 if upper == "STRING" || upper == "WSTRING" {
                     return self.parse_string_type(tok, upper == "WSTRING");
                 }
+                if upper == "REF_TO" && !self.at(TokenKind::Semicolon) {
+                    let target = self.parse_type_spec()?;
+                    let span = tok.span.to(target.span());
+                    return Ok(TypeRef::Ref { target: Box::new(target), span });
+                }
                 if !self.at(TokenKind::LParen) {
                     return Ok(TypeRef::Named(name));
                 }

@@ -79,7 +79,10 @@ impl Parser<'_> {
         let mut e = self.parse_primary()?;
         let mut height = None;
         loop {
-            if !matches!(self.peek(), TokenKind::LParen | TokenKind::LBracket | TokenKind::Dot) {
+            if !matches!(
+                self.peek(),
+                TokenKind::LParen | TokenKind::LBracket | TokenKind::Dot | TokenKind::Caret
+            ) {
                 return Ok(e);
             }
             let h = 1 + height.unwrap_or_else(|| e.height());
@@ -104,6 +107,11 @@ impl Parser<'_> {
                     e = Expr { kind: ExprKind::Index(Box::new(e), indices), span };
                 }
                 TokenKind::Dot => e = self.parse_member(e)?,
+                TokenKind::Caret => {
+                    let caret = self.bump();
+                    let span = e.span.to(caret.span);
+                    e = Expr { kind: ExprKind::Deref(Box::new(e)), span };
+                }
                 _ => return Ok(e),
             }
         }

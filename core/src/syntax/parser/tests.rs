@@ -95,6 +95,7 @@ fn sx(e: &Expr) -> String {
         }
         ExprKind::Direct(d) => format!("{}:{:?}{:?}{:?}", d.text, d.area, d.size, d.path),
         ExprKind::Paren(x) => format!("[{}]", sx(x)),
+        ExprKind::Deref(x) => format!("{}^", sx(x)),
     }
 }
 
@@ -148,6 +149,31 @@ fn postfix_calls_members_bits() {
 }
 
 #[test]
+fn dereference_is_a_postfix_operator() {
+    assert_eq!(ex("r^"), "r^");
+    assert_eq!(ex("r^.x"), "r^.x");
+    assert_eq!(ex("r^[i]^"), "r^[i]^");
+    assert_eq!(ex("a[1]^.b^"), "a[1]^.b^");
+    assert_eq!(ex("-r^ + 1"), "(Add (Neg r^) 1)");
+    assert_eq!(ex("REF(x)^"), "REF(x)^");
+    assert_eq!(ex("r^ = NULL"), "(Eq r^ NULL)");
+}
+
+#[test]
+fn reference_types() {
+    let d = decls("r : REF_TO INT;\np : REF_TO ARRAY[1..2] OF REF_TO Pt;\nREF_TO : INT;");
+    let TypeRef::Ref { target, .. } = &d[0].ty else { panic!("{:?}", d[0].ty) };
+    assert!(matches!(&**target, TypeRef::Named(n) if n.name == "INT"));
+    let TypeRef::Ref { target, .. } = &d[1].ty else { panic!("{:?}", d[1].ty) };
+    let TypeRef::Array { element, .. } = &**target else { panic!("{target:?}") };
+    assert!(matches!(&**element, TypeRef::Ref { .. }));
+    // `REF_TO` alone stays a name.
+    assert_eq!(d[2].names[0].name, "REF_TO");
+    let t = types("PInt : REF_TO INT;");
+    assert!(matches!(&t[0].ty, TypeRef::Ref { .. }));
+}
+
+#[test]
 fn literals_in_expressions() {
     assert_eq!(ex("123_456"), "123456");
     assert_eq!(ex("2#1110_0000"), "224");
@@ -170,9 +196,9 @@ fn literals_in_expressions() {
     assert_eq!(ex("T#1s"), "time:1000000000");
     assert_eq!(ex("T#-14ms"), "time:-14000000");
     assert_eq!(ex("LTIME#1ms"), "time:1000000");
-    assert_eq!(ex("D#1970-01-02"), "date:86400000000000");
+    assert_eq!(ex("D#1970-01-02"), "date:86400000000", "DATE counts microseconds");
     assert_eq!(ex("TOD#00:00:01"), "tod:1000000000");
-    assert_eq!(ex("DT#1970-01-01-00:00:01.5"), "dt:1500000000");
+    assert_eq!(ex("DT#1970-01-01-00:00:01.5"), "dt:1500000");
     assert_eq!(ex("Color#Red"), "Color#Red");
     assert_eq!(ex("%IX0.1"), "%IX0.1:InputBit[0, 1]");
     assert_eq!(ex("%QW4 + %MW6"), "(Add %QW4:OutputWord[4] %MW6:MemoryWord[6])");
