@@ -5,6 +5,7 @@
 //! spelling the user wrote; comparisons are case-insensitive (see [`Ident::key`]).
 //! This module holds data only: no parsing, no checking.
 
+pub(crate) mod il;
 pub(crate) mod sfc;
 
 use crate::diagnostics::Span;
@@ -70,6 +71,9 @@ pub struct Pou {
     pub body: Vec<Stmt>,
     /// The body written as a textual sequential function chart, if it is one.
     pub sfc: Option<sfc::SfcBody>,
+    /// The body written in Instruction List, if it is one (`crate::il` lowers it into
+    /// `body` before the checker runs).
+    pub il: Option<il::IlBody>,
     /// The whole POU, from its keyword to its END keyword.
     pub span: Span,
 }
