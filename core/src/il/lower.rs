@@ -175,8 +175,20 @@ impl<T: Typing> Lowering<'_, T> {
 
     /// Copies a CR that is not stable into the temporary of its type.
     fn materialise(&mut self, at: Span) {
+        self.keep(at, false);
+    }
+
+    /// Copies a CR that grew taller than [`MAX_CHAIN`] into its temporary, stable or not.
+    fn bound_height(&mut self, at: Span) {
+        if self.cr.as_ref().is_some_and(|e| e.height() > MAX_CHAIN) {
+            self.keep(at, true);
+        }
+    }
+
+    /// Copies the CR into the temporary of its type, unless it is stable and not `force`d.
+    fn keep(&mut self, at: Span, force: bool) {
         let Some(cr) = self.cr.take() else { return };
-        if is_stable(&cr) {
+        if is_stable(&cr) && !force {
             self.cr = Some(cr);
             return;
         }
@@ -189,10 +201,15 @@ impl<T: Typing> Lowering<'_, T> {
     }
 
     /// The temporary for a value like `e` (declared on first use), or a reported problem.
+    /// Inside `(` each level has its own temporaries (`IL__CR_BOOL_2`), so keeping a CR
+    /// there never overwrites one that a deferred operation still reads.
     fn temp_for(&mut self, e: &Expr, at: Span) -> Option<Expr> {
-        match self.type_of(e) {
+        match self.type_of(&typing_view(e)) {
             Ok(ValueType::Elementary(ty)) => {
-                let n = temp_name(ty);
+                let mut n = temp_name(ty);
+                if !self.deferred.is_empty() {
+                    n = format!("{n}_{}", self.deferred.len());
+                }
                 self.temps.insert(n.clone(), ty);
                 Some(name(&n, at))
             }
@@ -458,9 +475,7 @@ impl<T: Typing> Lowering<'_, T> {
                 } else if let Some(operand) = operand {
                     self.cr =
                         Some(expr(ExprKind::Binary(*op, Box::new(cr), Box::new(operand)), at));
-                    if self.cr.as_ref().is_some_and(|e| e.height() > MAX_CHAIN) {
-                        self.materialise(at);
-                    }
+                    self.bound_height(at);
                 }
             }
             IlKind::Close => {
@@ -476,9 +491,7 @@ impl<T: Typing> Lowering<'_, T> {
                 let inner = if d.negated { not(inner, at) } else { inner };
                 self.cr =
                     Some(expr(ExprKind::Binary(d.op, Box::new(d.saved), Box::new(inner)), at));
-                if self.cr.as_ref().is_some_and(|e| e.height() > MAX_CHAIN) {
-                    self.materialise(at);
-                }
+                self.bound_height(at);
             }
             IlKind::Jump { condition, label } => {
                 let Some(target) = self.segment_of(label) else { return true };
@@ -593,6 +606,39 @@ impl<T: Typing> Lowering<'_, T> {
         if !standard {
             self.materialise(at);
         }
+    }
+}
+
+/// `e` with every level temporary (`IL__CR_BOOL_2`) named as its level-0 one, which the
+/// declarations the types come from know (same type, so the same answer).
+fn typing_view(e: &Expr) -> Expr {
+    let mut e = e.clone();
+    rename_levels(&mut e);
+    e
+}
+
+fn rename_levels(e: &mut Expr) {
+    match &mut e.kind {
+        ExprKind::Name(id) if super::is_hidden_name(&id.name) => {
+            if let Some((base, level)) = id.name.rsplit_once('_') {
+                if !level.is_empty() && level.bytes().all(|b| b.is_ascii_digit()) {
+                    id.name = base.to_string();
+                }
+            }
+        }
+        ExprKind::Unary(_, a) | ExprKind::Paren(a) => rename_levels(a),
+        ExprKind::Binary(_, a, b) => {
+            rename_levels(a);
+            rename_levels(b);
+        }
+        ExprKind::Call { args, .. } => {
+            for a in args {
+                if let Arg::Positional(v) | Arg::Input { value: v, .. } = a {
+                    rename_levels(v);
+                }
+            }
+        }
+        _ => {}
     }
 }
 

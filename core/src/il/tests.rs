@@ -106,6 +106,11 @@ fn hostile_bodies_give_errors_not_panics() {
         "AND a\n".repeat(5000)
     );
     assert_eq!(var(&run(&long, 1), "a"), serde_json::json!(false));
+    let constant = format!(
+        "PROGRAM Main\nVAR n : DINT; END_VAR\nLD 0\n{}ST n\nEND_PROGRAM\n",
+        "ADD 1\n".repeat(5000)
+    );
+    assert_eq!(var(&run(&constant, 1), "n"), serde_json::json!(5000));
     for junk in
         ["LD", "LD (a", ")", "JMP", "CAL", "AND(", "L1:\nL1:\nRET", "LD 1,2", "&N", "LD a b"]
     {
@@ -150,4 +155,74 @@ fn the_lecture_example_agrees_in_ld_il_and_st_scan_by_scan() {
     }
     // The latch was both on and off at some point (the walk is not vacuous).
     assert_eq!(scans, 32);
+}
+
+#[test]
+fn plcopen_xml_keeps_il_bodies_as_il() {
+    use crate::project::Project;
+    let text = include_str!("../../../examples/lecture-ld-il-st.plcproj.json");
+    let project = Project::from_file(text).expect("the example opens");
+    let xml = crate::plcopen::export(&project);
+    let il_pou = xml.find("name=\"LectureIL\"").expect("LectureIL exported");
+    let st_pou = xml.find("name=\"LectureST\"").expect("LectureST exported");
+    assert!(xml[il_pou..st_pou].contains("<IL>"), "{}", &xml[il_pou..st_pou]);
+    assert!(xml[st_pou..].contains("<ST>"));
+    let back = crate::plcopen::import(&xml).expect("imports").project;
+    for (name, a, b, c) in
+        [("LectureIL", "TRUE", "FALSE", true), ("LectureIL", "TRUE", "TRUE", false)]
+    {
+        let mut sim = crate::run::project_simulator(&back, Some(name)).expect("builds");
+        sim.write("A", a).expect("A");
+        sim.write("B", b).expect("B");
+        sim.scan();
+        assert_eq!(
+            format!("{:?}", sim.read("C").expect("C")),
+            format!("{:?}", crate::vm::Value::Bool(c))
+        );
+    }
+}
+
+#[test]
+fn a_beremiz_il_body_imports_and_runs() {
+    let xml = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+  <fileHeader companyName="x" productName="x" productVersion="1" creationDateTime="2024-01-01T00:00:00"/>
+  <contentHeader name="il"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Main" pouType="program">
+      <interface>
+        <localVars>
+          <variable name="A"><type><BOOL/></type><initialValue><simpleValue value="TRUE"/></initialValue></variable>
+          <variable name="B"><type><BOOL/></type></variable>
+          <variable name="C"><type><BOOL/></type></variable>
+        </localVars>
+      </interface>
+      <body>
+        <IL>
+          <xhtml:p><![CDATA[LD A
+ANDN B
+ST C
+]]></xhtml:p>
+        </IL>
+      </body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>"#;
+    let import = crate::plcopen::import(xml).expect("imports");
+    assert!(import.skipped.is_empty(), "{:?}", import.skipped);
+    let report = crate::run::run_project(&import.project, &RunOptions::default());
+    assert_eq!(var(&report, "C"), serde_json::json!(true));
+}
+
+#[test]
+fn a_result_kept_inside_parentheses_does_not_overwrite_the_deferred_one() {
+    // CR = A AND B = TRUE is kept (ST C, ST D); inside OR( the function Inv keeps its own
+    // BOOL result: the deferred TRUE must survive it. E := TRUE OR Inv(TRUE) = TRUE (were it
+    // overwritten: FALSE OR FALSE).
+    let src = "FUNCTION Inv : BOOL\nVAR_INPUT x : BOOL; END_VAR\nLD x\nSTN Inv\nEND_FUNCTION\n\
+               PROGRAM Main\nVAR A, B, F : BOOL := TRUE; C, D, E : BOOL; END_VAR\n\
+               LD A\nAND B\nST C\nST D\nOR( F\nInv\n)\nST E\nEND_PROGRAM\n";
+    let r = run(src, 1);
+    assert_eq!(var(&r, "E"), serde_json::json!(true));
 }
