@@ -226,3 +226,39 @@ fn a_result_kept_inside_parentheses_does_not_overwrite_the_deferred_one() {
     let r = run(src, 1);
     assert_eq!(var(&r, "E"), serde_json::json!(true));
 }
+
+#[test]
+fn random_instruction_lists_never_panic() {
+    // A deterministic walk over operators, operands and labels, right and wrong alike.
+    let ops = [
+        "LD", "LDN", "ST", "STN", "S", "R", "AND", "ANDN", "&", "&N", "OR", "ORN", "XOR", "XORN",
+        "NOT", "ADD", "SUB", "MUL", "DIV", "MOD", "GT", "GE", "EQ", "NE", "LT", "LE", "AND(",
+        "OR(", "ADD(", ")", "JMP", "JMPC", "JMPCN", "CAL", "CALC", "CALCN", "RET", "RETC", "RETCN",
+        "S1", "R1", "CLK", "CU", "PV", "IN", "PT", "ABS", "LIMIT", "FOO", "L1:", "L2:",
+    ];
+    let operands = [
+        "a", "b", "i", "r", "t", "T1", "C1", "T1.Q", "5", "-3", "2.5", "T#1s", "L1", "L2", "",
+        "a, 1", "(a",
+    ];
+    let mut seed = 0x9e37_79b9_u32;
+    let mut next = |n: usize| {
+        seed ^= seed << 13;
+        seed ^= seed >> 17;
+        seed ^= seed << 5;
+        seed as usize % n
+    };
+    for _ in 0..200 {
+        let mut body = String::new();
+        for _ in 0..next(12) + 1 {
+            body.push_str(&format!(
+                "{} {}\n",
+                ops[next(ops.len())],
+                operands[next(operands.len())]
+            ));
+        }
+        let src = format!(
+            "PROGRAM Main\nVAR a, b : BOOL; i : INT; r : REAL; t : TIME; T1 : TON; C1 : CTU; END_VAR\nLD a\n{body}END_PROGRAM\n"
+        );
+        let _ = run(&src, 2);
+    }
+}
