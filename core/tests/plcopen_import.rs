@@ -768,11 +768,12 @@ mod command_line {
 
     #[test]
     fn a_program_the_import_left_out_is_named() {
-        // The traffic light's chart, as if it were written in IL (not imported yet).
+        // The traffic light's chart, as if it were written in CODESYS's CFC (not a PLCopen
+        // language; IL bodies import since issue 18).
         let text = std::fs::read_to_string(sample_path("sfc_traffic_light.xml"))
             .unwrap()
-            .replace("<SFC>", "<IL>")
-            .replace("</SFC>", "</IL>");
+            .replace("<SFC>", "<CFC>")
+            .replace("</SFC>", "</CFC>");
         let dir = std::env::temp_dir().join(format!("plc-contract-il-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let file = dir.join("il.xml");
@@ -786,11 +787,11 @@ mod command_line {
             .filter_map(|d| d["message"].as_str())
             .collect();
         assert!(
-            messages.iter().any(|m| m.contains("Traffic_Control") && m.contains("IL")),
+            messages.iter().any(|m| m.contains("Traffic_Control") && m.contains("CFC")),
             "{messages:?}"
         );
         assert!(
-            messages.contains(&"the file holds no PROGRAM that could be imported: left out Traffic_Control (IL bodies are not supported yet)"),
+            messages.contains(&"the file holds no PROGRAM that could be imported: left out Traffic_Control (CFC bodies are not supported yet)"),
             "{messages:?}"
         );
         let asked = json(&plc(&["run", &file, "--program", "Traffic_Control", "--json"]));
@@ -798,7 +799,7 @@ mod command_line {
         assert_eq!(last["code"], "E0305");
         assert_eq!(
             last["message"],
-            "the PROGRAM Traffic_Control was left out when the file was imported: IL bodies are not supported yet"
+            "the PROGRAM Traffic_Control was left out when the file was imported: CFC bodies are not supported yet"
         );
     }
 }

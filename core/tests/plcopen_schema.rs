@@ -205,7 +205,7 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
         ) => r(&["name"], with_tail(vec![Seq(("type", 1, ONE)), Seq(("initialValue", 0, ONE))])),
         (_, "type" | "baseType" | "returnType" | "initialValue") => open(&[]),
         (_, "body") => r(&[], with_tail(vec![Choice(&["IL", "ST", "FBD", "LD", "SFC"], 1, ONE)])),
-        ("body", "ST") => r(&[], vec![Seq(("p", 1, ONE))]),
+        ("body", "ST") | ("body", "IL") => r(&[], vec![Seq(("p", 1, ONE))]),
         ("body", "LD") => r(
             &[],
             vec![Choice(

@@ -113,6 +113,10 @@ test('a start/stop latch dragged from the palette in a new project runs, undoes,
   await line.waitFor();
   await cell(view, 1, 1, 1).click();
   assert.match(await line.getAttribute('class'), /\blit\b/);
+  // Under it, the rung as Instruction List (issue 18), lit the same way.
+  const ilLine = side.getByRole('region', { name: 'IL view' }).locator('.ld-st-line', { hasText: 'ANDN Stop' });
+  await ilLine.waitFor();
+  assert.match(await ilLine.getAttribute('class'), /\blit\b/);
 
   // Run it scan by scan: the ladder PROGRAM is chosen under Simulation, each Step is one
   // scan, and after each the lamp and the cells' power tell the same story.

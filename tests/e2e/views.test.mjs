@@ -72,6 +72,7 @@ test('the ladder latch runs live: clicking Start powers the Motor coil, which ho
   // The ST view of the same POU.
   await view.getByRole('button', { name: 'ST view' }).click();
   await view.getByLabel('Latch as Structured Text').filter({ hasText: 'Motor' }).waitFor();
+  await view.getByRole('region', { name: 'IL view' }).filter({ hasText: 'ANDN Stop' }).first().waitFor();
   assert.deepEqual(errors, []);
   await context.close();
 });

@@ -443,6 +443,7 @@ pub fn is_hidden_variable(name: &str) -> bool {
         || crate::network::lower::is_hidden_name(name)
         || crate::petri::is_hidden_name(name)
         || crate::sfc::is_hidden_name(name)
+        || crate::il::is_hidden_name(name)
 }
 
 #[cfg(test)]

@@ -7,8 +7,9 @@
 //! Ranges: E0001–E0099 lexical and syntax errors (the parser), E0100–E0299 name and type
 //! errors (the checker), E0300–E0349 problems with how a program is run, E0400–E0449 ladder
 //! diagrams (W0005–W0009 are ladder warnings), E0500–E0549 Petri nets (W0010–W0019 are Petri
-//! net warnings), E0550–E0599 textual SFC (W0020–W0029 are SFC warnings), E0620–E0639 configurations and tasks, W0001–W0004 and
-//! W0030– other warnings.
+//! net warnings), E0550–E0579 textual SFC (W0020–W0029 are SFC warnings), E0580–E0599
+//! Instruction List, E0620–E0639 configurations and tasks, W0001–W0004 and W0030– other
+//! warnings.
 
 use serde::Serialize;
 
@@ -166,7 +167,7 @@ problem_codes! {
     PnmlInvalid = "E0516": "a PNML file that cannot be read as a place/transition net",
     PetriEmptyNet = "E0517": "a Petri net without places",
 
-    // ---- textual SFC (crate::sfc): E0550–E0599 ----
+    // ---- textual SFC (crate::sfc): E0550–E0579 ----
     SfcUnknownStep = "E0550": "a transition names a step that is not declared",
     SfcDuplicateName = "E0551": "a step, transition or action name declared twice, or also declared as a variable",
     SfcSecondInitialStep = "E0552": "a second INITIAL_STEP in one SFC network",
@@ -184,6 +185,13 @@ problem_codes! {
     SfcStepListedTwice = "E0564": "a step listed twice in one FROM or TO list",
     SfcBooleanActionNotBool = "E0565": "a boolean action whose variable is not BOOL",
     SfcReturnInAction = "E0566": "RETURN inside an ACTION or a transition body",
+
+    // ---- Instruction List (syntax and crate::il): E0580–E0589 ----
+    IlUnknownOperator = "E0580": "an IL line whose operator is neither an IL operator nor a function",
+    IlBadInstruction = "E0581": "an IL instruction with a missing, extra or wrong operand or modifier",
+    IlUndefinedLabel = "E0582": "an IL jump to a label the body does not define, or a label defined twice",
+    IlNoCurrentResult = "E0583": "an IL instruction that needs the current result where none is loaded",
+    IlResultType = "E0584": "an IL current result of a type the trainer cannot carry there",
 
     // ---- configurations, resources and tasks: E0620–E0639 ----
     UnsupportedConfiguration = "E0620": "a VAR_ACCESS block, or a second CONFIGURATION in one program",

@@ -436,6 +436,21 @@ explanations! {
     SfcReturnInAction: "RETURN would leave the whole POU from inside an action or a transition body; end the action normally instead.",
         st("PROGRAM Main VAR n : INT; END_VAR INITIAL_STEP A : Go(N); END_STEP ACTION Go : IF n > 3 THEN RETURN; END_IF; n := n + 1; END_ACTION END_PROGRAM"),
         st("PROGRAM Main VAR n : INT; END_VAR INITIAL_STEP A : Go(N); END_STEP ACTION Go : IF n <= 3 THEN n := n + 1; END_IF; END_ACTION END_PROGRAM");
+    IlUnknownOperator: "An IL line begins with a word that is neither an IL operator (LD, ST, S, R, AND, OR, XOR, NOT, ADD … MOD, GT … LE, JMP, CAL, RET with their N, C and ( modifiers, or an input operator such as S1, CU, PT) nor the name of a function. Check the spelling: `LDN` loads the negation, there is no `LDX`.",
+        st("PROGRAM Main VAR a, b : BOOL; END_VAR\nLD a\nLDX b\nST a\nEND_PROGRAM"),
+        st("PROGRAM Main VAR a, b : BOOL; END_VAR\nLD a\nANDN b\nST a\nEND_PROGRAM");
+    IlBadInstruction: "An IL instruction has the wrong operands or modifiers: an operand is missing (`LD` alone), more than one value stands where one is expected (`LD a b`), an operand is an expression (`LD a AND b`: write `LD a` then `AND b`), a `)` has no `(`, a `(` is never closed, or a store, jump or call stands inside parentheses.",
+        st("PROGRAM Main VAR a, b : BOOL; END_VAR\nLD a AND b\nST a\nEND_PROGRAM"),
+        st("PROGRAM Main VAR a, b : BOOL; END_VAR\nLD a\nAND b\nST a\nEND_PROGRAM");
+    IlUndefinedLabel: "A JMP, JMPC or JMPCN names a label that no line of the body defines (`Label:` at the start of a line), or a label is defined twice. Labels are case-insensitive.",
+        st("PROGRAM Main VAR a : BOOL; n : INT; END_VAR\nLD a\nJMPC Skip\nLD 1\nST n\nEND_PROGRAM"),
+        st("PROGRAM Main VAR a : BOOL; n : INT; END_VAR\nLD a\nJMPC Skip\nLD 1\nST n\nSkip: RET\nEND_PROGRAM");
+    IlNoCurrentResult: "The instruction works on the current result, but nothing has been loaded yet: at the start of the body, after an unconditional JMP or RET, or at a label that is reached without one. Load a value with LD first.",
+        st("PROGRAM Main VAR a : BOOL; END_VAR\nST a\nEND_PROGRAM"),
+        st("PROGRAM Main VAR a : BOOL; END_VAR\nLD TRUE\nST a\nEND_PROGRAM");
+    IlResultType: "The current result must be kept here (across a store, a call or a label), but it is not an elementary value, or it reaches a label as one type on one way in and as another type on another.",
+        st("PROGRAM Main VAR a : BOOL; n : INT; END_VAR\nLD a\nJMPC L\nLD n\nL: ST n\nEND_PROGRAM"),
+        st("PROGRAM Main VAR a : BOOL; n : INT; END_VAR\nLD a\nJMPC L\nLD 1\nST n\nL: RET\nEND_PROGRAM");
     UnusedVariable: "A declared variable is never read or written. Remove it, or use it. (Reserved: the checker does not report it yet.)",
         drawn("`VAR x, spare : INT; END_VAR x := x + 1;` (`spare` is never used)"),
         drawn("`VAR x : INT; END_VAR x := x + 1;`");

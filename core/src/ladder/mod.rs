@@ -5,6 +5,7 @@ pub(crate) mod blocks;
 pub(crate) mod catalog;
 pub mod complete;
 pub mod edit;
+pub mod il_view;
 pub mod lower;
 pub(crate) mod model;
 mod network;
@@ -17,6 +18,7 @@ pub use complete::{operand_choices, OperandChoice};
 pub use edit::{
     declare, describe_cell, implied_declaration, CellRef, EditError, LadderEdit, PinKind,
 };
+pub use il_view::{has_il_view, il_view};
 pub use lower::{is_hidden_name, lower, power_map, power_var, LineMap, LoweredPou};
 pub use model::*;
 pub use st_view::{st_view, st_view_pou};

@@ -242,7 +242,7 @@ impl RungWriter for View {
 
 /// The statements of the ST view with the rung each comes from, and the declarations of
 /// the helpers the view needs (`LdEdge_0 : R_TRIG;`, `LdTmp_0 : BOOL;`).
-fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
+pub(super) fn view_statements(pou: &LadderPou) -> (Vec<(String, Option<usize>)>, String) {
     let mut w = View { lines: Vec::new(), decls: String::new(), indent: "", tmp: 0 };
     walk(pou, &mut w);
     (w.lines, w.decls)

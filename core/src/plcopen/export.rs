@@ -82,9 +82,14 @@ pub fn export(project: &Project) -> String {
                     None => raw,
                 };
                 let body = body.trim_matches(|c| c == '\n' || c == '\r');
-                pous.push_str("        <body>\n          <ST>\n            <xhtml:p>");
+                let language = if p.il.is_some() { "IL" } else { "ST" };
+                let _ =
+                    write!(pous, "        <body>\n          <{language}>\n            <xhtml:p>");
                 pous.push_str(&cdata(body));
-                pous.push_str("</xhtml:p>\n          </ST>\n        </body>\n      </pou>\n");
+                let _ = writeln!(
+                    pous,
+                    "</xhtml:p>\n          </{language}>\n        </body>\n      </pou>"
+                );
             }
         }
     }

@@ -419,7 +419,8 @@ fn import_pou<'a>(
         warnings.push(ImportNote::on(pou, format!("POU {name}: actions and transitions skipped")));
     }
     match lang.name.as_str() {
-        "ST" => {
+        // An IL body is text too: the parser recognises IL by its first line.
+        "ST" | "IL" => {
             let header = pou_header(keyword, &name, pou_type, return_type).map_err(err)?;
             push_pou(source, (&header, pou), declarations, st_body(lang), end);
         }

@@ -6,7 +6,8 @@
 //! [`LadderPou`](crate::ladder::LadderPou)s whose networks (elements at free positions wired
 //! by `refLocalId`) are laid out onto the rung grid. Networks that do not fit the grid, LD
 //! functions and FBD bodies are kept as [`NetworkPou`](crate::network::NetworkPou)s; SFC
-//! bodies become textual SFC; IL bodies are skipped with a warning. Every line of the ST
+//! bodies become textual SFC; IL bodies are kept as text, like ST (the parser recognises
+//! IL, and export writes such a POU back as `<IL>`). Every line of the ST
 //! written is mapped back to its place in the file ([`Import::file_map`]). [`export`] writes
 //! a TC6 0201 document back; `import(&export(p))` gives the same program (ST text equal up
 //! to whitespace, ladder grids equal when they were laid out by [`import`]).

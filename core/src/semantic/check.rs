@@ -293,6 +293,69 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
     (Some(program), diags)
 }
 
+/// The checker's answers to the IL lowering (`crate::il`): types of expressions in the
+/// scope of a POU of the file's declarations, checked once.
+pub(super) struct IlTyping {
+    checker: Checker<'static>,
+}
+
+impl IlTyping {
+    /// Checks `declarations` (a file whose bodies are removed) to answer from.
+    pub(super) fn new(declarations: &ast::SourceFile) -> Option<Self> {
+        let program = check_with_prelude(declarations).0?;
+        Some(IlTyping { checker: Checker::around(&program) })
+    }
+}
+
+impl crate::il::Typing for IlTyping {
+    fn type_of(
+        &mut self,
+        pou: &str,
+        expr: &ast::Expr,
+    ) -> Result<crate::il::ValueType, Vec<Diagnostic>> {
+        use crate::il::ValueType;
+        let c = &mut self.checker;
+        let Some(&id) = c.pou_index.get(&pou.to_ascii_uppercase()) else {
+            return Err(Vec::new());
+        };
+        if let ast::ExprKind::Name(n) = &expr.kind {
+            let named = |v: &&ir::Var| v.name.eq_ignore_ascii_case(&n.name);
+            let var = c.pous[id as usize].vars.iter().find(named).or(c.globals.iter().find(named));
+            if matches!(var.map(|v| v.ty), Some(Type::Fb(_))) {
+                return Ok(ValueType::Instance);
+            }
+        }
+        c.body = BodyState { pou: id, loop_depth: 0, read_only: true };
+        c.diags.clear();
+        let typed = c.expr(expr, None);
+        let diags = std::mem::take(&mut c.diags);
+        match typed {
+            Some(t) if !crate::diagnostics::has_errors(&diags) => Ok(match t.e.ty {
+                Type::Elem(e) => {
+                    let name = e.name();
+                    match crate::il::ELEMENTARY.iter().find(|n| **n == name) {
+                        Some(n) => ValueType::Elementary(n),
+                        None => ValueType::Other(name.to_string()),
+                    }
+                }
+                Type::Fb(_) => ValueType::Instance,
+                other => ValueType::Other(c.types.display(other).to_string()),
+            }),
+            _ => Err(diags),
+        }
+    }
+
+    fn function(&self, name: &str) -> Option<bool> {
+        let key = name.to_ascii_uppercase();
+        let pou = self.checker.pou_index.get(&key).map(|&id| &self.checker.pous[id as usize]);
+        match pou {
+            Some(p) if p.kind == PouKind::Function => Some(p.library),
+            Some(_) => None,
+            None => super::is_builtin(&key).then_some(true),
+        }
+    }
+}
+
 impl<'a> Checker<'a> {
     /// Rebuilds a checker around an already checked program (for conditions and values).
     fn around(program: &Program) -> Checker<'static> {

@@ -41,11 +41,12 @@ pub struct Analysis {
 }
 
 /// Parses and checks `source` together with the standard library prelude. Textual SFC
-/// bodies are lowered to statements first (`crate::sfc`).
+/// and Instruction List bodies are lowered to statements first (`crate::sfc`, `crate::il`).
 pub fn analyze(source: &str) -> Analysis {
     let (mut file, mut diagnostics) = syntax::parse(source);
     let sfc = crate::sfc::desugar(&mut file);
     diagnostics.extend(sfc.diagnostics.iter().cloned());
+    diagnostics.extend(crate::il::desugar(&mut file, check::IlTyping::new));
     let (program, more) = check::check_with_prelude(&file);
     diagnostics.extend(sfc.reword(more));
     crate::order::sort_by_key(&mut diagnostics, |d| (d.span.start, d.span.end));

@@ -174,6 +174,39 @@ fn is_sfc_word(text: &str, before: Option<TokenKind>, after: Option<TokenKind>) 
     }
 }
 
+/// True for an IL operator (`LD`, `ANDN`, `JMPC`, `S1`, …) where an IL body has one: first
+/// on its line (or after a label `L1:`) and followed on that line by an operand, or `RET`,
+/// `RETC`, `RETCN` alone. `S := 1;` and `LD` as a name in ST stay names.
+fn is_il_word(source: &str, tokens: &[Token], i: usize) -> bool {
+    let gap = |a: &Token, b: &Token| source.get(a.span.end as usize..b.span.start as usize);
+    let on_new_line = |a: &Token, b: &Token| gap(a, b).is_none_or(|g| g.contains('\n'));
+    let Some(t) = tokens.get(i) else { return false };
+    let text = source.get(t.span.start as usize..t.span.end as usize).unwrap_or("");
+    let upper = text.to_ascii_uppercase();
+    if !super::parser::is_il_operator(&upper) {
+        return false;
+    }
+    let first = match i.checked_sub(1).and_then(|p| tokens.get(p)) {
+        None => true,
+        Some(prev) if on_new_line(prev, t) => true,
+        Some(prev) => {
+            prev.kind == TokenKind::Colon
+                && i >= 2
+                && tokens.get(i - 2).is_some_and(|l| {
+                    l.kind == TokenKind::Ident
+                        && (i < 3 || tokens.get(i - 3).is_none_or(|b| on_new_line(b, l)))
+                })
+        }
+    };
+    if !first {
+        return false;
+    }
+    match tokens.get(i + 1) {
+        Some(next) if !on_new_line(t, next) => super::parser::starts_operand(next.kind),
+        _ => matches!(upper.as_str(), "RET" | "RETC" | "RETCN"),
+    }
+}
+
 /// The classified spans of `source`, in source order and never overlapping. Spans lie on
 /// character boundaries of `source`; whitespace is left out.
 pub fn highlight_spans(source: &str) -> Vec<(Span, TokenClass)> {
@@ -185,7 +218,8 @@ pub fn highlight_spans(source: &str) -> Vec<(Span, TokenClass)> {
         let text = text_of(t);
         let kind_at = |k: usize| lexed.tokens.get(k).map(|t| t.kind);
         let class = if t.kind == TokenKind::Ident
-            && is_sfc_word(text, kind_at(i.wrapping_sub(1)), kind_at(i + 1))
+            && (is_sfc_word(text, kind_at(i.wrapping_sub(1)), kind_at(i + 1))
+                || is_il_word(source, &lexed.tokens, i))
         {
             Some(TokenClass::Keyword)
         } else {
@@ -288,6 +322,30 @@ mod tests {
         assert_eq!(
             kw,
             ["STEP", "END_STEP", "TRANSITION", "PRIORITY", "FROM", "TO", "END_TRANSITION"]
+        );
+    }
+
+    #[test]
+    fn il_operators_are_keywords_only_where_an_il_body_has_them() {
+        use TokenClass as C;
+        let src = "PROGRAM P VAR S, LD : BOOL; T1 : TON; END_VAR\n  LD S\n  ANDN LD (* c *)\nL1: ST S\n  CAL T1(IN := S)\n  IN T1\n  JMPC L1\n  RET\nEND_PROGRAM\nS := LD;";
+        let kw: Vec<&str> =
+            classes(src).into_iter().filter(|(_, c)| *c == C::Keyword).map(|(t, _)| t).collect();
+        assert_eq!(
+            kw,
+            [
+                "PROGRAM",
+                "VAR",
+                "END_VAR",
+                "LD",
+                "ANDN",
+                "ST",
+                "CAL",
+                "IN",
+                "JMPC",
+                "RET",
+                "END_PROGRAM"
+            ]
         );
     }
 

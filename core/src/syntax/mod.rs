@@ -10,6 +10,7 @@ mod lexer;
 mod literal;
 mod parser;
 
+pub use ast::il::*;
 pub use ast::sfc::*;
 pub use ast::*;
 pub use highlight::{highlight_spans, tokens, TokenClass};

@@ -6,6 +6,7 @@
 //! This module holds data only: no parsing, no checking.
 
 mod config;
+pub(crate) mod il;
 pub(crate) mod sfc;
 
 pub use config::{Configuration, Connection, ProgramDecl, Resource, TaskDecl};
@@ -75,6 +76,9 @@ pub struct Pou {
     pub body: Vec<Stmt>,
     /// The body written as a textual sequential function chart, if it is one.
     pub sfc: Option<sfc::SfcBody>,
+    /// The body written in Instruction List, if it is one (`crate::il` lowers it into
+    /// `body` before the checker runs).
+    pub il: Option<il::IlBody>,
     /// The whole POU, from its keyword to its END keyword.
     pub span: Span,
 }

@@ -7,12 +7,16 @@
 //! so no input makes the parser panic, loop forever or overflow the stack.
 //!
 //! Files: `mod.rs` (cursor, diagnostics, top level and POUs), `decl.rs` (VAR blocks,
-//! types, initial values), `stmt.rs` (statements), `expr.rs` (expressions).
+//! types, initial values), `stmt.rs` (statements), `expr.rs` (expressions), `il.rs`
+//! (Instruction List bodies).
 
 mod config;
 mod decl;
 mod expr;
+mod il;
 mod sfc;
+
+pub(super) use il::{is_il_operator, starts_operand};
 mod stmt;
 
 use super::ast::sfc::{SfcBody, SfcElement};
@@ -329,6 +333,7 @@ impl<'a> Parser<'a> {
                 var_blocks.push(b);
             }
         }
+        let il = if self.at_il_body() { Some(self.parse_il_body()) } else { None };
         let mut body = Vec::new();
         let mut sfc: Option<SfcBody> = None;
         let mut mixed_reported = false;
@@ -410,7 +415,7 @@ impl<'a> Parser<'a> {
             }
         }
         let span = opener.span.to(self.prev_span());
-        Pou { kind, name, return_type, var_blocks, body, sfc, span }
+        Pou { kind, name, return_type, var_blocks, body, sfc, il, span }
     }
 
     /// Reports statements that stand outside the steps, transitions and actions of an SFC

@@ -462,10 +462,18 @@ pub fn LadderView(name: String) -> impl IntoView {
         if show_st.get() {
             let Some(p) = pou.get() else { return ().into_any() };
             let html = highlight_html(&st_view_pou(&p), &[]);
+            let (il, _) = plc_core::ladder::il_view(&p);
+            let il_html = highlight_html(&il, &[]);
             return view! {
                 <pre class="code-view" aria-label=format!("{} as Structured Text", p.name)>
                     <code inner_html=html></code>
                 </pre>
+                <section class="ld-il-view" role="region" aria-label="IL view">
+                    <h3>"Instruction List"</h3>
+                    <pre class="code-view" aria-label=format!("{} as Instruction List", p.name)>
+                        <code inner_html=il_html></code>
+                    </pre>
+                </section>
             }
             .into_any();
         }
@@ -522,7 +530,7 @@ pub fn LadderView(name: String) -> impl IntoView {
                 })}</span>
                 <span class="ed-spacer"></span>
                 <button aria-pressed=move || if show_st.get() { "true" } else { "false" }
-                    title="Show the POU as readable Structured Text"
+                    title="Show the POU as readable Structured Text and Instruction List"
                     on:click=move |_| show_st.update(|s| *s = !*s)>"ST view"</button>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
@@ -720,70 +728,89 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
     }
 }
 
-/// The POU as readable ST beside the rungs (on screens at least 1,100 px wide; below that
-/// the ST view button shows it instead of the rungs): the selected rung's lines are lit,
-/// and clicking a line selects its rung.
+/// A view's text as lines, each with the rung it comes from (`map`: 1-based line → rung).
+fn lines_with_rungs(body: &str, map: &[(u32, usize)]) -> Vec<(String, Option<usize>)> {
+    body.lines()
+        .enumerate()
+        .map(|(i, l)| {
+            let rung = map.iter().find(|(line, _)| *line as usize == i + 1).map(|(_, r)| *r);
+            (l.to_string(), rung)
+        })
+        .collect()
+}
+
+/// The POU as readable ST beside the rungs, and as Instruction List below it where its
+/// rungs have one (on screens at least 1,100 px wide; below that the ST view button shows
+/// them instead of the rungs): the selected rung's lines are lit, and clicking a line
+/// selects its rung.
 #[component]
 fn StBeside(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView {
     let view = Memo::new(move |_| {
         pou.with(|p| {
             p.as_ref().map(|p| {
                 let (body, map) = plc_core::ladder::st_view(p);
-                let lines: Vec<(String, Option<usize>)> = body
-                    .lines()
-                    .enumerate()
-                    .map(|(i, l)| {
-                        let rung =
-                            map.iter().find(|(line, _)| *line as usize == i + 1).map(|(_, r)| *r);
-                        (l.to_string(), rung)
-                    })
-                    .collect();
-                (p.name.clone(), lines)
+                let (il, il_map) = plc_core::ladder::il_view(p);
+                (p.name.clone(), lines_with_rungs(&body, &map), lines_with_rungs(&il, &il_map))
             })
         })
     });
-    let selected_rung = Memo::new(move |_| editor.selected.get().map(|c| c.rung));
-    let name = Memo::new(move |_| view.with(|v| v.as_ref().map(|(n, _)| n.clone())));
-    // Keyed by text, rung and which repeat of the two it is (not by position, which every
-    // inserted line shifts): an edit redraws the lines it changed, not all of them.
-    let lines = move || {
-        view.with(|v| {
-            let mut seen: std::collections::HashMap<(String, Option<usize>), usize> =
-                std::collections::HashMap::new();
-            v.as_ref()
-                .map(|(_, lines)| {
-                    lines
-                        .iter()
-                        .map(|(t, r)| {
-                            let n = seen.entry((t.clone(), *r)).or_insert(0);
-                            *n += 1;
-                            (*n, t.clone(), *r)
-                        })
-                        .collect()
-                })
-                .unwrap_or_else(Vec::new)
-        })
-    };
+    let name = Memo::new(move |_| view.with(|v| v.as_ref().map(|(n, _, _)| n.clone())));
+    let st = Memo::new(move |_| {
+        view.with(|v| v.as_ref().map(|(_, l, _)| l.clone()).unwrap_or_default())
+    });
+    let il = Memo::new(move |_| {
+        view.with(|v| v.as_ref().map(|(_, _, l)| l.clone()).unwrap_or_default())
+    });
     move || {
         let name = name.get()?;
         Some(view! {
             <aside class="ld-st-side" aria-label=format!("ST beside the rungs of {name}")>
-                <pre class="code-view">
-                    <For each=lines key=|line| line.clone() children=move |(_, text, rung)| {
-                        let html = highlight_html(&text, &[]);
-                        let lit = move || rung.is_some() && selected_rung.get() == rung;
-                        view! {
-                            <div class="ld-st-line" class:lit=lit
-                                on:click=move |_| if let Some(r) = rung {
-                                    editor.selected.set(Some(CellRef::new(r, 0, 0)));
-                                    editor.focus_selected();
-                                }>
-                                <code inner_html=html></code>
-                            </div>
-                        }
-                    }/>
-                </pre>
+                <BesideLines editor=editor lines=st/>
+                <section class="ld-il-view" role="region" aria-label="IL view">
+                    <h3>"Instruction List"</h3>
+                    <BesideLines editor=editor lines=il/>
+                </section>
             </aside>
         })
+    }
+}
+
+/// The lines of one view beside the rungs, the selected rung's lit, a click selecting the
+/// line's rung.
+#[component]
+fn BesideLines(editor: LadderEditor, lines: Memo<Vec<(String, Option<usize>)>>) -> impl IntoView {
+    let selected_rung = Memo::new(move |_| editor.selected.get().map(|c| c.rung));
+    // Keyed by text, rung and which repeat of the two it is (not by position, which every
+    // inserted line shifts): an edit redraws the lines it changed, not all of them.
+    let keyed = move || {
+        lines.with(|lines| {
+            let mut seen: std::collections::HashMap<(String, Option<usize>), usize> =
+                std::collections::HashMap::new();
+            lines
+                .iter()
+                .map(|(t, r)| {
+                    let n = seen.entry((t.clone(), *r)).or_insert(0);
+                    *n += 1;
+                    (*n, t.clone(), *r)
+                })
+                .collect::<Vec<_>>()
+        })
+    };
+    view! {
+        <pre class="code-view">
+            <For each=keyed key=|line| line.clone() children=move |(_, text, rung)| {
+                let html = highlight_html(&text, &[]);
+                let lit = move || rung.is_some() && selected_rung.get() == rung;
+                view! {
+                    <div class="ld-st-line" class:lit=lit
+                        on:click=move |_| if let Some(r) = rung {
+                            editor.selected.set(Some(CellRef::new(r, 0, 0)));
+                            editor.focus_selected();
+                        }>
+                        <code inner_html=html></code>
+                    </div>
+                }
+            }/>
+        </pre>
     }
 }
