@@ -444,6 +444,7 @@ pub fn is_hidden_variable(name: &str) -> bool {
         || crate::petri::is_hidden_name(name)
         || crate::sfc::is_hidden_name(name)
         || crate::il::is_hidden_name(name)
+        || crate::semantic::is_image_name(name)
 }
 
 #[cfg(test)]

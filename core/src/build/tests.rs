@@ -155,6 +155,7 @@ fn hidden_variables_are_recognised() {
     assert!(is_hidden_variable("LdPow_0_0_1"));
     assert!(is_hidden_variable("pnscan_p"));
     assert!(!is_hidden_variable("Motor"));
+    assert!(is_hidden_variable("__IMAGE_Q"));
 }
 
 #[test]

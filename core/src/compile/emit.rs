@@ -261,6 +261,7 @@ impl<'a> Emitter<'a> {
                 p.types.arrays.get(*a as usize).ok_or_else(|| bad("array"))?.element
             }
             Place::Bit(..) => Type::BOOL,
+            Place::Slice(_, _, elem) => Type::Elem(*elem),
             Place::Deref(r) => p.types.ref_target(r.ty).ok_or_else(|| bad("dereference"))?,
         })
     }
@@ -304,7 +305,7 @@ impl<'a> Emitter<'a> {
                 }
             }
             Place::Element(b, arr, idx) => self.element_addr(b, *arr, idx),
-            Place::Bit(..) => Err(bad("bit place used as an address")),
+            Place::Bit(..) | Place::Slice(..) => Err(bad("bit place used as an address")),
             Place::Deref(r) => self.deref_addr(r),
         }
     }
@@ -512,6 +513,14 @@ impl<'a> Emitter<'a> {
             self.emit(Op::GetBit { dst, a: v, n: *n });
             return Ok(dst);
         }
+        if let Place::Slice(b, n, elem) = place {
+            let a = self.place_addr(b)?;
+            let v = self.load(a, None)?;
+            let dst = self.dst(hint)?;
+            let shift = u8::try_from(*n).map_err(|_| bad("image bit"))?;
+            self.emit(Op::GetSlice { elem: *elem, shift, dst, a: v });
+            return Ok(dst);
+        }
         let a = self.place_addr(place)?;
         self.load(a, hint)
     }
@@ -528,6 +537,20 @@ impl<'a> Emitter<'a> {
                 let t = self.alloc(1)?;
                 let cur = self.load(a, Some(t))?;
                 self.emit(Op::SetBit { elem: *elem, n, dst: cur, v });
+                self.store(a, cur);
+            }
+            return Ok(());
+        }
+        if let Place::Slice(b, n, elem) = place {
+            let a = self.place_addr(b)?;
+            let a = self.settle(a)?;
+            let shift = u8::try_from(*n).map_err(|_| bad("image bit"))?;
+            if let Addr::Frame(o) = a {
+                self.emit(Op::SetSlice { elem: *elem, shift, dst: o, v });
+            } else {
+                let t = self.alloc(1)?;
+                let cur = self.load(a, Some(t))?;
+                self.emit(Op::SetSlice { elem: *elem, shift, dst: cur, v });
                 self.store(a, cur);
             }
             return Ok(());

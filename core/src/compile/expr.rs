@@ -62,7 +62,12 @@ impl Emitter<'_> {
             }
             ExprKind::ConstStr(bytes) => self.const_str(bytes, hint),
             ExprKind::Load(place) => {
-                if e.ty.is_scalar() || matches!(place, crate::semantic::ir::Place::Bit(..)) {
+                if e.ty.is_scalar()
+                    || matches!(
+                        place,
+                        crate::semantic::ir::Place::Bit(..) | crate::semantic::ir::Place::Slice(..)
+                    )
+                {
                     self.load_place(place, hint)
                 } else {
                     let a = self.place_addr(place)?;

@@ -47,7 +47,7 @@ fn writes_nothing(e: &Expr) -> bool {
 fn place_writes_nothing(place: &Place) -> bool {
     match place {
         Place::Local(_) | Place::Global(_) => true,
-        Place::Field(b, _) | Place::Bit(b, ..) => place_writes_nothing(b),
+        Place::Field(b, _) | Place::Bit(b, ..) | Place::Slice(b, ..) => place_writes_nothing(b),
         Place::Element(b, _, idx) => place_writes_nothing(b) && idx.iter().all(writes_nothing),
         Place::Deref(r) => writes_nothing(r),
     }
@@ -158,7 +158,7 @@ impl Emitter<'_> {
     fn is_pure_place(&self, place: &Place) -> bool {
         match place {
             Place::Local(_) | Place::Global(_) => true,
-            Place::Field(b, _) | Place::Bit(b, ..) => self.is_pure_place(b),
+            Place::Field(b, _) | Place::Bit(b, ..) | Place::Slice(b, ..) => self.is_pure_place(b),
             Place::Element(b, arr, idx) => {
                 let Some(def) = self.p.types.arrays.get(*arr as usize) else { return false };
                 let in_range = idx.iter().zip(&def.dims).all(|(i, &(lo, hi))| {
@@ -177,7 +177,8 @@ fn same_place(a: &Place, b: &Place) -> bool {
     match (a, b) {
         (Place::Local(x), Place::Local(y)) | (Place::Global(x), Place::Global(y)) => x == y,
         (Place::Field(p, x), Place::Field(q, y)) => x == y && same_place(p, q),
-        (Place::Bit(p, x, e), Place::Bit(q, y, f)) => x == y && e == f && same_place(p, q),
+        (Place::Bit(p, x, e), Place::Bit(q, y, f))
+        | (Place::Slice(p, x, e), Place::Slice(q, y, f)) => x == y && e == f && same_place(p, q),
         (Place::Element(p, x, i), Place::Element(q, y, j)) => {
             x == y
                 && same_place(p, q)
@@ -208,7 +209,7 @@ fn place_reads_local(place: &Place, i: u32) -> bool {
     match place {
         Place::Local(x) => *x == i,
         Place::Global(_) => false,
-        Place::Field(p, _) | Place::Bit(p, ..) => place_reads_local(p, i),
+        Place::Field(p, _) | Place::Bit(p, ..) | Place::Slice(p, ..) => place_reads_local(p, i),
         Place::Element(p, _, idx) => {
             place_reads_local(p, i) || idx.iter().any(|e| expr_reads_local(e, i))
         }

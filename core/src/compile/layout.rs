@@ -207,6 +207,8 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
         write_instance(&mut exe, p, base, q, None)?;
     }
     finish_new_pous(&mut exe, p)?;
+    init_located(&mut exe, p, &p.globals)?;
+    init_located(&mut exe, p, &p.pou(main).vars)?;
     // Variables and RETAIN ranges.
     let mut ranges = Vec::new();
     let mpou = p.pou(main);
@@ -218,11 +220,8 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
             .flatten()
             .and_then(|g| exe.lay.globals.get(g).copied());
         let addr = global.unwrap_or(exe.main_base + off);
-        exe.vars.push(VarEntry {
-            var: v.clone(),
-            slot: Slot { addr, ty: v.ty, bit: None },
-            global: false,
-        });
+        let slot = image_slot(&exe, p, v).unwrap_or(Slot { addr, ty: v.ty, bit: None });
+        exe.vars.push(VarEntry { var: v.clone(), slot, global: false });
         retain_ranges(&mut exe.lay, p, v, addr, &mut ranges)?;
     }
     // Each further PROGRAM is one variable of the main scope, named as its POU.
@@ -237,11 +236,8 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
     }
     for (i, g) in p.globals.iter().enumerate() {
         let addr = exe.lay.globals[i];
-        exe.vars.push(VarEntry {
-            var: g.clone(),
-            slot: Slot { addr, ty: g.ty, bit: None },
-            global: true,
-        });
+        let slot = image_slot(&exe, p, g).unwrap_or(Slot { addr, ty: g.ty, bit: None });
+        exe.vars.push(VarEntry { var: g.clone(), slot, global: true });
         retain_ranges(&mut exe.lay, p, g, addr, &mut ranges)?;
     }
     crate::order::sort(&mut ranges);
@@ -256,6 +252,38 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
     let kinds: Vec<PouKind> = p.pous.iter().map(|q| q.kind).collect();
     super::trust::mark_trusted(&mut exe, &kinds);
     Ok(exe)
+}
+
+/// The slot of a located variable in the process image (`semantic::image`), when it
+/// has one there.
+fn image_slot(exe: &Executable, p: &Program, v: &Var) -> Option<Slot> {
+    let loc = v.location.as_ref()?;
+    let Type::Elem(_) = v.ty else { return None };
+    let (cell, shift) = crate::semantic::image_spot(loc)?;
+    let name = crate::semantic::image_name(loc.area);
+    let g = p.globals.iter().position(|g| g.name == name)?;
+    let base = *exe.lay.globals.get(g)?;
+    Some(Slot { addr: base + cell, ty: v.ty, bit: Some((shift, crate::semantic::Elem::LWord)) })
+}
+
+/// Writes the initial values of the located variables of POU `q`'s instance and the
+/// globals into the process image, where their code reads them.
+fn init_located(exe: &mut Executable, p: &Program, vars: &[Var]) -> Result<(), CompileError> {
+    for v in vars {
+        let (Some(slot), Some(InitValue::Scalar(bits))) = (image_slot(exe, p, v), v.init.as_ref())
+        else {
+            continue;
+        };
+        let cell = exe.out.init.get_mut(slot.addr as usize).ok_or_else(|| bad("image cell"))?;
+        if let (Some((n, _)), Some(e)) = (slot.bit, v.ty.elem()) {
+            *cell = if e == crate::semantic::Elem::Bool {
+                crate::values::arith::set_bit(crate::semantic::Elem::LWord, *cell, n, *bits != 0)
+            } else {
+                crate::values::arith::set_slice(*cell, n, e, *bits)
+            };
+        }
+    }
+    Ok(())
 }
 
 /// Allocates frames for newly laid-out functions and compiles every laid-out POU whose

@@ -113,7 +113,7 @@ impl Emitter<'_> {
 
     fn assign(&mut self, place: &Place, e: &Expr) -> Result<(), CompileError> {
         let ty = self.place_type(place)?;
-        if let Place::Bit(..) = place {
+        if let Place::Bit(..) | Place::Slice(..) = place {
             let v = self.expr(e, None)?;
             return self.store_place(place, v);
         }

@@ -85,7 +85,12 @@ pub(crate) fn locate(exe: &Executable, path: &str) -> Option<Slot> {
                             .find(|e| e.global && e.var.name.eq_ignore_ascii_case(n))?
                             .slot
                     }
-                    _ => Slot { addr: slot.addr + code.offsets.get(i)?, ty: v.ty, bit: None },
+                    _ => match image_slot(exe, v) {
+                        Some(s) => s,
+                        None => {
+                            Slot { addr: slot.addr + code.offsets.get(i)?, ty: v.ty, bit: None }
+                        }
+                    },
                 }
             }
             (Step::Bit(n), Type::Elem(e)) if e.is_integral() && n < e.bits() => {
@@ -126,5 +131,19 @@ pub(crate) fn element_size(exe: &Executable, ty: Type) -> Option<u32> {
         Type::Struct(s) => *exe.lay.cached_struct(s)?.last()?,
         Type::Fb(q) => exe.pous.get(q as usize)?.size,
         Type::Void => 0,
+    })
+}
+
+/// The slot of a located member in the process image (`semantic::image`), if it has one.
+fn image_slot(exe: &Executable, v: &crate::semantic::ir::Var) -> Option<Slot> {
+    let loc = v.location.as_ref()?;
+    let Type::Elem(_) = v.ty else { return None };
+    let (cell, shift) = crate::semantic::image_spot(loc)?;
+    let name = crate::semantic::image_name(loc.area);
+    let image = exe.vars.iter().find(|e| e.global && e.var.name == name)?;
+    Some(Slot {
+        addr: image.slot.addr + cell,
+        ty: v.ty,
+        bit: Some((shift, crate::semantic::Elem::LWord)),
     })
 }

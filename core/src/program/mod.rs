@@ -27,7 +27,9 @@ pub struct Slot {
     pub addr: u32,
     /// The type of the value at this slot (BOOL for a bit).
     pub ty: Type,
-    /// For a bit access: the bit number and the type of the cell holding it.
+    /// For a bit access: the bit number and the type of the cell holding it; for a
+    /// located variable of a wider type (in the process image, `semantic::image`): its
+    /// first bit in the image cell, with `Elem::LWord`.
     pub bit: Option<(u32, Elem)>,
 }
 

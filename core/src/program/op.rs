@@ -299,6 +299,29 @@ pub enum Op {
         /// The BOOL.
         v: Reg,
     },
+    /// `dst := the elem stored from bit shift of the image cell a` (a located variable
+    /// in the process image; see `arith::get_slice`).
+    GetSlice {
+        /// Type of the value.
+        elem: Elem,
+        /// Its first bit in the cell.
+        shift: u8,
+        /// Destination.
+        dst: Reg,
+        /// The image cell.
+        a: Reg,
+    },
+    /// `dst := the image cell dst with the elem in v stored from bit shift`.
+    SetSlice {
+        /// Type of the value.
+        elem: Elem,
+        /// Its first bit in the cell.
+        shift: u8,
+        /// In/out: the image cell.
+        dst: Reg,
+        /// The value.
+        v: Reg,
+    },
     /// Reads a system variable.
     Sys {
         /// Which.
@@ -607,6 +630,8 @@ macro_rules! outer_loop_ops {
             | $crate::program::op::Op::Conv { .. }
             | $crate::program::op::Op::Trunc { .. }
             | $crate::program::op::Op::SetBit { .. }
+            | $crate::program::op::Op::GetSlice { .. }
+            | $crate::program::op::Op::SetSlice { .. }
             | $crate::program::op::Op::Sys { .. }
             | $crate::program::op::Op::ForStart { .. }
             | $crate::program::op::Op::ForTest { .. }

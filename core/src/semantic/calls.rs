@@ -1,7 +1,7 @@
 //! Calls of functions and function block instances: binding formal and informal arguments.
 
 use super::check::Checker;
-use super::ir::{CallArg, Expr, ExprKind, StmtKind};
+use super::ir::{CallArg, Expr, ExprKind, Place, StmtKind};
 use super::types::{PouId, Type};
 use crate::diagnostics::{Code, Span};
 use crate::syntax::{self as ast, PouKind, VarSection};
@@ -254,6 +254,15 @@ impl<'a> Checker<'a> {
                     ok = false;
                     continue;
                 };
+                if matches!(place, Place::Bit(..) | Place::Slice(..)) {
+                    let msg = format!(
+                        "`{}` is VAR_IN_OUT: a bit or a located variable (a part of the process image) has no cell of its own to pass; copy it to a variable",
+                        param.name
+                    );
+                    self.error(Code::InOutNotVariable, value_expr.span, msg);
+                    ok = false;
+                    continue;
+                }
                 if ty != param.ty || (negated && !ty.is_bool()) {
                     let msg = format!(
                         "output `{}` is {} but `{}` is {}",
@@ -289,6 +298,15 @@ impl<'a> Checker<'a> {
                     ok = false;
                     continue;
                 };
+                if matches!(place, Place::Bit(..) | Place::Slice(..)) {
+                    let msg = format!(
+                        "`{}` is VAR_IN_OUT: a bit or a located variable (a part of the process image) has no cell of its own to pass; copy it to a variable",
+                        param.name
+                    );
+                    self.error(Code::InOutNotVariable, value_expr.span, msg);
+                    ok = false;
+                    continue;
+                }
                 if ty != param.ty
                     && !matches!((ty, param.ty), (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b)
                 {

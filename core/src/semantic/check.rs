@@ -275,6 +275,7 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
     for i in blocks.into_iter().chain(programs) {
         checker.declare_pou_vars(i as PouId);
     }
+    checker.place_located_vars();
     for i in 0..checker.pous.len() {
         checker.check_body(i as PouId);
     }

@@ -493,20 +493,19 @@ impl<'a> Checker<'a> {
             }
             if var.section == VarSection::External {
                 if let Some(&g) = self.global_index.get(&key) {
-                    return Some(NameRef::Var {
-                        place: Place::Global(g),
-                        var: Box::new(self.globals[g as usize].clone()),
-                    });
+                    let var = self.globals[g as usize].clone();
+                    let place = self.image_place(&var).unwrap_or(Place::Global(g));
+                    return Some(NameRef::Var { place, var: Box::new(var) });
                 }
                 return None;
             }
-            return Some(NameRef::Var { place: Place::Local(i), var: Box::new(var) });
+            let place = self.image_place(&var).unwrap_or(Place::Local(i));
+            return Some(NameRef::Var { place, var: Box::new(var) });
         }
         if let Some(&g) = self.global_index.get(&key) {
-            return Some(NameRef::Var {
-                place: Place::Global(g),
-                var: Box::new(self.globals[g as usize].clone()),
-            });
+            let var = self.globals[g as usize].clone();
+            let place = self.image_place(&var).unwrap_or(Place::Global(g));
+            return Some(NameRef::Var { place, var: Box::new(var) });
         }
         if let Some(Type::Enum(eid)) = expected {
             if let Some((_, v)) = self.types.enums[eid as usize]
@@ -778,11 +777,13 @@ impl<'a> Checker<'a> {
         let located = |v: &Var| v.location.as_ref().is_some_and(|l| normalize_address(l) == text);
         if let Some(p) = self.pous.get(self.body.pou as usize) {
             if let Some(i) = p.vars.iter().position(located) {
-                return (Place::Local(i as u32), p.vars[i].ty);
+                let var = p.vars[i].clone();
+                return (self.image_place(&var).unwrap_or(Place::Local(i as u32)), var.ty);
             }
         }
         if let Some(g) = self.globals.iter().position(|v| located(v) || v.name == text) {
-            return (Place::Global(g as u32), self.globals[g].ty);
+            let var = self.globals[g].clone();
+            return (self.image_place(&var).unwrap_or(Place::Global(g as u32)), var.ty);
         }
         let elem = match addr.size {
             AddressSize::Bit => Elem::Bool,
@@ -793,7 +794,7 @@ impl<'a> Checker<'a> {
         };
         let g = self.globals.len() as u32;
         self.global_index.insert(text.clone(), g);
-        self.globals.push(Var {
+        let var = Var {
             name: text,
             ty: Type::Elem(elem),
             section: VarSection::Global,
@@ -804,8 +805,9 @@ impl<'a> Checker<'a> {
             range: None,
             comment: None,
             span: addr.span,
-        });
-        (Place::Global(g), Type::Elem(elem))
+        };
+        self.globals.push(var.clone());
+        (self.image_place(&var).unwrap_or(Place::Global(g)), Type::Elem(elem))
     }
 
     fn unary(

@@ -260,6 +260,9 @@ pub enum Place {
     Element(Box<Place>, ArrayId, Vec<Expr>),
     /// Bit `n` of an integral value of type `Elem`.
     Bit(Box<Place>, u32, Elem),
+    /// A located variable of type `Elem` in the process image: the raw bits of its value
+    /// from bit `n` of the image cell (an LWORD) at the place.
+    Slice(Box<Place>, u32, Elem),
     /// `r^`: the variable the reference `r` (an expression of a `REF_TO` type) points to;
     /// a NULL reference faults when the place is reached.
     Deref(Box<Expr>),

@@ -12,6 +12,7 @@ mod config;
 mod consts;
 mod decl;
 mod expr;
+mod image;
 pub mod ir;
 mod nesting;
 mod prelude;
@@ -20,6 +21,7 @@ mod stmt;
 pub mod types;
 
 pub use builtins::is_builtin;
+pub use image::{image_name, image_spot, is_image_name};
 pub use ir::{BinOp, Builtin, CallArg, Expr, ExprKind, InitValue, Place, Program, SysVar, UnOp};
 pub use types::{Elem, PouId, Type, TypeTable};
 

@@ -79,6 +79,7 @@ impl Checker<'_> {
         let (place, ty) = self.place(arg, true)?;
         let refused = match &place {
             Place::Bit(..) => Some("a single bit has no address of its own"),
+            Place::Slice(..) => Some("a located variable lives in the process image, which has no address of a value's own"),
             _ if self.place_range(&place).is_some() => {
                 Some("a write through the reference would skip the subrange check")
             }

@@ -178,7 +178,7 @@ impl<'a> Checker<'a> {
         match place {
             Place::Local(i) => self.pous.get(self.body.pou as usize)?.vars.get(*i as usize)?.range,
             Place::Global(i) => self.globals.get(*i as usize)?.range,
-            Place::Field(_, _) | Place::Bit(..) | Place::Deref(_) => None,
+            Place::Field(_, _) | Place::Bit(..) | Place::Slice(..) | Place::Deref(_) => None,
             Place::Element(_, id, _) => self.types.arrays.get(*id as usize)?.element_range,
         }
     }

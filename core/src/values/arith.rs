@@ -316,6 +316,40 @@ pub fn set_bit(elem: Elem, a: u64, n: u32, value: bool) -> u64 {
     norm(elem, r as i64 as i128)
 }
 
+/// Reads a value of type `elem` stored as its raw bits (its width, from bit `shift`) in
+/// a 64-bit cell of the process image (a located variable): integers sign- or
+/// zero-extended as their cells are, REAL from its 32 IEEE bits.
+pub fn get_slice(cell: u64, shift: u32, elem: Elem) -> u64 {
+    let width = elem.bits().min(64);
+    let raw = if width >= 64 { cell } else { (cell >> shift.min(63)) & ((1u64 << width) - 1) };
+    match elem {
+        Elem::Real => f64::from(f32::from_bits(raw as u32)).to_bits(),
+        Elem::LReal => raw,
+        _ if elem.is_zero_extended() || width >= 64 => norm(elem, raw as i128),
+        _ => {
+            // Sign-extend from the value's width.
+            let up = 64 - width;
+            norm(elem, i128::from(((raw << up) as i64) >> up))
+        }
+    }
+}
+
+/// Writes the value `v` (a cell of type `elem`) as its raw bits into a 64-bit image cell
+/// from bit `shift` (see [`get_slice`]); the other bits keep their values.
+pub fn set_slice(cell: u64, shift: u32, elem: Elem, v: u64) -> u64 {
+    let width = elem.bits().min(64);
+    let raw = match elem {
+        Elem::Real => u64::from((f64::from_bits(v) as f32).to_bits()),
+        _ => v,
+    };
+    if width >= 64 {
+        return raw;
+    }
+    let shift = shift.min(64 - width);
+    let mask = ((1u64 << width) - 1) << shift;
+    (cell & !mask) | ((raw << shift) & mask)
+}
+
 /// True when converting `from` to `to` leaves a cell's bits unchanged (see the cell
 /// encoding above): signed values are kept sign-extended and unsigned values and
 /// bit strings zero-extended, so widening within those families is free.

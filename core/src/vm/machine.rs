@@ -267,6 +267,12 @@ impl Machine {
                 Op::SetBit { elem, n, dst, v } => {
                     w!(dst, arith::set_bit(elem, r!(dst), u32::from(n), r!(v) != 0))
                 }
+                Op::GetSlice { elem, shift, dst, a } => {
+                    w!(dst, arith::get_slice(r!(a), u32::from(shift), elem))
+                }
+                Op::SetSlice { elem, shift, dst, v } => {
+                    w!(dst, arith::set_slice(r!(dst), u32::from(shift), elem, r!(v)))
+                }
                 Op::Sys { var, dst } => w!(dst, sys_var(var, sys)),
                 Op::Deref { dst, a } => {
                     let addr = r!(a).checked_sub(1).ok_or(Fault::NullReference)?;

@@ -82,6 +82,11 @@ impl Value {
 pub fn read(mem: &Memory, exe: &Executable, slot: &Slot) -> Value {
     let cell = |a: u32| mem.cells.get(a as usize).copied().unwrap_or(0);
     if let Some((n, _)) = slot.bit {
+        // A located variable wider than a bit: its raw bits in the process image.
+        if let Some(e) = slot.ty.elem().filter(|&e| e != Elem::Bool) {
+            let bits = arith::get_slice(cell(slot.addr), n, e);
+            return Value::from_bits(slot.ty, bits, &exe.type_table);
+        }
         return Value::Bool(arith::get_bit(cell(slot.addr), n) != 0);
     }
     read_at(mem, exe, slot.addr, slot.ty)
@@ -213,6 +218,15 @@ pub fn write(
 ) -> Result<(), WriteError> {
     let mismatch =
         || WriteError::TypeMismatch { expected: exe.type_table.display(slot.ty).to_string() };
+    if let (Some((n, _)), Some(e)) = (slot.bit, slot.ty.elem().filter(|&e| e != Elem::Bool)) {
+        // A located variable wider than a bit: its raw bits in the process image.
+        let mut one = Memory { cells: vec![0] };
+        write_at(&mut one, exe, 0, slot.ty, value)?;
+        let cur = mem.get(slot.addr as usize).map_err(|_| WriteError::BadAddress)?;
+        return mem
+            .set(slot.addr as usize, arith::set_slice(cur, n, e, one.cells[0]))
+            .map_err(|_| WriteError::BadAddress);
+    }
     if let Some((n, e)) = slot.bit {
         let b = match value {
             Value::Bool(b) => *b,
@@ -313,9 +327,11 @@ pub fn write_init(
 ) -> Result<(), WriteError> {
     if let (Some((n, e)), InitValue::Scalar(b)) = (slot.bit, init) {
         let cur = mem.get(slot.addr as usize).map_err(|_| WriteError::BadAddress)?;
-        return mem
-            .set(slot.addr as usize, arith::set_bit(e, cur, n, *b != 0))
-            .map_err(|_| WriteError::BadAddress);
+        let new = match slot.ty.elem().filter(|&t| t != Elem::Bool) {
+            Some(t) => arith::set_slice(cur, n, t, *b),
+            None => arith::set_bit(e, cur, n, *b != 0),
+        };
+        return mem.set(slot.addr as usize, new).map_err(|_| WriteError::BadAddress);
     }
     init_at(mem, exe, slot.addr, slot.ty, init)
 }
