@@ -199,6 +199,7 @@ problem_codes! {
     NotAProgramType = "E0622": "a program instance whose type is not a PROGRAM",
     BadTaskSetting = "E0623": "a task INTERVAL that is not a constant TIME above zero, a PRIORITY that is not a constant 0 to 9999, or a SINGLE that is not a BOOL variable",
     BadProgramConnection = "E0624": "a program connection naming no input or output of the program, or a variable of another type",
+    BadConfigVar = "E0625": "a VAR_CONFIG entry whose path names no variable declared at an incomplete address (`%Q*`), or whose address or type does not match it",
 
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",

@@ -136,14 +136,23 @@ pub(crate) fn element_size(exe: &Executable, ty: Type) -> Option<u32> {
 
 /// The slot of a located member in the process image (`semantic::image`), if it has one.
 fn image_slot(exe: &Executable, v: &crate::semantic::ir::Var) -> Option<Slot> {
-    let loc = v.location.as_ref()?;
-    let Type::Elem(_) = v.ty else { return None };
+    image_slot_at(exe, v.location.as_ref()?, v.ty)
+}
+
+/// The slot of a value of type `ty` at address `loc` of the process image, if the address
+/// is in the image.
+pub(crate) fn image_slot_at(
+    exe: &Executable,
+    loc: &crate::syntax::DirectAddress,
+    ty: Type,
+) -> Option<Slot> {
+    let Type::Elem(_) = ty else { return None };
     let (cell, shift) = crate::semantic::image_spot(loc)?;
     let name = crate::semantic::image_name(loc.area);
     let image = exe.vars.iter().find(|e| e.global && e.var.name == name)?;
     Some(Slot {
         addr: image.slot.addr + cell,
-        ty: v.ty,
+        ty,
         bit: Some((shift, crate::semantic::Elem::LWord)),
     })
 }

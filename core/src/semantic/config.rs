@@ -107,7 +107,8 @@ impl Checker<'_> {
             library: false,
             span: c.span,
         });
-        ir::Configuration { name: c.name.name.clone(), pou, tasks, instances, span: c.span }
+        let io = c.var_config.iter().filter_map(|v| self.config_var(v, &instances)).collect();
+        ir::Configuration { name: c.name.name.clone(), pou, tasks, instances, io, span: c.span }
     }
 
     /// Reports `name` when a task or program instance of the configuration has it already.
@@ -270,6 +271,71 @@ impl Checker<'_> {
                 self.error(Code::BadProgramConnection, conn.variable.span, msg);
             }
         }
+    }
+}
+
+impl Checker<'_> {
+    /// Checks a `VAR_CONFIG` entry: its path from a program instance to a variable
+    /// declared at an incomplete address of the same area and size, and its type.
+    fn config_var(
+        &mut self,
+        v: &ast::ConfigVar,
+        instances: &[ir::ProgramInstance],
+    ) -> Option<(String, crate::syntax::DirectAddress)> {
+        let fail = |c: &mut Self, span, msg: String| {
+            c.error(Code::BadConfigVar, span, msg);
+            None
+        };
+        let (first, rest) = v.path.split_first()?;
+        let Some(inst) = instances.iter().find(|i| i.name.eq_ignore_ascii_case(&first.name)) else {
+            return fail(
+                self,
+                first.span,
+                format!("`{}` is no program instance of the configuration", first.name),
+            );
+        };
+        let mut pou = inst.pou;
+        let mut found = None;
+        for (k, name) in rest.iter().enumerate() {
+            let vars = &self.pous[pou as usize].vars;
+            let Some(var) = vars.iter().find(|x| x.name.eq_ignore_ascii_case(&name.name)).cloned()
+            else {
+                let owner = self.pous[pou as usize].name.clone();
+                return fail(self, name.span, format!("`{owner}` has no `{}`", name.name));
+            };
+            if k + 1 < rest.len() {
+                let Type::Fb(q) = var.ty else {
+                    return fail(
+                        self,
+                        name.span,
+                        format!("`{}` is no function block instance", name.name),
+                    );
+                };
+                pou = q;
+            } else {
+                found = Some(var);
+            }
+        }
+        let var = found?;
+        let incomplete = var.location.as_ref().filter(|l| l.path.is_empty());
+        let Some(decl) = incomplete else {
+            return fail(self, v.span, format!("`{}` is not declared at an incomplete address (`AT %Q*`), so it has none to complete", var.name));
+        };
+        let ty = self.resolve_type(&v.ty, &var.name).map(|r| r.ty);
+        if decl.area != v.location.area
+            || decl.size != v.location.size
+            || ty != Some(var.ty)
+            || v.location.path.is_empty()
+        {
+            return fail(self, v.location.span, format!(
+                "`{}` is declared `AT {} : {}`: give it a complete address of that area and size, and its type",
+                var.name, decl.text, self.tname(var.ty)
+            ));
+        }
+        // The image holds the completed address.
+        self.image_place(&Var { location: Some(v.location.clone()), ..var.clone() });
+        let path: Vec<&str> = v.path.iter().map(|i| i.name.as_str()).collect();
+        Some((path.join("."), v.location.clone()))
     }
 }
 

@@ -36,6 +36,10 @@ pub struct Configuration {
     pub tasks: Vec<Task>,
     /// Every program instance, in source order (as `pou`'s variables).
     pub instances: Vec<ProgramInstance>,
+    /// The `VAR_CONFIG` entries: `(instance path, complete address)` of variables declared
+    /// at an incomplete address, copied from the image before the tasks run (`%I`) or to
+    /// it after (`%Q`, `%M`).
+    pub io: Vec<(String, crate::syntax::DirectAddress)>,
     /// The whole CONFIGURATION block.
     pub span: Span,
 }

@@ -14,7 +14,10 @@
 //! - a task with neither runs on every tick.
 //!
 //! Each instance's input connections are copied in from their globals before it runs, and
-//! its output connections copied out after.
+//! its output connections copied out after. Variables that `VAR_CONFIG` gives an address
+//! (declared at `%I*`, `%Q*`, `%M*`) keep their own cells: inputs are copied from the
+//! process image when the tick starts, outputs and memory to it when the tick ends, as a
+//! PLC's I/O mapping does.
 
 use super::{copy_links, Simulator};
 use crate::compile::{Executable, Slot};
@@ -31,6 +34,10 @@ pub(super) struct Schedule {
     instances: Vec<InstanceRun>,
     /// The tasks in the order they run when due together.
     order: Vec<usize>,
+    /// `VAR_CONFIG`: (image slot, variable slot) of inputs, copied before the tasks run.
+    inputs: Vec<(Slot, Slot)>,
+    /// (variable slot, image slot) of outputs and memory, copied after.
+    outputs: Vec<(Slot, Slot)>,
 }
 
 #[derive(Debug, Clone)]
@@ -94,7 +101,18 @@ impl Schedule {
         }
         let mut order: Vec<usize> = (0..tasks.len()).collect();
         order.sort_by_key(|&k| (config.tasks[k].priority, k));
-        Ok(Some(Schedule { tasks, instances, order }))
+        let (mut inputs, mut outputs) = (Vec::new(), Vec::new());
+        for (path, loc) in &config.io {
+            let var = locate(path)?;
+            let image = crate::program::locate::image_slot_at(exe, loc, var.ty)
+                .ok_or_else(|| missing(&loc.text))?;
+            if loc.area == crate::syntax::AddressArea::Input {
+                inputs.push((image, var));
+            } else {
+                outputs.push((var, image));
+            }
+        }
+        Ok(Some(Schedule { tasks, instances, order, inputs, outputs }))
     }
 
     /// Back to power-on: every task due on the first tick, no edge seen.
@@ -142,12 +160,14 @@ impl Simulator {
     /// Runs the configuration's due tasks, then its instances without a task.
     pub(super) fn run_tasks(&mut self, sys: SysState) -> Result<(), RuntimeError> {
         let Some(mut schedule) = self.schedule.take() else { return Ok(()) };
+        copy_links(self.machine.memory_mut(), &self.exe, &schedule.inputs);
         let due = schedule.due(&self.machine, &self.exe, sys.time_ns);
         let result = due
             .iter()
             .map(|&k| Some(k))
             .chain(std::iter::once(None))
             .try_for_each(|task| self.run_task_instances(&schedule, task, sys));
+        copy_links(self.machine.memory_mut(), &self.exe, &schedule.outputs);
         self.schedule = Some(schedule);
         result
     }

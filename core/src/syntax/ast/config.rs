@@ -2,7 +2,7 @@
 //! variables and RESOURCEs; a resource declares TASKs and the PROGRAM instances run under
 //! them. Data only, like the rest of the AST.
 
-use super::{Expr, Ident, VarBlock};
+use super::{DirectAddress, Expr, Ident, TypeRef, VarBlock};
 use crate::diagnostics::Span;
 
 /// `CONFIGURATION name … END_CONFIGURATION`.
@@ -15,6 +15,8 @@ pub struct Configuration {
     /// Its resources; a configuration written without `RESOURCE` (tasks and programs
     /// straight inside it) has one resource named like the configuration.
     pub resources: Vec<Resource>,
+    /// Its `VAR_CONFIG` entries: incomplete addresses (`%Q*`) of instances completed.
+    pub var_config: Vec<ConfigVar>,
     /// The whole block.
     pub span: Span,
 }
@@ -85,4 +87,18 @@ pub struct Connection {
     pub variable: Expr,
     /// The whole connection.
     pub span: Span,
+}
+
+/// One `VAR_CONFIG` entry: `Main1.Valve.Out AT %QX0.3 : BOOL;` gives the variable at the
+/// instance path, declared at an incomplete address (`AT %Q* : BOOL`), its address.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConfigVar {
+    /// The instance path: a program instance, then instance and variable names.
+    pub path: Vec<Ident>,
+    /// The complete address.
+    pub location: DirectAddress,
+    /// The declared type (the variable's).
+    pub ty: TypeRef,
+    /// The whole entry.
+    pub span: crate::diagnostics::Span,
 }

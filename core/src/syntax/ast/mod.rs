@@ -9,7 +9,7 @@ mod config;
 pub(crate) mod il;
 pub(crate) mod sfc;
 
-pub use config::{Configuration, Connection, ProgramDecl, Resource, TaskDecl};
+pub use config::{ConfigVar, Configuration, Connection, ProgramDecl, Resource, TaskDecl};
 
 use crate::diagnostics::Span;
 

@@ -29,8 +29,13 @@ impl Parser<'_> {
         let name = self
             .name("the configuration's name after `CONFIGURATION`")
             .unwrap_or(Ident { name: String::new(), span: opener.span });
-        let mut config =
-            Configuration { name, globals: Vec::new(), resources: Vec::new(), span: opener.span };
+        let mut config = Configuration {
+            name,
+            globals: Vec::new(),
+            resources: Vec::new(),
+            var_config: Vec::new(),
+            span: opener.span,
+        };
         // Tasks and programs written straight inside the configuration form one resource.
         let mut single = Resource {
             name: config.name.clone(),
@@ -54,6 +59,9 @@ impl Parser<'_> {
                     }
                 }
                 TokenKind::Resource => config.resources.push(self.parse_resource()),
+                TokenKind::Ident if self.at_word("VAR_CONFIG") => {
+                    self.parse_var_config(&mut config)
+                }
                 TokenKind::Program if self.program_is_pou() => {
                     self.unclosed(opener, "END_CONFIGURATION");
                     break;
@@ -156,7 +164,7 @@ impl Parser<'_> {
             self.parse_task().map(|t| res.tasks.push(t))
         } else if self.at(TokenKind::Program) {
             self.parse_program_decl().map(|p| res.programs.push(p))
-        } else if self.at_word("VAR_ACCESS") || self.at_word("VAR_CONFIG") {
+        } else if self.at_word("VAR_ACCESS") {
             self.skip_access_block();
             Ok(())
         } else {
@@ -177,7 +185,69 @@ impl Parser<'_> {
         }
     }
 
-    /// `VAR_ACCESS … END_VAR` and `VAR_CONFIG … END_VAR`: reported and skipped.
+    /// `VAR_CONFIG path AT %… : TYPE; … END_VAR` (the cursor is on `VAR_CONFIG`); a broken
+    /// entry is reported and skipped to its `;`.
+    fn parse_var_config(&mut self, config: &mut Configuration) {
+        self.bump();
+        loop {
+            match self.peek() {
+                TokenKind::EndVar => {
+                    self.bump();
+                    return;
+                }
+                TokenKind::Eof | TokenKind::EndConfiguration | TokenKind::Resource => {
+                    let span = self.tok().span;
+                    self.error(
+                        Code::MissingEnd,
+                        span,
+                        "`VAR_CONFIG` is never closed; add `END_VAR`",
+                    );
+                    return;
+                }
+                _ => {}
+            }
+            let before = self.pos;
+            match self.config_entry() {
+                Ok(entry) => config.var_config.push(entry),
+                Err(Fail) => {
+                    while !matches!(
+                        self.peek(),
+                        TokenKind::Semicolon
+                            | TokenKind::EndVar
+                            | TokenKind::Eof
+                            | TokenKind::EndConfiguration
+                    ) {
+                        self.bump();
+                    }
+                    self.eat(TokenKind::Semicolon);
+                }
+            }
+            if self.pos == before {
+                self.bump();
+            }
+        }
+    }
+
+    /// `Main1.Valve.Out AT %QX0.3 : BOOL;`
+    fn config_entry(&mut self) -> PResult<ConfigVar> {
+        let start = self.tok().span;
+        let mut path = vec![self.name("an instance path such as `Main1.Valve.Out`")?];
+        while self.eat(TokenKind::Dot).is_some() {
+            path.push(self.name("a name after `.`")?);
+        }
+        self.expect(TokenKind::At, "`AT` and the variable's address")?;
+        let tok = self.expect(TokenKind::Direct, "an address such as `%QX0.3` after AT")?;
+        let location = self.direct_address(tok).ok_or(Fail)?;
+        self.expect(TokenKind::Colon, "`:` and the variable's type")?;
+        let ty = self.parse_type_spec()?;
+        if self.eat(TokenKind::Assign).is_some() {
+            self.parse_initializer()?;
+        }
+        self.expect(TokenKind::Semicolon, "`;` after the entry")?;
+        Ok(ConfigVar { path, location, ty, span: start.to(self.prev_span()) })
+    }
+
+    /// `VAR_ACCESS … END_VAR`: reported and skipped.
     fn skip_access_block(&mut self) {
         let opener = self.bump();
         let text = self.text(opener).to_string();
