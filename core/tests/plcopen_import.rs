@@ -363,8 +363,17 @@ fn mixing_tank_lays_out_reset_networks_as_wired_inputs() {
 /// sensor (the valve rung closes the valve through an NC contact when it uncovers).
 #[test]
 fn mixing_tank_runs_fill_mix_drain_scan_by_scan() {
-    let p = sample("ld_mixing_tank_plant.xml").project;
+    let mut p = sample("ld_mixing_tank_plant.xml").project;
     assert_eq!(p.settings.cycle_ms, 20, "the task interval T#20ms");
+    // The file puts MIXER_MOTOR and VALVE both at %Q3.0: in one process image, as on the
+    // PLC, they are one output, so running the mixer opens the valve.
+    let mut same = project_simulator(&p, None).unwrap_or_else(|e| panic!("{e:?}"));
+    same.write("MIXER_MOTOR", "TRUE").unwrap();
+    assert_eq!(same.read("VALVE").unwrap(), Value::Bool(true));
+    // The plant the rung comments describe has its own valve output: give it %Q3.1.
+    let lp = &mut p.ladder[0];
+    assert_eq!(lp.declarations.matches("VALVE AT %Q3.0").count(), 1);
+    lp.declarations = lp.declarations.replace("VALVE AT %Q3.0", "VALVE AT %Q3.1");
     let mut s = project_simulator(&p, None).unwrap_or_else(|e| panic!("{e:?}"));
     s.set_cycle_ns(20_000_000);
     let set = |s: &mut plc_core::sim::Simulator, v: &str, on: bool| {
