@@ -525,38 +525,31 @@ impl<'a> Emitter<'a> {
         self.load(a, hint)
     }
 
-    /// Writes the scalar in `v` to a place (bits by read-modify-write).
+    /// Writes the scalar in `v` to a place (bits and image slices by read-modify-write).
     pub fn store_place(&mut self, place: &Place, v: Reg) -> Result<(), CompileError> {
-        if let Place::Bit(b, n, elem) = place {
-            let a = self.place_addr(b)?;
-            let a = self.settle(a)?;
-            let n = u8::try_from(*n).map_err(|_| bad("bit number"))?;
-            if let Addr::Frame(o) = a {
-                self.emit(Op::SetBit { elem: *elem, n, dst: o, v });
-            } else {
-                let t = self.alloc(1)?;
-                let cur = self.load(a, Some(t))?;
-                self.emit(Op::SetBit { elem: *elem, n, dst: cur, v });
-                self.store(a, cur);
+        type SetOp = fn(u8, Elem, Reg, Reg) -> Op;
+        let (b, n, elem, op): (&Place, &u32, &Elem, SetOp) = match place {
+            Place::Bit(b, n, e) => (b, n, e, |n, elem, dst, v| Op::SetBit { elem, n, dst, v }),
+            Place::Slice(b, n, e) => {
+                (b, n, e, |shift, elem, dst, v| Op::SetSlice { elem, shift, dst, v })
             }
-            return Ok(());
-        }
-        if let Place::Slice(b, n, elem) = place {
-            let a = self.place_addr(b)?;
-            let a = self.settle(a)?;
-            let shift = u8::try_from(*n).map_err(|_| bad("image bit"))?;
-            if let Addr::Frame(o) = a {
-                self.emit(Op::SetSlice { elem: *elem, shift, dst: o, v });
-            } else {
-                let t = self.alloc(1)?;
-                let cur = self.load(a, Some(t))?;
-                self.emit(Op::SetSlice { elem: *elem, shift, dst: cur, v });
-                self.store(a, cur);
+            _ => {
+                let a = self.place_addr(place)?;
+                self.store(a, v);
+                return Ok(());
             }
-            return Ok(());
+        };
+        let n = u8::try_from(*n).map_err(|_| bad("bit number"))?;
+        let a = self.place_addr(b)?;
+        let a = self.settle(a)?;
+        if let Addr::Frame(o) = a {
+            self.emit(op(n, *elem, o, v));
+        } else {
+            let t = self.alloc(1)?;
+            let cur = self.load(a, Some(t))?;
+            self.emit(op(n, *elem, cur, v));
+            self.store(a, cur);
         }
-        let a = self.place_addr(place)?;
-        self.store(a, v);
         Ok(())
     }
 
