@@ -257,17 +257,16 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
 /// The slot of a located variable in the process image (`semantic::image`), when it
 /// has one there.
 fn image_slot(exe: &Executable, p: &Program, v: &Var) -> Option<Slot> {
-    let loc = v.location.as_ref()?;
-    let Type::Elem(_) = v.ty else { return None };
-    let (cell, shift) = crate::semantic::image_spot(loc)?;
-    let name = crate::semantic::image_name(loc.area);
-    let g = p.globals.iter().position(|g| g.name == name)?;
-    let base = *exe.lay.globals.get(g)?;
-    Some(Slot { addr: base + cell, ty: v.ty, bit: Some((shift, crate::semantic::Elem::LWord)) })
+    // The variable list is not written yet: the image's globals are found by their layout.
+    let base = |name: &str| {
+        let g = p.globals.iter().position(|g| g.name == name)?;
+        exe.lay.globals.get(g).copied()
+    };
+    crate::program::locate::image_slot_in(base, v.location.as_ref()?, v.ty)
 }
 
-/// Writes the initial values of the located variables of POU `q`'s instance and the
-/// globals into the process image, where their code reads them.
+/// Writes the initial values of the located variables among `vars` into the process
+/// image, where their code reads them.
 fn init_located(exe: &mut Executable, p: &Program, vars: &[Var]) -> Result<(), CompileError> {
     for v in vars {
         let (Some(slot), Some(InitValue::Scalar(bits))) = (image_slot(exe, p, v), v.init.as_ref())
@@ -275,12 +274,8 @@ fn init_located(exe: &mut Executable, p: &Program, vars: &[Var]) -> Result<(), C
             continue;
         };
         let cell = exe.out.init.get_mut(slot.addr as usize).ok_or_else(|| bad("image cell"))?;
-        if let (Some((n, _)), Some(e)) = (slot.bit, v.ty.elem()) {
-            *cell = if e == crate::semantic::Elem::Bool {
-                crate::values::arith::set_bit(crate::semantic::Elem::LWord, *cell, n, *bits != 0)
-            } else {
-                crate::values::arith::set_slice(*cell, n, e, *bits)
-            };
+        if let (Some((n, cell_elem)), Some(ty)) = (slot.bit, v.ty.elem()) {
+            *cell = crate::values::arith::put_at_bit(cell_elem, *cell, n, ty, *bits);
         }
     }
     Ok(())

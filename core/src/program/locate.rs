@@ -146,13 +146,20 @@ pub(crate) fn image_slot_at(
     loc: &crate::syntax::DirectAddress,
     ty: Type,
 ) -> Option<Slot> {
+    let image =
+        |name: &str| exe.vars.iter().find(|e| e.global && e.var.name == name).map(|e| e.slot.addr);
+    image_slot_in(image, loc, ty)
+}
+
+/// The slot of a value of type `ty` at address `loc` of the process image, the image of
+/// each area starting at `base(its hidden global's name)`.
+pub(crate) fn image_slot_in(
+    base: impl Fn(&str) -> Option<u32>,
+    loc: &crate::syntax::DirectAddress,
+    ty: Type,
+) -> Option<Slot> {
     let Type::Elem(_) = ty else { return None };
     let (cell, shift) = crate::semantic::image_spot(loc)?;
-    let name = crate::semantic::image_name(loc.area);
-    let image = exe.vars.iter().find(|e| e.global && e.var.name == name)?;
-    Some(Slot {
-        addr: image.slot.addr + cell,
-        ty,
-        bit: Some((shift, crate::semantic::Elem::LWord)),
-    })
+    let start = base(crate::semantic::image_name(loc.area))?;
+    Some(Slot { addr: start + cell, ty, bit: Some((shift, crate::semantic::Elem::LWord)) })
 }

@@ -332,13 +332,7 @@ impl crate::il::Typing for IlTyping {
         let diags = std::mem::take(&mut c.diags);
         match typed {
             Some(t) if !crate::diagnostics::has_errors(&diags) => Ok(match t.e.ty {
-                Type::Elem(e) => {
-                    let name = e.name();
-                    match crate::il::ELEMENTARY.iter().find(|n| **n == name) {
-                        Some(n) => ValueType::Elementary(n),
-                        None => ValueType::Other(name.to_string()),
-                    }
-                }
+                Type::Elem(e) => ValueType::Elementary(e.name()),
                 Type::Fb(_) => ValueType::Instance,
                 other => ValueType::Other(c.types.display(other).to_string()),
             }),

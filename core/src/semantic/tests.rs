@@ -231,3 +231,10 @@ fn zero_and_one_are_bool_literals_beside_a_bool() {
     assert_eq!(errors(&program("b := b = 2;")), vec![(Code::OperatorTypeMismatch, 3, 6)]);
     assert_eq!(errors(&program("b := i = 1;")), vec![], "an INT compared with 1 stays an INT");
 }
+
+#[test]
+fn il_carries_a_current_result_of_every_elementary_type() {
+    // The IL lowering (on the text floor, below the types) keeps its own list of names.
+    let names: Vec<&str> = super::Elem::ALL.iter().map(|e| e.name()).collect();
+    assert_eq!(crate::il::ELEMENTARY.to_vec(), names);
+}

@@ -350,6 +350,17 @@ pub fn set_slice(cell: u64, shift: u32, elem: Elem, v: u64) -> u64 {
     (cell & !mask) | ((raw << shift) & mask)
 }
 
+/// Writes `bits`, a value of type `ty`, at bit `n` of a cell of type `cell_elem`: the one
+/// bit of a BOOL (a bit access, or a located BOOL), or the raw bits of a wider located
+/// variable ([`set_slice`]).
+pub fn put_at_bit(cell_elem: Elem, cell: u64, n: u32, ty: Elem, bits: u64) -> u64 {
+    if ty == Elem::Bool {
+        set_bit(cell_elem, cell, n, bits != 0)
+    } else {
+        set_slice(cell, n, ty, bits)
+    }
+}
+
 /// True when converting `from` to `to` leaves a cell's bits unchanged (see the cell
 /// encoding above): signed values are kept sign-extended and unsigned values and
 /// bit strings zero-extended, so widening within those families is free.

@@ -71,6 +71,29 @@ impl Elem {
         })
     }
 
+    /// Every elementary type, in the order of the enumeration.
+    pub const ALL: [Elem; 19] = [
+        Elem::Bool,
+        Elem::SInt,
+        Elem::Int,
+        Elem::DInt,
+        Elem::LInt,
+        Elem::USInt,
+        Elem::UInt,
+        Elem::UDInt,
+        Elem::ULInt,
+        Elem::Byte,
+        Elem::Word,
+        Elem::DWord,
+        Elem::LWord,
+        Elem::Real,
+        Elem::LReal,
+        Elem::Time,
+        Elem::Date,
+        Elem::Tod,
+        Elem::Dt,
+    ];
+
     /// The canonical name.
     pub fn name(self) -> &'static str {
         match self {

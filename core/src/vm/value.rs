@@ -327,10 +327,7 @@ pub fn write_init(
 ) -> Result<(), WriteError> {
     if let (Some((n, e)), InitValue::Scalar(b)) = (slot.bit, init) {
         let cur = mem.get(slot.addr as usize).map_err(|_| WriteError::BadAddress)?;
-        let new = match slot.ty.elem().filter(|&t| t != Elem::Bool) {
-            Some(t) => arith::set_slice(cur, n, t, *b),
-            None => arith::set_bit(e, cur, n, *b != 0),
-        };
+        let new = arith::put_at_bit(e, cur, n, slot.ty.elem().unwrap_or(Elem::Bool), *b);
         return mem.set(slot.addr as usize, new).map_err(|_| WriteError::BadAddress);
     }
     init_at(mem, exe, slot.addr, slot.ty, init)
