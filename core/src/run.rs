@@ -83,12 +83,17 @@ pub struct DiagnosticReport {
     pub line: u32,
     /// 1-based column.
     pub column: u32,
+    /// The declared name an unknown one probably misspells (the message ends with `did you
+    /// mean NAME?`); absent when there is none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub suggestion: Option<String>,
 }
 
 impl DiagnosticReport {
     /// A diagnostic at a line and column (0, 0: the file as a whole).
     pub fn new(severity: Severity, code: Code, message: String, line: u32, column: u32) -> Self {
-        DiagnosticReport { severity, code: code.as_str().to_string(), message, line, column }
+        let code = code.as_str().to_string();
+        DiagnosticReport { severity, code, message, line, column, suggestion: None }
     }
 }
 
@@ -140,6 +145,7 @@ fn diagnostic_report(index: &LineIndex<'_>, d: &Diagnostic) -> DiagnosticReport 
         message: d.message.clone(),
         line: loc.line,
         column: loc.column,
+        suggestion: d.suggestion.clone(),
     }
 }
 
@@ -268,6 +274,7 @@ fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticRep
         message,
         line,
         column,
+        suggestion: d.suggestion.clone(),
     }
 }
 

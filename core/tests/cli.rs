@@ -304,7 +304,7 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
         lines[2]
     );
     assert!(
-        lines[3].contains("c-broken.st,0,3,0,0,\"the program does not build: line 10, column 35: `Stopp` is not declared [E0100]\""),
+        lines[3].contains("c-broken.st,0,3,0,0,\"the program does not build: line 10, column 35: `Stopp` is not declared; did you mean Stop? [E0100]\""),
         "{}",
         lines[3]
     );

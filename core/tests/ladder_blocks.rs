@@ -375,3 +375,44 @@ fn run_project_reports_unknown_user_blocks_at_the_cell() {
     assert_eq!(d.code, "E0405");
     assert!(d.message.starts_with("POU Main, rung 1, row 1, column 2: `Adder`"), "{}", d.message);
 }
+
+/// An undeclared operand one edit from a declared variable says which one it probably
+/// means, in the message and as the fix's data; the POU's own variables come first.
+#[test]
+fn an_undeclared_operand_gets_did_you_mean() {
+    let p = pou(
+        "VAR_INPUT Start, Stop : BOOL; END_VAR VAR_OUTPUT Motor : BOOL; END_VAR",
+        vec![rung(&["[Start] [/Stpo] (Motr)"]), rung(&["[Pressure] (Motor)"])],
+    );
+    let catalog = project_with("", p.clone()).catalog();
+    let found: Vec<(usize, usize, String, Option<String>)> = validate_with(&p, &catalog)
+        .into_iter()
+        .filter(|d| d.code == Code::LadderUndeclaredOperand)
+        .map(|d| (d.rung, d.column, d.message, d.suggestion))
+        .collect();
+    assert_eq!(
+        found,
+        vec![
+            (
+                0,
+                1,
+                "this contact's operand `Stpo` is not declared; did you mean Stop?".into(),
+                Some("Stop".into())
+            ),
+            (
+                0,
+                2,
+                "this coil's operand `Motr` is not declared; did you mean Motor?".into(),
+                Some("Motor".into())
+            ),
+            (1, 0, "this contact's operand `Pressure` is not declared".into(), None),
+        ]
+    );
+    // A block pin's operand too.
+    let mut b1 = Block::new("TON", Some("T1"));
+    b1.inputs = vec![Pin::operand("PT", "Dealy")];
+    let p = one_block("VAR Run, Lamp : BOOL; T1 : TON; Delay : TIME; END_VAR", b1, &[]);
+    let catalog = project_with("", p.clone()).catalog();
+    let d = validate_with(&p, &catalog);
+    assert!(d.iter().any(|d| d.suggestion.as_deref() == Some("Delay")), "{d:?}");
+}

@@ -164,3 +164,23 @@ fn the_program_chosen_in_the_settings_runs_unless_the_options_name_another() {
     assert_eq!(report.status, RunStatus::Ok, "{report:?}");
     assert!(report.vars.contains_key("k"));
 }
+
+#[test]
+fn a_misspelled_name_in_a_guard_gets_did_you_mean_at_the_transition() {
+    let mut project = looping("", "NOT Stopp");
+    project.petri[0].declarations.insert_str(0, "VAR_INPUT\n    Stop : BOOL;\nEND_VAR\n");
+    let build = plc_core::build::build_project(&project);
+    let d = build
+        .diagnostics
+        .iter()
+        .find(|d| d.code.as_str() == "E0100")
+        .unwrap_or_else(|| panic!("{:?}", build.diagnostics));
+    assert_eq!(d.message, "`Stopp` is not declared; did you mean Stop?");
+    assert_eq!(d.suggestion.as_deref(), Some("Stop"));
+    assert_eq!(d.implied_type.as_deref(), Some("BOOL"), "NOT of a guard: a BOOL");
+    assert!(
+        d.located_message().starts_with("POU Loop, transition go (guard line 1, column 5): "),
+        "{}",
+        d.located_message()
+    );
+}

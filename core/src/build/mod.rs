@@ -181,6 +181,12 @@ pub struct ProjectDiagnostic {
     pub message: String,
     /// Where the problem is.
     pub site: Site,
+    /// The declared name an unknown one probably misspells (the message ends with `did you
+    /// mean NAME?`): the editors' `Replace with NAME` fix (see [`Diagnostic::suggestion`]).
+    pub suggestion: Option<String>,
+    /// For an undeclared name, the type its use implies when the checker knows it: the
+    /// editors' `Declare NAME` fix (see [`Diagnostic::implied_type`]).
+    pub implied_type: Option<String>,
 }
 
 impl ProjectDiagnostic {
@@ -295,6 +301,8 @@ impl ProjectBuild {
             code,
             message,
             site: Site::Project,
+            suggestion: None,
+            implied_type: None,
         };
         let Some(program) = &self.program else {
             return Err(error(Code::NoProgram, "the project has errors".to_string()));
@@ -343,6 +351,8 @@ pub fn build_project(project: &Project) -> ProjectBuild {
             code: d.code,
             message: d.message,
             site: Site::Petri { pou, element: Some(d.element), at: d.at },
+            suggestion: None,
+            implied_type: None,
         })
         .collect();
     if petri_diags.iter().any(ProjectDiagnostic::is_error) {
@@ -353,6 +363,8 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         code: d.code,
         message: d.message,
         site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
+        suggestion: d.suggestion,
+        implied_type: None,
     };
     let source = match project_source_with(project, &nets) {
         Ok(source) => source,
@@ -370,6 +382,8 @@ pub fn build_project(project: &Project) -> ProjectBuild {
                 code: Code::NetworkNotRunnable,
                 message: e.message.clone(),
                 site: Site::Network { pou: pou.clone(), element: Some(e.element.clone()) },
+                suggestion: None,
+                implied_type: None,
             })
             .collect();
         return ProjectBuild { diagnostics, source: None, program: None };
@@ -384,6 +398,8 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         code: d.code,
         message: d.message,
         site: site_in(&source, &index, d.span),
+        suggestion: d.suggestion,
+        implied_type: d.implied_type,
     }));
     if let (Some(scene), Some(program)) = (&project.scene, &analysis.program) {
         diagnostics.extend(scene_diagnostics(scene, &project.settings, program));
@@ -431,6 +447,8 @@ fn scene_diagnostics(
                 "the scene's widget “{label}” is bound to `{path}`, which the program does not have"
             ),
             site: Site::Project,
+            suggestion: None,
+            implied_type: None,
         })
         .collect()
 }

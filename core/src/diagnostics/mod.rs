@@ -7,6 +7,7 @@
 mod codes;
 mod explain;
 mod span;
+pub mod suggest;
 
 pub use codes::Code;
 pub use explain::{
@@ -47,17 +48,49 @@ pub struct Diagnostic {
     pub message: String,
     /// Where the problem is.
     pub span: Span,
+    /// The declared name the one at `span` probably misspells; the message ends with
+    /// `did you mean NAME?`, and putting it in place of the span's text is the editors'
+    /// `Replace with NAME` fix.
+    pub suggestion: Option<String>,
+    /// For an undeclared name: the type its use implies when the checker knows it (`BOOL`
+    /// for a condition, the value's type for the target of an assignment); the editors'
+    /// `Declare NAME` fix declares it with this type.
+    pub implied_type: Option<String>,
 }
 
 impl Diagnostic {
     /// An error with `code` at `span`.
     pub fn error(code: Code, span: Span, message: impl Into<String>) -> Self {
-        Diagnostic { severity: Severity::Error, code, message: message.into(), span }
+        Diagnostic {
+            severity: Severity::Error,
+            code,
+            message: message.into(),
+            span,
+            suggestion: None,
+            implied_type: None,
+        }
     }
 
     /// A warning with `code` at `span`.
     pub fn warning(code: Code, span: Span, message: impl Into<String>) -> Self {
-        Diagnostic { severity: Severity::Warning, code, message: message.into(), span }
+        Diagnostic {
+            severity: Severity::Warning,
+            code,
+            message: message.into(),
+            span,
+            suggestion: None,
+            implied_type: None,
+        }
+    }
+
+    /// This diagnostic with `suggestion` (when there is one) as its
+    /// [`Diagnostic::suggestion`] and `; did you mean NAME?` at the end of its message.
+    pub fn suggesting(mut self, suggestion: Option<&str>) -> Self {
+        if let Some(s) = suggestion {
+            self.message.push_str(&suggest::hint(Some(s)));
+            self.suggestion = Some(s.to_string());
+        }
+        self
     }
 
     /// True when this diagnostic stops the program from running.

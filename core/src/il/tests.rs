@@ -262,3 +262,25 @@ fn random_instruction_lists_never_panic() {
         let _ = run(&src, 2);
     }
 }
+
+#[test]
+fn did_you_mean_survives_the_lowering() {
+    let src =
+        "PROGRAM Main\nVAR_INPUT Start, Stop : BOOL; END_VAR\nVAR_OUTPUT Motor : BOOL; END_VAR\n\
+               LD Start\nOR Motr\nANDN Stop\nST Motor\nEND_PROGRAM\n";
+    let errs = errors(src);
+    assert_eq!(
+        errs,
+        vec![("E0100".to_string(), 5, "`Motr` is not declared; did you mean Motor?".to_string())]
+    );
+    let analysis = crate::semantic::analyze(src);
+    let d = analysis.diagnostics.iter().find(|d| d.is_error()).expect("an error");
+    assert_eq!(d.suggestion.as_deref(), Some("Motor"));
+    assert_eq!(&src[d.span.start as usize..d.span.end as usize], "Motr", "the operand's span");
+    // A misspelled operator.
+    let errs = errors("PROGRAM Main\nVAR a, b : BOOL; END_VAR\nLD a\nANDD b\nST a\nEND_PROGRAM\n");
+    assert!(
+        errs.iter().any(|(c, l, m)| c == "E0580" && *l == 4 && m.ends_with("; did you mean AND?")),
+        "{errs:?}"
+    );
+}

@@ -89,6 +89,23 @@ enum ConvTarget {
     Bcd,
 }
 
+/// The names of the built-in functions, conversions included (for `did you mean`).
+pub(super) fn builtin_names() -> Vec<String> {
+    let types: Vec<&str> =
+        Elem::ALL.iter().map(|e| e.name()).chain(["STRING", "WSTRING"]).collect();
+    let mut names: Vec<String> = FIXED.iter().map(|(n, _)| n.to_string()).collect();
+    names.extend(VARIADIC.iter().map(|n| n.to_string()));
+    for from in &types {
+        for to in &types {
+            if from != to {
+                names.push(format!("{from}_TO_{to}"));
+            }
+        }
+    }
+    names.extend(types.iter().map(|t| format!("TO_{t}")));
+    names
+}
+
 /// True when `key` (upper case) names a built-in function.
 pub fn is_builtin(key: &str) -> bool {
     FIXED.iter().any(|(n, _)| *n == key)
@@ -124,10 +141,14 @@ impl<'a> Checker<'a> {
                     match params.iter().position(|n| n.eq_ignore_ascii_case(&p.name)) {
                         Some(i) => out[i] = Some(value),
                         None => {
-                            self.error(
+                            let msg = format!("`{}` has no input `{}`", name.name, p.name);
+                            let inputs = params.clone();
+                            self.error_suggesting(
                                 Code::NoSuchParameter,
                                 p.span,
-                                format!("`{}` has no input `{}`", name.name, p.name),
+                                msg,
+                                &p.name,
+                                inputs,
                             );
                             return None;
                         }

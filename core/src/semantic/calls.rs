@@ -14,6 +14,21 @@ enum Callee {
 }
 
 impl<'a> Checker<'a> {
+    /// What a body can call, in the order a hint prefers them: its function block
+    /// instances, the FUNCTIONs, the standard functions.
+    fn callable_names(&self) -> Vec<String> {
+        let pou = self.pous.get(self.body.pou as usize);
+        let instances = pou
+            .into_iter()
+            .flat_map(|p| p.vars.iter())
+            .chain(&self.globals)
+            .filter(|v| matches!(v.ty, Type::Fb(_)))
+            .map(|v| v.name.clone());
+        let functions =
+            self.pous.iter().filter(|p| p.kind == PouKind::Function).map(|p| p.name.clone());
+        instances.chain(functions).chain(super::builtins::builtin_names()).collect()
+    }
+
     fn callee(&mut self, callee: &ast::Expr, in_expression: bool) -> Option<Callee> {
         if let ast::ExprKind::Name(id) = &callee.kind {
             let key = id.key();
@@ -45,11 +60,9 @@ impl<'a> Checker<'a> {
                 if super::builtins::is_builtin(&key) {
                     return Some(Callee::Builtin);
                 }
-                self.error(
-                    Code::UnknownFunction,
-                    callee.span,
-                    format!("`{}` is not a function or a function block instance", id.name),
-                );
+                let msg = format!("`{}` is not a function or a function block instance", id.name);
+                let callable = self.callable_names();
+                self.error_suggesting(Code::UnknownFunction, callee.span, msg, &id.name, callable);
                 return None;
             }
         }
@@ -215,7 +228,14 @@ impl<'a> Checker<'a> {
                 ast::Arg::Input { name, value } => {
                     let Some(i) = callee.find_var(&name.name).filter(|i| params.contains(i)) else {
                         let msg = format!("`{}` has no input `{}`", callee.name, name.name);
-                        self.error(Code::NoSuchParameter, name.span, msg);
+                        let inputs = params.iter().map(|&i| callee.vars[i as usize].name.clone());
+                        self.error_suggesting(
+                            Code::NoSuchParameter,
+                            name.span,
+                            msg,
+                            &name.name,
+                            inputs,
+                        );
                         ok = false;
                         continue;
                     };
@@ -225,7 +245,18 @@ impl<'a> Checker<'a> {
                     let found = callee.find_var(&name.name).filter(|&i| Some(i) != callee.result);
                     let Some(i) = found else {
                         let msg = format!("`{}` has no output `{}`", callee.name, name.name);
-                        self.error(Code::NoSuchParameter, name.span, msg);
+                        let outputs = callee
+                            .vars
+                            .iter()
+                            .filter(|v| v.section == VarSection::Output)
+                            .map(|v| v.name.clone());
+                        self.error_suggesting(
+                            Code::NoSuchParameter,
+                            name.span,
+                            msg,
+                            &name.name,
+                            outputs,
+                        );
                         ok = false;
                         continue;
                     };

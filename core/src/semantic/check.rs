@@ -48,6 +48,8 @@ pub(super) struct Checker<'a> {
     pub types: TypeTable,
     pub type_slots: HashMap<String, TypeSlot<'a>>,
     pub type_order: Vec<String>,
+    /// The declared types' names as written, in declaration order (for `did you mean`).
+    pub type_spellings: Vec<String>,
     pub pous: Vec<Pou>,
     pub pou_index: HashMap<String, PouId>,
     pub pou_asts: Vec<&'a ast::Pou>,
@@ -76,6 +78,7 @@ impl<'a> Checker<'a> {
             types: TypeTable::default(),
             type_slots: HashMap::new(),
             type_order: Vec::new(),
+            type_spellings: Vec::new(),
             pous: Vec::new(),
             pou_index: HashMap::new(),
             pou_asts: Vec::new(),
@@ -110,6 +113,39 @@ impl<'a> Checker<'a> {
         self.diags.push(Diagnostic::error(code, span, message));
     }
 
+    /// Reports an error about the unknown `name` at `span`, ending in `did you mean NAME?`
+    /// when one of `candidates` (in the order a hint prefers them) is close to it; true
+    /// when it did.
+    pub fn error_suggesting<I>(
+        &mut self,
+        code: Code,
+        span: Span,
+        message: String,
+        name: &str,
+        candidates: I,
+    ) -> bool
+    where
+        I: IntoIterator<Item = String>,
+    {
+        let candidates: Vec<String> = candidates.into_iter().collect();
+        let suggestion =
+            crate::diagnostics::suggest::closest(name, candidates.iter().map(String::as_str));
+        let found = suggestion.is_some();
+        self.diags.push(Diagnostic::error(code, span, message).suggesting(suggestion));
+        found
+    }
+
+    /// The names a declaration can give as a type, in the order a hint prefers them: the
+    /// elementary types, the declared types, the function blocks.
+    pub fn type_names(&self) -> Vec<String> {
+        let elementary = crate::values::Elem::ALL.iter().map(|e| e.name().to_string());
+        let strings = ["STRING", "WSTRING"].into_iter().map(String::from);
+        let declared = self.type_spellings.iter().cloned();
+        let blocks =
+            self.pous.iter().filter(|p| p.kind == PouKind::FunctionBlock).map(|p| p.name.clone());
+        elementary.chain(strings).chain(declared).chain(blocks).collect()
+    }
+
     /// Reports a warning.
     pub fn warning(&mut self, code: Code, span: Span, message: impl Into<String>) {
         self.diags.push(Diagnostic::warning(code, span, message));
@@ -136,6 +172,7 @@ impl<'a> Checker<'a> {
                             continue;
                         }
                         self.type_order.push(key.clone());
+                        self.type_spellings.push(def.name.name.clone());
                         self.type_slots.insert(key, TypeSlot::Pending(def));
                     }
                 }
@@ -413,4 +450,14 @@ pub(super) fn check_expression_in(
         return Err(c.diags);
     }
     result.ok_or(c.diags)
+}
+
+/// The inputs, outputs and in-outs of a POU as declared: what a caller can name.
+pub(super) fn interface_names(pou: &Pou) -> Vec<String> {
+    pou.vars
+        .iter()
+        .filter(|v| matches!(v.section, VarSection::Input | VarSection::Output | VarSection::InOut))
+        .filter(|v| !v.name.contains("__"))
+        .map(|v| v.name.clone())
+        .collect()
 }

@@ -92,7 +92,9 @@ impl<'a> Checker<'a> {
                     );
                     return None;
                 }
-                self.error(Code::UnknownType, id.span, format!("unknown type `{}`", id.name));
+                let msg = format!("unknown type `{}`", id.name);
+                let types = self.type_names();
+                self.error_suggesting(Code::UnknownType, id.span, msg, &id.name, types);
                 None
             }
             TypeRef::Ref { target, .. } => {
@@ -332,11 +334,9 @@ impl<'a> Checker<'a> {
                     let Some(i) =
                         def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(&name.name))
                     else {
-                        self.error(
-                            Code::NoSuchMember,
-                            name.span,
-                            format!("`{}` has no field `{}`", def.name, name.name),
-                        );
+                        let msg = format!("`{}` has no field `{}`", def.name, name.name);
+                        let fields = def.fields.iter().map(|f| f.name.clone()).collect();
+                        self.no_member(name, msg, fields);
                         continue;
                     };
                     let f = &def.fields[i];
@@ -350,11 +350,9 @@ impl<'a> Checker<'a> {
                 for (name, value) in fields {
                     let Some(i) = self.pous[pou as usize].find_var(&name.name) else {
                         let fb = self.pous[pou as usize].name.clone();
-                        self.error(
-                            Code::NoSuchMember,
-                            name.span,
-                            format!("`{fb}` has no member `{}`", name.name),
-                        );
+                        let msg = format!("`{fb}` has no member `{}`", name.name);
+                        let members = super::check::interface_names(&self.pous[pou as usize]);
+                        self.no_member(name, msg, members);
                         continue;
                     };
                     let (vty, vrange) = {

@@ -3,7 +3,7 @@
 use super::check::Checker;
 use super::ir::{BinOp, Builtin, Cmp, Expr, ExprKind, InitValue, MathFn, Place, SysVar, UnOp, Var};
 use super::types::{Elem, Type};
-use crate::diagnostics::{Code, Span};
+use crate::diagnostics::{Code, Diagnostic, Span};
 use crate::syntax::{self as ast, AddressArea, AddressSize, LiteralValue, VarSection};
 use crate::values::arith;
 
@@ -445,7 +445,8 @@ impl<'a> Checker<'a> {
             Some((_, v)) => Some(Typed::fixed(self.const_expr(*v as u64, resolved.ty, span))),
             None => {
                 let msg = format!("`{}` has no value `{}`", def.name, value.name);
-                self.error(Code::UndeclaredName, value.span, msg);
+                let values: Vec<String> = def.values.iter().map(|(n, _)| n.clone()).collect();
+                self.error_suggesting(Code::UndeclaredName, value.span, msg, &value.name, values);
                 None
             }
         }
@@ -553,8 +554,74 @@ impl<'a> Checker<'a> {
         if self.pou_index.contains_key(&key) {
             return Some(NameRef::Pou);
         }
-        self.error(Code::UndeclaredName, id.span, format!("`{}` is not declared", id.name));
+        self.undeclared(id, expected);
         None
+    }
+
+    /// E0100 for `id`, with `did you mean NAME?` when a name in scope is close to it and
+    /// the type `expected` there (when it is one a declaration can name) as the type its
+    /// use implies.
+    #[inline(never)]
+    fn undeclared(&mut self, id: &ast::Ident, expected: Option<Type>) {
+        let candidates = self.names_in_scope();
+        let suggestion =
+            crate::diagnostics::suggest::closest(&id.name, candidates.iter().map(String::as_str));
+        let mut d = Diagnostic::error(
+            Code::UndeclaredName,
+            id.span,
+            format!("`{}` is not declared", id.name),
+        )
+        .suggesting(suggestion);
+        d.implied_type = expected.and_then(|t| self.declarable(t));
+        self.diags.push(d);
+    }
+
+    /// The names a body can read, in the order a hint prefers them: the POU's variables as
+    /// declared, the globals, the enumeration values, the system variables.
+    fn names_in_scope(&self) -> Vec<String> {
+        let pou = self.pous.get(self.body.pou as usize);
+        let own = pou.into_iter().flat_map(|p| p.vars.iter().map(|v| v.name.clone()));
+        let globals = self.globals.iter().map(|g| g.name.clone());
+        let values = self.types.enums.iter().flat_map(|e| e.values.iter().map(|(n, _)| n.clone()));
+        let system = SysVar::NAMES.iter().map(|n| n.to_string());
+        own.chain(globals).chain(values).chain(system).collect()
+    }
+
+    /// The name of `ty` as a declaration writes it, for the types a `Declare NAME` fix
+    /// can declare (elementary types, strings, named enumerations and structures).
+    pub(super) fn declarable(&self, ty: Type) -> Option<String> {
+        let name = self.tname(ty);
+        match ty {
+            Type::Elem(_) | Type::Str { .. } => Some(name),
+            // Only a type declared by name (an enumeration written inside a declaration has
+            // no name to repeat).
+            Type::Enum(_) | Type::Struct(_)
+                if self.type_slots.contains_key(&name.to_ascii_uppercase()) =>
+            {
+                Some(name)
+            }
+            _ => None,
+        }
+    }
+
+    /// The type a value `t` implies for a variable it is stored into: its own, or for an
+    /// untyped literal the type a declaration would give it (INT, DINT or LINT for an
+    /// integer, as large as it needs; REAL for a real number).
+    pub(super) fn implied_by(&self, t: &Typed) -> Option<String> {
+        let el = t.e.ty.elem();
+        if t.flexible {
+            if let (Some(el), ExprKind::Const(bits)) = (el, &t.e.kind) {
+                if el.is_integral() {
+                    let v = arith::to_i128(el, *bits);
+                    let fit = [Elem::Int, Elem::DInt, Elem::LInt].into_iter().find(|&e| fits(e, v));
+                    return fit.map(|e| e.name().to_string());
+                }
+                if el.is_real() {
+                    return Some(Elem::Real.name().to_string());
+                }
+            }
+        }
+        self.declarable(t.e.ty)
     }
 
     /// Resolves an expression that denotes memory. `write` checks it may be assigned.
@@ -613,7 +680,8 @@ impl<'a> Checker<'a> {
                             }
                             None => {
                                 let msg = format!("`{}` has no field `{}`", def.name, field.name);
-                                self.error(Code::NoSuchMember, field.span, msg);
+                                let fields = def.fields.iter().map(|f| f.name.clone()).collect();
+                                self.no_member(field, msg, fields);
                                 None
                             }
                         }
@@ -622,7 +690,8 @@ impl<'a> Checker<'a> {
                         let pou = &self.pous[fb as usize];
                         let Some(i) = pou.find_var(&field.name) else {
                             let msg = format!("`{}` has no member `{}`", pou.name, field.name);
-                            self.error(Code::NoSuchMember, field.span, msg);
+                            let members = super::check::interface_names(pou);
+                            self.no_member(field, msg, members);
                             return None;
                         };
                         let var = &pou.vars[i as usize];
@@ -718,6 +787,22 @@ impl<'a> Checker<'a> {
                     format!("this expression cannot be {what}; it is not a variable"),
                 );
                 None
+            }
+        }
+    }
+
+    /// E0104 for `.field`: `did you mean NAME?` when a member is close to it, else the
+    /// members there are (the first ten).
+    pub(super) fn no_member(&mut self, field: &ast::Ident, message: String, members: Vec<String>) {
+        let listed = match members.len() {
+            0 => String::new(),
+            1..=10 => format!("; it has {}", members.join(", ")),
+            _ => format!("; it has {}, …", members[..10].join(", ")),
+        };
+        let span = field.span;
+        if !self.error_suggesting(Code::NoSuchMember, span, message, &field.name, members) {
+            if let Some(d) = self.diags.last_mut() {
+                d.message.push_str(&listed);
             }
         }
     }
@@ -964,20 +1049,18 @@ impl<'a> Checker<'a> {
                 if can_widen(fe, te) {
                     return Some(self.convert(t.e, target));
                 }
-                let hint = if fe.is_num() && te.is_num() || fe.is_integral() && te.is_integral() {
+                let (f, to) = (fe.name(), te.name());
+                let message = if fe.is_num() && te.is_num() || fe.is_integral() && te.is_integral()
+                {
+                    // Both are numbers: the value would fit only sometimes.
                     format!(
-                        " without possible loss; convert it explicitly with {}_TO_{}(…)",
-                        fe.name(),
-                        te.name()
+                        "{f} does not convert to {to} without possible loss: convert it \
+                         explicitly with {f}_TO_{to}(…)"
                     )
                 } else {
-                    String::new()
+                    format!("expected a value of type {to}, found {f}")
                 };
-                self.error(
-                    Code::TypeMismatch,
-                    span,
-                    format!("expected a value of type {}, found {}{hint}", te.name(), fe.name()),
-                );
+                self.error(Code::TypeMismatch, span, message);
                 None
             }
             (Type::Ref(super::types::NULL_REF), Type::Ref(_)) => Some(self.null_as(t.e, target)),

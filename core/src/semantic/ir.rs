@@ -216,6 +216,10 @@ pub enum SysVar {
 }
 
 impl SysVar {
+    /// The names of the system variables, as the documentation writes them.
+    pub const NAMES: [&'static str; 8] =
+        ["FST_SCN", "T_10MS", "T_100MS", "T_SEC", "T_MIN", "ALW_ON", "ALW_OFF", "SYS_CLOCK"];
+
     /// Looks up a system variable by upper-case name.
     pub fn from_name(upper: &str) -> Option<SysVar> {
         Some(match upper {

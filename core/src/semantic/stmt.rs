@@ -4,7 +4,7 @@ use super::check::Checker;
 use super::consts;
 use super::ir::{Builtin, Expr, ExprKind, Place, Stmt, StmtKind};
 use super::types::Type;
-use crate::diagnostics::Code;
+use crate::diagnostics::{Code, Span};
 use crate::syntax::{self as ast};
 
 impl<'a> Checker<'a> {
@@ -25,6 +25,19 @@ impl<'a> Checker<'a> {
             }
         }
         list.iter().filter_map(|s| self.stmt(s)).collect()
+    }
+
+    /// The target at `span` of an assignment was not declared: the value `t` stored into
+    /// it tells the type its `Declare NAME` fix declares.
+    fn imply_type(&mut self, span: Span, t: &super::expr::Typed) {
+        let implied = self.implied_by(t);
+        if let Some(d) =
+            self.diags.iter_mut().rev().find(|d| {
+                d.code == Code::UndeclaredName && d.span == span && d.implied_type.is_none()
+            })
+        {
+            d.implied_type = implied;
+        }
     }
 
     pub(super) fn condition(&mut self, e: &ast::Expr, what: &str) -> Option<Expr> {
@@ -50,6 +63,9 @@ impl<'a> Checker<'a> {
             K::Assign { target, value } => {
                 let place = self.place(target, true);
                 let t = self.expr(value, place.as_ref().map(|p| p.1));
+                if let (None, Some(t), ast::ExprKind::Name(_)) = (&place, &t, &target.kind) {
+                    self.imply_type(target.span, t);
+                }
                 let ((place, ty), t) = (place?, t?);
                 if let Type::Fb(_) = ty {
                     self.error(

@@ -238,3 +238,132 @@ fn il_carries_a_current_result_of_every_elementary_type() {
     let names: Vec<&str> = super::Elem::ALL.iter().map(|e| e.name()).collect();
     assert_eq!(crate::il::ELEMENTARY.to_vec(), names);
 }
+
+/// The first error of `src`: its message, suggestion and implied type.
+fn first_error(src: &str) -> crate::diagnostics::Diagnostic {
+    analyze(src).diagnostics.into_iter().find(|d| d.is_error()).expect("an error")
+}
+
+#[test]
+fn a_narrowing_says_what_does_not_convert_and_how_to_convert_it() {
+    let d = first_error(&program("i := r;"));
+    assert_eq!(d.code, Code::TypeMismatch);
+    assert_eq!(
+        d.message,
+        "REAL does not convert to INT without possible loss: convert it explicitly with REAL_TO_INT(…)"
+    );
+    let d = first_error(&program("s := i;"));
+    assert_eq!(
+        d.message,
+        "INT does not convert to SINT without possible loss: convert it explicitly with INT_TO_SINT(…)"
+    );
+    // Not two numbers: only what was expected and found.
+    assert_eq!(
+        first_error(&program("i := b;")).message,
+        "expected a value of type INT, found BOOL"
+    );
+}
+
+#[test]
+fn an_unknown_name_close_to_a_declared_one_gets_did_you_mean() {
+    let d = first_error(&program("Bb := TRUE; strr := 'x';"));
+    // Two letters: no hint (every short name is one edit from many).
+    assert_eq!(d.message, "`Bb` is not declared");
+    assert_eq!(d.suggestion, None);
+    let src =
+        "PROGRAM Main\nVAR_INPUT Start, Stop : BOOL; END_VAR\nVAR_OUTPUT Motor : BOOL; END_VAR\n\
+               Motr := (Start OR Motor) AND NOT Stop;\nEND_PROGRAM\n";
+    let d = first_error(src);
+    assert_eq!(d.message, "`Motr` is not declared; did you mean Motor?");
+    assert_eq!(d.suggestion.as_deref(), Some("Motor"));
+    assert_eq!(&src[d.span.start as usize..d.span.end as usize], "Motr", "the span is the name");
+    assert_eq!(d.implied_type.as_deref(), Some("BOOL"), "the value stored tells the type");
+    // Case-insensitive, spelled as declared; the first declared wins a tie.
+    let d =
+        first_error("PROGRAM P\nVAR Lamp1, Lamp2 : BOOL; END_VAR\nlamp := TRUE;\nEND_PROGRAM\n");
+    assert_eq!(d.suggestion.as_deref(), Some("Lamp1"));
+    // Globals, enumeration values and system variables are in scope too.
+    let d =
+        first_error("VAR_GLOBAL Counter : INT; END_VAR\nPROGRAM P\nCountr := 1;\nEND_PROGRAM\n");
+    assert_eq!(d.suggestion.as_deref(), Some("Counter"));
+    assert_eq!(d.implied_type.as_deref(), Some("INT"), "an untyped integer is an INT");
+    let d = first_error(
+        "TYPE Mode : (Idle, Running); END_TYPE\nPROGRAM P\nVAR m : Mode; END_VAR\nm := Runing;\nEND_PROGRAM\n",
+    );
+    assert_eq!(d.suggestion.as_deref(), Some("Running"));
+    assert_eq!(d.implied_type.as_deref(), Some("Mode"));
+    let d = first_error("PROGRAM P\nVAR b : BOOL; END_VAR\nb := FST_SCAN;\nEND_PROGRAM\n");
+    assert_eq!(d.suggestion.as_deref(), Some("FST_SCN"));
+    // Nothing close: the message alone.
+    let d = first_error(&program("i := Pressure;"));
+    assert_eq!((d.message.as_str(), d.suggestion), ("`Pressure` is not declared", None));
+    assert_eq!(d.implied_type.as_deref(), Some("INT"), "the target's type");
+}
+
+#[test]
+fn a_condition_implies_bool_and_nothing_is_implied_where_nothing_is_known() {
+    let d = first_error(&program("IF Ready THEN i := 1; END_IF;"));
+    assert_eq!(d.implied_type.as_deref(), Some("BOOL"));
+    let d = first_error(&program("r := Gain * 2.5;"));
+    assert_eq!(d.implied_type.as_deref(), Some("REAL"));
+    let d = first_error(&program("Limit := 2.5;"));
+    assert_eq!(d.implied_type.as_deref(), Some("REAL"));
+    let d = first_error(&program("Big := 100000;"));
+    assert_eq!(d.implied_type.as_deref(), Some("DINT"), "as large as the value needs");
+}
+
+#[test]
+fn members_parameters_functions_and_types_get_did_you_mean() {
+    let d = first_error(&program("t(IN := b, PT := T#1s); i := TIME_TO_INT(t.EET);"));
+    assert_eq!(d.code, Code::NoSuchMember);
+    assert_eq!(d.message, "`TON` has no member `EET`; did you mean ET?");
+    let d = first_error(&program("t(IN := b, PT := T#1s); b := t.Done;"));
+    assert_eq!(d.message, "`TON` has no member `Done`; it has IN, PT, Q, ET");
+    let d = first_error(&program("t(IN := b, PTT := T#1s);"));
+    assert_eq!((d.code, d.suggestion.as_deref()), (Code::NoSuchParameter, Some("PT")));
+    let d = first_error(&program("r := SQTR(r);"));
+    assert_eq!((d.code, d.suggestion.as_deref()), (Code::UnknownFunction, Some("SQRT")));
+    let d = first_error(&program("i := REAL_TO_IN(r);"));
+    assert_eq!(d.suggestion.as_deref(), Some("REAL_TO_INT"));
+    let d = first_error("PROGRAM P\nVAR x : BOLL; END_VAR\nEND_PROGRAM\n");
+    assert_eq!(
+        (d.code, d.message.as_str()),
+        (Code::UnknownType, "unknown type `BOLL`; did you mean BOOL?")
+    );
+    let d = first_error(
+        "TYPE Valve : STRUCT open : BOOL; END_STRUCT; END_TYPE\nPROGRAM P\nVAR v : Vlave; END_VAR\nEND_PROGRAM\n",
+    );
+    assert_eq!(d.suggestion.as_deref(), Some("Valve"));
+    let d = first_error(
+        "TYPE Mode : (Idle, Running); END_TYPE\nPROGRAM P\nVAR m : Mode; END_VAR\nm := Mode#Runing;\nEND_PROGRAM\n",
+    );
+    assert_eq!(d.message, "`Mode` has no value `Runing`; did you mean Running?");
+}
+
+#[test]
+fn sfc_steps_actions_and_guards_get_did_you_mean() {
+    let src =
+        "PROGRAM P\nVAR go : BOOL; Pump : BOOL; END_VAR\nINITIAL_STEP Idle : Pmup(N); END_STEP\n\
+               TRANSITION FROM Idle TO Filing := go; END_TRANSITION\nSTEP Filling : END_STEP\n\
+               TRANSITION FROM Filling TO Idle := goo; END_TRANSITION\nEND_PROGRAM\n";
+    let errs: Vec<(Code, String)> = analyze(src)
+        .diagnostics
+        .into_iter()
+        .filter(|d| d.is_error())
+        .map(|d| (d.code, d.message))
+        .collect();
+    assert!(
+        errs.contains(&(
+            Code::SfcUnknownAction,
+            "`Pmup` is neither an ACTION of this chart nor a variable; did you mean Pump?".into()
+        )),
+        "{errs:?}"
+    );
+    assert!(
+        errs.contains(&(
+            Code::SfcUnknownStep,
+            "there is no step `Filing` in this chart; did you mean Filling?".into()
+        )),
+        "{errs:?}"
+    );
+}

@@ -5,23 +5,38 @@
 
 use std::collections::HashMap;
 
-use crate::diagnostics::{Code, Diagnostic, Span};
+use crate::diagnostics::{Code, Diagnostic};
 use crate::syntax::ast::sfc::*;
 use crate::syntax::ast::{Ident, Pou};
 
 /// The variables an SFC body can name: the POU's own and the globals (upper-case keys).
 #[derive(Debug, Default)]
 pub(super) struct Scope {
-    /// Variables declared in the POU (any section).
-    pub locals: HashMap<String, Span>,
-    /// Global variables of the file.
-    pub globals: HashMap<String, Span>,
+    /// Variables declared in the POU (any section), as declared.
+    pub locals: HashMap<String, Ident>,
+    /// Global variables of the file, as declared.
+    pub globals: HashMap<String, Ident>,
 }
 
 impl Scope {
     fn knows(&self, key: &str) -> bool {
         self.locals.contains_key(key) || self.globals.contains_key(key)
     }
+
+    /// The variables' names as declared, the POU's in declaration order, then the globals.
+    fn names(&self) -> Vec<String> {
+        let mut locals: Vec<&Ident> = self.locals.values().collect();
+        locals.sort_by_key(|id| id.span.start);
+        let mut globals: Vec<&Ident> = self.globals.values().collect();
+        globals.sort_by_key(|id| id.span.start);
+        locals.into_iter().chain(globals).map(|id| id.name.clone()).collect()
+    }
+}
+
+/// The name among `candidates` that `name` probably misspells.
+fn closest(name: &str, candidates: &[String]) -> Option<String> {
+    crate::diagnostics::suggest::closest(name, candidates.iter().map(String::as_str))
+        .map(str::to_string)
 }
 
 /// A transition with its steps resolved.
@@ -167,10 +182,12 @@ pub(super) fn resolve<'a>(
             }
         }
     }
+    let step_names: Vec<String> = chart.steps.iter().map(|s| s.name.name.clone()).collect();
     for element in &body.elements {
         if let SfcElement::Transition(t) = element {
-            let from = step_list(&t.from, &step_index, &rejected, "FROM", diags);
-            let to = step_list(&t.to, &step_index, &rejected, "TO", diags);
+            let steps = Steps { index: &step_index, names: &step_names, rejected: &rejected };
+            let from = step_list(&t.from, &steps, "FROM", diags);
+            let to = step_list(&t.to, &steps, "TO", diags);
             let valid = from.is_some() && to.is_some() && !t.from.is_empty();
             let (from, to) = (from.unwrap_or_default(), to.unwrap_or_default());
             chart.transitions.push(Transition { ast: t, from, to, valid });
@@ -182,7 +199,9 @@ pub(super) fn resolve<'a>(
             for ind in &assoc.indicators {
                 if !scope.knows(&ind.key()) {
                     let msg = format!("indicator `{}` is not a declared variable", ind.name);
-                    diags.push(Diagnostic::error(Code::UndeclaredName, ind.span, msg));
+                    let hint = closest(&ind.name, &scope.names());
+                    let d = Diagnostic::error(Code::UndeclaredName, ind.span, msg);
+                    diags.push(d.suggesting(hint.as_deref()));
                 }
             }
             let index = match action_index.get(&key) {
@@ -196,10 +215,27 @@ pub(super) fn resolve<'a>(
                 None if rejected.contains(&key) => continue,
                 None => {
                     let name = &assoc.action.name;
-                    let msg = format!(
-                        "`{name}` is neither an ACTION of this chart nor a variable; declare `ACTION {name} : … END_ACTION` or a BOOL variable `{name}`"
-                    );
-                    diags.push(Diagnostic::error(Code::SfcUnknownAction, assoc.action.span, msg));
+                    let mut known: Vec<String> =
+                        chart.actions.iter().map(|a| a.name.name.clone()).collect();
+                    known.extend(scope.names());
+                    let hint = closest(name, &known);
+                    let span = assoc.action.span;
+                    let d = match &hint {
+                        Some(_) => {
+                            let msg = format!(
+                                "`{name}` is neither an ACTION of this chart nor a variable"
+                            );
+                            Diagnostic::error(Code::SfcUnknownAction, span, msg)
+                                .suggesting(hint.as_deref())
+                        }
+                        None => {
+                            let msg = format!(
+                                "`{name}` is neither an ACTION of this chart nor a variable; declare `ACTION {name} : … END_ACTION` or a BOOL variable `{name}`"
+                            );
+                            Diagnostic::error(Code::SfcUnknownAction, span, msg)
+                        }
+                    };
+                    diags.push(d);
                     continue;
                 }
             };
@@ -227,14 +263,24 @@ pub(super) fn resolve<'a>(
     chart
 }
 
+/// The steps of a chart, for resolving FROM and TO lists.
+struct Steps<'s> {
+    /// Step index by upper-case name.
+    index: &'s HashMap<String, usize>,
+    /// The names as written, in order.
+    names: &'s [String],
+    /// Names refused (their uses are not reported again).
+    rejected: &'s [String],
+}
+
 /// Resolves a FROM or TO list; `None` when a name is unknown or listed twice.
 fn step_list(
     ids: &[Ident],
-    index: &HashMap<String, usize>,
-    rejected: &[String],
+    steps: &Steps<'_>,
     which: &str,
     diags: &mut Vec<Diagnostic>,
 ) -> Option<Vec<usize>> {
+    let (index, rejected) = (steps.index, steps.rejected);
     let mut out = Vec::new();
     let mut ok = true;
     for id in ids {
@@ -247,11 +293,16 @@ fn step_list(
             Some(&i) => out.push(i),
             None if rejected.contains(&id.key()) => ok = false,
             None => {
-                let msg = format!(
-                    "there is no step `{}` in this chart; declare it with `STEP {} : END_STEP`",
-                    id.name, id.name
-                );
-                diags.push(Diagnostic::error(Code::SfcUnknownStep, id.span, msg));
+                let hint = closest(&id.name, steps.names);
+                let msg = match hint {
+                    Some(_) => format!("there is no step `{}` in this chart", id.name),
+                    None => format!(
+                        "there is no step `{}` in this chart; declare it with `STEP {} : END_STEP`",
+                        id.name, id.name
+                    ),
+                };
+                let d = Diagnostic::error(Code::SfcUnknownStep, id.span, msg);
+                diags.push(d.suggesting(hint.as_deref()));
                 ok = false;
             }
         }

@@ -127,7 +127,7 @@ pub fn desugar(file: &mut SourceFile) -> Desugared {
         let mut scope = chart::Scope { globals: globals.clone(), ..Default::default() };
         for decl in pou.var_blocks.iter().flat_map(|b| &b.decls) {
             for n in &decl.names {
-                scope.locals.insert(n.key(), n.span);
+                scope.locals.insert(n.key(), n.clone());
             }
         }
         let mut diags = Vec::new();
@@ -186,7 +186,7 @@ fn check_reserved(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> bool {
 }
 
 /// The global variables of the file: top-level VAR_GLOBAL and PROGRAM VAR_GLOBAL blocks.
-fn global_names(file: &SourceFile) -> HashMap<String, Span> {
+fn global_names(file: &SourceFile) -> HashMap<String, crate::syntax::Ident> {
     let mut out = HashMap::new();
     let blocks = file.items.iter().flat_map(|item| match item {
         Item::Globals(b) => vec![b],
@@ -196,7 +196,7 @@ fn global_names(file: &SourceFile) -> HashMap<String, Span> {
     });
     for b in blocks {
         for n in b.decls.iter().flat_map(|d| &d.names) {
-            out.insert(n.key(), n.span);
+            out.insert(n.key(), n.clone());
         }
     }
     out

@@ -5,6 +5,7 @@
 //! still report on the rest. This module never looks at names or types.
 
 pub mod ast;
+pub mod fix;
 mod highlight;
 mod lexer;
 mod literal;
@@ -15,6 +16,7 @@ pub use ast::sfc::*;
 pub use ast::*;
 pub use highlight::{highlight_spans, tokens, TokenClass};
 pub use lexer::{Token, TokenKind};
+pub(crate) use parser::il_operator_names;
 
 use crate::diagnostics::Diagnostic;
 

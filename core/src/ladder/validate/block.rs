@@ -16,6 +16,17 @@ use crate::syntax::{self, ExprKind};
 pub(crate) struct Context<'a> {
     pub catalog: &'a Catalog,
     pub scope: Scope,
+    /// The variables the POU can name as declared: its own in declaration order, then the
+    /// globals (for `did you mean`).
+    pub names: Vec<String>,
+}
+
+impl Context<'_> {
+    /// The declared variable `name` probably misspells.
+    fn closest(&self, name: &str) -> Option<String> {
+        crate::diagnostics::suggest::closest(name, self.names.iter().map(String::as_str))
+            .map(str::to_string)
+    }
 }
 
 /// Where a block stands: rung, row, column.
@@ -32,6 +43,17 @@ struct Sink<'a> {
 }
 
 impl Sink<'_> {
+    /// An undeclared operand's error, with `did you mean NAME?` when there is a guess.
+    fn undeclared(&mut self, message: String, suggestion: Option<String>) {
+        let At { rung, row, col } = self.at;
+        let mut d = LadderDiagnostic::error(Code::LadderUndeclaredOperand, rung, row, col, message);
+        if let Some(s) = suggestion {
+            d.message.push_str(&crate::diagnostics::suggest::hint(Some(&s)));
+            d.suggestion = Some(s);
+        }
+        self.out.push(d);
+    }
+
     fn error(&mut self, code: Code, message: String) {
         let At { rung, row, col } = self.at;
         self.out.push(LadderDiagnostic::error(code, rung, row, col, message));
@@ -67,24 +89,27 @@ fn undeclared(ctx: &Context<'_>, text: &str, what: &str, sink: &mut Sink<'_>) ->
         || ctx.catalog.is_enumerator(&name)
         || crate::semantic::SysVar::from_name(&key).is_some();
     if !known {
-        sink.error(Code::LadderUndeclaredOperand, format!("{what}: `{name}` is not declared"));
+        sink.undeclared(format!("{what}: `{name}` is not declared"), ctx.closest(&name));
     }
     !known
 }
 
-/// The problem with the operand of a contact or coil, if any: not declared, or not a BOOL.
+/// The problem with the operand of a contact or coil, if any: not declared (with the
+/// declared name it probably misspells), or not a BOOL.
 pub(crate) fn check_bool_operand(
     ctx: &Context<'_>,
     operand: &str,
     what: &str,
-) -> Option<(Code, String)> {
+) -> Option<(Code, String, Option<String>)> {
     let name = root_name(operand)?;
     let key = name.to_ascii_uppercase();
     if !ctx.scope.contains_key(&key) && crate::semantic::SysVar::from_name(&key).is_none() {
-        return Some((
-            Code::LadderUndeclaredOperand,
-            format!("this {what}'s operand `{name}` is not declared"),
-        ));
+        let suggestion = ctx.closest(&name);
+        let message = format!(
+            "this {what}'s operand `{name}` is not declared{}",
+            crate::diagnostics::suggest::hint(suggestion.as_deref())
+        );
+        return Some((Code::LadderUndeclaredOperand, message, suggestion));
     }
     match ctx.catalog.place_type(&ctx.scope, operand) {
         Some(t) if !t.is_bool() => Some((
@@ -94,6 +119,7 @@ pub(crate) fn check_bool_operand(
                 operand.trim(),
                 article(&t.to_string())
             ),
+            None,
         )),
         _ => None,
     }

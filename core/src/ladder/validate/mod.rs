@@ -30,15 +30,21 @@ pub struct LadderDiagnostic {
     pub column: usize,
     /// Error or warning.
     pub severity: Severity,
+    /// The declared name an undeclared operand probably misspells (the message ends with
+    /// `did you mean NAME?`): the editor's `Replace with NAME` fix.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub suggestion: Option<String>,
 }
 
 impl LadderDiagnostic {
     fn error(code: Code, rung: usize, row: usize, column: usize, message: String) -> Self {
-        LadderDiagnostic { code, message, rung, row, column, severity: Severity::Error }
+        let severity = Severity::Error;
+        LadderDiagnostic { code, message, rung, row, column, severity, suggestion: None }
     }
 
     fn warning(code: Code, rung: usize, row: usize, column: usize, message: String) -> Self {
-        LadderDiagnostic { code, message, rung, row, column, severity: Severity::Warning }
+        let severity = Severity::Warning;
+        LadderDiagnostic { code, message, rung, row, column, severity, suggestion: None }
     }
 
     /// Whether this is an error.
@@ -71,7 +77,8 @@ pub fn validate(pou: &LadderPou) -> Vec<LadderDiagnostic> {
 /// pins the block type does not have, operands that are not declared or do not fit their
 /// pin, and wrong power pins are reported at their rung, row and column.
 pub fn validate_with(pou: &LadderPou, catalog: &Catalog) -> Vec<LadderDiagnostic> {
-    let ctx = Context { catalog, scope: catalog.scope(&pou.declarations) };
+    let names = catalog.variables(&pou.declarations).into_iter().map(|v| v.name).collect();
+    let ctx = Context { catalog, scope: catalog.scope(&pou.declarations), names };
     validate_inner(pou, Some(&ctx))
 }
 
@@ -170,8 +177,12 @@ fn validate_rung(
                             ),
                         ));
                     } else if let Some(ctx) = ctx {
-                        if let Some(d) = block::check_bool_operand(ctx, operand, what) {
-                            out.push(LadderDiagnostic::error(d.0, ri, r, c, d.1));
+                        if let Some((code, message, suggestion)) =
+                            block::check_bool_operand(ctx, operand, what)
+                        {
+                            let mut d = LadderDiagnostic::error(code, ri, r, c, message);
+                            d.suggestion = suggestion;
+                            out.push(d);
                         }
                     }
                     if let Element::Coil { kind, operand } = e {

@@ -24,6 +24,11 @@ const OPERATORS: &[&str] = &[
 /// The input operators of the standard function blocks (`S1 FF1` sets `FF1.S1`).
 pub(crate) const INPUT_OPERATORS: &[&str] = &["S1", "R1", "CLK", "CU", "CD", "PV", "IN", "PT"];
 
+/// Every IL operator, the input operators last (for `did you mean`).
+pub(crate) fn il_operator_names() -> impl Iterator<Item = &'static str> {
+    OPERATORS.iter().chain(INPUT_OPERATORS).copied()
+}
+
 /// Whether `upper` is an IL operator or input operator (not a function name).
 pub(crate) fn is_il_operator(upper: &str) -> bool {
     OPERATORS.contains(&upper) || INPUT_OPERATORS.contains(&upper)

@@ -16,6 +16,7 @@ mod expr;
 mod il;
 mod sfc;
 
+pub(crate) use il::il_operator_names;
 pub(super) use il::{is_il_operator, starts_operand};
 mod stmt;
 
