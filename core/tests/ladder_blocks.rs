@@ -416,3 +416,16 @@ fn an_undeclared_operand_gets_did_you_mean() {
     let d = validate_with(&p, &catalog);
     assert!(d.iter().any(|d| d.suggestion.as_deref() == Some("Delay")), "{d:?}");
 }
+
+#[test]
+fn an_unknown_block_type_names_the_closest_block() {
+    let p =
+        one_block("VAR Run, Lamp : BOOL; T1 : TON; END_VAR", Block::new("TNO", Some("T1")), &[]);
+    let catalog = project_with("", p.clone()).catalog();
+    let d = validate_with(&p, &catalog);
+    let unknown = d.iter().find(|d| d.code == Code::LadderUnknownBlock).expect("E0405");
+    assert_eq!(
+        unknown.message,
+        "`TNO` is neither a standard block nor a FUNCTION_BLOCK or FUNCTION of the project; did you mean TON?"
+    );
+}

@@ -103,19 +103,19 @@ explanations! {
     TooComplex: "The program nests or chains further than the trainer allows (100 levels of nesting, 100 operators or steps in one expression, 64 levels of types inside types; XML files 200 elements deep). Split the expression over several statements, or flatten the types.",
         st("PROGRAM Main VAR x : INT; END_VAR x := ((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((((1)))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))))); END_PROGRAM"),
         st("PROGRAM Main VAR x : INT; END_VAR x := (((1))); END_PROGRAM");
-    UndeclaredName: "The name is not declared where it is used: declare it in a VAR block of the POU (or as VAR_GLOBAL), or check its spelling.",
-        st("PROGRAM Main VAR x : INT; END_VAR x := y; END_PROGRAM"),
-        st("PROGRAM Main VAR x, y : INT; END_VAR x := y; END_PROGRAM");
+    UndeclaredName: "The name is not declared where it is used: declare it in a VAR block of the POU (or as VAR_GLOBAL), or check its spelling. When a declared name is one or two letters away, the message asks `did you mean NAME?` and the problem list offers `Replace with NAME`; `Declare NAME` adds the declaration to the POU that uses the name (an input when the POU only reads it, an output when it writes it) with the type its use implies (BOOL when nothing tells).",
+        st("PROGRAM Main VAR_INPUT Start : BOOL; END_VAR VAR_OUTPUT Motor : BOOL; END_VAR Motr := Start; END_PROGRAM"),
+        st("PROGRAM Main VAR_INPUT Start : BOOL; END_VAR VAR_OUTPUT Motor : BOOL; END_VAR Motor := Start; END_PROGRAM");
     DuplicateDeclaration: "The same name is declared twice in one scope (names are case-insensitive: `Motor` and `MOTOR` are one name). Rename or remove one.",
         st("PROGRAM Main VAR x : INT; X : BOOL; END_VAR x := 1; END_PROGRAM"),
         st("PROGRAM Main VAR x : INT; y : BOOL; END_VAR x := 1; y := TRUE; END_PROGRAM");
-    UnknownType: "A variable is declared with a type that is neither elementary nor declared in a TYPE block or as a FUNCTION_BLOCK.",
+    UnknownType: "A variable is declared with a type that is neither elementary nor declared in a TYPE block or as a FUNCTION_BLOCK. A type name one or two letters away is named in the message (`did you mean BOOL?`).",
         st("PROGRAM Main VAR x : INTEGER; END_VAR x := 1; END_PROGRAM"),
         st("PROGRAM Main VAR x : INT; END_VAR x := 1; END_PROGRAM");
     NotAVariable: "A name that is a type, a POU or an enumerator is used where a variable is needed.",
         st("PROGRAM Main VAR x : INT; END_VAR x := TON; END_PROGRAM"),
         st("PROGRAM Main VAR t : TON; x : TIME; END_VAR t(IN := TRUE, PT := T#1s); x := t.ET; END_PROGRAM");
-    NoSuchMember: "A struct has no field, or a function block no input or output, of that name. The message lists what it has.",
+    NoSuchMember: "A struct has no field, or a function block no input or output, of that name. The message names the closest member (`did you mean ET?`) or lists the members there are.",
         st("PROGRAM Main VAR t : TON; b : BOOL; END_VAR t(IN := TRUE, PT := T#1s); b := t.Done; END_PROGRAM"),
         st("PROGRAM Main VAR t : TON; b : BOOL; END_VAR t(IN := TRUE, PT := T#1s); b := t.Q; END_PROGRAM");
     NoProgram: "There is nothing to run: the source holds FUNCTIONs or FUNCTION_BLOCKs but no PROGRAM (or the project has errors, listed first).",
@@ -139,16 +139,16 @@ explanations! {
     DuplicateEnumerator: "One enumeration type lists the same value twice.",
         st("TYPE Mode : (Off, Run, Off); END_TYPE PROGRAM Main VAR m : Mode; END_VAR m := Run; END_PROGRAM"),
         st("TYPE Mode : (Off, Run, Fault); END_TYPE PROGRAM Main VAR m : Mode; END_VAR m := Run; END_PROGRAM");
-    SectionNotAllowed: "This kind of POU cannot have this VAR section: a FUNCTION has no VAR_OUTPUT result variables of its own kind beyond its inputs, no VAR_GLOBAL; only a PROGRAM declares VAR_GLOBAL.",
+    SectionNotAllowed: "A VAR_GLOBAL block stands in a FUNCTION or a FUNCTION_BLOCK. Global variables are declared at the top level of the file or in a PROGRAM; a FUNCTION_BLOCK that uses one names it in a VAR_EXTERNAL block.",
         st("FUNCTION_BLOCK Counter VAR_GLOBAL total : INT; END_VAR total := total + 1; END_FUNCTION_BLOCK PROGRAM Main VAR c : Counter; END_VAR c(); END_PROGRAM"),
         st("VAR_GLOBAL total : INT; END_VAR FUNCTION_BLOCK Counter VAR_EXTERNAL total : INT; END_VAR total := total + 1; END_FUNCTION_BLOCK PROGRAM Main VAR c : Counter; END_VAR c(); END_PROGRAM");
-    TypeMismatch: "A value of one type is used where another is needed and ST does not convert it by itself (only widening within a family is implicit). Convert explicitly, e.g. `REAL_TO_INT(r)` or `INT_TO_REAL(i)`.",
+    TypeMismatch: "A value of one type is used where another is needed and ST does not convert it by itself: only conversions that cannot lose anything are implicit (SINT to INT, INT to REAL). Between two number types the message names the conversion function to write (`REAL does not convert to INT without possible loss: convert it explicitly with REAL_TO_INT(…)`).",
         st("PROGRAM Main VAR i : INT; r : REAL := 2.5; END_VAR i := r; END_PROGRAM"),
         st("PROGRAM Main VAR i : INT; r : REAL := 2.5; END_VAR i := REAL_TO_INT(r); END_PROGRAM");
     NotAssignable: "The left side of `:=` is not a variable: a literal, an expression, a function call or a constant enumerator cannot be written.",
         st("PROGRAM Main VAR t : TON; END_VAR t.Q := TRUE; END_PROGRAM"),
         st("PROGRAM Main VAR t : TON; END_VAR t(IN := TRUE, PT := T#1s); END_PROGRAM");
-    AssignToConstant: "The target is read-only: a VAR CONSTANT or a system variable such as `FirstScan`.",
+    AssignToConstant: "The target is read-only: a VAR CONSTANT or a system variable such as `FST_SCN`.",
         st("PROGRAM Main VAR CONSTANT limit : INT := 10; END_VAR limit := 20; END_PROGRAM"),
         st("PROGRAM Main VAR limit : INT := 10; END_VAR limit := 20; END_PROGRAM");
     OperatorTypeMismatch: "The operator does not accept these operand types: arithmetic needs numbers (or TIME), `AND`/`OR` need BOOL or bit strings, both sides must have the same type family.",
@@ -214,7 +214,7 @@ explanations! {
     RefNotAVariable: "`REF(x)` takes a whole variable, an array element or a struct field. A single bit has no address of its own, and a write through a reference to a subrange variable would skip its range check.",
         st("PROGRAM Main VAR w : WORD; r : REF_TO BOOL; END_VAR r := REF(w.3); END_PROGRAM"),
         st("PROGRAM Main VAR w : WORD; r : REF_TO WORD; END_VAR r := REF(w); END_PROGRAM");
-    UnknownFunction: "The name called is neither a standard function, a FUNCTION, nor a function block instance.",
+    UnknownFunction: "The name called is neither a standard function, a FUNCTION, nor a function block instance. A close name is suggested (`did you mean SQRT?`).",
         st("PROGRAM Main VAR x : REAL; END_VAR x := SQUARE(2.0); END_PROGRAM"),
         st("PROGRAM Main VAR x : REAL; END_VAR x := EXPT(2.0, 2.0); END_PROGRAM");
     WrongArgumentCount: "A call gives more or fewer arguments than the function takes.",
@@ -325,7 +325,7 @@ explanations! {
     LadderInstanceType: "A block's instance is declared with another type than the block's, or a FUNCTION block was given an instance.",
         drawn("A `TON` block with instance `C1` declared `C1 : CTU;`."),
         drawn("Instance `T1` declared `T1 : TON;`.");
-    LadderUndeclaredOperand: "An operand names a variable that the POU does not declare. Declare it (the editor offers `Declare NAME` with the type the use implies).",
+    LadderUndeclaredOperand: "An operand names a variable that the POU does not declare. Declare it (the problem list offers `Declare NAME` with the type the use implies: a contact's operand is a BOOL input, a coil's a BOOL output), or, when the message asks `did you mean NAME?`, take `Replace with NAME`.",
         drawn("A contact `Start` in a POU whose declarations have no `Start`."),
         drawn("`Start : BOOL;` added to the declarations.");
     NetworkNotRunnable: "An LD or FBD network from another tool (kept as it was drawn, not as rungs) has an element the trainer cannot run: a wire from an element that does not exist, functions wired in a loop with no function block to hold a value, a jump or return outside the rung grid, an input of a function left unwired. The message names the element by its `localId`; the file's tool shows the same number.",
@@ -579,7 +579,9 @@ fn indent(text: &str) -> String {
 const PAGE_INTRO: &str =
     "Every problem the trainer reports has a stable code. Errors (E) stop the program from \
 running; warnings (W) let it run but point at something that is probably not meant. `plc \
-explain CODE` prints the same text.";
+explain CODE` prints the same text. A name one or two letters away from a declared one gets \
+`did you mean NAME?` at the end of its message, and the page's problem list offers the fix \
+with one click (`Replace with NAME`, `Declare NAME`).";
 
 /// `docs/problems.md`: every code with its explanation and examples. Generated; a test
 /// keeps the file current (`cargo run -p plc-core --bin plc -- explain --markdown >

@@ -285,6 +285,13 @@ impl Catalog {
         }
     }
 
+    /// The names of the block types, as declared, in alphabetical order.
+    pub fn block_names(&self) -> Vec<String> {
+        let mut names: Vec<String> = self.blocks.values().map(|b| b.name.clone()).collect();
+        names.sort();
+        names
+    }
+
     /// The FB or FUNCTION type named `name` (standard FBs and the project's POUs).
     pub fn block(&self, name: &str) -> Option<&BlockType> {
         self.blocks.get(&name.trim().to_ascii_uppercase())

@@ -595,6 +595,44 @@ pub fn implied_declaration(
     }
 }
 
+/// `operand` with its root variable `name` (`Motr` of `Motr`, `T1` of `T1.Q`) spelled
+/// `with`; `None` when its root is another name.
+fn with_root(operand: &str, name: &str, with: &str) -> Option<String> {
+    let text = operand.trim();
+    let root_len =
+        text.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(text.len());
+    text[..root_len].eq_ignore_ascii_case(name).then(|| format!("{with}{}", &text[root_len..]))
+}
+
+/// The edit that puts `with` in place of the undeclared `name` at `at` (the fix offered
+/// for an E0418 whose message ends in `did you mean WITH?`): a contact's or coil's
+/// operand, a block's instance, or the first of a block's pins bound to it. `None` when
+/// nothing at `at` names `name`.
+pub fn replace_name(pou: &LadderPou, at: CellRef, name: &str, with: &str) -> Option<LadderEdit> {
+    match &pou.cell(at)?.element {
+        Element::Contact { operand, .. } | Element::Coil { operand, .. } => {
+            Some(LadderEdit::SetOperand { at, operand: with_root(operand, name, with)? })
+        }
+        Element::Block(b) => {
+            if b.instance.as_deref().is_some_and(|i| i.trim().eq_ignore_ascii_case(name)) {
+                return Some(LadderEdit::SetOperand { at, operand: with.to_string() });
+            }
+            let lists = [
+                (PinKind::Input, &b.inputs),
+                (PinKind::Output, &b.outputs),
+                (PinKind::InOut, &b.in_outs),
+            ];
+            lists.into_iter().find_map(|(kind, pins)| {
+                pins.iter().find_map(|p| {
+                    let operand = with_root(&p.operand, name, with)?;
+                    Some(LadderEdit::SetPin { at, kind, pin: p.name.clone(), operand })
+                })
+            })
+        }
+        _ => None,
+    }
+}
+
 /// Whether `declarations` declares `name` (read by the parser, as the checker reads it).
 fn declares(declarations: &str, name: &str) -> bool {
     super::catalog::declared_names(declarations).iter().any(|n| n.eq_ignore_ascii_case(name))

@@ -16,7 +16,8 @@ mod walk;
 pub use catalog::{Catalog, Variable};
 pub use complete::{operand_choices, OperandChoice};
 pub use edit::{
-    declare, describe_cell, implied_declaration, CellRef, EditError, LadderEdit, PinKind,
+    declare, describe_cell, implied_declaration, replace_name, CellRef, EditError, LadderEdit,
+    PinKind,
 };
 pub use il_view::{has_il_view, il_view};
 pub use lower::{is_hidden_name, lower, power_map, power_var, LineMap, LoweredPou};

@@ -287,7 +287,7 @@ impl<'a> Checker<'a> {
                 };
                 if matches!(place, Place::Bit(..) | Place::Slice(..)) {
                     let msg = format!(
-                        "`{}` is VAR_IN_OUT: a bit or a located variable (a part of the process image) has no cell of its own to pass; copy it to a variable",
+                        "the output `{}` is written to a whole variable, not to a bit or a located variable (a part of the process image): write it to a variable, then copy that",
                         param.name
                     );
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
@@ -295,13 +295,25 @@ impl<'a> Checker<'a> {
                     continue;
                 }
                 if ty != param.ty || (negated && !ty.is_bool()) {
-                    let msg = format!(
-                        "output `{}` is {} but `{}` is {}",
-                        param.name,
-                        self.tname(param.ty),
-                        "the target",
-                        self.tname(ty)
-                    );
+                    let target = match place_text(value_expr) {
+                        Some(text) => format!("`{text}`"),
+                        None => "the variable it is written to".to_string(),
+                    };
+                    let msg = if ty != param.ty {
+                        format!(
+                            "the output `{}` is {}, but {target} is {}: an output is written to a variable of its own type",
+                            param.name,
+                            self.tname(param.ty),
+                            self.tname(ty)
+                        )
+                    } else {
+                        format!(
+                            "`NOT {} =>` negates a BOOL output, but `{}` is {}",
+                            param.name,
+                            param.name,
+                            self.tname(param.ty)
+                        )
+                    };
                     self.error(Code::TypeMismatch, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -380,4 +392,19 @@ impl<'a> Checker<'a> {
         }
         ok.then_some(out)
     }
+}
+
+/// A place as written (`x`, `s.f`, `a[…]`, `w.3`, `r^`), for messages; `None` for
+/// anything else.
+fn place_text(e: &ast::Expr) -> Option<String> {
+    use ast::ExprKind as K;
+    Some(match &e.kind {
+        K::Name(id) => id.name.clone(),
+        K::Paren(inner) => return place_text(inner),
+        K::Member(base, field) => format!("{}.{}", place_text(base)?, field.name),
+        K::Bit(base, n) => format!("{}.{n}", place_text(base)?),
+        K::Index(base, _) => format!("{}[…]", place_text(base)?),
+        K::Deref(base) => format!("{}^", place_text(base)?),
+        _ => return None,
+    })
 }

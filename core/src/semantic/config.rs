@@ -250,7 +250,7 @@ impl Checker<'_> {
             .map(|v| (v.name.clone(), v.ty));
         let Some((param, ty)) = param else {
             let what = if conn.output { "VAR_OUTPUT (`=>`)" } else { "VAR_INPUT (`:=`)" };
-            let msg = format!("`{}` is no {what} of PROGRAM `{}`", conn.param.name, prog.name);
+            let msg = format!("`{}` is not a {what} of PROGRAM `{}`", conn.param.name, prog.name);
             self.error(Code::BadProgramConnection, conn.param.span, msg);
             return;
         };
@@ -291,7 +291,7 @@ impl Checker<'_> {
             return fail(
                 self,
                 first.span,
-                format!("`{}` is no program instance of the configuration", first.name),
+                format!("`{}` is not a program instance of the configuration", first.name),
             );
         };
         let mut pou = inst.pou;
@@ -301,14 +301,14 @@ impl Checker<'_> {
             let Some(var) = vars.iter().find(|x| x.name.eq_ignore_ascii_case(&name.name)).cloned()
             else {
                 let owner = self.pous[pou as usize].name.clone();
-                return fail(self, name.span, format!("`{owner}` has no `{}`", name.name));
+                return fail(self, name.span, format!("`{owner}` has no variable `{}`", name.name));
             };
             if k + 1 < rest.len() {
                 let Type::Fb(q) = var.ty else {
                     return fail(
                         self,
                         name.span,
-                        format!("`{}` is no function block instance", name.name),
+                        format!("`{}` is not a function block instance", name.name),
                     );
                 };
                 pou = q;

@@ -367,3 +367,20 @@ fn sfc_steps_actions_and_guards_get_did_you_mean() {
         "{errs:?}"
     );
 }
+
+#[test]
+fn an_output_written_to_the_wrong_place_names_the_output_and_the_target() {
+    // Was "output `ET` is TIME but `the target` is INT".
+    let d = first_error(&program("t(IN := b, PT := T#1s, ET => i);"));
+    assert_eq!(d.code, Code::TypeMismatch);
+    assert_eq!(d.message, "the output `ET` is TIME, but `i` is INT: an output is written to a variable of its own type");
+    let d = first_error(&program("t(IN := b, PT := T#1s, NOT ET => r);"));
+    assert_eq!(d.message, "the output `ET` is TIME, but `r` is REAL: an output is written to a variable of its own type");
+    // Was "`Q` is VAR_IN_OUT: …" though Q is an output.
+    let d = first_error(&program("t(IN := b, PT := T#1s, Q => w.3);"));
+    assert_eq!(d.code, Code::InOutNotVariable);
+    assert_eq!(
+        d.message,
+        "the output `Q` is written to a whole variable, not to a bit or a located variable (a part of the process image): write it to a variable, then copy that"
+    );
+}

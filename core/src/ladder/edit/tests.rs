@@ -372,3 +372,42 @@ fn an_undeclared_operand_implies_its_declaration() {
         "a member implies no type"
     );
 }
+
+#[test]
+fn a_misspelled_operand_is_replaced_by_the_name_suggested() {
+    let mut pou = apply_all(
+        empty(1, 3),
+        &[
+            LadderEdit::Place { at: at(0, 0, 0), element: no("Strat") },
+            LadderEdit::Place { at: at(0, 0, 1), element: ton("T11", 1) },
+            LadderEdit::Place { at: at(0, 0, 2), element: coil("Tmr.Q") },
+        ],
+    );
+    let fix = replace_name(&pou, at(0, 0, 0), "strat", "Start").unwrap();
+    assert_eq!(fix, LadderEdit::SetOperand { at: at(0, 0, 0), operand: "Start".into() });
+    let fix = replace_name(&pou, at(0, 0, 2), "Tmr", "T1").unwrap();
+    assert_eq!(fix, LadderEdit::SetOperand { at: at(0, 0, 2), operand: "T1.Q".into() });
+    let fix = replace_name(&pou, at(0, 0, 1), "T11", "T1").unwrap();
+    assert_eq!(fix, LadderEdit::SetOperand { at: at(0, 0, 1), operand: "T1".into() });
+    pou = pou
+        .apply(&LadderEdit::SetPin {
+            at: at(0, 0, 1),
+            kind: PinKind::Input,
+            pin: "PT".into(),
+            operand: "Dealy".into(),
+        })
+        .unwrap();
+    let fix = replace_name(&pou, at(0, 0, 1), "Dealy", "Delay").unwrap();
+    assert_eq!(
+        fix,
+        LadderEdit::SetPin {
+            at: at(0, 0, 1),
+            kind: PinKind::Input,
+            pin: "PT".into(),
+            operand: "Delay".into()
+        }
+    );
+    let fixed = pou.apply(&fix).unwrap();
+    assert_eq!(replace_name(&fixed, at(0, 0, 1), "Dealy", "Delay"), None, "nothing left to fix");
+    assert_eq!(replace_name(&pou, at(0, 0, 0), "Other", "X"), None);
+}
