@@ -350,6 +350,22 @@ pub fn Editor() -> impl IntoView {
             }
         }
     });
+    // Quick fixes from the problem list (`Replace with NAME`, `Declare NAME`): one undo
+    // step each, the caret at the fix.
+    Effect::new(move |_| {
+        let mounted = ed.ta.get().is_some() && state.view.get() == PouView::St;
+        if let Some((text, caret)) = state.st_fix.get() {
+            if mounted {
+                state.st_fix.set(None);
+                let caret = text::floor_boundary(&text, caret);
+                ed.apply(Edit { text, start: caret, end: caret });
+                ed.flush();
+                if let Some(ta) = ed.textarea() {
+                    let _ = ta.focus();
+                }
+            }
+        }
+    });
     // Never lose the last keystrokes when the page closes.
     let _ = window_event_listener(ev::beforeunload, move |_| ed.flush());
 

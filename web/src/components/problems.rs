@@ -3,17 +3,120 @@
 //! element). Each problem links to its code's explanation and examples in
 //! `problems.html` (generated from the code table: `plc explain --html`), a static page of
 //! the site that costs nothing until it is opened.
+//!
+//! Quick fixes stand beside the problems they fix, each one undo step of the editor it
+//! changes: `Replace with NAME` where the message ends in `did you mean NAME?` (in the ST
+//! source and in a ladder POU), `Declare NAME` for a name used undeclared (in the ST
+//! source, in the POU that uses it; in a ladder POU, with the type its use implies). Core
+//! computes every edit (`plc_core::syntax::fix`, `plc_core::ladder`); this list only asks
+//! the editor to apply it.
 
 use leptos::prelude::*;
+use plc_core::build::Site;
+use plc_core::diagnostics::Span;
+use plc_core::ladder::{implied_declaration, replace_name, CellRef, LadderEdit};
 
-use crate::state::AppState;
+use crate::state::{AppState, DiagView, PouView};
 
-/// "1 error" / "2 errors".
-fn count(n: usize, word: &str) -> String {
-    if n == 1 {
-        format!("1 {word}")
-    } else {
-        format!("{n} {word}s")
+/// The words of the problem list (one place, for the translation catalogue to come).
+mod words {
+    pub const HEADING: &str = "Problems";
+    pub const REGION: &str = "Problems of the project";
+    pub const LIST: &str = "Problems";
+    pub const NONE: &str = "No problems found.";
+    pub const ERROR: &str = "Error";
+    pub const WARNING: &str = "Warning";
+    pub fn count(n: usize, word: &str) -> String {
+        if n == 1 {
+            format!("1 {word}")
+        } else {
+            format!("{n} {word}s")
+        }
+    }
+    pub fn declare(name: &str) -> String {
+        format!("Declare {name}")
+    }
+    pub fn declare_title(name: &str, ty: &str) -> String {
+        format!("Add `{name} : {ty};` to the declarations of the POU that uses it")
+    }
+    pub fn replace(with: &str) -> String {
+        format!("Replace with {with}")
+    }
+    pub fn replace_title(name: &str, with: &str) -> String {
+        format!("Write {with} in place of {name}")
+    }
+    pub fn explain(code: &str) -> String {
+        format!("Explain {code}")
+    }
+    pub fn not_declarable(name: &str) -> String {
+        format!("{name} cannot be declared from here: add it to the POU's VAR block.")
+    }
+}
+
+/// A quick fix offered beside a problem.
+#[derive(Clone)]
+enum Fix {
+    /// Put `with` in place of the ST text at `span`.
+    StReplace { span: Span, name: String, with: String },
+    /// Declare `name` (used undeclared at `span`) in the ST POU that uses it.
+    StDeclare { span: Span, name: String, ty: String },
+    /// Apply `edit` to ladder POU `pou`.
+    Ladder { pou: String, name: String, with: String, edit: LadderEdit },
+    /// Declare an undeclared ladder operand (E0418) in `pou`'s declarations.
+    LadderDeclare { pou: String, section: &'static str, name: String, ty: String },
+}
+
+impl Fix {
+    fn label(&self) -> String {
+        match self {
+            Fix::StReplace { with, .. } | Fix::Ladder { with, .. } => words::replace(with),
+            Fix::StDeclare { name, .. } | Fix::LadderDeclare { name, .. } => words::declare(name),
+        }
+    }
+
+    fn title(&self) -> String {
+        match self {
+            Fix::StReplace { name, with, .. } | Fix::Ladder { name, with, .. } => {
+                words::replace_title(name, with)
+            }
+            Fix::StDeclare { name, ty, .. } | Fix::LadderDeclare { name, ty, .. } => {
+                words::declare_title(name, ty)
+            }
+        }
+    }
+
+    /// Asks the editor concerned to apply the fix (one undo step there).
+    fn apply(&self, state: AppState) {
+        match self.clone() {
+            Fix::StReplace { span, with, .. } => {
+                let source = state.project.with_untracked(|p| p.source.clone());
+                if let Some(text) = plc_core::syntax::fix::replace_span(&source, span, &with) {
+                    let caret = span.start as usize + with.len();
+                    state.view.set(PouView::St);
+                    state.st_fix.set(Some((text, caret)));
+                }
+            }
+            Fix::StDeclare { span, name, ty } => {
+                let source = state.project.with_untracked(|p| p.source.clone());
+                match plc_core::syntax::fix::declare_variable(&source, span, &name, &ty) {
+                    Some(text) => {
+                        // The caret stays on the use, which moved down by the new line.
+                        let caret = span.start as usize + (text.len() - source.len());
+                        state.view.set(PouView::St);
+                        state.st_fix.set(Some((text, caret)));
+                    }
+                    None => state.error(words::not_declarable(&name)),
+                }
+            }
+            Fix::Ladder { pou, edit, .. } => {
+                state.view.set(PouView::Ladder(pou.clone()));
+                state.ladder_fix.update(|q| q.push((pou, edit)));
+            }
+            Fix::LadderDeclare { pou, section, name, ty } => {
+                state.view.set(PouView::Ladder(pou.clone()));
+                state.ladder_declare.update(|q| q.push((pou, section, name, ty)));
+            }
+        }
     }
 }
 
@@ -24,38 +127,40 @@ pub fn Problems() -> impl IntoView {
     let summary = move || {
         state.diagnostics.with(|ds| {
             let errors = ds.iter().filter(|d| d.error).count();
-            format!("{}, {}", count(errors, "error"), count(ds.len() - errors, "warning"))
+            format!(
+                "{}, {}",
+                words::count(errors, "error"),
+                words::count(ds.len() - errors, "warning")
+            )
         })
     };
     let list = move || {
         let ds = state.diagnostics.get();
         if ds.is_empty() {
-            return view! { <p class="ed-ok">"No problems found."</p> }.into_any();
+            return view! { <p class="ed-ok">{words::NONE}</p> }.into_any();
         }
         view! {
-            <ul class="ed-problems" aria-label="Problems">
+            <ul class="ed-problems" aria-label=words::LIST>
                 {ds.into_iter().map(|d| {
                     let class = if d.error { "ed-problem ed-problem-err" } else { "ed-problem ed-problem-warn" };
                     let label = format!("{}  {}  {}", d.place_label(), d.code, d.message);
                     let site = d.site.clone();
-                    let fix = declare_fix(state, &d);
+                    let fixes = fixes(state, &d);
                     let help = format!("problems.html#{}", d.code);
-                    let help_name = format!("Explain {}", d.code);
+                    let help_name = words::explain(&d.code);
                     view! {
                         <li>
-                            <button class=class title=if d.error { "Error" } else { "Warning" }
+                            <button class=class title=if d.error { words::ERROR } else { words::WARNING }
                                 on:click=move |_| state.reveal(&site)>
                                 {label}
                             </button>
-                            {fix.map(|(pou, section, name, ty)| {
-                                let label = format!("Declare {name}");
+                            {fixes.into_iter().map(|fix| {
+                                let (label, title) = (fix.label(), fix.title());
                                 view! {
-                                    <button class="ed-problem-fix" on:click=move |_| {
-                                        state.view.set(crate::state::PouView::Ladder(pou.clone()));
-                                        state.ladder_declare.update(|q| q.push((pou.clone(), section, name.clone(), ty.clone())));
-                                    }>{label}</button>
+                                    <button class="ed-problem-fix" title=title
+                                        on:click=move |_| fix.apply(state)>{label}</button>
                                 }
-                            })}
+                            }).collect_view()}
                             <a class="ed-problem-help" href=help target="_blank" rel="noopener"
                                 aria-label=help_name.clone() title=help_name>"?"</a>
                         </li>
@@ -66,9 +171,9 @@ pub fn Problems() -> impl IntoView {
         .into_any()
     };
     view! {
-        <section class="panel problems" aria-label="Problems of the project">
+        <section class="panel problems" aria-label=words::REGION>
             <div class="panel-head">
-                <h2>"Problems"</h2>
+                <h2>{words::HEADING}</h2>
                 <span class="muted small-text">{summary}</span>
             </div>
             {list}
@@ -76,22 +181,54 @@ pub fn Problems() -> impl IntoView {
     }
 }
 
-/// The fix of an undeclared ladder operand (E0418): the POU, and the section, name and type
-/// its use implies.
-fn declare_fix(
-    state: AppState,
-    d: &crate::state::DiagView,
-) -> Option<(String, &'static str, String, String)> {
-    use plc_core::build::Site;
-    use plc_core::ladder::{implied_declaration, CellRef};
-    if d.code != "E0418" {
-        return None;
+/// The fixes of problem `d`: `Replace with NAME` first (the likelier intent when there is
+/// a close name), then `Declare NAME`.
+fn fixes(state: AppState, d: &DiagView) -> Vec<Fix> {
+    let mut out = Vec::new();
+    match &d.site {
+        Site::St { span, .. } => {
+            let name = state.project.with_untracked(|p| {
+                p.source.get(span.start as usize..span.end as usize).map(str::to_string)
+            });
+            let Some(name) = name.filter(|n| plc_core::syntax::is_identifier(n)) else {
+                return out;
+            };
+            if let Some(with) = &d.suggestion {
+                out.push(Fix::StReplace { span: *span, name: name.clone(), with: with.clone() });
+            }
+            if d.code == "E0100" && declarable_at(state, *span) {
+                let ty = d.implied_type.clone().unwrap_or_else(|| "BOOL".to_string());
+                out.push(Fix::StDeclare { span: *span, name, ty });
+            }
+        }
+        Site::Ladder { pou, cell: Some((r, row, col)) } if d.code == "E0418" => {
+            let at = CellRef::new(*r, *row, *col);
+            let Some(name) = d.message.split('`').nth(1).map(str::to_string) else { return out };
+            state.project.with_untracked(|p| {
+                let Some(lp) = p.ladder.iter().find(|l| l.name.eq_ignore_ascii_case(pou)) else {
+                    return;
+                };
+                if let Some(with) = &d.suggestion {
+                    if let Some(edit) = replace_name(lp, at, &name, with) {
+                        let (pou, with) = (lp.name.clone(), with.clone());
+                        out.push(Fix::Ladder { pou, name: name.clone(), with, edit });
+                    }
+                }
+                if let Some((section, ty)) = implied_declaration(lp, at, &name) {
+                    out.push(Fix::LadderDeclare { pou: lp.name.clone(), section, name, ty });
+                }
+            });
+        }
+        _ => {}
     }
-    let Site::Ladder { pou, cell: Some((r, row, col)) } = &d.site else { return None };
-    let name = d.message.split('`').nth(1)?.to_string();
+    out
+}
+
+/// Whether the undeclared name at `span` of the ST source is a variable of its own (not
+/// `s.Motr`, not `Mode#Rnu`), which `Declare NAME` can declare.
+fn declarable_at(state: AppState, span: Span) -> bool {
     state.project.with_untracked(|p| {
-        let lp = p.ladder.iter().find(|l| l.name.eq_ignore_ascii_case(pou))?;
-        let (section, ty) = implied_declaration(lp, CellRef::new(*r, *row, *col), &name)?;
-        Some((lp.name.clone(), section, name.clone(), ty))
+        let before = p.source.get(..span.start as usize).unwrap_or_default().trim_end();
+        !(before.ends_with('.') || before.ends_with('#'))
     })
 }

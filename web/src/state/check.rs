@@ -20,6 +20,10 @@ pub struct DiagView {
     pub message: String,
     /// Where the problem is.
     pub site: Site,
+    /// The declared name an unknown one probably misspells (`Replace with NAME`).
+    pub suggestion: Option<String>,
+    /// For an undeclared name, the type its use implies when the checker knows it.
+    pub implied_type: Option<String>,
 }
 
 impl DiagView {
@@ -29,6 +33,8 @@ impl DiagView {
             code: d.code.as_str().to_string(),
             message: d.message.clone(),
             site: d.site.clone(),
+            suggestion: d.suggestion.clone(),
+            implied_type: d.implied_type.clone(),
         }
     }
 

@@ -151,8 +151,16 @@ pub struct AppState {
     /// `Declare NAME`): (POU, section, name, type), queued; the view of that POU adds each
     /// to the declarations it has then, through its editor, so each is one undo step.
     pub ladder_declare: RwSignal<Vec<(String, &'static str, String, String)>>,
+    /// Edits asked for from the problem list for a ladder POU (`Replace with NAME`):
+    /// (POU, edit), queued; the view of that POU applies each through its editor, so each
+    /// is one undo step.
+    pub ladder_fix: RwSignal<Vec<(String, plc_core::ladder::LadderEdit)>>,
     /// A request to move the ST editor's cursor to (line, column).
     pub jump_to: RwSignal<Option<(u32, u32)>>,
+    /// A quick fix of the ST source asked for from the problem list (`Replace with NAME`,
+    /// `Declare NAME`): the new source and the byte offset for the caret, applied by the ST
+    /// editor as one undo step.
+    pub st_fix: RwSignal<Option<(String, usize)>>,
     /// A ladder cell or net element to point out in its view (a clicked problem).
     pub focus: RwSignal<Option<Site>>,
     /// The ST line of a runtime fault (marked in the editor).
@@ -201,7 +209,9 @@ impl AppState {
             notice: RwSignal::new(None),
             view: RwSignal::new(PouView::St),
             ladder_declare: RwSignal::new(Vec::new()),
+            ladder_fix: RwSignal::new(Vec::new()),
             jump_to: RwSignal::new(None),
+            st_fix: RwSignal::new(None),
             focus: RwSignal::new(None),
             marked_line: RwSignal::new(None),
             fault_site: RwSignal::new(None),

@@ -419,6 +419,20 @@ pub fn LadderView(name: String) -> impl IntoView {
             }
         }
     });
+    // Edits asked for from the problem list (Replace with NAME), each one undo step.
+    let this_pou = name.clone();
+    Effect::new(move |_| {
+        let mine: Vec<_> = state.ladder_fix.with(|q| {
+            q.iter().filter(|(p, _)| p.eq_ignore_ascii_case(&this_pou)).cloned().collect()
+        });
+        if mine.is_empty() {
+            return;
+        }
+        state.ladder_fix.update(|q| q.retain(|(p, _)| !p.eq_ignore_ascii_case(&this_pou)));
+        for (_, edit) in mine {
+            editor.apply(&edit, None);
+        }
+    });
     let ghost = move || {
         let d = editor.drag.get().filter(|d| d.moved)?;
         let label = match &d.source {
