@@ -8,6 +8,13 @@ use plc_core::vm::Value;
 
 use crate::state::AppState;
 
+/// The box beside a BOOL input that makes its switch a push button, and what it does (shown
+/// above the inputs, so it reads on touch screens too, not only as a tooltip).
+const HOLD: &str = "hold";
+const HOLD_TITLE: &str = "Push button: TRUE only while held";
+const HOLD_LEGEND: &str =
+    "Tick “hold” beside a switch to make it a push button: TRUE only while you hold it down.";
+
 /// What kind of control an I/O variable gets.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Kind {
@@ -117,6 +124,12 @@ pub fn IoPanel() -> impl IntoView {
                 <div class="io-col">
                     <h3>"Inputs"</h3>
                     {move || {
+                        let switches = vars.with(|v| {
+                            v.0.iter().any(|i| i.kind == Kind::Bool && i.from_plant.is_none())
+                        });
+                        switches.then(|| view! { <p class="io-legend muted small-text">{HOLD_LEGEND}</p> })
+                    }}
+                    {move || {
                         let inputs = vars.with(|v| v.0.clone());
                         if inputs.is_empty() {
                             view! { <p class="muted">"No BOOL or numeric inputs (VAR_INPUT or AT %I…)."</p> }.into_any()
@@ -201,8 +214,8 @@ fn BoolInput(var: IoVar) -> impl IntoView {
                     on:blur=move |_| release()/>
                 <span class="io-name">{var.name.clone()}</span>
             </label>
-            <label class="push-mode" title="Push button: TRUE only while held">
-                <input type="checkbox" aria-label=format!("{}: push button", var.name)
+            <label class="push-mode" title=HOLD_TITLE>
+                <input type="checkbox" aria-label=format!("{}: {HOLD} (push button)", var.name)
                     prop:checked=move || push.get()
                     on:change=move |ev| {
                         push.set(event_target_checked(&ev));
@@ -210,7 +223,7 @@ fn BoolInput(var: IoVar) -> impl IntoView {
                             set(false);
                         }
                     }/>
-                "push"
+                {HOLD}
             </label>
         </div>
     }
