@@ -86,6 +86,37 @@ where
     best.map(|(_, c)| c)
 }
 
+/// [`closest`] for candidates that come in no particular order (the keys of a map): a tie
+/// goes to the name first in alphabetical order (ignoring case), so the hint is still
+/// deterministic.
+pub fn closest_in_set<'c, I>(name: &str, candidates: I) -> Option<&'c str>
+where
+    I: IntoIterator<Item = &'c str>,
+{
+    let limit = max_distance(name);
+    if limit == 0 {
+        return None;
+    }
+    let mut best: Option<(usize, &'c str)> = None;
+    for candidate in candidates {
+        if candidate.contains("__") || candidate.eq_ignore_ascii_case(name) {
+            continue;
+        }
+        let bound = best.map_or(limit, |(d, _)| d);
+        let d = distance(name, candidate, bound);
+        let better = match best {
+            None => d <= limit,
+            Some((b, c)) => {
+                d < b || d == b && candidate.to_ascii_uppercase() < c.to_ascii_uppercase()
+            }
+        };
+        if better && d > 0 {
+            best = Some((d, candidate));
+        }
+    }
+    best.map(|(_, c)| c)
+}
+
 /// `; did you mean NAME?` for a message, or nothing.
 pub fn hint(suggestion: Option<&str>) -> String {
     suggestion.map(|s| format!("; did you mean {s}?")).unwrap_or_default()
@@ -120,6 +151,15 @@ mod tests {
         assert_eq!(closest("Lamp", ["Lamp2", "Lamp1"]), Some("Lamp2"));
         // A closer one later beats a farther one first.
         assert_eq!(closest("Pumps", ["Pump_1", "Pumpz"]), Some("Pumpz"));
+    }
+
+    #[test]
+    fn in_a_set_a_tie_goes_to_the_first_name_in_alphabetical_order() {
+        assert_eq!(closest_in_set("Lamp", ["lamp2", "Lamp1", "Lump"]), Some("Lamp1"));
+        assert_eq!(closest_in_set("Lamp", ["Lump", "Lamp2"]), Some("Lamp2"));
+        assert_eq!(closest_in_set("Motr", ["Mtr", "Motor"]), Some("Motor"));
+        assert_eq!(closest_in_set("x", ["y"]), None);
+        assert_eq!(closest_in_set("Pump", ["Motor"]), None);
     }
 
     #[test]

@@ -285,11 +285,12 @@ impl Catalog {
         }
     }
 
-    /// The names of the block types, as declared, in alphabetical order.
-    pub fn block_names(&self) -> Vec<String> {
-        let mut names: Vec<String> = self.blocks.values().map(|b| b.name.clone()).collect();
-        names.sort();
-        names
+    /// The block type `name` probably misspells (`did you mean TON?`), as declared.
+    pub fn closest_block(&self, name: &str) -> Option<&str> {
+        crate::diagnostics::suggest::closest_in_set(
+            name,
+            self.blocks.values().map(|b| b.name.as_str()),
+        )
     }
 
     /// The FB or FUNCTION type named `name` (standard FBs and the project's POUs).

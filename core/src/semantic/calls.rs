@@ -17,16 +17,20 @@ impl<'a> Checker<'a> {
     /// What a body can call, in the order a hint prefers them: its function block
     /// instances, the FUNCTIONs, the standard functions.
     fn callable_names(&self) -> Vec<String> {
-        let pou = self.pous.get(self.body.pou as usize);
-        let instances = pou
-            .into_iter()
-            .flat_map(|p| p.vars.iter())
-            .chain(&self.globals)
-            .filter(|v| matches!(v.ty, Type::Fb(_)))
-            .map(|v| v.name.clone());
-        let functions =
-            self.pous.iter().filter(|p| p.kind == PouKind::Function).map(|p| p.name.clone());
-        instances.chain(functions).chain(super::builtins::builtin_names()).collect()
+        let mut names = Vec::new();
+        let own = self.pous.get(self.body.pou as usize).map(|p| p.vars.as_slice());
+        for v in own.unwrap_or_default().iter().chain(&self.globals) {
+            if matches!(v.ty, Type::Fb(_)) {
+                names.push(v.name.clone());
+            }
+        }
+        for p in &self.pous {
+            if p.kind == PouKind::Function {
+                names.push(p.name.clone());
+            }
+        }
+        names.extend(super::builtins::builtin_names());
+        names
     }
 
     fn callee(&mut self, callee: &ast::Expr, in_expression: bool) -> Option<Callee> {
@@ -228,7 +232,8 @@ impl<'a> Checker<'a> {
                 ast::Arg::Input { name, value } => {
                     let Some(i) = callee.find_var(&name.name).filter(|i| params.contains(i)) else {
                         let msg = format!("`{}` has no input `{}`", callee.name, name.name);
-                        let inputs = params.iter().map(|&i| callee.vars[i as usize].name.clone());
+                        let inputs =
+                            params.iter().map(|&i| callee.vars[i as usize].name.clone()).collect();
                         self.error_suggesting(
                             Code::NoSuchParameter,
                             name.span,
@@ -249,7 +254,8 @@ impl<'a> Checker<'a> {
                             .vars
                             .iter()
                             .filter(|v| v.section == VarSection::Output)
-                            .map(|v| v.name.clone());
+                            .map(|v| v.name.clone())
+                            .collect();
                         self.error_suggesting(
                             Code::NoSuchParameter,
                             name.span,

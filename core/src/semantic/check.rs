@@ -116,18 +116,14 @@ impl<'a> Checker<'a> {
     /// Reports an error about the unknown `name` at `span`, ending in `did you mean NAME?`
     /// when one of `candidates` (in the order a hint prefers them) is close to it; true
     /// when it did.
-    pub fn error_suggesting<I>(
+    pub fn error_suggesting(
         &mut self,
         code: Code,
         span: Span,
         message: String,
         name: &str,
-        candidates: I,
-    ) -> bool
-    where
-        I: IntoIterator<Item = String>,
-    {
-        let candidates: Vec<String> = candidates.into_iter().collect();
+        candidates: Vec<String>,
+    ) -> bool {
         let suggestion =
             crate::diagnostics::suggest::closest(name, candidates.iter().map(String::as_str));
         let found = suggestion.is_some();
@@ -138,12 +134,17 @@ impl<'a> Checker<'a> {
     /// The names a declaration can give as a type, in the order a hint prefers them: the
     /// elementary types, the declared types, the function blocks.
     pub fn type_names(&self) -> Vec<String> {
-        let elementary = crate::values::Elem::ALL.iter().map(|e| e.name().to_string());
-        let strings = ["STRING", "WSTRING"].into_iter().map(String::from);
-        let declared = self.type_spellings.iter().cloned();
-        let blocks =
-            self.pous.iter().filter(|p| p.kind == PouKind::FunctionBlock).map(|p| p.name.clone());
-        elementary.chain(strings).chain(declared).chain(blocks).collect()
+        let mut names: Vec<String> =
+            crate::values::Elem::ALL.iter().map(|e| e.name().to_string()).collect();
+        names.push("STRING".into());
+        names.push("WSTRING".into());
+        names.extend_from_slice(&self.type_spellings);
+        for p in &self.pous {
+            if p.kind == PouKind::FunctionBlock {
+                names.push(p.name.clone());
+            }
+        }
+        names
     }
 
     /// Reports a warning.
@@ -454,10 +455,13 @@ pub(super) fn check_expression_in(
 
 /// The inputs, outputs and in-outs of a POU as declared: what a caller can name.
 pub(super) fn interface_names(pou: &Pou) -> Vec<String> {
-    pou.vars
-        .iter()
-        .filter(|v| matches!(v.section, VarSection::Input | VarSection::Output | VarSection::InOut))
-        .filter(|v| !v.name.contains("__"))
-        .map(|v| v.name.clone())
-        .collect()
+    let mut names = Vec::new();
+    for v in &pou.vars {
+        let public =
+            matches!(v.section, VarSection::Input | VarSection::Output | VarSection::InOut);
+        if public && !v.name.contains("__") {
+            names.push(v.name.clone());
+        }
+    }
+    names
 }

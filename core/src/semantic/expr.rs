@@ -579,12 +579,16 @@ impl<'a> Checker<'a> {
     /// The names a body can read, in the order a hint prefers them: the POU's variables as
     /// declared, the globals, the enumeration values, the system variables.
     fn names_in_scope(&self) -> Vec<String> {
-        let pou = self.pous.get(self.body.pou as usize);
-        let own = pou.into_iter().flat_map(|p| p.vars.iter().map(|v| v.name.clone()));
-        let globals = self.globals.iter().map(|g| g.name.clone());
-        let values = self.types.enums.iter().flat_map(|e| e.values.iter().map(|(n, _)| n.clone()));
-        let system = SysVar::NAMES.iter().map(|n| n.to_string());
-        own.chain(globals).chain(values).chain(system).collect()
+        let mut names = Vec::new();
+        if let Some(p) = self.pous.get(self.body.pou as usize) {
+            names.extend(p.vars.iter().map(|v| v.name.clone()));
+        }
+        names.extend(self.globals.iter().map(|g| g.name.clone()));
+        for e in &self.types.enums {
+            names.extend(e.values.iter().map(|(n, _)| n.clone()));
+        }
+        names.extend(SysVar::NAMES.iter().map(|n| n.to_string()));
+        names
     }
 
     /// The name of `ty` as a declaration writes it, for the types a `Declare NAME` fix

@@ -16,20 +16,14 @@ pub(super) struct Scope {
     pub locals: HashMap<String, Ident>,
     /// Global variables of the file, as declared.
     pub globals: HashMap<String, Ident>,
+    /// Every name as declared, the POU's in declaration order, then the globals (for
+    /// `did you mean`).
+    pub order: Vec<String>,
 }
 
 impl Scope {
     fn knows(&self, key: &str) -> bool {
         self.locals.contains_key(key) || self.globals.contains_key(key)
-    }
-
-    /// The variables' names as declared, the POU's in declaration order, then the globals.
-    fn names(&self) -> Vec<String> {
-        let mut locals: Vec<&Ident> = self.locals.values().collect();
-        locals.sort_by_key(|id| id.span.start);
-        let mut globals: Vec<&Ident> = self.globals.values().collect();
-        globals.sort_by_key(|id| id.span.start);
-        locals.into_iter().chain(globals).map(|id| id.name.clone()).collect()
     }
 }
 
@@ -199,7 +193,7 @@ pub(super) fn resolve<'a>(
             for ind in &assoc.indicators {
                 if !scope.knows(&ind.key()) {
                     let msg = format!("indicator `{}` is not a declared variable", ind.name);
-                    let hint = closest(&ind.name, &scope.names());
+                    let hint = closest(&ind.name, &scope.order);
                     let d = Diagnostic::error(Code::UndeclaredName, ind.span, msg);
                     diags.push(d.suggesting(hint.as_deref()));
                 }
@@ -217,7 +211,7 @@ pub(super) fn resolve<'a>(
                     let name = &assoc.action.name;
                     let mut known: Vec<String> =
                         chart.actions.iter().map(|a| a.name.name.clone()).collect();
-                    known.extend(scope.names());
+                    known.extend(scope.order.iter().cloned());
                     let hint = closest(name, &known);
                     let span = assoc.action.span;
                     let d = match &hint {

@@ -111,7 +111,7 @@ pub fn desugar(file: &mut SourceFile) -> Desugared {
         return out;
     }
     let reserved_clash = check_reserved(file, &mut out.diagnostics);
-    let globals = global_names(file);
+    let (globals, global_order) = global_names(file);
     let mut lowered = Vec::new();
     for (index, item) in file.items.iter().enumerate() {
         let Item::Pou(pou) = item else { continue };
@@ -128,8 +128,10 @@ pub fn desugar(file: &mut SourceFile) -> Desugared {
         for decl in pou.var_blocks.iter().flat_map(|b| &b.decls) {
             for n in &decl.names {
                 scope.locals.insert(n.key(), n.clone());
+                scope.order.push(n.name.clone());
             }
         }
+        scope.order.extend(global_order.iter().cloned());
         let mut diags = Vec::new();
         let chart = chart::resolve(pou, body, &scope, &mut diags);
         check_statements(&chart, body, &mut diags);
@@ -186,8 +188,10 @@ fn check_reserved(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> bool {
 }
 
 /// The global variables of the file: top-level VAR_GLOBAL and PROGRAM VAR_GLOBAL blocks.
-fn global_names(file: &SourceFile) -> HashMap<String, crate::syntax::Ident> {
+/// (By upper-case name, and the names as declared in order.)
+fn global_names(file: &SourceFile) -> (HashMap<String, crate::syntax::Ident>, Vec<String>) {
     let mut out = HashMap::new();
+    let mut order = Vec::new();
     let blocks = file.items.iter().flat_map(|item| match item {
         Item::Globals(b) => vec![b],
         Item::Pou(p) => p.var_blocks.iter().filter(|b| b.section == VarSection::Global).collect(),
@@ -197,9 +201,10 @@ fn global_names(file: &SourceFile) -> HashMap<String, crate::syntax::Ident> {
     for b in blocks {
         for n in b.decls.iter().flat_map(|d| &d.names) {
             out.insert(n.key(), n.clone());
+            order.push(n.name.clone());
         }
     }
-    out
+    (out, order)
 }
 
 /// Checks the statements of actions and transitions: no writes to step flags or action

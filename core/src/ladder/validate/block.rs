@@ -148,13 +148,10 @@ pub(crate) fn validate_block(
         || (ctx.is_none()
             && syntax::parse_expression(name).is_ok_and(|e| matches!(e.kind, ExprKind::Name(_))));
     if !known {
-        let mut candidates: Vec<String> =
-            crate::ladder::blocks::STANDARD_FUNCTIONS.iter().map(|n| n.to_string()).collect();
-        if let Some(c) = ctx {
-            candidates.extend(c.catalog.block_names());
-        }
-        let hint =
-            crate::diagnostics::suggest::closest(name, candidates.iter().map(String::as_str));
+        let functions = crate::ladder::blocks::STANDARD_FUNCTIONS.iter().copied();
+        let hint = ctx
+            .and_then(|c| c.catalog.closest_block(name))
+            .or_else(|| crate::diagnostics::suggest::closest(name, functions));
         let msg = format!(
             "`{name}` is neither a standard block nor a FUNCTION_BLOCK or FUNCTION of the project{}",
             crate::diagnostics::suggest::hint(hint)
