@@ -339,30 +339,26 @@ pub fn Editor() -> impl IntoView {
         state.project_id.track();
         ed.history.set(History::default());
     });
-    // Jump requests (the fault banner's "Go to line", a clicked problem), once the editor
-    // is mounted and shown.
+    // Jump requests (the fault banner's "Go to line", a clicked problem) and quick fixes
+    // from the problem list (`Replace with NAME`, `Declare NAME`: one undo step each, the
+    // caret at the fix), once the editor is mounted and shown.
     Effect::new(move |_| {
         let mounted = ed.ta.get().is_some() && state.view.get() == PouView::St;
-        if let Some((line, column)) = state.jump_to.get() {
-            if mounted {
-                ed.jump(line, column);
-                state.jump_to.set(None);
-            }
+        let (jump, fix) = (state.jump_to.get(), state.st_fix.get());
+        if !mounted {
+            return;
         }
-    });
-    // Quick fixes from the problem list (`Replace with NAME`, `Declare NAME`): one undo
-    // step each, the caret at the fix.
-    Effect::new(move |_| {
-        let mounted = ed.ta.get().is_some() && state.view.get() == PouView::St;
-        if let Some((text, caret)) = state.st_fix.get() {
-            if mounted {
-                state.st_fix.set(None);
-                let caret = text::floor_boundary(&text, caret);
-                ed.apply(Edit { text, start: caret, end: caret });
-                ed.flush();
-                if let Some(ta) = ed.textarea() {
-                    let _ = ta.focus();
-                }
+        if let Some((line, column)) = jump {
+            ed.jump(line, column);
+            state.jump_to.set(None);
+        }
+        if let Some((text, caret)) = fix {
+            state.st_fix.set(None);
+            let caret = text::floor_boundary(&text, caret);
+            ed.apply(Edit { text, start: caret, end: caret });
+            ed.flush();
+            if let Some(ta) = ed.textarea() {
+                let _ = ta.focus();
             }
         }
     });

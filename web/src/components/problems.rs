@@ -196,7 +196,9 @@ fn fixes(state: AppState, d: &DiagView) -> Vec<Fix> {
             if let Some(with) = &d.suggestion {
                 out.push(Fix::StReplace { span: *span, name: name.clone(), with: with.clone() });
             }
-            if d.code == "E0100" && declarable_at(state, *span) {
+            // Only a name that is simply not declared (not a value two enumerations share).
+            let undeclared = d.message.starts_with(&format!("`{name}` is not declared"));
+            if d.code == "E0100" && undeclared && declarable_at(state, *span) {
                 let ty = d.implied_type.clone().unwrap_or_else(|| "BOOL".to_string());
                 out.push(Fix::StDeclare { span: *span, name, ty });
             }

@@ -402,34 +402,28 @@ pub fn LadderView(name: String) -> impl IntoView {
         cancels.remove();
     });
     // Declarations asked for from the problem list (Declare NAME) are added here, each an
-    // edit of the declarations as they are then.
+    // edit of the declarations as they are then; its other fixes (Replace with NAME) are
+    // applied as they come. Each is one undo step.
     let this_pou = name.clone();
     Effect::new(move |_| {
-        let mine: Vec<_> = state.ladder_declare.with(|q| {
-            q.iter().filter(|(p, ..)| p.eq_ignore_ascii_case(&this_pou)).cloned().collect()
-        });
-        if mine.is_empty() {
-            return;
+        let mine = |p: &String| p.eq_ignore_ascii_case(&this_pou);
+        let declares: Vec<_> =
+            state.ladder_declare.with(|q| q.iter().filter(|d| mine(&d.0)).cloned().collect());
+        let fixes: Vec<_> =
+            state.ladder_fix.with(|q| q.iter().filter(|f| mine(&f.0)).cloned().collect());
+        if !declares.is_empty() {
+            state.ladder_declare.update(|q| q.retain(|d| !mine(&d.0)));
         }
-        state.ladder_declare.update(|q| q.retain(|(p, ..)| !p.eq_ignore_ascii_case(&this_pou)));
-        for (_, section, var, ty) in mine {
+        if !fixes.is_empty() {
+            state.ladder_fix.update(|q| q.retain(|f| !mine(&f.0)));
+        }
+        for (_, section, var, ty) in declares {
             if let Some(current) = editor.pou() {
                 let text = plc_core::ladder::declare(&current.declarations, section, &var, &ty);
                 editor.apply(&plc_core::ladder::LadderEdit::SetDeclarations { text }, None);
             }
         }
-    });
-    // Edits asked for from the problem list (Replace with NAME), each one undo step.
-    let this_pou = name.clone();
-    Effect::new(move |_| {
-        let mine: Vec<_> = state.ladder_fix.with(|q| {
-            q.iter().filter(|(p, _)| p.eq_ignore_ascii_case(&this_pou)).cloned().collect()
-        });
-        if mine.is_empty() {
-            return;
-        }
-        state.ladder_fix.update(|q| q.retain(|(p, _)| !p.eq_ignore_ascii_case(&this_pou)));
-        for (_, edit) in mine {
+        for (_, edit) in fixes {
             editor.apply(&edit, None);
         }
     });
