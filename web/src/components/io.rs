@@ -12,8 +12,7 @@ use crate::state::AppState;
 /// above the inputs, so it reads on touch screens too, not only as a tooltip).
 const HOLD: &str = "hold";
 const HOLD_TITLE: &str = "Push button: TRUE only while held";
-const HOLD_LEGEND: &str =
-    "Tick “hold” beside a switch to make it a push button: TRUE only while you hold it down.";
+const HOLD_LEGEND: &str = "“hold”: a push button, TRUE only while held down.";
 
 /// What kind of control an I/O variable gets.
 #[derive(Debug, Clone, Copy, PartialEq)]
