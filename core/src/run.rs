@@ -274,7 +274,7 @@ fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticRep
         message,
         line,
         column,
-        suggestion: d.suggestion.clone(),
+        suggestion: d.suggestion().map(str::to_string),
     }
 }
 

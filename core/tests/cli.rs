@@ -72,6 +72,22 @@ END_PROGRAM";
 }
 
 #[test]
+fn run_json_gives_the_suggestion_of_a_misspelled_name_as_data() {
+    let src = "PROGRAM P\nVAR_OUTPUT Motor : BOOL; END_VAR\nMotr := TRUE;\nx := 1;\nEND_PROGRAM\n";
+    let path = source_file("misspelt.st", src);
+    let out = plc(&["run", path.to_str().expect("utf-8 path"), "--json"]);
+    assert!(!out.status.success());
+    let v: serde_json::Value = serde_json::from_str(&stdout(&out)).expect("one JSON object");
+    let d = &v["diagnostics"];
+    assert_eq!(d[0]["message"], "`Motr` is not declared; did you mean Motor?");
+    assert_eq!(d[0]["suggestion"], "Motor");
+    assert_eq!((d[0]["line"].as_u64(), d[0]["column"].as_u64()), (Some(3), Some(1)));
+    // No guess: no `suggestion` key at all.
+    assert_eq!(d[1]["message"], "`x` is not declared");
+    assert!(d[1].get("suggestion").is_none(), "{d}");
+}
+
+#[test]
 fn run_reports_a_fault_with_its_line_and_exits_non_zero() {
     let path = source_file(
         "fault.st",

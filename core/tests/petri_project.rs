@@ -176,8 +176,8 @@ fn a_misspelled_name_in_a_guard_gets_did_you_mean_at_the_transition() {
         .find(|d| d.code.as_str() == "E0100")
         .unwrap_or_else(|| panic!("{:?}", build.diagnostics));
     assert_eq!(d.message, "`Stopp` is not declared; did you mean Stop?");
-    assert_eq!(d.suggestion.as_deref(), Some("Stop"));
-    assert_eq!(d.implied_type.as_deref(), Some("BOOL"), "NOT of a guard: a BOOL");
+    assert_eq!(d.suggestion(), Some("Stop"));
+    assert_eq!(d.implied_type(), Some("BOOL"), "NOT of a guard: a BOOL");
     assert!(
         d.located_message().starts_with("POU Loop, transition go (guard line 1, column 5): "),
         "{}",

@@ -181,18 +181,47 @@ pub struct ProjectDiagnostic {
     pub message: String,
     /// Where the problem is.
     pub site: Site,
-    /// The declared name an unknown one probably misspells (the message ends with `did you
-    /// mean NAME?`): the editors' `Replace with NAME` fix (see [`Diagnostic::suggestion`]).
+    /// For an unknown name: the declared name it probably misspells and the type its use
+    /// implies, for the editors' quick fixes (see [`NameHint`]); boxed, as most problems
+    /// have none.
+    pub hint: Option<Box<NameHint>>,
+}
+
+/// What the editors' quick fixes of an unknown name need (see
+/// [`crate::diagnostics::Diagnostic::suggestion`] and
+/// [`crate::diagnostics::Diagnostic::implied_type`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct NameHint {
+    /// The declared name the unknown one probably misspells (the message ends with `did
+    /// you mean NAME?`): `Replace with NAME`.
     pub suggestion: Option<String>,
-    /// For an undeclared name, the type its use implies when the checker knows it: the
-    /// editors' `Declare NAME` fix (see [`Diagnostic::implied_type`]).
+    /// The type the use of an undeclared name implies, when the checker knows it:
+    /// `Declare NAME`.
     pub implied_type: Option<String>,
+}
+
+impl NameHint {
+    /// The hint of a diagnostic that has one.
+    fn of(suggestion: Option<String>, implied_type: Option<String>) -> Option<Box<NameHint>> {
+        (suggestion.is_some() || implied_type.is_some())
+            .then(|| Box::new(NameHint { suggestion, implied_type }))
+    }
 }
 
 impl ProjectDiagnostic {
     /// Whether this is an error.
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
+    }
+
+    /// The declared name an unknown one probably misspells (`Replace with NAME`).
+    pub fn suggestion(&self) -> Option<&str> {
+        self.hint.as_ref()?.suggestion.as_deref()
+    }
+
+    /// The type the use of an undeclared name implies, when known (`Declare NAME`).
+    pub fn implied_type(&self) -> Option<&str> {
+        self.hint.as_ref()?.implied_type.as_deref()
     }
 
     /// The message with the site in front when the site is not in the ST source, as
@@ -301,8 +330,7 @@ impl ProjectBuild {
             code,
             message,
             site: Site::Project,
-            suggestion: None,
-            implied_type: None,
+            hint: None,
         };
         let Some(program) = &self.program else {
             return Err(error(Code::NoProgram, "the project has errors".to_string()));
@@ -351,8 +379,7 @@ pub fn build_project(project: &Project) -> ProjectBuild {
             code: d.code,
             message: d.message,
             site: Site::Petri { pou, element: Some(d.element), at: d.at },
-            suggestion: None,
-            implied_type: None,
+            hint: None,
         })
         .collect();
     if petri_diags.iter().any(ProjectDiagnostic::is_error) {
@@ -363,8 +390,7 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         code: d.code,
         message: d.message,
         site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
-        suggestion: d.suggestion,
-        implied_type: None,
+        hint: NameHint::of(d.suggestion, None),
     };
     let source = match project_source_with(project, &nets) {
         Ok(source) => source,
@@ -382,8 +408,7 @@ pub fn build_project(project: &Project) -> ProjectBuild {
                 code: Code::NetworkNotRunnable,
                 message: e.message.clone(),
                 site: Site::Network { pou: pou.clone(), element: Some(e.element.clone()) },
-                suggestion: None,
-                implied_type: None,
+                hint: None,
             })
             .collect();
         return ProjectBuild { diagnostics, source: None, program: None };
@@ -398,8 +423,7 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         code: d.code,
         message: d.message,
         site: site_in(&source, &index, d.span),
-        suggestion: d.suggestion,
-        implied_type: d.implied_type,
+        hint: NameHint::of(d.suggestion, d.implied_type),
     }));
     if let (Some(scene), Some(program)) = (&project.scene, &analysis.program) {
         diagnostics.extend(scene_diagnostics(scene, &project.settings, program));
@@ -447,8 +471,7 @@ fn scene_diagnostics(
                 "the scene's widget “{label}” is bound to `{path}`, which the program does not have"
             ),
             site: Site::Project,
-            suggestion: None,
-            implied_type: None,
+            hint: None,
         })
         .collect()
 }

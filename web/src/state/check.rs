@@ -33,8 +33,8 @@ impl DiagView {
             code: d.code.as_str().to_string(),
             message: d.message.clone(),
             site: d.site.clone(),
-            suggestion: d.suggestion.clone(),
-            implied_type: d.implied_type.clone(),
+            suggestion: d.suggestion().map(str::to_string),
+            implied_type: d.implied_type().map(str::to_string),
         }
     }
 
