@@ -68,6 +68,11 @@ pub(super) struct Checker<'a> {
     /// referring to its own type): the reference type's id and `X`'s key, completed when
     /// `X` is (`refs.rs`).
     pub pending_refs: Vec<(super::types::RefId, String)>,
+    /// Set while the initial value of a variable is checked: `REF(x)` may be that value,
+    /// `x` a variable of this POU or a global (`ref_init.rs`).
+    pub ref_scope: Option<super::ref_init::RefScope>,
+    /// The `REF(x)` initial values met, checked once every variable is declared.
+    pub ref_inits: Vec<super::ref_init::PendingRefInit>,
 }
 
 impl<'a> Checker<'a> {
@@ -88,6 +93,8 @@ impl<'a> Checker<'a> {
             var_index: HashMap::new(),
             resolve_depth: 0,
             pending_refs: Vec::new(),
+            ref_scope: None,
+            ref_inits: Vec::new(),
         }
     }
 
@@ -275,6 +282,8 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
     for i in blocks.into_iter().chain(programs) {
         checker.declare_pou_vars(i as PouId);
     }
+    // Initial values `REF(x)`: now that every variable is declared, in any order.
+    checker.resolve_ref_inits();
     checker.place_located_vars();
     for i in 0..checker.pous.len() {
         checker.check_body(i as PouId);
