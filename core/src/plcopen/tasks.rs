@@ -4,13 +4,15 @@
 //! becomes an ST `CONFIGURATION` block (each `<resource>` a RESOURCE, each `<task>` a
 //! TASK, each `<pouInstance>` a PROGRAM instance WITH its task), so every instance runs
 //! under its task; with one instance the file's program simply runs, as before. Its
-//! globals are written as top-level VAR_GLOBAL blocks by the import itself.
+//! globals are written as top-level VAR_GLOBAL blocks by the import itself, its
+//! `<configVars>` as the VAR_CONFIG block.
 //! Export: the source's CONFIGURATION becomes the file's configuration, resources, tasks
-//! and instances.
+//! and instances, and its VAR_CONFIG entries `<configVariable>`s (TC6: the instance path,
+//! the address, the type and the initial value).
 
 use std::fmt::Write;
 
-use super::decl_xml::vars_xml;
+use super::decl_xml::{init_xml, type_xml, vars_xml};
 use super::source_out::SourceOut;
 use super::xml::{esc, Node};
 use super::ImportNote;
@@ -59,7 +61,16 @@ pub(super) fn configuration_text(
         }
         out.push("    END_RESOURCE\n", None);
     }
+    config_vars(&mut out, conf, notes);
     out.push("END_CONFIGURATION\n", None);
+    let entries =
+        conf.children_named("configVars").flat_map(|c| c.children_named("configVariable"));
+    if instances < 2 && entries.count() > 0 {
+        notes.push(ImportNote::on(
+            conf,
+            format!("configuration {cname}: its program runs on its own, without the configuration, so its VAR_CONFIG entries (configVars) do not apply"),
+        ));
+    }
     (instances > 1).then_some((out, tick))
 }
 
@@ -155,8 +166,84 @@ pub(super) fn configuration_xml(config: &Configuration, src: &str, extra_globals
     for g in &config.globals {
         out.push_str(&vars_xml(g, src, "globalVars", "        "));
     }
+    if !config.var_config.is_empty() {
+        out.push_str("        <configVars>\n");
+        for v in &config.var_config {
+            let path: Vec<&str> = v.path.iter().map(|i| i.name.as_str()).collect();
+            let _ = write!(
+                out,
+                "          <configVariable instancePathAndName=\"{}\"",
+                esc(&path.join("."))
+            );
+            if let Some(loc) = &v.location {
+                let _ = write!(out, " address=\"{}\"", esc(&loc.text));
+            }
+            let _ = writeln!(out, ">\n            <type>{}</type>", type_xml(&v.ty, src));
+            if let Some(init) = &v.init {
+                let _ = writeln!(
+                    out,
+                    "            <initialValue>{}</initialValue>",
+                    init_xml(init, src)
+                );
+            }
+            out.push_str("          </configVariable>\n");
+        }
+        out.push_str("        </configVars>\n");
+    }
     out.push_str("      </configuration>\n");
     out
+}
+
+/// The `VAR_CONFIG` block of the `<configVariable>`s of `conf` (nothing when it has none).
+/// An entry the trainer cannot read is noted and left out.
+fn config_vars(out: &mut SourceOut, conf: &Node, notes: &mut Vec<ImportNote>) {
+    let entries: Vec<&Node> = conf
+        .children_named("configVars")
+        .flat_map(|c| c.children_named("configVariable"))
+        .collect();
+    if entries.is_empty() {
+        return;
+    }
+    out.push("    VAR_CONFIG\n", None);
+    for v in entries {
+        match config_var_text(v) {
+            Ok(line) => out.push_from(&line, v),
+            Err(why) => {
+                let path = v.attr("instancePathAndName").unwrap_or("");
+                notes.push(ImportNote::on(
+                    v,
+                    format!("VAR_CONFIG entry `{path}`: {why}; it was left out"),
+                ));
+            }
+        }
+    }
+    out.push("    END_VAR\n", None);
+}
+
+/// One `<configVariable>` as a VAR_CONFIG entry: `Line.V1.Open AT %QX1.0 : BOOL := TRUE;`.
+fn config_var_text(v: &Node) -> Result<String, String> {
+    let path = v
+        .attr("instancePathAndName")
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+        .ok_or("it has no instancePathAndName")?;
+    let path: Vec<String> = path.split('.').map(|n| ident(n.trim())).collect();
+    let at = match v.attr("address").map(str::trim).filter(|a| !a.is_empty()) {
+        None => String::new(),
+        Some(a)
+            if a.starts_with('%')
+                && a[1..].chars().all(|c| c.is_ascii_alphanumeric() || c == '.') =>
+        {
+            format!(" AT {a}")
+        }
+        Some(a) => return Err(format!("`{a}` is not a complete address such as %QX1.0")),
+    };
+    let ty = super::import::type_text(v.child("type").ok_or("it has no <type>")?)?;
+    let init = match v.child("initialValue") {
+        Some(w) => format!(" := {}", super::import::value_text(w)?),
+        None => String::new(),
+    };
+    Ok(format!("        {}{at} : {ty}{init};\n", path.join(".")))
 }
 
 /// Parses a task interval such as `T#20ms`, `T#1s`, `PT0.02S` into milliseconds.
