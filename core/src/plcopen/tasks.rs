@@ -4,8 +4,8 @@
 //! becomes an ST `CONFIGURATION` block (each `<resource>` a RESOURCE, each `<task>` a
 //! TASK, each `<pouInstance>` a PROGRAM instance WITH its task), so every instance runs
 //! under its task; with one instance the file's program simply runs, as before. Its
-//! globals are written as top-level VAR_GLOBAL blocks by the import itself, its
-//! `<configVars>` as the VAR_CONFIG block.
+//! globals are written as top-level VAR_GLOBAL blocks by the import itself, and its
+//! `<configVars>` read there become the VAR_CONFIG block.
 //! Export: the source's CONFIGURATION becomes the file's configuration, resources, tasks
 //! and instances, and its VAR_CONFIG entries `<configVariable>`s (TC6: the instance path,
 //! the address, the type and the initial value).
@@ -19,12 +19,14 @@ use super::ImportNote;
 use crate::syntax::ast::Configuration;
 
 /// The CONFIGURATION text for the instances of `conf` whose type is one of `programs`
-/// (the PROGRAM POUs the import kept), and the clock tick (ms) that serves every task:
+/// (the PROGRAM POUs the import kept), with the VAR_CONFIG entries `config_vars` (each
+/// line with its element), and the clock tick (ms) that serves every task:
 /// `None` when fewer than two instances would run. Instances of other types are noted in
 /// `notes` and left out.
 pub(super) fn configuration_text(
     conf: &Node,
     programs: &[String],
+    config_vars: &[(String, &Node)],
     notes: &mut Vec<ImportNote>,
 ) -> Option<(SourceOut, u64)> {
     let known = |t: &str| programs.iter().any(|p| p.eq_ignore_ascii_case(t));
@@ -61,11 +63,15 @@ pub(super) fn configuration_text(
         }
         out.push("    END_RESOURCE\n", None);
     }
-    config_vars(&mut out, conf, notes);
+    if !config_vars.is_empty() {
+        out.push("    VAR_CONFIG\n", None);
+        for (line, node) in config_vars {
+            out.push_from(line, node);
+        }
+        out.push("    END_VAR\n", None);
+    }
     out.push("END_CONFIGURATION\n", None);
-    let entries =
-        conf.children_named("configVars").flat_map(|c| c.children_named("configVariable"));
-    if instances < 2 && entries.count() > 0 {
+    if instances < 2 && !config_vars.is_empty() {
         notes.push(ImportNote::on(
             conf,
             format!("configuration {cname}: its program runs on its own, without the configuration, so its VAR_CONFIG entries (configVars) do not apply"),
@@ -98,7 +104,7 @@ fn instance(
 }
 
 /// A name from the file as an ST identifier (characters that cannot be in one become `_`).
-fn ident(name: &str) -> String {
+pub(super) fn ident(name: &str) -> String {
     let s: String =
         name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
     if s.starts_with(|c: char| c.is_ascii_digit()) || s.is_empty() {
@@ -192,58 +198,6 @@ pub(super) fn configuration_xml(config: &Configuration, src: &str, extra_globals
     }
     out.push_str("      </configuration>\n");
     out
-}
-
-/// The `VAR_CONFIG` block of the `<configVariable>`s of `conf` (nothing when it has none).
-/// An entry the trainer cannot read is noted and left out.
-fn config_vars(out: &mut SourceOut, conf: &Node, notes: &mut Vec<ImportNote>) {
-    let entries: Vec<&Node> = conf
-        .children_named("configVars")
-        .flat_map(|c| c.children_named("configVariable"))
-        .collect();
-    if entries.is_empty() {
-        return;
-    }
-    out.push("    VAR_CONFIG\n", None);
-    for v in entries {
-        match config_var_text(v) {
-            Ok(line) => out.push_from(&line, v),
-            Err(why) => {
-                let path = v.attr("instancePathAndName").unwrap_or("");
-                notes.push(ImportNote::on(
-                    v,
-                    format!("VAR_CONFIG entry `{path}`: {why}; it was left out"),
-                ));
-            }
-        }
-    }
-    out.push("    END_VAR\n", None);
-}
-
-/// One `<configVariable>` as a VAR_CONFIG entry: `Line.V1.Open AT %QX1.0 : BOOL := TRUE;`.
-fn config_var_text(v: &Node) -> Result<String, String> {
-    let path = v
-        .attr("instancePathAndName")
-        .map(str::trim)
-        .filter(|p| !p.is_empty())
-        .ok_or("it has no instancePathAndName")?;
-    let path: Vec<String> = path.split('.').map(|n| ident(n.trim())).collect();
-    let at = match v.attr("address").map(str::trim).filter(|a| !a.is_empty()) {
-        None => String::new(),
-        Some(a)
-            if a.starts_with('%')
-                && a[1..].chars().all(|c| c.is_ascii_alphanumeric() || c == '.') =>
-        {
-            format!(" AT {a}")
-        }
-        Some(a) => return Err(format!("`{a}` is not a complete address such as %QX1.0")),
-    };
-    let ty = super::import::type_text(v.child("type").ok_or("it has no <type>")?)?;
-    let init = match v.child("initialValue") {
-        Some(w) => format!(" := {}", super::import::value_text(w)?),
-        None => String::new(),
-    };
-    Ok(format!("        {}{at} : {ty}{init};\n", path.join(".")))
 }
 
 /// Parses a task interval such as `T#20ms`, `T#1s`, `PT0.02S` into milliseconds.

@@ -43,6 +43,24 @@ pub(super) struct BodyState {
     pub read_only: bool,
 }
 
+/// Where a declaration whose initial value may be `REF()` is: the POU whose variables it
+/// sees (`PouId::MAX` for VAR_GLOBAL: the globals only).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct RefScope {
+    /// The declaring POU.
+    pub pou: PouId,
+}
+
+/// A `REF(…)` initial value waiting for every declaration (`ref_init.rs`).
+pub(super) struct PendingRefInit {
+    /// Where it is declared.
+    pub scope: RefScope,
+    /// The `REF(…)` call.
+    pub expr: ast::Expr,
+    /// The type of the variable it initialises.
+    pub ty: Type,
+}
+
 /// The checker's state for one program.
 pub(super) struct Checker<'a> {
     pub types: TypeTable,
@@ -70,9 +88,9 @@ pub(super) struct Checker<'a> {
     pub pending_refs: Vec<(super::types::RefId, String)>,
     /// Set while the initial value of a variable is checked: `REF(x)` may be that value,
     /// `x` a variable of this POU or a global (`ref_init.rs`).
-    pub ref_scope: Option<super::ref_init::RefScope>,
+    pub ref_scope: Option<RefScope>,
     /// The `REF(x)` initial values met, checked once every variable is declared.
-    pub ref_inits: Vec<super::ref_init::PendingRefInit>,
+    pub ref_inits: Vec<PendingRefInit>,
 }
 
 impl<'a> Checker<'a> {

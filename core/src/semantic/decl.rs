@@ -406,7 +406,7 @@ impl<'a> Checker<'a> {
             let init = match &decl.init {
                 Some(i) => {
                     // `REF(x)` may be the initial value here, of a variable of this POU.
-                    let scope = super::ref_init::RefScope { pou: self.body.pou };
+                    let scope = super::check::RefScope { pou: self.body.pou };
                     let outer = self.ref_scope.replace(scope);
                     let v = self.init_value(i, r.ty, r.range);
                     self.ref_scope = outer;

@@ -13,26 +13,11 @@
 //! becomes a [`RefInit`] path that the compiler turns into an address for every instance
 //! (`compile/layout.rs`).
 
-use super::check::{BodyState, Checker};
+use super::check::{BodyState, Checker, PendingRefInit};
 use super::ir::{ExprKind, InitValue, Place};
 use super::types::{PouId, RefInit, RefRoot, RefStep, Type};
 use crate::diagnostics::Code;
 use crate::syntax::{self as ast, PouKind, VarSection};
-
-/// Where a declaration whose initial value may be `REF()` is: the POU whose variables it
-/// sees (`PouId::MAX` for VAR_GLOBAL: the globals only).
-#[derive(Debug, Clone, Copy)]
-pub(super) struct RefScope {
-    /// The declaring POU.
-    pub pou: PouId,
-}
-
-/// A `REF(…)` initial value waiting for every declaration.
-pub(super) struct PendingRefInit {
-    scope: RefScope,
-    expr: ast::Expr,
-    ty: Type,
-}
 
 impl Checker<'_> {
     /// `Some` when the initial value `e` of a `ty` is `REF(…)`: its pending value (or
