@@ -1645,3 +1645,79 @@ fn date_literals_at_the_ends_of_the_range_round_trip() {
     assert_eq!(report.vars["d"], "D#0001-01-01");
     assert_eq!(report.vars["t"], "DT#9999-12-31-23:59:59.999");
 }
+
+/// A configuration with VAR_CONFIG entries: initial values without and with an address,
+/// a structured and an array value (IEC 61131-3 2.7.1).
+const CONFIGURED: &str = "TYPE TankData : STRUCT Level : INT; Volume : INT; END_STRUCT; END_TYPE
+FUNCTION_BLOCK Valve
+VAR_INPUT Setpoint : INT := 10; END_VAR
+VAR_OUTPUT Open AT %Q* : BOOL; Out : INT; END_VAR
+Out := Setpoint;
+END_FUNCTION_BLOCK
+PROGRAM Cell
+VAR V1 : Valve; Tank : TankData := (Level := 1, Volume := 7); Table : ARRAY[1..3] OF INT; END_VAR
+V1();
+END_PROGRAM
+PROGRAM Other
+VAR r : REF_TO INT := REF(n); n : INT; END_VAR
+r^ := r^ + 1;
+END_PROGRAM
+CONFIGURATION Plant
+    RESOURCE Cpu ON PLC
+        TASK Main (INTERVAL := T#10ms, PRIORITY := 1);
+        PROGRAM Line WITH Main : Cell;
+        PROGRAM Aux WITH Main : Other;
+    END_RESOURCE
+    VAR_CONFIG
+        Line.V1.Setpoint : INT := 50;
+        Line.V1.Open AT %QX1.0 : BOOL := TRUE;
+        Line.Tank : TankData := (Level := 3);
+        Line.Table : ARRAY[1..3] OF INT := [4, 5, 6];
+    END_VAR
+END_CONFIGURATION
+";
+
+#[test]
+fn var_config_entries_and_reference_initial_values_round_trip() {
+    let mut p = Project::new("Configured");
+    p.source = CONFIGURED.into();
+    let options = plc_core::run::RunOptions { cycles: 2, ..Default::default() };
+    let before = plc_core::run::run_project(&p, &options);
+    assert_eq!(before.status, plc_core::run::RunStatus::Ok, "{:?}", before.diagnostics);
+    assert_eq!(before.vars["Line"]["V1"]["Out"], 50);
+    let xml = export(&p);
+    assert!(
+        xml.contains(r#"<configVariable instancePathAndName="Line.V1.Open" address="%QX1.0">"#),
+        "{xml}"
+    );
+    assert!(xml.contains(r#"<simpleValue value="REF(n)"/>"#), "{xml}");
+    let back = import(&xml).expect("imports");
+    assert!(back.warnings.is_empty(), "{:?}", back.warnings);
+    assert!(
+        back.project.source.contains("Line.V1.Setpoint : INT := 50;"),
+        "{}",
+        back.project.source
+    );
+    let after = plc_core::run::run_project(&back.project, &options);
+    assert_eq!(after.status, plc_core::run::RunStatus::Ok, "{:?}", after.diagnostics);
+    assert_eq!(after.vars, before.vars);
+    assert_round_trip(&back.project);
+}
+
+#[test]
+fn var_config_entries_of_a_configuration_not_kept_are_noted() {
+    // One program instance: the import runs the program alone, without its VAR_CONFIG.
+    let mut p = Project::new("One");
+    p.source = CONFIGURED.replace("        PROGRAM Aux WITH Main : Other;\n", "");
+    let i = import(&export(&p)).expect("imports");
+    assert!(!i.project.source.contains("VAR_CONFIG"), "{}", i.project.source);
+    assert!(i.warnings.iter().any(|w| w.message.contains("VAR_CONFIG")), "{:?}", i.warnings);
+    // An entry that cannot be read is left out with a note at it; the others stay.
+    let xml = export(&Project { source: CONFIGURED.into(), ..Project::new("Bad") })
+        .replace(r#"address="%QX1.0""#, r#"address="%Q*""#);
+    let i = import(&xml).expect("imports");
+    assert!(i.project.source.contains("Line.V1.Setpoint : INT := 50;"), "{}", i.project.source);
+    assert!(!i.project.source.contains("Line.V1.Open"), "{}", i.project.source);
+    let note = i.warnings.iter().find(|w| w.message.contains("Line.V1.Open"));
+    assert!(note.is_some_and(|n| n.line > 0), "{:?}", i.warnings);
+}

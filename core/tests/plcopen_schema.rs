@@ -7,7 +7,8 @@
 //! Checked, for every element the exporter writes (project, headers, coordinate info, data
 //! types, POUs and their interfaces and variables, ST, LD and FBD bodies, rails, contacts, coils,
 //! blocks and their pin lists, in/out variables, labels, jumps, returns, comments,
-//! connection points and connections, configurations, resources, tasks, POU instances):
+//! connection points and connections, configurations, resources, tasks, POU instances,
+//! configuration variables):
 //! - the children that may appear, in the order the schema's `xsd:sequence` fixes, and how
 //!   often (`minOccurs` / `maxOccurs`); free-order `xsd:choice` lists (LD body objects,
 //!   interface variable lists) as sets;
@@ -484,6 +485,13 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
             ]),
         ),
         (_, "task") => r(&["name", "priority"], with_tail(vec![Seq(("pouInstance", 0, MANY))])),
+        ("configuration", "configVars") => {
+            r(&[], with_tail(vec![Seq(("configVariable", 0, MANY))]))
+        }
+        ("configVars", "configVariable") => r(
+            &["instancePathAndName"],
+            with_tail(vec![Seq(("type", 1, ONE)), Seq(("initialValue", 0, ONE))]),
+        ),
         (_, "pouInstance") => r(&["name", "typeName"], with_tail(vec![])),
         (_, "content" | "documentation" | "p" | "expression" | "variable" | "addData") => open(&[]),
         _ => None,
@@ -834,4 +842,25 @@ fn the_wired_inputs_and_data_wires_of_the_mixing_tank_export_cleanly() {
     assert!(problems(&xml).is_empty(), "{:?}", problems(&xml));
     // SR0's R pin is wired to the two contacts of its own network.
     assert!(xml.contains("<variable formalParameter=\"R\">"));
+}
+
+#[test]
+fn var_config_entries_export_as_tc6_config_variables() {
+    let mut p = Project::new("Configured");
+    p.source = "FUNCTION_BLOCK Valve VAR_INPUT Setpoint : INT; END_VAR VAR_OUTPUT Open AT %Q* : BOOL; END_VAR Open := Setpoint > 0; END_FUNCTION_BLOCK
+PROGRAM Cell VAR V1 : Valve; END_VAR V1(); END_PROGRAM
+CONFIGURATION Plant
+    PROGRAM Line : Cell;
+    VAR_CONFIG
+        Line.V1.Setpoint : INT := 50;
+        Line.V1.Open AT %QX1.0 : BOOL := TRUE;
+    END_VAR
+END_CONFIGURATION
+"
+    .into();
+    let xml = export(&p);
+    assert!(xml.contains("<configVars>"), "{xml}");
+    assert_eq!(problems(&xml), Vec::<String>::new(), "{xml}");
+    let broken = xml.replacen(" instancePathAndName=\"Line.V1.Setpoint\"", "", 1);
+    assert!(!problems(&broken).is_empty(), "a configVariable without its path is caught");
 }
