@@ -75,7 +75,7 @@ test('after one visit the trainer opens and works with the network off', async (
   await page.getByText('Opened the example').waitFor();
   await page.getByRole('button', { name: 'Run', exact: true }).click();
   await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
-  await page.getByRole('img', { name: 'Motor: ON' }).waitFor({ timeout: 10000 });
+  await page.getByRole('img', { name: 'Motor: ON' }).first().waitFor({ timeout: 10000 });
   await page.getByRole('button', { name: 'Pause', exact: true }).click();
 
   // A shipped exercise opens and its Check scores (the exercise worker and its chunk).

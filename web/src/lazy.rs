@@ -18,7 +18,7 @@ use std::future::Future;
 use leptos::__reexports::send_wrapper::SendWrapper;
 use leptos::prelude::*;
 use leptos::wasm_split::wasm_split;
-use plc_core::build::{LadderLowering, Lowerings};
+use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
 
 /// A chunk of the app could not be fetched.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -204,10 +204,3 @@ fn network_pass() -> Result<NetworkPass, LoadFailed> {
 fn petri_pass() -> Result<PetriPass, LoadFailed> {
     Ok(plc_core::petri::compile)
 }
-
-type NetworkPass = fn(
-    &plc_core::network::NetworkPou,
-) -> Result<plc_core::network::NetworkText, plc_core::network::NetError>;
-type PetriPass = fn(
-    &plc_core::petri::PetriPou,
-) -> Result<plc_core::petri::Compiled, Vec<plc_core::petri::PetriDiagnostic>>;

@@ -18,8 +18,8 @@ mod source;
 
 pub use source::{
     compile_project, compile_project_by, project_diagnostics, project_source, project_source_by,
-    project_source_with, LadderLowering, Lowerings, NetworkSegment, Origin, PetriSegment,
-    ProjectNets, ProjectSource, Segment, SourceMap,
+    project_source_with, LadderLowering, Lowerings, NetworkPass, NetworkSegment, Origin, PetriPass,
+    PetriSegment, ProjectNets, ProjectSource, Segment, SourceMap,
 };
 
 /// Where a problem (or a runtime fault, or a running statement) is in a project.

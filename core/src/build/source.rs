@@ -229,10 +229,16 @@ pub struct Lowerings {
     /// Ladder POUs: validation against the block catalogue, then lowering.
     pub ladder: Option<LadderLowering>,
     /// Network POUs (LD and FBD as drawn, and SFC charts): their ST.
-    pub network: Option<fn(&NetworkPou) -> Result<NetworkText, NetError>>,
+    pub network: Option<NetworkPass>,
     /// Petri net POUs: the generated CASE OF program with its analysis.
-    pub petri: Option<fn(&PetriPou) -> Result<petri::Compiled, Vec<petri::PetriDiagnostic>>>,
+    pub petri: Option<PetriPass>,
 }
+
+/// The network pass of [`Lowerings`]: a network POU's ST.
+pub type NetworkPass = fn(&NetworkPou) -> Result<NetworkText, NetError>;
+
+/// The Petri net pass of [`Lowerings`]: a net POU's generated program and analysis.
+pub type PetriPass = fn(&PetriPou) -> Result<petri::Compiled, Vec<petri::PetriDiagnostic>>;
 
 /// The ladder passes of [`Lowerings`].
 #[derive(Debug, Clone, Copy)]
