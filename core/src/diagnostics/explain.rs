@@ -88,7 +88,7 @@ explanations! {
     InvalidDirectAddress: "A directly represented variable is malformed. It is `%` + `I`, `Q` or `M` + a size (`X` bit, `B`, `W`, `D`, `L`; none means bit) + numbers: `%IX0.3`, `%QW2`, `%MD10`.",
         st("PROGRAM Main VAR b AT %IZ0.1 : BOOL; x : BOOL; END_VAR x := b; END_PROGRAM"),
         st("PROGRAM Main VAR b AT %IX0.1 : BOOL; x : BOOL; END_VAR x := b; END_PROGRAM");
-    InvalidDateLiteral: "A date or time-of-day literal is malformed or out of range: `D#2024-02-30` is no date. Write `D#YYYY-MM-DD`, `TOD#hh:mm:ss`, `DT#YYYY-MM-DD-hh:mm:ss`.",
+    InvalidDateLiteral: "A date or time-of-day literal is malformed or out of range: `D#2024-02-30` is not a date. Write `D#YYYY-MM-DD`, `TOD#hh:mm:ss`, `DT#YYYY-MM-DD-hh:mm:ss`.",
         st("PROGRAM Main VAR d : DATE; END_VAR d := D#2024-02-30; END_PROGRAM"),
         st("PROGRAM Main VAR d : DATE; END_VAR d := D#2024-02-29; END_PROGRAM");
     InvalidIdentifier: "IEC 61131-3 names may not end with `_` or hold two `_` in a row.",
