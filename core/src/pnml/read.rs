@@ -217,7 +217,9 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
             if !known(id) {
                 return Err(r.err(
                     e,
-                    format!("the arc refers to `{id}`, which is not a place or transition of the net"),
+                    format!(
+                        "the arc refers to `{id}`, which is not a place or transition of the net"
+                    ),
                 ));
             }
         }

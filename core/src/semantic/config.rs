@@ -331,11 +331,10 @@ impl Checker<'_> {
         let (first, rest) = v.path.split_first()?;
         let Some(k) = instances.iter().position(|i| i.name.eq_ignore_ascii_case(&first.name))
         else {
-            return fail(
-                self,
-                first.span,
-                format!("`{}` is not a program instance of the configuration", first.name),
-            );
+            let msg = format!("`{}` is not a program instance of the configuration", first.name);
+            let names = instances.iter().map(|i| i.name.clone()).collect();
+            self.error_suggesting(Code::BadConfigVar, first.span, msg, &first.name, names);
+            return None;
         };
         if rest.is_empty() {
             let msg = format!(
@@ -350,8 +349,10 @@ impl Checker<'_> {
         for (j, name) in rest.iter().enumerate() {
             let vars = &self.pous[owner as usize].vars;
             let Some(i) = vars.iter().position(|x| x.name.eq_ignore_ascii_case(&name.name)) else {
-                let o = self.pous[owner as usize].name.clone();
-                return fail(self, name.span, format!("`{o}` has no `{}`", name.name));
+                let msg = format!("`{}` has no `{}`", self.pous[owner as usize].name, name.name);
+                let names = vars.iter().map(|x| x.name.clone()).collect();
+                self.error_suggesting(Code::BadConfigVar, name.span, msg, &name.name, names);
+                return None;
             };
             let var = vars[i].clone();
             steps.push((owner, i as u32));

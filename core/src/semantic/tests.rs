@@ -341,6 +341,22 @@ fn members_parameters_functions_and_types_get_did_you_mean() {
 }
 
 #[test]
+fn var_config_paths_get_did_you_mean() {
+    let src = "FUNCTION_BLOCK Valve\nVAR_OUTPUT Open AT %Q* : BOOL; END_VAR\nEND_FUNCTION_BLOCK\n\
+               PROGRAM Cell\nVAR Inlet : Valve; END_VAR\nInlet();\nEND_PROGRAM\n\
+               CONFIGURATION Plant\nPROGRAM Line : Cell;\nVAR_CONFIG\n\
+               Line.Inlte.Open AT %QX0.0 : BOOL;\nEND_VAR\nEND_CONFIGURATION\n";
+    let d = first_error(src);
+    assert_eq!(
+        (d.code, d.message.as_str()),
+        (Code::BadConfigVar, "`Cell` has no `Inlte`; did you mean Inlet?")
+    );
+    assert_eq!(d.suggestion.as_deref(), Some("Inlet"));
+    let d = first_error(&src.replace("Line.Inlte", "Lien.Inlet"));
+    assert_eq!(d.suggestion.as_deref(), Some("Line"));
+}
+
+#[test]
 fn sfc_steps_actions_and_guards_get_did_you_mean() {
     let src =
         "PROGRAM P\nVAR go : BOOL; Pump : BOOL; END_VAR\nINITIAL_STEP Idle : Pmup(N); END_STEP\n\
