@@ -30,9 +30,6 @@ pub struct ExerciseView {
     /// The name of the exercise's plant PROGRAM, if it has one (never the one graded).
     #[serde(default)]
     pub plant: Option<String>,
-    /// The starter files the exercise names (`starter`, `starter_ld` …).
-    #[serde(default)]
-    pub starter_files: Vec<String>,
 }
 
 /// A scenario as the page lists it.
@@ -68,7 +65,6 @@ impl ExerciseView {
                 .collect(),
             program: exercise.program.clone(),
             plant: exercise.plant.as_ref().map(|p| p.name.clone()),
-            starter_files: exercise.starter_files().into_iter().map(String::from).collect(),
         }
     }
 }

@@ -308,13 +308,13 @@ impl Exercises {
     /// The language the attempt is written in: that of the PROGRAM it checks, when the
     /// exercise offers a starter in it.
     pub fn attempt_language(self, state: AppState) -> Option<String> {
-        let open = self.open.get()?;
-        let view = &open.opened.view;
-        let program = state
-            .project
-            .with(|p| graded_program(p, view.program.as_deref(), view.plant.as_deref()))?;
-        let code = Language::of_program(program.language)?.code();
-        open.opened.starters.iter().any(|s| s.language == code).then(|| code.to_string())
+        self.open.with(|open| {
+            let opened = &open.as_ref()?.opened;
+            let (preferred, plant) = (opened.view.program.as_deref(), opened.view.plant.as_deref());
+            let program = state.project.with(|p| graded_program(p, preferred, plant))?;
+            let code = Language::of_program(program.language)?.code();
+            opened.starters.iter().any(|s| s.language == code).then(|| code.to_string())
+        })
     }
 
     /// Starts the attempt again in another language (`Start in`): its starter replaces

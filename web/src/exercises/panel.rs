@@ -90,7 +90,11 @@ pub fn ExercisePanel() -> impl IntoView {
                                             }
                                         }
                                     }>
-                                    {starters.iter().map(|(code, name)| view! { <option value=code.clone()>{*name}</option> }).collect_view()}
+                                    {starters.iter().map(|(code, name)| {
+                                        let code = code.clone();
+                                        let selected = { let code = code.clone(); move || attempt_language.get() == code };
+                                        view! { <option value=code selected=selected>{*name}</option> }
+                                    }).collect_view()}
                                 </select>
                             </label>
                         })}
