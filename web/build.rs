@@ -29,6 +29,8 @@ struct Entry {
     title: String,
     level: u8,
     #[serde(default)]
+    order: Option<u32>,
+    #[serde(default)]
     languages: Vec<String>,
     #[serde(default)]
     starter: Option<String>,
@@ -72,7 +74,10 @@ fn exercises(out: &Path) {
             Err(e) => panic!("{}: {e}", file.display()),
         }
     }
-    entries.sort_by(|a, b| a.0.level.cmp(&b.0.level).then_with(|| a.0.title.cmp(&b.0.title)));
+    entries.sort_by(|a, b| {
+        let key = |e: &Entry| (e.level, e.order.unwrap_or(u32::MAX));
+        key(&a.0).cmp(&key(&b.0)).then_with(|| a.0.title.cmp(&b.0.title))
+    });
     let mut catalogue = String::from(
         "/// The shipped exercises, easiest first: (id, title, level, languages).\npub const CATALOGUE: &[(&str, &str, u8, &[&str])] = &[\n",
     );

@@ -110,8 +110,7 @@ test('the latch started in Ladder, drawn by drag and drop, scores 3 of 3 and the
   await report.getByText('Score 3 of 3: every scenario passes. Well done!').waitFor();
   // Nothing under Simulation was needed: with one PROGRAM it offers no choice at all.
   assert.equal(await page.getByRole('combobox', { name: 'Program to run' }).count(), 0);
-  await panel.scrollIntoViewIfNeeded();
-  await page.screenshot({ path: path.join(root, 'docs/screenshots/exercise-start-in-ladder.png') });
+  await page.screenshot({ path: path.join(root, 'docs/screenshots/exercise-start-in-ladder.png'), fullPage: true });
 
   // Back to ST after drawing: the work would be lost, so it asks; declining keeps it all.
   await startIn.selectOption({ label: 'Structured Text' });
@@ -191,6 +190,7 @@ test('a Petri net exercise starts as a net with its interface declared, and in S
   assert.equal(await startIn.inputValue(), 'petri');
   const view = page.getByRole('region', { name: 'Petri net Weighing' });
   await view.getByRole('group', { name: 'Net canvas' }).waitFor();
+  await page.screenshot({ path: path.join(root, 'docs/screenshots/exercise-start-in-petri.png'), fullPage: true });
   await view.locator('summary', { hasText: 'Declarations' }).click();
   const decls = await view.getByRole('textbox', { name: 'Declarations' }).inputValue();
   assert.match(decls, /Start : BOOL;/);
@@ -199,7 +199,6 @@ test('a Petri net exercise starts as a net with its interface declared, and in S
   assert.equal(await view.locator('.pn-place').count(), 1);
   assert.equal(await view.locator('.pn-transition').count(), 0);
   assert.deepEqual(await optionLabels(panel.getByRole('combobox', { name: 'Program to check' })), ['Weighing (Petri net)']);
-  await page.screenshot({ path: path.join(root, 'docs/screenshots/exercise-start-in-petri.png') });
 
   await startIn.selectOption({ label: 'Structured Text' });
   await page.waitForFunction(() => document.querySelector('textarea[aria-label="ST source"]')?.value.startsWith('PROGRAM Weighing\nVAR_INPUT\n'));

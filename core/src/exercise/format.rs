@@ -17,6 +17,10 @@ pub struct Exercise {
     pub title: String,
     /// 1 (beginner) … 5 (advanced).
     pub level: u8,
+    /// Its place among the exercises of its level in the catalogue (those without one
+    /// come after, by title).
+    #[serde(default)]
+    pub order: Option<u32>,
     /// The languages a solution may use: `st`, `ld`, `petri`, `sfc`.
     #[serde(default)]
     pub languages: Vec<String>,

@@ -328,16 +328,21 @@ impl Exercises {
         };
         let name =
             Language::from_code(code).map_or_else(|| code.to_string(), |l| l.name().to_string());
-        let untouched = state.project.with_untracked(|current| {
-            open.opened.starters.iter().filter_map(|s| Project::from_file(&s.project).ok()).any(
-                |s| {
-                    s.source.trim() == current.source.trim()
-                        && s.ladder == current.ladder
-                        && s.petri == current.petri
-                        && s.networks == current.networks
-                },
-            )
-        });
+        // The work in a project: its POUs, whatever its name and settings.
+        let work = |p: &Project| {
+            let mut p = p.clone();
+            p.name.clear();
+            p.settings = Default::default();
+            p.source = p.source.trim().to_string();
+            p.to_file()
+        };
+        let current = state.project.with_untracked(work);
+        let untouched = open
+            .opened
+            .starters
+            .iter()
+            .filter_map(|s| Project::from_file(&s.project).ok())
+            .any(|s| work(&s) == current);
         if !untouched {
             let question = format!(
                 "Start “{}” again in {name}? Your work on it is replaced by the {name} starter. This cannot be undone.",
@@ -436,5 +441,8 @@ mod tests {
         let all = catalogue();
         assert!(all.iter().any(|e| e.id == "latch"));
         assert!(all.windows(2).all(|w| w[0].level <= w[1].level));
+        // Level 1 in the order it teaches (`order` in each file), not by title.
+        let first: Vec<&str> = all.iter().take(5).map(|e| e.id).collect();
+        assert_eq!(first, ["lamp", "two-switches", "nc-stop", "latch", "ton-delay"]);
     }
 }
