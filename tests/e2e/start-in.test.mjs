@@ -52,10 +52,24 @@ async function check(page) {
 
 const optionLabels = (select) => select.locator('option').evaluateAll((os) => os.map((o) => o.textContent));
 
+/** Where an element is, scrolled into view, once it is on the page (the grid is redrawn
+ * after each edit, so an element found may be replaced before it is measured). */
+async function box(locator) {
+  for (let tries = 0; ; tries += 1) {
+    try {
+      await locator.scrollIntoViewIfNeeded({ timeout: 2000 });
+      const b = await locator.boundingBox();
+      if (b) return b;
+    } catch (e) {
+      if (tries > 20) throw e;
+    }
+  }
+}
+
 /** Drags with the mouse (pointer events) from the middle of one element to another's. */
 async function drag(page, from, to) {
-  const a = await from.boundingBox();
-  const b = await to.boundingBox();
+  const a = await box(from);
+  const b = await box(to);
   await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
   await page.mouse.down();
   await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
@@ -68,7 +82,7 @@ const cell = (view, rung, row, col) =>
 /** Drags a palette element onto a cell, then types its operand. */
 async function place(page, view, [rung, row, col], tool, operand) {
   const target = cell(view, rung, row, col);
-  await target.scrollIntoViewIfNeeded();
+  await box(target);
   await drag(page, view.getByRole('button', { name: tool, exact: true }), target);
   if (operand !== undefined) {
     const box = view.getByRole('textbox', { name: 'Operand' });
