@@ -250,7 +250,18 @@ impl Exercise {
     /// settings and carries the exercise's plant.
     pub fn starters(
         &self,
+        open: impl FnMut(&str) -> Result<Project, String>,
+    ) -> Result<Vec<(Language, Project)>, ExerciseError> {
+        self.starters_by(open, &crate::build::Lowerings::ALL)
+    }
+
+    /// [`Exercise::starters`] with the given passes for the starters' diagram POUs (the
+    /// exercise worker of the web app loads those its starters need: see
+    /// [`crate::build::Lowerings`]).
+    pub fn starters_by(
+        &self,
         mut open: impl FnMut(&str) -> Result<Project, String>,
+        lowerings: &crate::build::Lowerings,
     ) -> Result<Vec<(Language, Project)>, ExerciseError> {
         let languages = self.start_languages();
         let plant = self.plant.as_ref().map(|p| p.name.as_str());
@@ -277,7 +288,7 @@ impl Exercise {
                 if let Some(p) = graded_program(&project, Some(&name), plant) {
                     project.settings.program = Some(p.name);
                 }
-                (l, self.with_plant(&project))
+                (l, self.with_plant_by(&project, lowerings))
             })
             .collect())
     }
