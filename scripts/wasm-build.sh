@@ -5,7 +5,18 @@
 # The flags of every wasm32 build (.cargo/config.toml) plus the relocations wasm-split reads
 # (they change nothing in the code; the benchmark builds with them too, so both builds share
 # the compiled plc-core).
-export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components -C link-args=--emit-relocs"
+# Source paths are written into the module (panic locations), so the size of the site would
+# depend on where the clone and the cargo home are: a CI clone under a longer path was 4 KB
+# over the budget a shorter one met. Mapping them to short fixed prefixes makes the build the
+# same bytes wherever it runs.
+wasm_path_remaps="--remap-path-prefix=$PWD=. --remap-path-prefix=${CARGO_HOME:-$HOME/.cargo}=~cargo"
+for src in "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/; do
+  [ -d "$src" ] && wasm_path_remaps+=" --remap-path-prefix=${src%/}=~"
+done
+for rust_src in "$(rustc --print sysroot)"/lib/rustlib/src/rust; do
+  [ -d "$rust_src" ] && wasm_path_remaps+=" --remap-path-prefix=$rust_src=~rust"
+done
+export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components -C link-args=--emit-relocs $wasm_path_remaps"
 # The site's cargo profile (Cargo.toml: size for the UI, speed for the engine).
 WASM_PROFILE=wasm-release
 
