@@ -27,7 +27,7 @@ mkdir -p "$work/split" "$work/app"
 source scripts/wasm-build.sh
 # The JSON messages name the build script's output folder, where web/build.rs writes the
 # shipped exercises in their built form (exercises/ID.json, fetched by the exercise worker).
-cargo build --profile "$WASM_PROFILE" --target wasm32-unknown-unknown -p plc-web --bin plc-web \
+cargo build --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}" --target wasm32-unknown-unknown -p plc-web --bin plc-web \
   --message-format=json-render-diagnostics >"$work/cargo.json"
 out_dir=$(node -e '
   for (const line of require("fs").readFileSync(process.argv[1], "utf8").split("\n")) {

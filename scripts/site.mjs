@@ -11,7 +11,7 @@
 //       WORK/main-names.wasm, the main module before wasm-opt drops the names).
 import { readFileSync, writeFileSync, readdirSync, statSync, mkdirSync, copyFileSync } from 'node:fs';
 import { createHash } from 'node:crypto';
-import { join, relative, sep } from 'node:path';
+import { dirname, join, relative, sep } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
 
@@ -51,7 +51,10 @@ function assemble() {
   const files = walk(app);
   const folder = `app-${hashOf(app, files).slice(0, 12)}`;
   mkdirSync(join(dist, folder), { recursive: true });
-  for (const f of files) copyFileSync(join(app, f), join(dist, folder, f));
+  for (const f of files) {
+    mkdirSync(dirname(join(dist, folder, f)), { recursive: true });
+    copyFileSync(join(app, f), join(dist, folder, f));
+  }
   const index = join(dist, 'index.html');
   let html = readFileSync(index, 'utf8');
   const start = [
