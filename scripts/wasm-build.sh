@@ -19,6 +19,18 @@ done
 export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components -C link-args=--emit-relocs $wasm_path_remaps"
 # The site's cargo profile (Cargo.toml: size for the UI, speed for the engine).
 WASM_PROFILE=wasm-release
+# To measure the engine at another opt-level (BENCHMARKS.md, "The engine at speed"), set
+# WASM_CORE_OPT_LEVEL (z, s, 1, 2 or 3): plc-core is then built at that level, the rest as
+# the profile says. Pass "${wasm_cargo_flags[@]}" to cargo.
+wasm_cargo_flags=()
+if [ -n "${WASM_CORE_OPT_LEVEL:-}" ]; then
+  case "$WASM_CORE_OPT_LEVEL" in
+    z | s) level="\"$WASM_CORE_OPT_LEVEL\"" ;;
+    [0-3]) level=$WASM_CORE_OPT_LEVEL ;;
+    *) echo "WASM_CORE_OPT_LEVEL is z, s, 0, 1, 2 or 3, not '$WASM_CORE_OPT_LEVEL'" >&2; exit 1 ;;
+  esac
+  wasm_cargo_flags=(--config "profile.$WASM_PROFILE.package.plc-core.opt-level=$level")
+fi
 
 # wasm-opt as the site uses it: IN OUT. (wasm-split writes a name subsection wasm-opt
 # does not know and warns about; the names are dropped anyway.)

@@ -141,6 +141,13 @@ pub fn variables_file(state: crate::state::AppState) -> Result<Option<String>, L
     Ok(state.sim.with_value(|s| s.as_ref().map(|s| variables_csv(&snapshot(s)))))
 }
 
+/// The share fragment of `project` (`p=…`): its DEFLATE writer is only needed when the
+/// user shares, so it comes with the exports (opening a share link needs only the reader).
+#[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn share_fragment(project: plc_core::project::Project) -> Result<String, LoadFailed> {
+    Ok(plc_core::project::encode_share(&project))
+}
+
 /// The plant's scene (its widgets drawn and its buttons and switches).
 #[wasm_split(scene, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn scene_view() -> Result<AnyView, LoadFailed> {

@@ -404,6 +404,38 @@ impl Exercise {
                 },
             }
         })?;
+        exercise.checked()
+    }
+
+    /// Reads an exercise in the built form (`built_form.rs`): the exercise, whose
+    /// `statement` is empty, and its statement as HTML. Checked as a TOML file is.
+    pub fn from_built(text: &str) -> Result<(Exercise, String), ExerciseError> {
+        #[derive(Deserialize)]
+        #[serde(deny_unknown_fields)]
+        struct Built {
+            #[allow(dead_code)]
+            plc_exercise: u32,
+            statement_html: String,
+            exercise: Exercise,
+        }
+        let built: Built = serde_json::from_str(text).map_err(|e| ExerciseError {
+            message: format!("the built exercise cannot be read: {e}"),
+        })?;
+        Ok((built.exercise.checked()?, built.statement_html))
+    }
+
+    /// Reads an exercise file, TOML or the built form.
+    pub fn from_text(text: &str) -> Result<Exercise, ExerciseError> {
+        if super::built_form::is_built(text) {
+            Ok(Exercise::from_built(text)?.0)
+        } else {
+            Exercise::from_toml(text)
+        }
+    }
+
+    /// The exercise, if everything it says can be used.
+    fn checked(self) -> Result<Exercise, ExerciseError> {
+        let exercise = self;
         if !(1..=5).contains(&exercise.level) {
             return Err(ExerciseError { message: "level is 1 (beginner) to 5 (advanced)".into() });
         }

@@ -2,6 +2,7 @@
 //! `docs/exercises.md`) and the grader, which runs a submission's scenarios on the one VM
 //! with virtual time.
 
+mod built_form;
 mod format;
 mod grade;
 mod link;
@@ -10,6 +11,7 @@ mod starter;
 mod statement;
 mod view;
 
+pub use built_form::{built_form, is_built, BUILT_PREFIX};
 pub use format::{
     parse_duration, scenarios_from_toml, time_text, Direction, Exercise, ExerciseError, Expect,
     Expectation, InterfaceVar, Random, RandomInput, Restart, Scenario, Step,

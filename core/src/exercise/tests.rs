@@ -440,3 +440,32 @@ fn the_score_line_explains_the_weights_when_they_matter() {
     assert_eq!(broken.checked_line().unwrap(), "Checked PROGRAM Main (ST)");
     assert_eq!(broken.score_line(), "Score 0 of 3");
 }
+
+/// The built form (what the web app ships) reads as the TOML file does, with the statement
+/// already rendered, and is checked as a file is.
+#[test]
+fn the_built_form_reads_as_the_toml_file() {
+    let render = |m: &str| statement_html(m, None);
+    let built = built_form(LATCH, render).unwrap();
+    assert!(is_built(&built) && !is_built(LATCH), "{built}");
+    let (read, html) = Exercise::from_built(&built).unwrap();
+    let toml = Exercise::from_toml(LATCH).unwrap();
+    assert_eq!(read, Exercise { statement: String::new(), ..toml.clone() });
+    assert_eq!(ExerciseView::with_statement(&read, html), ExerciseView::of(&toml, None));
+    assert_eq!(Exercise::from_text(&built).unwrap(), read);
+    assert_eq!(Exercise::from_text(LATCH).unwrap(), toml);
+    // A link carries either form.
+    let link = ExerciseLink { exercise: built.clone(), starter: None, starters: Vec::new() };
+    let (back, exercise) = ExerciseLink::decode(&link.encode().unwrap()).unwrap();
+    assert_eq!((back, exercise), (link, read));
+
+    let bad = built_form(&LATCH.replace("level = 1", "level = 9"), render).unwrap();
+    assert_eq!(
+        Exercise::from_built(&bad).unwrap_err().message,
+        "level is 1 (beginner) to 5 (advanced)"
+    );
+    let damaged = format!("{BUILT_PREFIX}\"statement_html\":3}}");
+    assert!(Exercise::from_built(&damaged).unwrap_err().message.starts_with("the built exercise"));
+    assert!(built_form("id = 1979-05-27", render).unwrap_err().contains("date"));
+    assert!(built_form("id = ", render).is_err());
+}

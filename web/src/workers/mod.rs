@@ -3,7 +3,8 @@
 //! it runs this same module (the file the page already fetched, so the engine is
 //! downloaded once), then [`worker_main`] fetches the worker's own code as a chunk
 //! (`split_import_worker.wasm`, `split_exercise_worker.wasm`), listens, and says `"ready"`;
-//! the page sends its request only then (`crate::import::ask_worker`).
+//! the page sends its request only then (`crate::import::ask_worker`). The exercise worker
+//! fetches one more chunk, `exercise_toml`, only for an exercise file written in TOML.
 
 mod exercise;
 mod import;
@@ -43,6 +44,23 @@ fn exercise_answer() -> Result<Answer, LoadFailed> {
 #[wasm_split(xml_reader, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn open_xml(stem: String, text: String) -> Result<Result<Opened, String>, LoadFailed> {
     Ok(plc_core::open::open_text(&stem, &text).map_err(|e| e.to_string()))
+}
+
+/// Reads an exercise file in TOML and renders its statement, relative links against
+/// `base` (the TOML reader and the Markdown renderer, a chunk of their own: the shipped
+/// exercises come in the built form, which the exercise worker reads without them).
+#[wasm_split(exercise_toml, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn read_toml(
+    text: String,
+    base: Option<String>,
+) -> Result<Result<(plc_core::exercise::Exercise, String), String>, LoadFailed> {
+    use plc_core::exercise::{statement_html, Exercise};
+    Ok(Exercise::from_toml(&text)
+        .map(|e| {
+            let html = statement_html(&e.statement, base.as_deref());
+            (e, html)
+        })
+        .map_err(|e| e.to_string()))
 }
 
 /// The passes a project's diagram POUs need, fetched when missing (as the page does).
