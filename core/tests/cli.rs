@@ -293,12 +293,12 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = String::from_utf8_lossy(&out.stdout).into_owned();
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines[0], "submission,score,total,passed,failed,error,first_failure");
+    assert_eq!(lines[0], "submission,score,total,passed,failed,error,first_failure,name,handed_in");
     assert_eq!(lines.len(), 5, "{text}");
-    assert!(lines[1].ends_with("a-right.st,3,3,2,0,,"), "{}", lines[1]);
+    assert!(lines[1].ends_with("a-right.st,3,3,2,0,,,,"), "{}", lines[1]);
     assert!(
         lines[2].ends_with(
-            "b-wrong.st,1,3,1,1,,\"Start, release, stop: Motor was FALSE at 0.21 s (scan 21)\""
+            "b-wrong.st,1,3,1,1,,\"Start, release, stop: Motor was FALSE at 0.21 s (scan 21)\",,"
         ),
         "{}",
         lines[2]
@@ -318,6 +318,125 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
     assert_eq!(v[0]["scenarios"][0]["expected"], "Motor stays TRUE from 0.21 s to 0.49 s");
     assert_eq!(v[0]["scenarios"][0]["scan"], 21);
     assert_eq!(v[0]["scenarios"][0]["hint"], "Does the motor hold itself when Start is released?");
+}
+
+/// A hand-in (`.plcsub`): graded again with the student's name in every format; one of
+/// another exercise gets its own row with the reason, and a damaged one too.
+#[test]
+fn grade_reads_hand_ins_with_the_students_name_and_refuses_another_exercises() {
+    use plc_core::exercise::HandIn;
+    let root = format!("{}/..", env!("CARGO_MANIFEST_DIR"));
+    let exercise = format!("{root}/exercises/latch/latch.toml");
+    let reference =
+        std::fs::read_to_string(format!("{root}/exercises/latch/reference.st")).unwrap();
+    let dir = std::env::temp_dir().join(format!("plc-handin-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let hand_in = |exercise: &str, name: &str, source: &str| {
+        let mut project = plc_core::project::Project::new("Exercise: latch");
+        project.source = source.to_string();
+        let text =
+            HandIn::file_text(&project.to_file(), exercise, name, "2025-03-04T10:11:12.000Z");
+        std::fs::write(dir.join(HandIn::file_name(exercise, name)), text).unwrap();
+    };
+    hand_in("latch", "Ada Lovelace", &reference);
+    hand_in("latch", "Zoë, \"B\"", &reference.replace("(Start OR Motor)", "Start"));
+    hand_in("blinker", "Ben Okri", &reference);
+    std::fs::write(dir.join("latch--Broken.plcsub"), "{ \"schema\": 1").unwrap();
+    let run = |format: &str| {
+        let out = plc(&["grade", &exercise, &dir.to_string_lossy(), "--format", format]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        stdout(&out)
+    };
+    // Rows by file name: blinker--Ben-Okri, latch--Ada-Lovelace, latch--Broken, latch--Zoë-B.
+    let text = run("text");
+    assert!(text.contains("latch--Ada-Lovelace.plcsub (Ada Lovelace): 3/3"), "{text}");
+    assert!(text.contains("latch--Zoë-B.plcsub (Zoë, \"B\"): 1/3"), "{text}");
+    assert!(
+        text.contains("blinker--Ben-Okri.plcsub (Ben Okri): cannot be graded: this is a hand-in of exercise “blinker”, not of “latch”"),
+        "{text}"
+    );
+    assert!(text.contains("latch--Broken.plcsub: cannot be graded: "), "{text}");
+    let csv = run("csv");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 5, "{csv}");
+    assert!(lines[1].ends_with(",Ben Okri,2025-03-04T10:11:12.000Z"), "{}", lines[1]);
+    assert!(lines[1].contains(",,,,,\"this is a hand-in of exercise “blinker”"), "{}", lines[1]);
+    assert!(lines[2].ends_with(",3,3,2,0,,,Ada Lovelace,2025-03-04T10:11:12.000Z"), "{}", lines[2]);
+    assert!(lines[4].ends_with(",\"Zoë, \"\"B\"\"\",2025-03-04T10:11:12.000Z"), "{}", lines[4]);
+    let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    assert_eq!(json[1]["name"], "Ada Lovelace");
+    assert_eq!(json[1]["handed_in"], "2025-03-04T10:11:12.000Z");
+    assert_eq!(json[1]["score"], 3);
+    assert_eq!(json[0]["name"], "Ben Okri");
+    assert!(json[0]["error"].as_str().unwrap().contains("not of “latch”"));
+    assert_eq!(json[2]["name"], serde_json::Value::Null);
+}
+
+/// `plc grade --format html`: the class report of a class's right, wrong, broken and
+/// unreadable submissions to the reversing exercise — a row each, every scenario's pass
+/// rate, the histogram of scores, the most common first failures — as one page that needs
+/// nothing else (no script, nothing fetched).
+#[test]
+fn grade_html_is_a_self_contained_class_report() {
+    let root = format!("{}/..", env!("CARGO_MANIFEST_DIR"));
+    let ex = format!("{root}/exercises/reversing");
+    let read = |f: &str| std::fs::read_to_string(format!("{ex}/{f}")).unwrap();
+    let dir = std::env::temp_dir().join(format!("plc-class-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let files = [
+        ("anna.st", read("reference.st")),
+        ("ben.st", read("reference.st")),
+        ("carl.st", read("mutants/no-interlock.st")),
+        ("dora.st", read("mutants/no-interlock.st")),
+        ("emil.st", read("mutants/stop-ignored.st")),
+        ("fay.st", read("reference.st").replace("NOT Stop", "NOT Stopp")),
+        ("gil.plcproj.json", "{ \"schema\": 1, \"name\": ".to_string()),
+    ];
+    for (name, text) in &files {
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+    let out = plc(&[
+        "grade",
+        &format!("{ex}/reversing.toml"),
+        &dir.to_string_lossy(),
+        "--format",
+        "html",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let html = stdout(&out);
+    assert!(html.starts_with("<!DOCTYPE html>"), "{html}");
+    assert!(html.contains("<title>Class report — Reversing motor with interlock</title>"));
+    // Self-contained: no script, nothing loaded from anywhere.
+    for outside in ["<script", "src=", "href=", "url(", "@import"] {
+        assert!(!html.contains(outside), "{outside} in the report");
+    }
+    // A row per submission: name, score, first failure with its time.
+    assert!(
+        html.contains(
+            "<tr><td>anna.st</td><td class=\"num\"><span class=\"full\">2 / 2</span></td>"
+        ),
+        "{html}"
+    );
+    assert!(html.contains("<td>“Random presses never run both directions”: MotorFwd AND MotorRev was TRUE at 2.65 s (scan 265)"), "{html}");
+    assert!(html.contains("<td class=\"num\">2.65 s</td>"), "{html}");
+    assert!(html.contains("the program does not build: line "), "{html}");
+    assert!(html.contains("<tr><td>gil.plcproj.json</td><td class=\"num\"><span class=\"refused\">not graded</span></td><td>this is not a project file"), "{html}");
+    // Pass rates over the six graded submissions.
+    assert!(html.contains("<td>Forward, stop, reverse</td>"), "{html}");
+    assert!(html.contains("4 / 6 (67 %)"), "{html}");
+    assert!(html.contains("3 / 6 (50 %)"), "{html}");
+    // The histogram: one bar per score 0, 1, 2.
+    assert!(
+        html.contains("<title id=\"hist-title\">Submissions per score: 0: 1, 1: 3, 2: 2</title>"),
+        "{html}"
+    );
+    assert_eq!(html.matches("<rect ").count(), 3);
+    // The common first failures, most students first.
+    let common = html.split("Most common first failures").nth(1).unwrap();
+    let first_row = common.split("<tr><td>").nth(1).unwrap();
+    assert!(first_row.starts_with("“Random presses never run both directions”: expected MotorFwd AND MotorRev is never TRUE"), "{first_row}");
+    assert!(first_row.contains("2 of 6"), "{first_row}");
+    assert!(common.contains("the program does not build</td>"), "{common}");
 }
 
 /// Every shipped exercise validates: its reference passes, its starter fails, each mutant

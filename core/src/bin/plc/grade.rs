@@ -1,12 +1,14 @@
 //! `plc grade EXERCISE SUBMISSION...`: grades submissions (project files, ST files, PLCopen
-//! XML, or folders of them) against an exercise, in parallel, one row per submission; a
-//! submission that cannot be read gets its own row and never stops the batch.
+//! XML, hand-ins, or folders of them) against an exercise, in parallel, one row per
+//! submission; a submission that cannot be read, or a hand-in of another exercise, gets
+//! its own row with the reason and never stops the batch.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use plc_core::exercise::{
-    grade, scenarios_from_toml, time_text, Exercise, ExerciseLink, LinkedFile, Report,
+    grade, scenarios_from_toml, time_text, Exercise, ExerciseLink, HandIn, LinkedFile, Report,
+    HAND_IN_EXTENSION,
 };
 
 /// How the grades are printed.
@@ -18,12 +20,62 @@ pub enum Format {
     Json,
     /// A CSV table with a header row.
     Csv,
+    /// A class report: one self-contained HTML page (rows, pass rates, a histogram of
+    /// scores, the most common first failures).
+    Html,
 }
 
-/// One submission's outcome: its report, or why it could not be read.
-struct Row {
-    name: String,
-    result: Result<Report, String>,
+/// One submission's outcome: its report, or why it could not be graded.
+pub(crate) struct Row {
+    /// The file, as given.
+    pub name: String,
+    /// The student's name, for a hand-in.
+    pub student: Option<String>,
+    /// When it was handed in, for a hand-in.
+    pub handed_in: Option<String>,
+    /// The report, or why there is none.
+    pub result: Result<Report, String>,
+}
+
+/// Grades one file: a hand-in (checked to be of this exercise), or any file `plc` opens.
+fn grade_file(ex: &Exercise, file: &Path) -> Row {
+    let name = file.display().to_string();
+    let graded = |project: Result<plc_core::project::Project, String>| {
+        project.and_then(|p| grade(ex, &p).map_err(|e| format!("plc: the exercise: {e}")))
+    };
+    let text = super::read_source(file);
+    let is_hand_in = file.extension().is_some_and(|e| e == HAND_IN_EXTENSION)
+        || text.as_deref().is_ok_and(HandIn::is_hand_in);
+    let Ok(text) = text.as_deref().map(|t| t.trim_start_matches('\u{feff}')) else {
+        return Row {
+            name,
+            student: None,
+            handed_in: None,
+            result: graded(super::load_project(file)),
+        };
+    };
+    if !is_hand_in {
+        return Row {
+            name,
+            student: None,
+            handed_in: None,
+            result: graded(super::load_project(file)),
+        };
+    }
+    match HandIn::from_file(text) {
+        Err(e) => Row { name, student: None, handed_in: None, result: Err(e.to_string()) },
+        Ok(h) => {
+            let result = if h.exercise == ex.id {
+                graded(Ok(h.project))
+            } else {
+                Err(format!(
+                    "this is a hand-in of exercise “{}”, not of “{}”: grade it with its own exercise",
+                    h.exercise, ex.id
+                ))
+            };
+            Row { name, student: Some(h.name), handed_in: Some(h.handed_in), result }
+        }
+    }
 }
 
 /// The files to grade: each path, or the files of each folder (sorted by name).
@@ -90,10 +142,7 @@ pub fn run(
             scope.spawn(move || loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 let Some(file) = files.get(i) else { break };
-                let result = super::load_project(file).and_then(|project| {
-                    grade(ex, &project).map_err(|e| format!("plc: the exercise: {e}"))
-                });
-                let row = Row { name: file.display().to_string(), result };
+                let row = grade_file(ex, file);
                 if let Some(slot) = rows.lock().ok().as_mut().and_then(|r| r.get_mut(i)) {
                     *slot = Some(row);
                 }
@@ -106,16 +155,27 @@ pub fn run(
         Format::Text => print_text(&rows),
         Format::Json => println!("{}", json(&rows)),
         Format::Csv => print!("{}", csv(&rows)),
+        Format::Html => print!("{}", super::class_report::html(&ex, &rows)),
     }
     ExitCode::SUCCESS
+}
+
+impl Row {
+    /// The file, and the student's name when it is a hand-in: `a.plcsub (Ada Lovelace)`.
+    fn label(&self) -> String {
+        match &self.student {
+            Some(student) => format!("{} ({student})", self.name),
+            None => self.name.clone(),
+        }
+    }
 }
 
 fn print_text(rows: &[Row]) {
     for row in rows {
         match &row.result {
-            Err(e) => println!("{}: cannot be graded: {e}", row.name),
+            Err(e) => println!("{}: cannot be graded: {e}", row.label()),
             Ok(r) => {
-                println!("{}: {}/{}", row.name, r.score, r.total);
+                println!("{}: {}/{}", row.label(), r.score, r.total);
                 if let Some(e) = &r.error {
                     println!("  {e}");
                 }
@@ -136,9 +196,16 @@ fn json(rows: &[Row]) -> serde_json::Value {
     let rows: Vec<serde_json::Value> = rows
         .iter()
         .map(|row| match &row.result {
-            Err(e) => serde_json::json!({ "submission": row.name, "error": e }),
+            Err(e) => serde_json::json!({
+                "submission": row.name,
+                "name": row.student,
+                "handed_in": row.handed_in,
+                "error": e,
+            }),
             Ok(r) => serde_json::json!({
                 "submission": row.name,
+                "name": row.student,
+                "handed_in": row.handed_in,
                 "score": r.score,
                 "total": r.total,
                 "error": r.error,
@@ -168,7 +235,8 @@ fn field(text: &str) -> String {
 }
 
 fn csv(rows: &[Row]) -> String {
-    let mut out = String::from("submission,score,total,passed,failed,error,first_failure\n");
+    let mut out =
+        String::from("submission,score,total,passed,failed,error,first_failure,name,handed_in\n");
     for row in rows {
         let line = match &row.result {
             Err(e) => format!("{},,,,,{},", field(&row.name), field(e)),
@@ -191,6 +259,10 @@ fn csv(rows: &[Row]) -> String {
             }
         };
         out.push_str(&line);
+        for extra in [&row.student, &row.handed_in] {
+            out.push(',');
+            out.push_str(&field(extra.as_deref().unwrap_or_default()));
+        }
         out.push('\n');
     }
     out
