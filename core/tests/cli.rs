@@ -527,6 +527,131 @@ fn an_exercise_link_carries_the_file_and_the_starter_only() {
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no-such.toml"));
 }
 
+/// The files of a ZIP archive, read through its central directory as an unzipper does.
+fn unzip(b: &[u8]) -> Vec<(String, Vec<u8>)> {
+    let u16_at = |at: usize| usize::from(u16::from_le_bytes([b[at], b[at + 1]]));
+    let u32_at = |at: usize| u32::from_le_bytes([b[at], b[at + 1], b[at + 2], b[at + 3]]) as usize;
+    let end = b.len() - 22;
+    assert_eq!(u32_at(end), 0x0605_4b50, "the end of the central directory");
+    let mut at = u32_at(end + 16);
+    (0..u16_at(end + 10))
+        .map(|_| {
+            assert_eq!(u32_at(at), 0x0201_4b50);
+            let (method, packed, name_len) = (u16_at(at + 10), u32_at(at + 20), u16_at(at + 28));
+            let local = u32_at(at + 42);
+            let name = String::from_utf8(b[at + 46..at + 46 + name_len].to_vec()).unwrap();
+            let start = local + 30 + u16_at(local + 26) + u16_at(local + 28);
+            let body = &b[start..start + packed];
+            let data = if method == 8 {
+                miniz_oxide::inflate::decompress_to_vec(body).unwrap()
+            } else {
+                body.to_vec()
+            };
+            at += 46 + name_len;
+            (name, data)
+        })
+        .collect()
+}
+
+/// `plc exercise scorm`: a package an LMS imports — the site, the exercise and its starter,
+/// and a manifest with every element SCORM 1.2 requires; never the reference nor a mutant.
+#[test]
+fn an_exercise_scorm_package_has_the_manifest_site_exercise_and_starter_only() {
+    let root = format!("{}/../exercises/latch", env!("CARGO_MANIFEST_DIR"));
+    let dir = std::env::temp_dir().join(format!("plc-scorm-{}", std::process::id()));
+    let site = dir.join("site");
+    std::fs::create_dir_all(site.join("examples")).unwrap();
+    std::fs::write(site.join("index.html"), "<!DOCTYPE html><title>PLC trainer</title>").unwrap();
+    std::fs::write(site.join("plc-web-0123.wasm"), [0u8, 97, 115, 109, 1, 0, 0, 0]).unwrap();
+    std::fs::write(site.join("examples/weighing.st"), "PROGRAM W END_PROGRAM").unwrap();
+    let zip = dir.join("latch.zip");
+    let out = plc(&[
+        "exercise",
+        "scorm",
+        &format!("{root}/latch.toml"),
+        "--site",
+        &site.to_string_lossy(),
+        "--out",
+        &zip.to_string_lossy(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout(&out).starts_with(&format!("wrote {}", zip.display())));
+    let files = unzip(&std::fs::read(&zip).unwrap());
+    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "imsmanifest.xml",
+            "examples/weighing.st",
+            "index.html",
+            "plc-web-0123.wasm",
+            "exercise/latch.toml",
+            "exercise/starter.st"
+        ]
+    );
+    let file = |name: &str| {
+        String::from_utf8(files.iter().find(|(n, _)| n == name).unwrap().1.clone()).unwrap()
+    };
+    assert_eq!(
+        file("exercise/latch.toml"),
+        std::fs::read_to_string(format!("{root}/latch.toml")).unwrap()
+    );
+    assert_eq!(
+        file("exercise/starter.st"),
+        std::fs::read_to_string(format!("{root}/starter.st")).unwrap()
+    );
+    // Neither the reference solution nor a mutant is in any file.
+    let reference = std::fs::read_to_string(format!("{root}/reference.st")).unwrap();
+    let seal_in = reference.lines().find(|l| l.contains("Motor :=")).unwrap().trim().to_string();
+    assert!(files.iter().all(|(_, data)| !String::from_utf8_lossy(data).contains(&seal_in)));
+    // SCORM 1.2 (IMS Content Packaging 1.1.2 and ADL CP): the manifest and its metadata, the
+    // default organization with an item naming the resource, the SCO resource with its
+    // launch address and its files.
+    let manifest = file("imsmanifest.xml");
+    let required = [
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>",
+        "<manifest identifier=\"plc-trainer-latch\"",
+        "xmlns=\"http://www.imsproject.org/xsd/imscp_rootv1p1p2\"",
+        "xmlns:adlcp=\"http://www.adlnet.org/xsd/adlcp_rootv1p2\"",
+        "<metadata>\n    <schema>ADL SCORM</schema>\n    <schemaversion>1.2</schemaversion>\n  </metadata>",
+        "<organizations default=\"org-latch\">\n    <organization identifier=\"org-latch\">\n      <title>Start/stop motor latch</title>",
+        "<item identifier=\"item-latch\" identifierref=\"res-latch\" isvisible=\"true\">\n        <title>Start/stop motor latch</title>",
+        "<resources>\n    <resource identifier=\"res-latch\" type=\"webcontent\" adlcp:scormtype=\"sco\" href=\"index.html?exercise=exercise/latch.toml&amp;scorm=1\">",
+        "<file href=\"index.html\"/>",
+        "<file href=\"exercise/starter.st\"/>",
+        "</resources>\n</manifest>",
+    ];
+    for part in required {
+        assert!(manifest.contains(part), "{part} in\n{manifest}");
+    }
+    // SCORM 2004 4th edition on request; a missing site is named with how to build it.
+    let out = plc(&[
+        "exercise",
+        "scorm",
+        &format!("{root}/latch.toml"),
+        "--site",
+        &site.to_string_lossy(),
+        "--out",
+        &zip.to_string_lossy(),
+        "--scorm",
+        "2004",
+    ]);
+    assert!(out.status.success());
+    let files = unzip(&std::fs::read(&zip).unwrap());
+    let manifest = String::from_utf8(files[0].1.clone()).unwrap();
+    assert!(manifest.contains("<schemaversion>2004 4th Edition</schemaversion>"), "{manifest}");
+    let missing = plc(&[
+        "exercise",
+        "scorm",
+        &format!("{root}/latch.toml"),
+        "--site",
+        &dir.join("no-site").to_string_lossy(),
+    ]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr)
+        .contains("no built site there (build it with `bash scripts/build-web.sh`"));
+}
+
 /// `st-view` prints the ST a network POU (an FBD body kept as drawn) runs as.
 #[test]
 fn st_view_prints_a_network_pou() {

@@ -118,7 +118,8 @@ enum Command {
         #[arg(long)]
         jobs: Option<usize>,
     },
-    /// Exercises: validate one (reference, starter, mutants), or write a skeleton.
+    /// Exercises: validate one (reference, starter, mutants), write a skeleton, a link or a
+    /// SCORM package.
     Exercise {
         #[command(subcommand)]
         command: grade::ExerciseCommand,

@@ -7,6 +7,7 @@ mod grade;
 mod handin;
 mod link;
 mod random;
+mod scorm;
 mod statement;
 mod view;
 
@@ -17,6 +18,10 @@ pub use format::{
 pub use grade::{grade, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport};
 pub use handin::{HandIn, HAND_IN_EXTENSION};
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
+pub use scorm::{
+    scorm_files, scorm_launch, scorm_manifest, scorm_package, PackageFile, ScormVersion,
+    SCORM_12_SUSPEND_LIMIT, SCORM_EXERCISE_DIR, SITE_FILE_LIST,
+};
 pub use statement::{next_to, statement_html};
 pub use view::{ExerciseView, ScenarioView};
 

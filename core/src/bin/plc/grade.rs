@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use plc_core::exercise::{
-    grade, scenarios_from_toml, time_text, Exercise, ExerciseLink, HandIn, LinkedFile, Report,
-    HAND_IN_EXTENSION,
+    grade, scenarios_from_toml, scorm_package, time_text, Exercise, ExerciseLink, HandIn,
+    LinkedFile, Report, ScormVersion, HAND_IN_EXTENSION,
 };
 
 /// How the grades are printed.
@@ -296,6 +296,24 @@ pub enum ExerciseCommand {
         #[arg(long, value_name = "URL", default_value = "")]
         base: String,
     },
+    /// Write a SCORM package an LMS (Moodle, Canvas, Blackboard, ILIAS) imports as an
+    /// activity: the built site, the exercise and its starter (never the hidden scenarios
+    /// nor the reference) and imsmanifest.xml; the page reports each Check's score to the
+    /// LMS's gradebook.
+    Scorm {
+        /// The exercise file (TOML).
+        exercise: PathBuf,
+        /// The package to write (default: ID-scorm.zip).
+        #[arg(long, value_name = "FILE.zip")]
+        out: Option<PathBuf>,
+        /// The built site (`bash scripts/build-web.sh` writes it to dist/).
+        #[arg(long, value_name = "DIR", default_value = "dist")]
+        site: PathBuf,
+        /// The SCORM edition the manifest declares: 1.2, or 2004 (4th edition).
+        #[arg(long = "scorm", value_name = "VERSION", default_value = "1.2",
+              value_parser = ["1.2", "2004"])]
+        version: String,
+    },
 }
 
 /// Runs `plc exercise …`.
@@ -306,6 +324,75 @@ pub fn exercise(command: ExerciseCommand) -> ExitCode {
         }
         ExerciseCommand::New { id } => new(&id),
         ExerciseCommand::Link { exercise, base } => link(&exercise, &base),
+        ExerciseCommand::Scorm { exercise, out, site, version } => {
+            let version =
+                if version == "2004" { ScormVersion::Scorm2004 } else { ScormVersion::Scorm12 };
+            scorm(&exercise, out.as_deref(), &site, version)
+        }
+    }
+}
+
+/// The files under `dir` as `(path with /, contents)`, sorted by path.
+fn site_files(dir: &Path) -> Result<Vec<(String, Vec<u8>)>, String> {
+    let mut files = Vec::new();
+    let mut folders = vec![dir.to_path_buf()];
+    while let Some(folder) = folders.pop() {
+        let entries =
+            std::fs::read_dir(&folder).map_err(|e| format!("plc: {}: {e}", folder.display()))?;
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                folders.push(path);
+                continue;
+            }
+            let rel = path.strip_prefix(dir).unwrap_or(&path);
+            let name: Vec<String> =
+                rel.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+            let bytes =
+                std::fs::read(&path).map_err(|e| format!("plc: {}: {e}", path.display()))?;
+            files.push((name.join("/"), bytes));
+        }
+    }
+    files.sort_by(|a, b| a.0.cmp(&b.0));
+    Ok(files)
+}
+
+/// `plc exercise scorm`: the exercise's SCORM package.
+fn scorm(path: &Path, out: Option<&Path>, site: &Path, version: ScormVersion) -> ExitCode {
+    let made = (|| -> Result<(PathBuf, usize), String> {
+        let text = read(path)?;
+        let exercise =
+            Exercise::from_toml(&text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
+        let starter = match &exercise.starter {
+            Some(name) => {
+                let file = path.parent().unwrap_or(Path::new(".")).join(name);
+                Some(LinkedFile { name: name.clone(), text: read(&file)? })
+            }
+            None => None,
+        };
+        if !site.join("index.html").is_file() {
+            return Err(format!(
+                "plc: {}: no built site there (build it with `bash scripts/build-web.sh`, or give --site DIR)",
+                site.display()
+            ));
+        }
+        let files = site_files(site)?;
+        let zip = scorm_package(&text, starter.as_ref(), files, version)
+            .map_err(|e| format!("plc: {}: {e}", path.display()))?;
+        let out = out
+            .map_or_else(|| PathBuf::from(format!("{}-scorm.zip", exercise.id)), Path::to_path_buf);
+        std::fs::write(&out, &zip).map_err(|e| format!("plc: {}: {e}", out.display()))?;
+        Ok((out, zip.len()))
+    })();
+    match made {
+        Ok((out, size)) => {
+            println!("wrote {} ({} KB)", out.display(), size.div_ceil(1024));
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::from(2)
+        }
     }
 }
 
