@@ -417,7 +417,7 @@ fn grade_html_is_a_self_contained_class_report() {
         ),
         "{html}"
     );
-    assert!(html.contains("<td>“Random presses never run both directions”: MotorFwd AND MotorRev was TRUE at 2.65 s (scan 265)"), "{html}");
+    assert!(html.contains("<td>“Random presses never run both directions”: MotorFwd AND MotorRev was TRUE at 2.65 s (scan 265)<br><small>random run with seed 7"), "{html}");
     assert!(html.contains("<td class=\"num\">2.65 s</td>"), "{html}");
     assert!(html.contains("the program does not build: line "), "{html}");
     assert!(html.contains("<tr><td>gil.plcproj.json</td><td class=\"num\"><span class=\"refused\">not graded</span></td><td>this is not a project file"), "{html}");

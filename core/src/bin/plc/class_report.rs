@@ -36,7 +36,8 @@ impl Words {
     const NO_FAILURES: &'static str = "No submission failed.";
     const NOTHING_GRADED: &'static str = "No submission could be graded.";
     const EXERCISE: &'static str = "Exercise";
-    const SCENARIOS_POINTS: &'static str = "scenario(s), points:";
+    const SCENARIOS: &'static str = "scenario(s)";
+    const POINTS: &'static str = "point(s)";
     const GRADED: &'static str = "graded";
     const FULL: &'static str = "passed every scenario";
     const MEAN: &'static str = "mean score";
@@ -116,6 +117,8 @@ th, td { text-align: left; vertical-align: top; padding: 6px 8px; border-bottom:
 th { font-size: .85rem; color: var(--muted); font-weight: 600; }
 td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 td.file { color: var(--muted); font-size: .85rem; word-break: break-all; }
+td.when { white-space: nowrap; font-variant-numeric: tabular-nums; }
+td small { color: var(--muted); }
 .full { color: var(--ok); font-weight: 600; }
 .zero, .refused { color: var(--bad); }
 .rate { display: flex; align-items: center; gap: 8px; min-width: 180px; }
@@ -140,13 +143,14 @@ pub(crate) fn html(ex: &Exercise, rows: &[Row]) -> String {
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
          <title>{}</title>\n<style>{STYLE}</style>\n</head>\n<body>\n<h1>{}</h1>\n\
-         <p class=\"sub\">{} <code>{}</code> · {} {} {total}</p>\n",
+         <p class=\"sub\">{} <code>{}</code> · {} {} · {total} {}</p>\n",
         esc(&title),
         esc(&title),
         Words::EXERCISE,
         esc(&ex.id),
         ex.scenarios.len(),
-        Words::SCENARIOS_POINTS,
+        Words::SCENARIOS,
+        Words::POINTS,
     );
     summary(&mut out, &graded, refused, total);
     let _ = write!(out, "<div class=\"grid\">\n<section>\n<h2>{}</h2>\n", Words::HISTOGRAM);
@@ -291,7 +295,7 @@ fn pass_rates(out: &mut String, ex: &Exercise, graded: &[&Report]) {
             .filter(|r| r.error.is_none())
             .filter(|r| r.scenarios.iter().any(|x| x.name == s.name && x.passed()))
             .count();
-        let percent = if n == 0 { 0.0 } else { 100.0 * passed as f64 / n as f64 };
+        let percent = if n == 0 { 0.0 } else { (100.0 * passed as f64 / n as f64).round() };
         let _ = writeln!(
             out,
             "<tr><td>{}</td><td class=\"num\">{}</td><td><div class=\"rate\"><div class=\"meter\"><span style=\"width:{percent:.0}%\"></span></div><span class=\"num\">{passed} / {n} ({percent:.0} %)</span></div></td></tr>",
@@ -325,7 +329,7 @@ fn common_failures(out: &mut String, graded: &[&Report]) {
         Words::STUDENTS
     );
     for (key, count) in sorted.iter().take(10) {
-        let percent = 100.0 * *count as f64 / n as f64;
+        let percent = (100.0 * *count as f64 / n as f64).round();
         let _ = writeln!(
             out,
             "<tr><td>{}</td><td><div class=\"rate\"><div class=\"meter\"><span style=\"width:{percent:.0}%\"></span></div><span class=\"num\">{count} {} {n}</span></div></td></tr>",
@@ -334,6 +338,32 @@ fn common_failures(out: &mut String, graded: &[&Report]) {
         );
     }
     out.push_str("</tbody>\n</table>\n");
+}
+
+/// A failure as a cell: what went wrong, and the details a random run adds (after ` — `:
+/// the seed, the replay, the shortest failing events) in smaller type.
+fn failure_html(text: &str) -> String {
+    match text.split_once(" — ") {
+        Some((what, details)) => format!("{}<br><small>{}</small>", esc(what), esc(details)),
+        None => esc(text),
+    }
+}
+
+/// An ISO 8601 time as people read it: `2025-03-04T10:15:00.000Z` → `2025-03-04 10:15 UTC`
+/// (other texts as they are).
+fn when_text(iso: &str) -> String {
+    let b = iso.as_bytes();
+    let iso_like = b.len() >= 16
+        && b[4] == b'-'
+        && b[7] == b'-'
+        && b[10] == b'T'
+        && b[13] == b':'
+        && iso.is_char_boundary(16);
+    if !iso_like {
+        return iso.to_string();
+    }
+    let zone = if iso.ends_with('Z') { " UTC" } else { "" };
+    format!("{} {}{zone}", &iso[..10], &iso[11..16])
 }
 
 fn submissions(out: &mut String, rows: &[Row]) {
@@ -371,7 +401,9 @@ fn submissions(out: &mut String, rows: &[Row]) {
                 };
                 let score = format!("<span class=\"{class}\">{} / {}</span>", r.score, r.total);
                 match first_failure(r) {
-                    Some(f) => (score, esc(&f.text), f.at.map(|a| esc(&a)).unwrap_or_default()),
+                    Some(f) => {
+                        (score, failure_html(&f.text), f.at.map(|a| esc(&a)).unwrap_or_default())
+                    }
                     None => (
                         score,
                         format!("<span class=\"full\">{}</span>", Words::ALL_PASSED),
@@ -386,9 +418,36 @@ fn submissions(out: &mut String, rows: &[Row]) {
             esc(&shown_name(row))
         );
         if handed {
-            let _ = write!(out, "<td>{}</td>", esc(row.handed_in.as_deref().unwrap_or_default()));
+            let when = row.handed_in.as_deref().map(when_text).unwrap_or_default();
+            let _ = write!(out, "<td class=\"when\">{}</td>", esc(&when));
         }
-        let _ = writeln!(out, "<td class=\"file\">{}</td></tr>", esc(&row.name));
+        let file = std::path::Path::new(&row.name)
+            .file_name()
+            .map_or(row.name.clone(), |n| n.to_string_lossy().into_owned());
+        let _ = writeln!(
+            out,
+            "<td class=\"file\" title=\"{}\">{}</td></tr>",
+            esc(&row.name),
+            esc(&file)
+        );
     }
     out.push_str("</tbody>\n</table>\n");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn times_and_failures_read_as_people_read_them() {
+        assert_eq!(when_text("2025-03-04T10:15:00.000Z"), "2025-03-04 10:15 UTC");
+        assert_eq!(when_text("2025-03-04T10:15:00+01:00"), "2025-03-04 10:15");
+        assert_eq!(when_text("yesterday"), "yesterday");
+        assert_eq!(when_text("2025-03-04Tü"), "2025-03-04Tü");
+        assert_eq!(
+            failure_html("A was TRUE — random run with seed 7 <x>"),
+            "A was TRUE<br><small>random run with seed 7 &lt;x&gt;</small>"
+        );
+        assert_eq!(esc("\"a\" & 'b'"), "&quot;a&quot; &amp; &#39;b&#39;");
+    }
 }
