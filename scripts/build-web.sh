@@ -11,6 +11,8 @@ export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 (cd web && trunk build --release)
 node scripts/minify-js.mjs dist
 node scripts/csp.mjs dist/index.html
+# The site's files, for the page's `Export SCORM package` (the exercise worker packs them).
+(cd dist && find . -type f ! -name site-files.txt | sed 's|^\./||' | LC_ALL=C sort) > dist/site-files.txt
 gz() { gzip -9 -c "$1" | wc -c; }
 first=0
 lazy=0

@@ -88,6 +88,11 @@ async fn ask_worker(request: &js_sys::Array) -> Result<String, String> {
 /// worker says when it is ready (its module loads asynchronously; a message sent before
 /// would be lost).
 pub async fn ask_worker_at(script: &str, request: &JsValue) -> Result<String, String> {
+    ask_worker_raw(script, request).await.map(|v| v.as_string().unwrap_or_default())
+}
+
+/// [`ask_worker_at`], the answer as the worker sent it (text, or bytes).
+pub async fn ask_worker_raw(script: &str, request: &JsValue) -> Result<JsValue, String> {
     let worker = web_sys::Worker::new(script)
         .map_err(|e| format!("the importer could not start ({e:?})"))?;
     let stopped = |_| "the importer stopped (the file may be too large or damaged)".to_string();
@@ -97,7 +102,7 @@ pub async fn ask_worker_at(script: &str, request: &JsValue) -> Result<String, St
         worker
             .post_message(request)
             .map_err(|e| format!("the importer did not take the file ({e:?})"))?;
-        reply.await.map_err(stopped).map(|v| v.as_string().unwrap_or_default())
+        reply.await.map_err(stopped)
     }
     .await;
     worker.terminate();

@@ -1,19 +1,22 @@
 //! The exercise worker: reads exercise files (shipped, fetched or carried by a link),
-//! renders their statements and grades attempts, off the page's own module so the first
-//! load stays within its size budget. It says `"ready"` once loaded, then answers each
-//! message — a JSON [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`).
+//! renders their statements, grades attempts and packs SCORM packages, off the page's own
+//! module so the first load stays within its size budget. It says `"ready"` once loaded,
+//! then answers each message — a JSON [`Request`] — with a JSON [`Reply`] (see
+//! `src/exercises/protocol.rs`), or, for a SCORM package, with the ZIP's bytes.
 
 #[path = "../exercises/protocol.rs"]
 mod protocol;
 
 use plc_core::exercise::{
-    grade_with, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
+    grade_with, scorm_package, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
+    ScormVersion, SITE_FILE_LIST,
 };
 use plc_core::open::open_text;
 use plc_core::project::Project;
 use protocol::{Opened, Reply, Request};
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_futures::JsFuture;
 
 mod shipped {
     include!(concat!(env!("OUT_DIR"), "/exercise_files.rs"));
@@ -52,7 +55,46 @@ fn answer(request: Request) -> Reply {
                 Err(e) => Reply::Error(format!("the exercise cannot grade: {e}")),
             }
         }
+        // Answered by `package` (it fetches the site's files first).
+        Request::Scorm(_) => Reply::Error("a package is made asynchronously".into()),
     }
+}
+
+/// The bytes at `url` (next to the worker's script: the site's root).
+async fn fetch_bytes(
+    scope: &web_sys::DedicatedWorkerGlobalScope,
+    url: &str,
+) -> Result<Vec<u8>, String> {
+    let failed = |_| format!("{url} cannot be read");
+    let response: web_sys::Response = JsFuture::from(scope.fetch_with_str(url))
+        .await
+        .map_err(failed)?
+        .dyn_into()
+        .map_err(failed)?;
+    if !response.ok() {
+        return Err(format!("{url}: HTTP {}", response.status()));
+    }
+    let buffer = JsFuture::from(response.array_buffer().map_err(failed)?).await.map_err(failed)?;
+    Ok(js_sys::Uint8Array::new(&buffer).to_vec())
+}
+
+/// The SCORM package of `link`: the site's files as `site-files.txt` lists them, the
+/// exercise and its starter, and the manifest.
+async fn package(
+    scope: &web_sys::DedicatedWorkerGlobalScope,
+    link: ExerciseLink,
+) -> Result<Vec<u8>, String> {
+    let list = fetch_bytes(scope, SITE_FILE_LIST).await.map_err(|_| {
+        format!(
+            "this copy of the trainer has no list of its files ({SITE_FILE_LIST}; `bash scripts/build-web.sh` writes it). Use `plc exercise scorm EXERCISE.toml` instead"
+        )
+    })?;
+    let mut site = Vec::new();
+    for path in String::from_utf8_lossy(&list).lines().map(str::trim).filter(|l| !l.is_empty()) {
+        site.push((path.to_string(), fetch_bytes(scope, path).await?));
+    }
+    scorm_package(&link.exercise, link.starter.as_ref(), site, ScormVersion::Scorm12)
+        .map_err(|e| e.to_string())
 }
 
 /// Opens an exercise file with its starter.
@@ -105,6 +147,19 @@ fn main() {
     let on_message =
         Closure::<dyn Fn(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
             let text = ev.data().as_string().unwrap_or_default();
+            if let Ok(Request::Scorm(link)) = serde_json::from_str::<Request>(&text) {
+                let scope = answer_to.clone();
+                wasm_bindgen_futures::spawn_local(async move {
+                    let _ = match package(&scope, link).await {
+                        Ok(zip) => scope.post_message(&js_sys::Uint8Array::from(zip.as_slice())),
+                        Err(e) => {
+                            let reply = serde_json::to_string(&Reply::Error(e)).unwrap_or_default();
+                            scope.post_message(&JsValue::from_str(&reply))
+                        }
+                    };
+                });
+                return;
+            }
             let _ = answer_to.post_message(&JsValue::from_str(&reply_text(&text)));
         });
     scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));

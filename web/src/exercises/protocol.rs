@@ -28,6 +28,9 @@ pub enum Request {
         /// The project file of the attempt.
         project: String,
     },
+    /// Pack the exercise (its file and starter) with the site's files into a SCORM 1.2
+    /// package; the worker answers with the ZIP's bytes (a `Uint8Array`) or an `Error`.
+    Scorm(ExerciseLink),
 }
 
 /// What the worker answers.
