@@ -8,7 +8,6 @@
 //!   a package an LMS imports; the page only downloads it. Hidden inside an LMS.
 
 use leptos::ev;
-use leptos::html;
 use leptos::prelude::*;
 use plc_core::exercise::HandIn;
 use plc_core::project::{Project, StorageBackend};
@@ -23,20 +22,28 @@ use crate::storage::LocalStorage;
 /// Where the browser keeps the student's name.
 const NAME_KEY: &str = "plc-student-name";
 
-/// What the user reads, in one place.
+/// What the user reads, in one place (the dialog is static markup: one element for the
+/// page to build instead of nine).
 mod words {
     pub const HAND_IN: &str = "Hand in";
     pub const HAND_IN_TITLE: &str = "Download your attempt as a file for your instructor";
-    pub const YOUR_NAME: &str = "Your name";
-    pub const NAME_HELP: &str =
-        "Your instructor sees this name with your attempt. This browser remembers it.";
-    pub const DOWNLOAD: &str = "Download hand-in";
-    pub const CANCEL: &str = "Cancel";
     pub const CHANGE_NAME: &str = "Change name";
     pub const EXPORT_SCORM: &str = "Export SCORM package";
     pub const EXPORT_TITLE: &str =
         "Download this exercise as a SCORM package for a course's LMS (Moodle, Canvas, Blackboard, ILIAS)";
-    pub const PACKING: &str = "Packing…";
+    pub const PACKING: &str = "Packing the SCORM package…";
+    /// The name dialog: `Your name`, required and not only spaces; Cancel closes it.
+    pub const DIALOG: &str = r#"<dialog id="handin-dialog" class="handin-dialog" aria-labelledby="handin-title">
+<form method="dialog"><h3 id="handin-title">Hand in</h3>
+<label>Your name <input id="handin-name" type="text" autocomplete="name" maxlength="80" required pattern=".*\S.*" autofocus aria-describedby="handin-help"></label>
+<p id="handin-help" class="handin-help">Your instructor sees this name with your attempt. This browser remembers it.</p>
+<div class="handin-buttons"><button type="submit" class="primary">Download hand-in</button><button type="submit" value="cancel" formnovalidate>Cancel</button></div>
+</form></dialog>"#;
+}
+
+/// An element of the page by its id.
+fn by_id<T: JsCast>(id: &str) -> Option<T> {
+    web_sys::window()?.document()?.get_element_by_id(id)?.dyn_into().ok()
 }
 
 fn stored_name() -> Option<String> {
@@ -99,10 +106,8 @@ pub fn HandInActions() -> impl IntoView {
     let ex = expect_context::<Exercises>();
     let packing = RwSignal::new(false);
     let name = RwSignal::new(stored_name());
-    let dialog = NodeRef::<html::Dialog>::new();
-    let input = NodeRef::<html::Input>::new();
-    let ask = move || {
-        if let Some(d) = dialog.get_untracked() {
+    let ask = || {
+        if let Some(d) = by_id::<web_sys::HtmlDialogElement>("handin-dialog") {
             let _ = d.show_modal();
         }
     };
@@ -110,10 +115,13 @@ pub fn HandInActions() -> impl IntoView {
         Some(n) => hand_in(ex, state, &n),
         None => ask(),
     };
-    // `method="dialog"`: a valid submit closes the dialog.
-    let submit = move |_: ev::SubmitEvent| {
-        let typed = input.get_untracked().map(|i| i.value()).unwrap_or_default();
-        let typed = typed.trim().to_string();
+    // `method="dialog"`: the submit closes the dialog (Cancel too, without the name).
+    let submit = move |e: ev::SubmitEvent| {
+        if e.submitter().is_some_and(|b| b.get_attribute("value").as_deref() == Some("cancel")) {
+            return;
+        }
+        let typed = by_id::<web_sys::HtmlInputElement>("handin-name").map(|i| i.value());
+        let typed = typed.unwrap_or_default().trim().to_string();
         if typed.is_empty() {
             return;
         }
@@ -131,6 +139,7 @@ pub fn HandInActions() -> impl IntoView {
             return;
         }
         packing.set(true);
+        state.info(words::PACKING);
         leptos::task::spawn_local(async move {
             export_scorm(ex, state).await;
             packing.set(false);
@@ -138,27 +147,8 @@ pub fn HandInActions() -> impl IntoView {
     };
     view! {
         <button on:click=start title=words::HAND_IN_TITLE>{words::HAND_IN}</button>
-        {move || name.get().map(|n| view! {
-            <button class="link handin-name" on:click=forget title=format!("Handing in as “{n}”")>{words::CHANGE_NAME}</button>
-        })}
-        <button class="lms-hidden" on:click=export title=words::EXPORT_TITLE disabled=move || packing.get()>
-            {move || if packing.get() { words::PACKING } else { words::EXPORT_SCORM }}
-        </button>
-        <dialog class="handin-dialog" node_ref=dialog aria-label=words::HAND_IN>
-            <form method="dialog" on:submit=submit>
-                <h3>{words::HAND_IN}</h3>
-                <label>{words::YOUR_NAME}
-                    <input type="text" node_ref=input autocomplete="name" maxlength="80" required
-                        pattern=".*\\S.*" autofocus aria-describedby="handin-help"/>
-                </label>
-                <p id="handin-help" class="handin-help">{words::NAME_HELP}</p>
-                <div class="handin-buttons">
-                    <button type="submit" class="primary">{words::DOWNLOAD}</button>
-                    <button type="button" on:click=move |_| {
-                        if let Some(d) = dialog.get_untracked() { d.close(); }
-                    }>{words::CANCEL}</button>
-                </div>
-            </form>
-        </dialog>
+        <button class="link handin-name" hidden=move || name.with(Option::is_none) on:click=forget>{words::CHANGE_NAME}</button>
+        <button class="lms-hidden" on:click=export title=words::EXPORT_TITLE disabled=move || packing.get()>{words::EXPORT_SCORM}</button>
+        <div class="handin" on:submit=submit inner_html=words::DIALOG></div>
     }
 }
