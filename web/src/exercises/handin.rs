@@ -72,12 +72,17 @@ fn hand_in(ex: Exercises, state: AppState, name: &str) {
 async fn export_scorm(ex: Exercises, state: AppState) {
     let Some(open) = ex.open.get_untracked() else { return };
     let id = open.opened.view.id.clone();
-    let request = match serde_json::to_string(&Request::Scorm(open.opened.link)) {
+    // The site's root: the page's folder (the app's own files are one level down).
+    let site = web_sys::window()
+        .and_then(|w| w.location().href().ok())
+        .and_then(|href| web_sys::Url::new_with_base("./", &href).ok())
+        .map(|url| url.href())
+        .unwrap_or_default();
+    let request = match serde_json::to_string(&Request::Scorm { link: open.opened.link, site }) {
         Ok(r) => r,
         Err(e) => return state.error(e.to_string()),
     };
-    let answer =
-        crate::import::ask_worker_raw(super::WORKER_SCRIPT, &JsValue::from_str(&request)).await;
+    let answer = crate::import::ask_worker_raw(super::WORKER, &JsValue::from_str(&request)).await;
     let bytes = match answer {
         Ok(v) if v.is_instance_of::<js_sys::Uint8Array>() => v,
         Ok(v) => {

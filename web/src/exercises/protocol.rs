@@ -1,4 +1,4 @@
-//! The messages between the page and the exercise worker (`src/bin/plc-exercise.rs`),
+//! The messages between the page and the exercise worker (`src/workers/exercise.rs`),
 //! which reads exercise files, renders their statements and grades attempts off the
 //! page's own module (the TOML reader, the Markdown renderer and the grader are not in the
 //! first load). Both sides send one JSON text per message.
@@ -30,7 +30,13 @@ pub enum Request {
     },
     /// Pack the exercise (its file and starter) with the site's files into a SCORM 1.2
     /// package; the worker answers with the ZIP's bytes (a `Uint8Array`) or an `Error`.
-    Scorm(ExerciseLink),
+    Scorm {
+        /// The exercise and its starter.
+        link: ExerciseLink,
+        /// The site's root URL (the page's folder, ending in `/`): its `site-files.txt`
+        /// lists the files to pack.
+        site: String,
+    },
 }
 
 /// What the worker answers.

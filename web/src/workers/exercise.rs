@@ -1,20 +1,17 @@
-//! The exercise worker: reads exercise files (shipped, fetched or carried by a link),
-//! renders their statements, grades attempts and packs SCORM packages, off the page's own
-//! module so the first load stays within its size budget. It says `"ready"` once loaded,
-//! then answers each message — a JSON [`Request`] — with a JSON [`Reply`] (see
-//! `src/exercises/protocol.rs`), or, for a SCORM package, with the ZIP's bytes.
+//! The exercise worker's work: reading exercise files (shipped, fetched or carried by a
+//! link), rendering their statements and grading attempts, in a chunk of the app
+//! (`split_exercise_worker.wasm`) that only the exercise worker loads (it runs the page's
+//! module, so the engine is not downloaded twice). It answers each message — a JSON
+//! [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`), or, for a SCORM
+//! package, with the ZIP's bytes (the packing and its ZIP writer stay in this chunk).
 
-#[path = "../exercises/protocol.rs"]
-mod protocol;
-
+use crate::exercises::protocol::{Opened, Reply, Request};
 use plc_core::exercise::{
-    grade_with, scorm_package, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
+    grade_by, scorm_package, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
     ScormVersion, SITE_FILE_LIST,
 };
-use plc_core::open::open_text;
+use plc_core::open::open_plain;
 use plc_core::project::Project;
-use protocol::{Opened, Reply, Request};
-use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 
@@ -26,19 +23,19 @@ mod shipped {
 const PAGE_WINDOW: usize = 100;
 
 /// The reply to one request.
-fn answer(request: Request) -> Reply {
+async fn answer(request: Request) -> Reply {
     match request {
         Request::Shipped(id) => match shipped::FILES.iter().find(|(i, _, _)| *i == id) {
             Some((_, text, starter)) => {
                 let starter =
                     starter.map(|(name, text)| LinkedFile { name: name.into(), text: text.into() });
-                open(ExerciseLink { exercise: (*text).to_string(), starter }, None)
+                open(ExerciseLink { exercise: (*text).to_string(), starter }, None).await
             }
             None => Reply::Error(format!("there is no exercise “{id}” in this trainer")),
         },
-        Request::File { link, base } => open(link, base),
+        Request::File { link, base } => open(link, base).await,
         Request::Link(fragment) => match ExerciseLink::decode(&fragment) {
-            Ok((link, _)) => open(link, None),
+            Ok((link, _)) => open(link, None).await,
             Err(e) => Reply::Error(e.to_string()),
         },
         Request::Grade { exercise, project } => {
@@ -50,22 +47,26 @@ fn answer(request: Request) -> Reply {
                 Ok(p) => p,
                 Err(e) => return Reply::Error(format!("the project cannot be read: {e}")),
             };
-            match grade_with(&exercise, &project, GradeOptions { window: PAGE_WINDOW }) {
+            // The passes for the submission's diagram POUs are chunks, fetched as needed.
+            let passes = match super::passes_for(&project).await {
+                Ok(passes) => passes,
+                Err(e) => return Reply::Error(format!("the exercise cannot grade: {e}")),
+            };
+            let options = GradeOptions { window: PAGE_WINDOW };
+            match grade_by(&exercise, &project, options, &passes) {
                 Ok(report) => Reply::Graded(report),
                 Err(e) => Reply::Error(format!("the exercise cannot grade: {e}")),
             }
         }
-        // Answered by `package` (it fetches the site's files first).
-        Request::Scorm(_) => Reply::Error("a package is made asynchronously".into()),
+        // Answered by `reply` (with the package's bytes).
+        Request::Scorm { .. } => Reply::Error("a package is not a text answer".into()),
     }
 }
 
-/// The bytes at `url` (next to the worker's script: the site's root).
-async fn fetch_bytes(
-    scope: &web_sys::DedicatedWorkerGlobalScope,
-    url: &str,
-) -> Result<Vec<u8>, String> {
+/// The bytes at `url`.
+async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
     let failed = |_| format!("{url} cannot be read");
+    let scope: web_sys::WorkerGlobalScope = js_sys::global().unchecked_into();
     let response: web_sys::Response = JsFuture::from(scope.fetch_with_str(url))
         .await
         .map_err(failed)?
@@ -78,27 +79,39 @@ async fn fetch_bytes(
     Ok(js_sys::Uint8Array::new(&buffer).to_vec())
 }
 
-/// The SCORM package of `link`: the site's files as `site-files.txt` lists them, the
-/// exercise and its starter, and the manifest.
-async fn package(
-    scope: &web_sys::DedicatedWorkerGlobalScope,
-    link: ExerciseLink,
-) -> Result<Vec<u8>, String> {
-    let list = fetch_bytes(scope, SITE_FILE_LIST).await.map_err(|_| {
+/// The SCORM package of `link`: the files of the site at `site` (its root URL, ending in
+/// `/`) as its `site-files.txt` lists them, the exercise and its starter, and the manifest.
+async fn package(link: ExerciseLink, site: &str) -> Result<Vec<u8>, String> {
+    let list = fetch_bytes(&format!("{site}{SITE_FILE_LIST}")).await.map_err(|_| {
         format!(
             "this copy of the trainer has no list of its files ({SITE_FILE_LIST}; `bash scripts/build-web.sh` writes it). Use `plc exercise scorm EXERCISE.toml` instead"
         )
     })?;
-    let mut site = Vec::new();
+    let mut files = Vec::new();
     for path in String::from_utf8_lossy(&list).lines().map(str::trim).filter(|l| !l.is_empty()) {
-        site.push((path.to_string(), fetch_bytes(scope, path).await?));
+        files.push((path.to_string(), fetch_bytes(&format!("{site}{path}")).await?));
     }
-    scorm_package(&link.exercise, link.starter.as_ref(), site, ScormVersion::Scorm12)
+    scorm_package(&link.exercise, link.starter.as_ref(), files, ScormVersion::Scorm12)
         .map_err(|e| e.to_string())
 }
 
+/// The answer to one message: a SCORM package's bytes (a `Uint8Array`), or the JSON text
+/// of a [`Reply`].
+pub async fn reply(message: JsValue) -> JsValue {
+    let text = message.as_string().unwrap_or_default();
+    if let Ok(Request::Scorm { link, site }) = serde_json::from_str::<Request>(&text) {
+        return match package(link, &site).await {
+            Ok(zip) => js_sys::Uint8Array::from(zip.as_slice()).into(),
+            Err(e) => {
+                JsValue::from_str(&serde_json::to_string(&Reply::Error(e)).unwrap_or_default())
+            }
+        };
+    }
+    JsValue::from_str(&reply_text(&text).await)
+}
+
 /// Opens an exercise file with its starter.
-fn open(link: ExerciseLink, base: Option<String>) -> Reply {
+async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
     let exercise = match Exercise::from_toml(&link.exercise) {
         Ok(e) => e,
         Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
@@ -111,15 +124,27 @@ fn open(link: ExerciseLink, base: Option<String>) -> Reply {
         (None, _) => {
             let mut p = Project::new(&exercise.title);
             p.source = exercise.blank_program();
-            Some(exercise.with_plant(&p).to_file())
+            Some(exercise.with_plant_by(&p, &plc_core::build::Lowerings::NONE).to_file())
         }
         (Some(_), None) => None,
         (Some(_), Some(file)) => {
             let stem = file.name.split('.').next().unwrap_or("starter");
-            match open_text(stem, &file.text) {
+            // Starters are ST or project files; the XML reader (a chunk of its own, shared
+            // with the import worker) is fetched only for a PLCopen XML or PNML starter.
+            let opened = match open_plain(stem, &file.text) {
+                Ok(Some(opened)) => Ok(opened),
+                Ok(None) => super::open_xml(stem.to_string(), file.text.clone())
+                    .await
+                    .unwrap_or_else(|e| Err(e.to_string())),
+                Err(e) => Err(e.to_string()),
+            };
+            match opened {
                 // The exercise's plant and its scene join the starter (the grader puts
                 // its own plant back in whatever the student changes).
-                Ok(opened) => Some(exercise.with_plant(&opened.project).to_file()),
+                Ok(opened) => match super::passes_for(&opened.project).await {
+                    Ok(passes) => Some(exercise.with_plant_by(&opened.project, &passes).to_file()),
+                    Err(e) => return Reply::Error(format!("the starter cannot be opened: {e}")),
+                },
                 Err(e) => {
                     return Reply::Error(format!("the starter {} cannot be opened: {e}", file.name))
                 }
@@ -131,41 +156,13 @@ fn open(link: ExerciseLink, base: Option<String>) -> Reply {
 }
 
 /// The reply to a message's text.
-fn reply_text(text: &str) -> String {
+pub async fn reply_text(text: &str) -> String {
     let reply = match serde_json::from_str::<Request>(text) {
-        Ok(request) => answer(request),
+        Ok(request) => answer(request).await,
         Err(e) => Reply::Error(format!("the exercise worker got a request it cannot read: {e}")),
     };
     serde_json::to_string(&reply)
         .unwrap_or_else(|_| r#"{"Error":"the answer could not be written"}"#.into())
-}
-
-fn main() {
-    console_error_panic_hook::set_once();
-    let scope: web_sys::DedicatedWorkerGlobalScope = js_sys::global().unchecked_into();
-    let answer_to = scope.clone();
-    let on_message =
-        Closure::<dyn Fn(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
-            let text = ev.data().as_string().unwrap_or_default();
-            if let Ok(Request::Scorm(link)) = serde_json::from_str::<Request>(&text) {
-                let scope = answer_to.clone();
-                wasm_bindgen_futures::spawn_local(async move {
-                    let _ = match package(&scope, link).await {
-                        Ok(zip) => scope.post_message(&js_sys::Uint8Array::from(zip.as_slice())),
-                        Err(e) => {
-                            let reply = serde_json::to_string(&Reply::Error(e)).unwrap_or_default();
-                            scope.post_message(&JsValue::from_str(&reply))
-                        }
-                    };
-                });
-                return;
-            }
-            let _ = answer_to.post_message(&JsValue::from_str(&reply_text(&text)));
-        });
-    scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
-    on_message.forget();
-    // Ready: the page sends its request only now.
-    let _ = scope.post_message(&JsValue::from_str("ready"));
 }
 
 #[cfg(test)]
@@ -174,7 +171,23 @@ mod tests {
     use super::*;
 
     fn ask(request: Request) -> Reply {
-        serde_json::from_str(&reply_text(&serde_json::to_string(&request).unwrap())).unwrap()
+        serde_json::from_str(&reply(&serde_json::to_string(&request).unwrap())).unwrap()
+    }
+
+    /// `reply_text` run to its end (natively nothing in it waits).
+    fn reply(text: &str) -> String {
+        block_on(reply_text(text))
+    }
+
+    fn block_on<F: std::future::Future>(f: F) -> F::Output {
+        use std::task::{Context, Poll, Waker};
+        let mut f = std::pin::pin!(f);
+        let mut cx = Context::from_waker(Waker::noop());
+        loop {
+            if let Poll::Ready(out) = f.as_mut().poll(&mut cx) {
+                return out;
+            }
+        }
     }
 
     #[test]
@@ -229,7 +242,7 @@ mod tests {
 
     #[test]
     fn bad_requests_get_messages() {
-        assert!(reply_text("nonsense").contains("cannot read"));
+        assert!(reply("nonsense").contains("cannot read"));
         let Reply::Error(e) = ask(Request::Shipped("nope".into())) else { panic!() };
         assert!(e.contains("nope"));
         let Reply::Error(e) = ask(Request::Link("x=AAAA".into())) else { panic!() };
