@@ -161,10 +161,12 @@ test('Export SCORM package downloads a package made in the page: the site, the e
   const file = await downloadFrom(page, () => page.getByRole('button', { name: 'Export SCORM package' }).click(), dir);
   assert.equal(file, 'latch-scorm.zip');
   const files = unzip(await readFile(path.join(dir, file)));
-  for (const name of ['imsmanifest.xml', 'index.html', 'exercise/latch.toml', 'exercise/starter.st', 'plc-exercise_loader.js']) {
+  for (const name of ['imsmanifest.xml', 'index.html', 'exercise/latch.toml', 'exercise/starter.st', 'sw.js', 'manifest.json']) {
     assert.ok(files.has(name), `${name} in the package`);
   }
-  assert.ok([...files.keys()].some((n) => n.endsWith('.wasm')), 'the app');
+  for (const name of ['boot.js', 'worker.js', 'plc-web_bg.wasm', 'split_exercise_worker.wasm']) {
+    assert.ok([...files.keys()].some((n) => /^app-[^/]+\//.test(n) && n.endsWith(`/${name}`)), `the app's ${name}`);
+  }
   assert.equal([...files.keys()].some((n) => /reference|mutants/.test(n)), false);
   const manifest = files.get('imsmanifest.xml').toString('utf8');
   assert.match(manifest, /adlcp:scormtype="sco" href="index\.html\?exercise=exercise\/latch\.toml&amp;scorm=1"/);

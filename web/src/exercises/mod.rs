@@ -8,7 +8,7 @@ mod handin;
 mod panel;
 pub mod protocol;
 mod report;
-mod scorm;
+pub(crate) mod scorm;
 mod store;
 
 use std::collections::BTreeSet;
@@ -119,13 +119,14 @@ impl Exercises {
                 ex.open_with(state, Request::Link(fragment), None).await;
             });
         } else if let Some(url) = query_param(&search, "exercise") {
-            // Launched by an LMS (a SCORM package): report to it.
-            let lms =
-                query_param(&search, "scorm").as_deref() == Some("1") && scorm::launch(ex, state);
+            // Launched by an LMS (a SCORM package): report to it (the SCORM runtime is a
+            // chunk of its own, fetched only then).
+            let scorm = query_param(&search, "scorm").as_deref() == Some("1");
             leptos::task::spawn_local(async move {
+                let lms = scorm && crate::lazy::scorm_launch(ex, state).await.unwrap_or(false);
                 ex.open_url(state, &url).await;
                 if lms {
-                    scorm::resume(ex, state);
+                    let _ = crate::lazy::scorm_resume(ex, state).await;
                 }
             });
         }

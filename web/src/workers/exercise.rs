@@ -7,8 +7,7 @@
 
 use crate::exercises::protocol::{Opened, Reply, Request};
 use plc_core::exercise::{
-    grade_by, scorm_package, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
-    ScormVersion, SITE_FILE_LIST,
+    grade_by, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile, SITE_FILE_LIST,
 };
 use plc_core::open::open_plain;
 use plc_core::project::Project;
@@ -91,8 +90,7 @@ async fn package(link: ExerciseLink, site: &str) -> Result<Vec<u8>, String> {
     for path in String::from_utf8_lossy(&list).lines().map(str::trim).filter(|l| !l.is_empty()) {
         files.push((path.to_string(), fetch_bytes(&format!("{site}{path}")).await?));
     }
-    scorm_package(&link.exercise, link.starter.as_ref(), files, ScormVersion::Scorm12)
-        .map_err(|e| e.to_string())
+    super::scorm_zip(link.exercise, link.starter, files).await.map_err(|e| e.to_string())?
 }
 
 /// The answer to one message: a SCORM package's bytes (a `Uint8Array`), or the JSON text

@@ -41,6 +41,19 @@ fn open_xml(stem: String, text: String) -> Result<Result<Opened, String>, LoadFa
     Ok(plc_core::open::open_text(&stem, &text).map_err(|e| e.to_string()))
 }
 
+/// Packs a SCORM 1.2 package of an exercise with the site's files (the manifest and the
+/// ZIP writer: a chunk of their own, fetched only for `Export SCORM package`).
+#[wasm_split(scorm_package, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn scorm_zip(
+    exercise: String,
+    starter: Option<plc_core::exercise::LinkedFile>,
+    site: Vec<plc_core::exercise::PackageFile>,
+) -> Result<Result<Vec<u8>, String>, LoadFailed> {
+    use plc_core::exercise::{scorm_package, ScormVersion};
+    Ok(scorm_package(&exercise, starter.as_ref(), site, ScormVersion::Scorm12)
+        .map_err(|e| e.to_string()))
+}
+
 /// The passes a project's diagram POUs need, fetched when missing (as the page does).
 async fn passes_for(
     project: &plc_core::project::Project,
