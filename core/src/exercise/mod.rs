@@ -8,6 +8,7 @@ mod handin;
 mod link;
 mod random;
 mod scorm;
+mod starter;
 mod statement;
 mod view;
 
@@ -24,6 +25,7 @@ pub use scorm::{
     scorm_files, scorm_launch, scorm_manifest, scorm_package, PackageFile, ScormVersion,
     SCORM_12_SUSPEND_LIMIT, SCORM_EXERCISE_DIR, SITE_FILE_LIST,
 };
+pub use starter::{graded_program, Language};
 pub use statement::{next_to, statement_html};
 pub use view::{ExerciseView, ScenarioView};
 
