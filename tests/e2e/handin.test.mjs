@@ -104,7 +104,7 @@ test('Hand in asks once for the name and downloads a .plcsub that plc grade grad
   assert.match(text, /latch--Ada-Lovelace\.plcsub \(Ada Lovelace\): 3\/3/);
   assert.match(text, /blinker--Ada-Lovelace\.plcsub \(Ada Lovelace\): cannot be graded: this is a hand-in of exercise “blinker”, not of “latch”/);
   const csv = plc('grade', path.join(root, 'exercises/latch/latch.toml'), dir, '--format', 'csv').trim().split('\n');
-  assert.ok(csv.some((l) => /latch--Ada-Lovelace\.plcsub,3,3,2,0,,,Ada Lovelace,/.test(l)), csv.join('\n'));
+  assert.ok(csv.some((l) => /latch--Ada-Lovelace\.plcsub,3,3,2,0,,,Main,Ada Lovelace,/.test(l)), csv.join('\n'));
 });
 
 test('plc grade --format html: the class report opens from disk with its rows, pass rates, histogram and common failures', async () => {
