@@ -54,4 +54,8 @@ cp -r "$out_dir/exercises" "$work/app/exercises"
 node scripts/minify-js.mjs "$work/app"
 node scripts/site.mjs assemble dist "$work"
 node scripts/csp.mjs dist/index.html
+# The site's files, for the page's `Export SCORM package` (the exercise worker packs them):
+# all of dist/ with the sw.js that `finish` writes (before its size checks).
+{ (cd dist && find . -type f ! -name site-files.txt ! -name sw.js | sed 's|^\./||'); echo sw.js; } \
+  | LC_ALL=C sort > dist/site-files.txt
 node scripts/site.mjs finish dist "$work"

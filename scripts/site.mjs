@@ -99,6 +99,9 @@ const FORBIDDEN = [
   ['the PNML writer', 'plc_core::pnml::export'],
   ['the exercise worker', 'plc_web::workers::exercise::'],
   ['the import worker', 'plc_web::workers::import::'],
+  ['the SCORM runtime', 'plc_web::exercises::scorm::'],
+  ['the SCORM packer', 'plc_core::exercise::scorm::'],
+  ['the ZIP writer', 'plc_core::export::zip::'],
 ];
 
 /** Each function of a wasm module with a name section: its Rust path and code size. */

@@ -122,6 +122,25 @@ pub fn read_exercise_reply(
     Ok(serde_json::from_str(&text).ok())
 }
 
+/// Starts the SCORM session when the page was launched by an LMS (false without one).
+#[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scorm_launch(
+    ex: crate::exercises::Exercises,
+    state: crate::state::AppState,
+) -> Result<bool, LoadFailed> {
+    Ok(crate::exercises::scorm::launch(ex, state))
+}
+
+/// Opens the attempt the LMS kept, once the launched exercise is open.
+#[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scorm_resume(
+    ex: crate::exercises::Exercises,
+    state: crate::state::AppState,
+) -> Result<(), LoadFailed> {
+    crate::exercises::scorm::resume(ex, state);
+    Ok(())
+}
+
 /// The timeline as a file, CSV (`csv`) or VCD for GTKWave; `None` before a program runs.
 #[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn timeline_file(

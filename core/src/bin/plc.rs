@@ -1,6 +1,8 @@
 //! `plc`: the command line of the PLC trainer, for instructors, CI and benchmarks.
 //! It uses exactly the same core as the browser.
 
+#[path = "plc/class_report.rs"]
+mod class_report;
 #[path = "plc/grade.rs"]
 mod grade;
 #[path = "plc/petri.rs"]
@@ -109,14 +111,15 @@ enum Command {
         /// A file of hidden scenarios to add (the same form as an exercise file).
         #[arg(long, value_name = "HIDDEN.toml")]
         scenarios: Option<PathBuf>,
-        /// text, json or csv.
+        /// text, json, csv, or html (a class report: one self-contained page).
         #[arg(long, value_enum, default_value_t = grade::Format::Text)]
         format: grade::Format,
         /// How many submissions are graded at once (default: the cores).
         #[arg(long)]
         jobs: Option<usize>,
     },
-    /// Exercises: validate one (reference, starter, mutants), or write a skeleton.
+    /// Exercises: validate one (reference, starter, mutants), write a skeleton, a link or a
+    /// SCORM package.
     Exercise {
         #[command(subcommand)]
         command: grade::ExerciseCommand,

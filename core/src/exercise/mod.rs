@@ -5,8 +5,10 @@
 mod built_form;
 mod format;
 mod grade;
+mod handin;
 mod link;
 mod random;
+mod scorm;
 mod starter;
 mod statement;
 mod view;
@@ -19,7 +21,12 @@ pub use format::{
 pub use grade::{
     grade, grade_by, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport,
 };
+pub use handin::{HandIn, HAND_IN_EXTENSION};
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
+pub use scorm::{
+    scorm_files, scorm_launch, scorm_manifest, scorm_package, PackageFile, ScormVersion,
+    SCORM_12_SUSPEND_LIMIT, SCORM_EXERCISE_DIR, SITE_FILE_LIST,
+};
 pub use starter::{graded_program, Language};
 pub use statement::{next_to, statement_html};
 pub use view::{ExerciseView, ScenarioView};

@@ -237,7 +237,7 @@ pub fn Header() -> impl IntoView {
                 <button on:click=move |_| { if let Some(i) = file_input.get_untracked() { i.click(); } }
                     title="Open a project file, PLCopen XML, PNML or ST file as a new project">"Import"</button>
                 <input type="file" class="visually-hidden" tabindex="-1" node_ref=file_input
-                    accept=".json,.plcproj.json,.xml,.pnml,.st,application/json,text/xml" aria-label="Import project file"
+                    accept=".json,.plcproj.json,.plcsub,.xml,.pnml,.st,application/json,text/xml" aria-label="Import project file"
                     on:change=on_file/>
                 <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
             </nav>

@@ -2,7 +2,8 @@
 //! link), rendering their statements and grading attempts, in a chunk of the app
 //! (`split_exercise_worker.wasm`) that only the exercise worker loads (it runs the page's
 //! module, so the engine is not downloaded twice). It answers each message — a JSON
-//! [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`).
+//! [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`), or, for a SCORM
+//! package, with the ZIP's bytes (the packing and its ZIP writer stay in this chunk).
 //!
 //! The shipped exercises are files next to the app (`exercises/ID.json`, written by
 //! `build.rs`) in the built form: JSON with the statement rendered, read without a TOML
@@ -10,9 +11,13 @@
 //! is read by a chunk of its own (`exercise_toml`), fetched only then.
 
 use crate::exercises::protocol::{Opened, Reply, Request, StarterFile};
-use plc_core::exercise::{grade_by, is_built, Exercise, ExerciseLink, ExerciseView, GradeOptions};
+use plc_core::exercise::{
+    grade_by, is_built, Exercise, ExerciseLink, ExerciseView, GradeOptions, SITE_FILE_LIST,
+};
 use plc_core::open::open_plain;
 use plc_core::project::Project;
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_futures::JsFuture;
 
 /// Scans shown around a failure on the page's timeline.
 const PAGE_WINDOW: usize = 100;
@@ -52,6 +57,8 @@ async fn answer(request: Request) -> Reply {
                 Err(e) => Reply::Error(format!("the exercise cannot grade: {e}")),
             }
         }
+        // Answered by `reply` (with the package's bytes).
+        Request::Scorm { .. } => Reply::Error("a package is not a text answer".into()),
     }
 }
 
@@ -79,8 +86,6 @@ async fn shipped(id: &str) -> Result<ExerciseLink, String> {
 /// The text of `exercises/ID.json` next to the worker's script, `None` when there is none.
 #[cfg(target_arch = "wasm32")]
 async fn shipped_file(id: &str) -> Result<Option<String>, String> {
-    use wasm_bindgen::JsCast;
-    use wasm_bindgen_futures::JsFuture;
     let failed = |_| format!("the exercise “{id}” could not be loaded (is the network off?)");
     let scope: web_sys::WorkerGlobalScope = js_sys::global().unchecked_into();
     let response: web_sys::Response =
@@ -108,6 +113,53 @@ async fn shipped_file(id: &str) -> Result<Option<String>, String> {
         include!(concat!(env!("OUT_DIR"), "/exercise_files.rs"));
     }
     Ok(files::FILES.iter().find(|(i, _)| *i == id).map(|(_, text)| (*text).to_string()))
+}
+
+/// The bytes at `url`.
+async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
+    let failed = |_| format!("{url} cannot be read");
+    let scope: web_sys::WorkerGlobalScope = js_sys::global().unchecked_into();
+    let response: web_sys::Response = JsFuture::from(scope.fetch_with_str(url))
+        .await
+        .map_err(failed)?
+        .dyn_into()
+        .map_err(failed)?;
+    if !response.ok() {
+        return Err(format!("{url}: HTTP {}", response.status()));
+    }
+    let buffer = JsFuture::from(response.array_buffer().map_err(failed)?).await.map_err(failed)?;
+    Ok(js_sys::Uint8Array::new(&buffer).to_vec())
+}
+
+/// The SCORM package of `link`: the files of the site at `site` (its root URL, ending in
+/// `/`) as its `site-files.txt` lists them, the exercise and its starter, and the manifest.
+async fn package(link: ExerciseLink, site: &str) -> Result<Vec<u8>, String> {
+    let list = fetch_bytes(&format!("{site}{SITE_FILE_LIST}")).await.map_err(|_| {
+        format!(
+            "this copy of the trainer has no list of its files ({SITE_FILE_LIST}; `bash scripts/build-web.sh` writes it). Use `plc exercise scorm EXERCISE.toml` instead"
+        )
+    })?;
+    let mut files = Vec::new();
+    for path in String::from_utf8_lossy(&list).lines().map(str::trim).filter(|l| !l.is_empty()) {
+        files.push((path.to_string(), fetch_bytes(&format!("{site}{path}")).await?));
+    }
+    let starters: Vec<_> = link.starter.into_iter().chain(link.starters).collect();
+    super::scorm_zip(link.exercise, starters, files).await.map_err(|e| e.to_string())?
+}
+
+/// The answer to one message: a SCORM package's bytes (a `Uint8Array`), or the JSON text
+/// of a [`Reply`].
+pub async fn reply(message: JsValue) -> JsValue {
+    let text = message.as_string().unwrap_or_default();
+    if let Ok(Request::Scorm { link, site }) = serde_json::from_str::<Request>(&text) {
+        return match package(link, &site).await {
+            Ok(zip) => js_sys::Uint8Array::from(zip.as_slice()).into(),
+            Err(e) => {
+                JsValue::from_str(&serde_json::to_string(&Reply::Error(e)).unwrap_or_default())
+            }
+        };
+    }
+    JsValue::from_str(&reply_text(&text).await)
 }
 
 /// Opens an exercise file with its starter.

@@ -20,23 +20,19 @@ use wasm_bindgen::{JsCast, JsValue};
 use crate::lazy::LoadFailed;
 use leptos::wasm_split::wasm_split;
 
-/// How a worker answers one message.
-type Answer = fn(JsValue) -> Pin<Box<dyn Future<Output = String>>>;
+/// How a worker answers one message (text, or bytes).
+type Answer = fn(JsValue) -> Pin<Box<dyn Future<Output = JsValue>>>;
 
 /// The import worker's answer to one message.
 #[wasm_split(import_worker, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn import_answer() -> Result<Answer, LoadFailed> {
-    Ok(|request| Box::pin(async move { import::answer(&request) }))
+    Ok(|request| Box::pin(async move { JsValue::from_str(&import::answer(&request)) }))
 }
 
 /// The exercise worker's answer to one message.
 #[wasm_split(exercise_worker, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn exercise_answer() -> Result<Answer, LoadFailed> {
-    Ok(|request| {
-        Box::pin(
-            async move { exercise::reply_text(&request.as_string().unwrap_or_default()).await },
-        )
-    })
+    Ok(|request| Box::pin(exercise::reply(request)))
 }
 
 /// Opens a PLCopen XML or PNML file as a project (the XML readers, a chunk of their own:
@@ -61,6 +57,18 @@ fn read_toml(
             (e, html)
         })
         .map_err(|e| e.to_string()))
+}
+
+/// Packs a SCORM 1.2 package of an exercise with the site's files (the manifest and the
+/// ZIP writer: a chunk of their own, fetched only for `Export SCORM package`).
+#[wasm_split(scorm_package, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn scorm_zip(
+    exercise: String,
+    starters: Vec<plc_core::exercise::LinkedFile>,
+    site: Vec<plc_core::exercise::PackageFile>,
+) -> Result<Result<Vec<u8>, String>, LoadFailed> {
+    use plc_core::exercise::{scorm_package, ScormVersion};
+    Ok(scorm_package(&exercise, &starters, site, ScormVersion::Scorm12).map_err(|e| e.to_string()))
 }
 
 /// The passes a project's diagram POUs need, fetched when missing (as the page does).
@@ -94,7 +102,7 @@ pub fn worker_main(kind: String) {
                 let answer_to = answer_to.clone();
                 let reply = answer(ev.data());
                 wasm_bindgen_futures::spawn_local(async move {
-                    let _ = answer_to.post_message(&JsValue::from_str(&reply.await));
+                    let _ = answer_to.post_message(&reply.await);
                 });
             });
         scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
