@@ -472,3 +472,70 @@ fn a_var_external_of_the_main_program_reads_and_writes_its_global() {
     s.scan();
     assert_eq!(int(&s, "Total"), 11);
 }
+
+/// The program's own memory now (without the scratch cells of conditions).
+fn state(s: &Simulator) -> Vec<u64> {
+    s.machine.memory().cells[..s.state_cells].to_vec()
+}
+
+#[test]
+fn a_recorded_scan_is_rebuilt_cell_for_cell() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    let mut live = vec![state(&s)];
+    for k in 1..=100u64 {
+        if k % 7 == 0 {
+            s.hold("Start", if k % 2 == 0 { "TRUE" } else { "FALSE" }).unwrap();
+        }
+        if k % 11 == 0 {
+            s.write("n", "5").unwrap();
+        }
+        if k == 50 {
+            s.force("Stop", "TRUE").unwrap();
+        }
+        if k == 60 {
+            s.unforce("Stop");
+            s.set_cycle_ns(3_000_000);
+        }
+        s.scan();
+        live.push(state(&s));
+    }
+    assert_eq!(s.recorded_range(), Some((0, 100)));
+    for (k, cells) in live.iter().enumerate() {
+        let v = s.view_at(k as u64).unwrap();
+        assert_eq!(&v.memory().cells[..s.state_cells], &cells[..], "scan {k}");
+        assert_eq!(v.scan(), k as u64);
+    }
+    let v = s.view_at(61).unwrap();
+    assert_eq!(v.time_ns() - s.view_at(60).unwrap().time_ns(), 3_000_000);
+    assert!(matches!(
+        s.view_at(101),
+        Err(RecordError::OutOfRange { scan: 101, first: 0, last: 100 })
+    ));
+}
+
+#[test]
+fn rewinding_starts_a_new_future_from_a_recorded_scan() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    s.set_trace(&["Motor", "n"], 1000).unwrap();
+    s.run_scans(10);
+    s.hold("Start", "TRUE").unwrap();
+    s.run_scans(10);
+    s.hold("Start", "FALSE").unwrap();
+    s.run_scans(10);
+    let at_15 = s.view_at(15).unwrap();
+    s.rewind_to(15).unwrap();
+    assert_eq!(s.scan_count(), 15);
+    assert_eq!(state(&s), at_15.memory().cells[..s.state_cells].to_vec());
+    assert_eq!(s.recorded_range(), Some((0, 15)));
+    assert_eq!(s.trace().len(), 15);
+    assert!(boolean(&s, "Start"), "the input as it was held at scan 15");
+    // A new future: Stop pressed instead.
+    s.hold("Stop", "TRUE").unwrap();
+    s.run_scans(5);
+    assert!(!boolean(&s, "Motor"));
+    assert_eq!(s.recorded_range(), Some((0, 20)));
+    assert_eq!(s.view_at(15).unwrap().read("Motor").unwrap(), Value::Bool(true));
+    assert_eq!(s.view_at(17).unwrap().read("Motor").unwrap(), Value::Bool(false));
+}
