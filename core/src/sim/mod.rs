@@ -11,6 +11,7 @@ mod record;
 mod tasks;
 mod trace;
 
+pub(crate) use record::same_value;
 pub use record::{RecordError, Recording, ScanView, TracedScan};
 pub use trace::{Trace, TraceSample};
 

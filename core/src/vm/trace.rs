@@ -60,10 +60,13 @@ pub enum TraceEvent {
         /// The frame.
         base: u32,
     },
-    /// The instruction at `pc` calls POU `pou`, whose frame is at `base`.
+    /// The instruction at `pc`, in the frame at `caller`, calls POU `pou`, whose frame is
+    /// at `base`.
     Call {
         /// The calling instruction.
         pc: u32,
+        /// The caller's frame.
+        caller: u32,
         /// The callee.
         pou: PouId,
         /// The callee's frame (its instance, or a FUNCTION's static frame).
@@ -263,12 +266,14 @@ impl Hook for Tracer<'_> {
             }
             Op::CallFb { pou, ptr } => {
                 let callee = u32::try_from(get(ptr)).unwrap_or(u32::MAX);
-                self.events.push(TraceEvent::Call { pc: pc as u32, pou, base: callee });
+                let call = TraceEvent::Call { pc: pc as u32, caller: base, pou, base: callee };
+                self.events.push(call);
             }
             Op::CallFn { pou } => {
                 let frame = self.exe.pous.get(pou as usize).and_then(|p| p.frame);
-                let base = frame.unwrap_or(u32::MAX);
-                self.events.push(TraceEvent::Call { pc: pc as u32, pou, base });
+                let callee = frame.unwrap_or(u32::MAX);
+                let call = TraceEvent::Call { pc: pc as u32, caller: base, pou, base: callee };
+                self.events.push(call);
             }
             Op::Ret => self.events.push(TraceEvent::Return),
             Op::Jump { .. }
