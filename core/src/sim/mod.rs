@@ -696,6 +696,13 @@ impl Simulator {
         self.slot(path)
     }
 
+    /// The program's own memory now (without the scratch cells of breakpoint and watch
+    /// conditions), as [`ScanView::state_memory`] gives it for a recorded scan.
+    pub fn state_memory(&self) -> &[u64] {
+        let cells = &self.machine.memory().cells;
+        &cells[..self.state_cells.min(cells.len())]
+    }
+
     /// Reads the variable at a slot from [`Simulator::locate`].
     pub fn read_slot(&self, slot: &Slot) -> Value {
         vm::read(self.machine.memory(), &self.exe, slot)

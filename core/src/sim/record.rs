@@ -392,12 +392,11 @@ impl ScanView {
         self.watches.iter().find(|w| w.0 == source).and_then(|w| w.1.as_ref())
     }
 
-    /// Whether the state of this scan equals another's, cell for cell (the program's own
-    /// memory and the CASE branches last taken).
-    pub fn same_state(&self, other: &ScanView) -> bool {
-        let mine = self.machine.memory().cells.get(..self.state_cells);
-        let theirs = other.machine.memory().cells.get(..other.state_cells);
-        mine == theirs && self.machine.case_state() == other.machine.case_state()
+    /// The program's own memory at the end of the scan (without the scratch cells of
+    /// breakpoint and watch conditions): what a replay must rebuild bit for bit.
+    pub fn state_memory(&self) -> &[u64] {
+        let cells = &self.machine.memory().cells;
+        &cells[..self.state_cells.min(cells.len())]
     }
 }
 

@@ -539,3 +539,51 @@ fn rewinding_starts_a_new_future_from_a_recorded_scan() {
     assert_eq!(s.view_at(15).unwrap().read("Motor").unwrap(), Value::Bool(true));
     assert_eq!(s.view_at(17).unwrap().read("Motor").unwrap(), Value::Bool(false));
 }
+
+#[test]
+fn a_large_image_keeps_a_shorter_history_within_the_budget() {
+    // 200,000 cells: a snapshot is 1.6 MB, so the budget affords fewer than the hour.
+    let mut s = sim("PROGRAM Big
+VAR a : ARRAY[1..200000] OF LINT; i : DINT; END_VAR
+i := i MOD 200000 + 1;
+a[i] := a[i] + 1;
+END_PROGRAM");
+    s.set_recording(true).unwrap();
+    let r = s.recording().unwrap();
+    assert_eq!(r.interval, limits::RECORD_MAX_INTERVAL);
+    assert!(r.capacity < limits::RECORD_SCANS && r.capacity >= 10 * r.interval, "{r:?}");
+    s.run_scans(r.capacity + 3 * r.interval);
+    let r = s.recording().unwrap();
+    assert!(r.bytes <= limits::RECORD_BUDGET_BYTES + 2 * 1024 * 1024, "{r:?}");
+    assert!(r.first > 0, "the oldest history was dropped: {r:?}");
+    assert!(r.last - r.first >= r.capacity, "at least the capacity is kept: {r:?}");
+    // The oldest scan kept is still rebuilt exactly.
+    let first = s.view_at(r.first).unwrap();
+    assert_eq!(
+        first.read("i").unwrap(),
+        Value::Int(i128::from(r.first as i64 % 200_000), crate::semantic::Elem::DInt)
+    );
+    assert!(matches!(s.view_at(r.first - 1), Err(RecordError::OutOfRange { .. })));
+}
+
+#[test]
+fn a_small_image_keeps_the_hour() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    let r = s.recording().unwrap();
+    assert_eq!((r.interval, r.capacity), (limits::RECORD_MIN_INTERVAL, limits::RECORD_SCANS));
+}
+
+#[test]
+fn recording_off_drops_the_history() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    s.run_scans(20);
+    s.set_recording(false).unwrap();
+    assert_eq!(s.recorded_range(), None);
+    assert!(matches!(s.view_at(3), Err(RecordError::NotRecording)));
+    s.set_recording(true).unwrap();
+    assert_eq!(s.recorded_range(), Some((20, 20)), "a new history starts at the present");
+    s.cold_restart();
+    assert_eq!(s.recorded_range(), Some((0, 0)), "a restart starts a new history");
+}
