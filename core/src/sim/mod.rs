@@ -598,7 +598,7 @@ impl Simulator {
     pub fn write(&mut self, path: &str, text: &str) -> Result<(), SimError> {
         let (slot, value) = self.parse_value(path, text)?;
         self.write_slot(path, &slot, &value)?;
-        self.record(record::Control::Write { slot, value });
+        self.record(record::Control::Write(Box::new((slot, value))));
         Ok(())
     }
 
@@ -611,7 +611,7 @@ impl Simulator {
     pub fn hold(&mut self, path: &str, text: &str) -> Result<(), SimError> {
         let (slot, value) = self.parse_value(path, text)?;
         self.write_slot(path, &slot, &value)?;
-        self.control(record::Control::Hold(Pinned { path: path.into(), slot, value }));
+        self.control(record::Control::Hold(Box::new(Pinned { path: path.into(), slot, value })));
         Ok(())
     }
 
@@ -620,14 +620,33 @@ impl Simulator {
     pub fn hold_value(&mut self, path: &str, value: Value) -> Result<(), SimError> {
         let slot = self.slot(path)?;
         self.write_slot(path, &slot, &value)?;
-        let name = match self.held.iter().find(|p| p.path.eq_ignore_ascii_case(path)) {
+        let held = self.held.iter().position(|p| p.path.eq_ignore_ascii_case(path));
+        match held {
             // The same value held again changes nothing (and is not recorded).
-            Some(p) if p.value == value => return Ok(()),
-            Some(p) => Arc::clone(&p.path),
-            None => path.into(),
-        };
-        self.control(record::Control::Hold(Pinned { path: name, slot, value }));
-        Ok(())
+            Some(k) if self.held[k].value == value => Ok(()),
+            Some(k) if self.held[k].slot == slot => {
+                // The common change, recorded small: a plant model holds a new value on
+                // every scan.
+                if self.recorder.is_some() {
+                    let control = match record::scalar_bits(&slot, &value, &self.exe) {
+                        Some(bits) => record::Control::Held { k: k as u32, bits },
+                        None => {
+                            let path = Arc::clone(&self.held[k].path);
+                            let pin = Pinned { path, slot, value: value.clone() };
+                            record::Control::HoldInPlace(Box::new(pin))
+                        }
+                    };
+                    self.record(control);
+                }
+                self.held[k].value = value;
+                Ok(())
+            }
+            _ => {
+                let pin = Pinned { path: path.into(), slot, value };
+                self.control(record::Control::HoldInPlace(Box::new(pin)));
+                Ok(())
+            }
+        }
     }
 
     /// Stops holding an input (it keeps its last value).
@@ -642,7 +661,7 @@ impl Simulator {
     pub fn force(&mut self, path: &str, text: &str) -> Result<(), SimError> {
         let (slot, value) = self.parse_value(path, text)?;
         self.write_slot(path, &slot, &value)?;
-        self.control(record::Control::Force(Pinned { path: path.into(), slot, value }));
+        self.control(record::Control::Force(Box::new(Pinned { path: path.into(), slot, value })));
         Ok(())
     }
 

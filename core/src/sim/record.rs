@@ -32,22 +32,29 @@ use crate::vm::trace::{Hook, Tracer};
 use crate::vm::{self, Cause, Machine, TraceEvent, Value};
 
 /// A change of the run from outside, recorded with the scan after which it happened.
+/// Kept small (16 bytes): a plant model or a test bench may hold an input at a new value
+/// before every scan, and that common change is [`Control::Held`]; the rare ones are boxed.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) enum Control {
     /// A value written once (the variable table, `--set` of a non-input).
-    Write {
-        /// Where.
-        slot: Slot,
-        /// What.
-        value: Value,
+    Write(Box<(Slot, Value)>),
+    /// An input held at a value ([`Simulator::hold`]; a path held already goes last).
+    Hold(Box<Pinned>),
+    /// The input held `k`-th given the scalar value of cell bits `bits`
+    /// ([`Simulator::hold_value`] of a path held already: it keeps its place).
+    Held {
+        /// Its place in the held list.
+        k: u32,
+        /// The value's bits (`Value::from_bits` of the slot's type).
+        bits: u64,
     },
-    /// An input held at a value ([`Simulator::hold`] and [`Simulator::hold_value`]: a
-    /// new path goes last, a path held already keeps its place).
-    Hold(Pinned),
+    /// An input held for the first time by [`Simulator::hold_value`], or at a value that
+    /// is not a scalar: it keeps its place when held already.
+    HoldInPlace(Box<Pinned>),
     /// An input released.
     Release(Arc<str>),
     /// A variable forced.
-    Force(Pinned),
+    Force(Box<Pinned>),
     /// Forcing removed.
     Unforce(Arc<str>),
     /// The cycle time.
@@ -64,13 +71,29 @@ impl Control {
             Value::WStr(w) => 2 * w.len(),
             _ => 0,
         };
+        let boxed = std::mem::size_of::<Pinned>();
         std::mem::size_of::<(u64, Control)>()
             + match self {
-                Control::Write { value: v, .. } => value(v),
-                Control::Hold(p) | Control::Force(p) => value(&p.value),
+                Control::Write(w) => boxed + value(&w.1),
+                Control::Hold(p) | Control::Force(p) | Control::HoldInPlace(p) => {
+                    boxed + value(&p.value)
+                }
                 _ => 0,
             }
     }
+}
+
+/// The cell bits of a scalar value, when `Value::from_bits` gives it back exactly.
+pub(super) fn scalar_bits(slot: &Slot, value: &Value, exe: &Executable) -> Option<u64> {
+    let bits = match value {
+        Value::Bool(b) => u64::from(*b),
+        Value::Int(v, e) => crate::values::arith::norm(*e, *v),
+        Value::Real(f, _) => f.to_bits(),
+        Value::Time(t) | Value::Date(t) | Value::Tod(t) | Value::Dt(t) => *t as u64,
+        Value::Enum { value, .. } => *value as u64,
+        _ => return None,
+    };
+    (Value::from_bits(slot.ty, bits, exe.type_table()) == *value).then_some(bits)
 }
 
 /// The state at the end of one scan.
@@ -530,12 +553,22 @@ impl Simulator {
         };
         let mem = self.machine.memory_mut();
         match c {
-            Control::Write { slot, value } => {
-                let _ = vm::write(mem, &self.exe, slot, value);
+            Control::Write(w) => {
+                let _ = vm::write(mem, &self.exe, &w.0, &w.1);
             }
             Control::Hold(p) => {
                 let _ = vm::write(mem, &self.exe, &p.slot, &p.value);
+                pin(&mut self.held, p, false);
+            }
+            Control::HoldInPlace(p) => {
+                let _ = vm::write(mem, &self.exe, &p.slot, &p.value);
                 pin(&mut self.held, p, true);
+            }
+            Control::Held { k, bits } => {
+                if let Some(p) = self.held.get_mut(*k as usize) {
+                    p.value = Value::from_bits(p.slot.ty, *bits, self.exe.type_table());
+                    let _ = vm::write(mem, &self.exe, &p.slot, &p.value);
+                }
             }
             Control::Force(p) => {
                 let _ = vm::write(mem, &self.exe, &p.slot, &p.value);
