@@ -66,7 +66,7 @@ pub const RECORD_SCANS: u64 = 360_000;
 
 /// The fewest scans between two snapshots of a recording (smaller images are still
 /// snapshotted this rarely, which bounds the recording's cost per scan).
-pub const RECORD_MIN_INTERVAL: u64 = 16;
+pub const RECORD_MIN_INTERVAL: u64 = 64;
 
 /// The most scans between two snapshots: showing a recorded scan replays at most this
 /// many. A larger image keeps a shorter history instead.

@@ -29,7 +29,7 @@ fn poke(sim: &mut Simulator, b: u8) {
             sim.release("j");
             Ok(())
         }
-        3 => sim.force("b", if b % 2 == 0 { "TRUE" } else { "FALSE" }),
+        3 => sim.force("b", if b.is_multiple_of(2) { "TRUE" } else { "FALSE" }),
         4 => {
             sim.unforce("b");
             Ok(())
@@ -58,7 +58,7 @@ proptest! {
         let mut live = vec![sim.state_memory().to_vec()];
         let mut vars = vec![sim.vars_json()];
         for &b in &script {
-            if b % 3 == 0 {
+            if b.is_multiple_of(3) {
                 poke(&mut sim, b / 3);
             }
             if let ScanOutcome::Fault(_) = sim.scan() {

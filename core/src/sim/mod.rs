@@ -12,7 +12,7 @@ mod tasks;
 mod trace;
 
 pub(crate) use record::same_value;
-pub use record::{RecordError, Recording, ScanView, TracedScan};
+pub use record::{Readout, RecordError, Recording, ScanView, TracedScan};
 pub use trace::{Trace, TraceSample};
 
 use std::fmt;
@@ -652,7 +652,7 @@ impl Simulator {
     /// Stops holding an input (it keeps its last value).
     pub fn release(&mut self, path: &str) {
         if self.held.iter().any(|p| p.path.eq_ignore_ascii_case(path)) {
-            self.control(record::Control::Release(path.into()));
+            self.control(record::Control::Release(Box::new(path.into())));
         }
     }
 
@@ -668,7 +668,7 @@ impl Simulator {
     /// Removes forcing from a variable.
     pub fn unforce(&mut self, path: &str) {
         if self.forced.iter().any(|p| p.path.eq_ignore_ascii_case(path)) {
-            self.control(record::Control::Unforce(path.into()));
+            self.control(record::Control::Unforce(Box::new(path.into())));
         }
     }
 

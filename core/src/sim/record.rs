@@ -32,7 +32,7 @@ use crate::vm::trace::{Hook, Tracer};
 use crate::vm::{self, Cause, Machine, TraceEvent, Value};
 
 /// A change of the run from outside, recorded with the scan after which it happened.
-/// Kept small (16 bytes): a plant model or a test bench may hold an input at a new value
+/// Kept small (16 bytes, 24 with its scan): a plant model or a test bench may hold an input at a new value
 /// before every scan, and that common change is [`Control::Held`]; the rare ones are boxed.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) enum Control {
@@ -52,11 +52,11 @@ pub(super) enum Control {
     /// is not a scalar: it keeps its place when held already.
     HoldInPlace(Box<Pinned>),
     /// An input released.
-    Release(Arc<str>),
+    Release(Box<Arc<str>>),
     /// A variable forced.
     Force(Box<Pinned>),
     /// Forcing removed.
-    Unforce(Arc<str>),
+    Unforce(Box<Arc<str>>),
     /// The cycle time.
     Cycle(i64),
     /// The watchdog budget.
@@ -85,6 +85,19 @@ impl Control {
 
 /// The cell bits of a scalar value, when `Value::from_bits` gives it back exactly.
 pub(super) fn scalar_bits(slot: &Slot, value: &Value, exe: &Executable) -> Option<u64> {
+    // The common cases, without decoding again.
+    match (value, slot.ty) {
+        (Value::Bool(b), crate::semantic::Type::Elem(crate::semantic::Elem::Bool)) => {
+            return Some(u64::from(*b))
+        }
+        (Value::Int(v, e), crate::semantic::Type::Elem(t)) if *e == t && t.is_integral() => {
+            let bits = crate::values::arith::norm(*e, *v);
+            if crate::values::arith::to_i128(*e, bits) == *v {
+                return Some(bits);
+            }
+        }
+        _ => {}
+    }
     let bits = match value {
         Value::Bool(b) => u64::from(*b),
         Value::Int(v, e) => crate::values::arith::norm(*e, *v),
@@ -96,50 +109,111 @@ pub(super) fn scalar_bits(slot: &Slot, value: &Value, exe: &Executable) -> Optio
     (Value::from_bits(slot.ty, bits, exe.type_table()) == *value).then_some(bits)
 }
 
-/// The state at the end of one scan.
+/// The state at the end of one scan, in one allocation: the memory image, then the CASE
+/// branches last taken (two per cell), then the held values' bits when they are scalars.
 #[derive(Debug, Clone)]
 pub(super) struct Snapshot {
     scans: u64,
     time_ns: i64,
     first_scan: bool,
-    cells: Box<[u64]>,
-    case_hits: Box<[(u32, u32)]>,
-    schedule: Option<tasks::Schedule>,
+    /// How many cells of `data` are memory, and how many CASE tables follow.
+    cells: u32,
+    cases: u32,
+    data: Box<[u64]>,
+    schedule: Option<Box<tasks::Schedule>>,
+    /// The held inputs (paths and slots shared with the snapshot before while they do not
+    /// change); their values are the bits after the CASE branches when `held_bits`.
     held: Arc<Vec<Pinned>>,
+    held_bits: bool,
     forced: Arc<Vec<Pinned>>,
     cycle_ns: i64,
     watchdog: u64,
+    /// The bytes it was counted as when kept.
+    size: usize,
 }
 
 impl Snapshot {
-    /// The simulator's state now (its held and forced lists shared with the recorder's
-    /// last snapshot when unchanged).
+    /// The simulator's state now.
     pub(super) fn of(sim: &Simulator, recorder: &Recorder) -> Snapshot {
         let last = recorder.snapshots.back();
-        let share = |now: &Vec<Pinned>, kept: Option<&Arc<Vec<Pinned>>>| match kept {
-            Some(k) if **k == *now => Arc::clone(k),
-            _ => Arc::new(now.clone()),
-        };
         let cells = sim.machine.memory().cells.get(..sim.state_cells).unwrap_or_default();
+        let cases = sim.machine.case_state();
+        let bits: Option<Vec<u64>> =
+            sim.held.iter().map(|p| scalar_bits(&p.slot, &p.value, &sim.exe)).collect();
+        let mut data = Vec::with_capacity(cells.len() + cases.len() + sim.held.len());
+        data.extend_from_slice(cells);
+        data.extend(cases.iter().map(|&(a, b)| u64::from(a) << 32 | u64::from(b)));
+        let same_pins = |a: &[Pinned], b: &[Pinned]| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.path == y.path && x.slot == y.slot)
+        };
+        let (held, held_bits) = match bits {
+            Some(bits) => {
+                data.extend(bits);
+                let held = match last {
+                    Some(l) if same_pins(&l.held, &sim.held) => Arc::clone(&l.held),
+                    _ => Arc::new(sim.held.clone()),
+                };
+                (held, true)
+            }
+            None => (Arc::new(sim.held.clone()), false),
+        };
+        let forced = match last {
+            Some(l) if *l.forced == sim.forced => Arc::clone(&l.forced),
+            _ => Arc::new(sim.forced.clone()),
+        };
         Snapshot {
             scans: sim.scans,
             time_ns: sim.time_ns,
             first_scan: sim.first_scan,
-            cells: cells.into(),
-            case_hits: sim.machine.case_state().into(),
-            schedule: sim.schedule.clone(),
-            held: share(&sim.held, last.map(|s| &s.held)),
-            forced: share(&sim.forced, last.map(|s| &s.forced)),
+            cells: cells.len() as u32,
+            cases: cases.len() as u32,
+            data: data.into_boxed_slice(),
+            schedule: sim.schedule.clone().map(Box::new),
+            held,
+            held_bits,
+            forced,
             cycle_ns: sim.cycle_ns,
             watchdog: sim.watchdog,
+            size: 0,
         }
     }
 
-    fn bytes(&self) -> usize {
+    fn cells(&self) -> &[u64] {
+        self.data.get(..self.cells as usize).unwrap_or_default()
+    }
+
+    fn case_hits(&self) -> Vec<(u32, u32)> {
+        let end = (self.cells + self.cases) as usize;
+        let packed = self.data.get(self.cells as usize..end).unwrap_or_default();
+        packed.iter().map(|&c| ((c >> 32) as u32, c as u32)).collect()
+    }
+
+    /// The held inputs with their values.
+    fn held(&self, exe: &Executable) -> Vec<Pinned> {
+        let mut held = self.held.to_vec();
+        if self.held_bits {
+            let bits = self.data.get((self.cells + self.cases) as usize..).unwrap_or_default();
+            for (p, &b) in held.iter_mut().zip(bits) {
+                p.value = Value::from_bits(p.slot.ty, b, exe.type_table());
+            }
+        }
+        held
+    }
+
+    /// Bytes it takes (its lists counted when it does not share them with `before`).
+    fn bytes(&self, before: Option<&Snapshot>) -> usize {
+        let pins = |list: &Arc<Vec<Pinned>>, kept: Option<&Arc<Vec<Pinned>>>| {
+            if kept.is_some_and(|k| Arc::ptr_eq(k, list)) {
+                0
+            } else {
+                list.len() * (std::mem::size_of::<Pinned>() + 16)
+            }
+        };
         std::mem::size_of::<Snapshot>()
-            + 8 * self.cells.len()
-            + 8 * self.case_hits.len()
-            + self.schedule.as_ref().map_or(0, |_| 256)
+            + 8 * self.data.len()
+            + self.schedule.as_ref().map_or(0, |_| std::mem::size_of::<tasks::Schedule>() + 128)
+            + pins(&self.held, before.map(|b| &b.held))
+            + pins(&self.forced, before.map(|b| &b.forced))
     }
 }
 
@@ -148,6 +222,8 @@ impl Snapshot {
 pub(crate) struct Recorder {
     /// A snapshot every this many scans.
     interval: u64,
+    /// The scan at whose end the next snapshot is due.
+    next: u64,
     /// The history kept covers at least this many scans (the budget permitting).
     capacity: u64,
     snapshots: VecDeque<Snapshot>,
@@ -170,6 +246,7 @@ impl Clone for Recorder {
     fn clone(&self) -> Self {
         Recorder {
             interval: self.interval,
+            next: self.next,
             capacity: self.capacity,
             snapshots: self.snapshots.clone(),
             events: self.events.clone(),
@@ -183,7 +260,7 @@ impl Recorder {
     /// A recorder for snapshots of `cells` cells and `cases` CASE tables, or `None` when
     /// one snapshot alone would not fit the budget.
     fn new(cells: usize, cases: usize) -> Option<Recorder> {
-        let snapshot = std::mem::size_of::<Snapshot>() + 8 * cells + 8 * cases + 256;
+        let snapshot = std::mem::size_of::<Snapshot>() + 8 * (cells + cases) + 64;
         let for_snapshots = limits::RECORD_BUDGET_BYTES / 2;
         if snapshot > for_snapshots {
             return None;
@@ -194,6 +271,7 @@ impl Recorder {
         let affordable = (for_snapshots / snapshot) as u64 * interval;
         Some(Recorder {
             interval,
+            next: 0,
             capacity: affordable.min(limits::RECORD_SCANS),
             snapshots: VecDeque::new(),
             events: VecDeque::new(),
@@ -204,13 +282,15 @@ impl Recorder {
 
     /// Whether a snapshot is due at the end of scan `scans`.
     pub(super) fn due(&self, scans: u64) -> bool {
-        scans % self.interval == 0
+        scans >= self.next
     }
 
     /// Keeps a snapshot, then drops the oldest history beyond the capacity or the budget.
-    pub(super) fn push(&mut self, snapshot: Snapshot) {
+    pub(super) fn push(&mut self, mut snapshot: Snapshot) {
         let now = snapshot.scans;
-        self.bytes += snapshot.bytes();
+        self.next = (now / self.interval + 1) * self.interval;
+        snapshot.size = snapshot.bytes(self.snapshots.back());
+        self.bytes += snapshot.size;
         self.snapshots.push_back(snapshot);
         while self.snapshots.len() > 1 {
             let next = self.snapshots[1].scans;
@@ -219,7 +299,7 @@ impl Recorder {
                 break;
             }
             if let Some(old) = self.snapshots.pop_front() {
-                self.bytes = self.bytes.saturating_sub(old.bytes());
+                self.bytes = self.bytes.saturating_sub(old.size);
                 if let Ok(mut index) = self.changes.lock() {
                     if let Some(b) = index.stretches.remove(&old.scans) {
                         index.bytes = index.bytes.saturating_sub(8 * b.len());
@@ -251,9 +331,10 @@ impl Recorder {
 
     /// Drops everything after the end of scan `n` (the controls recorded after it too).
     fn truncate(&mut self, n: u64) {
+        self.next = (n / self.interval + 1) * self.interval;
         while self.snapshots.back().is_some_and(|s| s.scans > n) {
             if let Some(s) = self.snapshots.pop_back() {
-                self.bytes = self.bytes.saturating_sub(s.bytes());
+                self.bytes = self.bytes.saturating_sub(s.size);
             }
         }
         while self.events.back().is_some_and(|(after, _)| *after >= n) {
@@ -423,6 +504,49 @@ impl ScanView {
     }
 }
 
+/// What the panels read, from the live simulator or from a recorded scan alike: a view of
+/// a past scan is shown by the same code that shows the present.
+pub trait Readout {
+    /// The compiled program (layout, debug map, the main program's variables).
+    fn executable(&self) -> &Executable;
+    /// Reads a variable (`Name`, `Name.field`, `Arr[2]`, `Fb.Q`, `Word.3`).
+    fn read(&self, path: &str) -> Result<Value, super::SimError>;
+    /// The scans completed (the scan shown).
+    fn scan_count(&self) -> u64;
+    /// The virtual time at the end of that scan, in nanoseconds.
+    fn time_ns(&self) -> i64;
+}
+
+impl Readout for Simulator {
+    fn executable(&self) -> &Executable {
+        Simulator::executable(self)
+    }
+    fn read(&self, path: &str) -> Result<Value, super::SimError> {
+        Simulator::read(self, path)
+    }
+    fn scan_count(&self) -> u64 {
+        Simulator::scan_count(self)
+    }
+    fn time_ns(&self) -> i64 {
+        Simulator::time_ns(self)
+    }
+}
+
+impl Readout for ScanView {
+    fn executable(&self) -> &Executable {
+        ScanView::executable(self)
+    }
+    fn read(&self, path: &str) -> Result<Value, super::SimError> {
+        ScanView::read(self, path)
+    }
+    fn scan_count(&self) -> u64 {
+        self.scan
+    }
+    fn time_ns(&self) -> i64 {
+        self.time_ns
+    }
+}
+
 /// One recorded scan run again with every write logged: what `crate::why` explains.
 #[derive(Debug, Clone)]
 pub struct TracedScan {
@@ -505,7 +629,10 @@ impl Simulator {
             last: self.scans,
             interval: r.interval,
             capacity: r.capacity,
+            // What the deques hold in reserve counts too.
             bytes: r.bytes
+                + (r.events.capacity() - r.events.len()) * std::mem::size_of::<(u64, Control)>()
+                + (r.snapshots.capacity() - r.snapshots.len()) * std::mem::size_of::<Snapshot>()
                 + r.changes.lock().map_or(0, |i| i.bytes)
                 + self.machine.memory().cells.len() * 8,
         })
@@ -584,7 +711,7 @@ impl Simulator {
     /// A simulator in the state of `snap`, without breakpoints, trace or recording.
     fn replica(&self, snap: &Snapshot) -> Simulator {
         let mut machine = Machine::new(&self.exe);
-        machine.restore(&snap.cells, &snap.case_hits);
+        machine.restore(snap.cells(), &snap.case_hits());
         Simulator {
             program: Arc::clone(&self.program),
             exe: Arc::clone(&self.exe),
@@ -594,7 +721,7 @@ impl Simulator {
             scans: snap.scans,
             first_scan: snap.first_scan,
             state: SimState::Ready,
-            held: snap.held.to_vec(),
+            held: snap.held(&self.exe),
             forced: snap.forced.to_vec(),
             breakpoints: Vec::new(),
             next_breakpoint: 0,
@@ -602,7 +729,7 @@ impl Simulator {
             watchdog: snap.watchdog,
             watches: Vec::new(),
             plant: self.plant.clone(),
-            schedule: snap.schedule.clone(),
+            schedule: snap.schedule.as_deref().cloned(),
             state_cells: self.state_cells,
             recorder: None,
         }

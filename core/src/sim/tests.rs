@@ -587,3 +587,8 @@ fn recording_off_drops_the_history() {
     s.cold_restart();
     assert_eq!(s.recorded_range(), Some((0, 0)), "a restart starts a new history");
 }
+
+#[test]
+fn a_change_from_outside_is_recorded_in_24_bytes() {
+    assert_eq!(std::mem::size_of::<(u64, record::Control)>(), 24);
+}

@@ -766,7 +766,7 @@ impl Explainer<'_, '_> {
                 scan::reads(e, &mut reads);
                 scan::place_reads(place, &mut reads);
             }
-            StmtKind::CallFb { instance, fb, args } => {
+            StmtKind::CallFb { args, .. } => {
                 for a in args {
                     match a {
                         CallArg::In(_, e) => scan::reads(e, &mut reads),
@@ -775,10 +775,10 @@ impl Explainer<'_, '_> {
                         }
                     }
                 }
+                // The block's own inputs and outputs, for the value it wrote (not for a
+                // hidden variable followed into the call).
                 if let (Some((bq, bb)), 0) = (frame.block, depth) {
                     self.block_operands(bq, bb, slot);
-                } else if depth == 0 {
-                    let _ = (instance, fb);
                 }
             }
             StmtKind::Eval(e) => scan::reads(e, &mut reads),
