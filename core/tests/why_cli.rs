@@ -93,7 +93,14 @@ fn why_a_ton_output_gives_its_in_and_et_at_that_scan() {
     let v = why_latch("Delay.Q", 13);
     assert_eq!(v["value"], true);
     assert_eq!(v["written_by"]["line"], 6);
-    assert_eq!(v["block"], json!({"instance": "Delay", "type": "TON"}));
+    assert_eq!(
+        (v["block"]["instance"].clone(), v["block"]["type"].clone()),
+        (json!("Delay"), json!("TON"))
+    );
+    assert_eq!(
+        v["block"]["history"],
+        json!([{"scan": 3, "name": "Delay.IN", "value": true}, {"scan": 13, "name": "Delay.Q", "value": true}])
+    );
     assert_eq!(operand(&v, "Delay.IN"), (json!(true), 3));
     assert_eq!(operand(&v, "Delay.ET"), (json!("T#100ms"), 13));
     assert_eq!(operand(&v, "Delay.PT"), (json!("T#100ms"), 1));

@@ -243,13 +243,31 @@ pub struct PowerStep {
 }
 
 /// The function block instance that wrote the value (`block` in JSON).
-#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Block {
     /// Its path (`LampDelay`).
     pub instance: String,
     /// Its function block (`TON`).
     #[serde(rename = "type")]
     pub fb: String,
+    /// The last changes of its BOOL inputs and outputs and of a counter's value up to the
+    /// scan (at most [`HISTORY`] per variable), oldest first: a timer's IN and Q, a
+    /// counter's CU and CV.
+    pub history: Vec<Change>,
+}
+
+/// How many changes of each of a block's variables [`Block::history`] keeps.
+pub const HISTORY: usize = 4;
+
+/// A variable of a block took a value on a scan.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Change {
+    /// The scan.
+    pub scan: u64,
+    /// The variable (`T1.IN`).
+    pub name: String,
+    /// Its value from that scan on.
+    pub value: Json,
 }
 
 /// A Petri net place asked about (`place` in JSON).
@@ -339,6 +357,14 @@ impl Explanation {
         }
         if let Some(b) = &self.block {
             out.push_str(&format!("; {} is a {}", b.instance, b.fb));
+            if !b.history.is_empty() {
+                let changes: Vec<String> = b
+                    .history
+                    .iter()
+                    .map(|c| format!("{} {} at scan {}", c.name, json_text(&c.value), c.scan))
+                    .collect();
+                out.push_str(&format!(" ({})", changes.join(", ")));
+            }
         }
         if !self.path.is_empty() {
             let steps: Vec<String> = self
@@ -358,6 +384,16 @@ impl Explanation {
             change(self.next_change)
         ));
         out
+    }
+}
+
+/// A JSON value as IEC text would write it (`TRUE`, `3`, `T#2s`).
+fn json_text(v: &Json) -> String {
+    match v {
+        Json::Bool(true) => "TRUE".to_string(),
+        Json::Bool(false) => "FALSE".to_string(),
+        Json::String(s) => s.clone(),
+        other => other.to_string(),
     }
 }
 
@@ -516,8 +552,15 @@ fn explain_slot(
     let traced = sim.trace_scan(scan)?;
     let sc = Scan::new(&traced);
     let value = traced.view.read_slot(&slot);
-    let mut ex =
-        Explainer { ctx, sim, sc: &sc, operands: Vec::new(), path: Vec::new(), block: None };
+    let mut ex = Explainer {
+        ctx,
+        sim,
+        sc: &sc,
+        operands: Vec::new(),
+        path: Vec::new(),
+        block: None,
+        tracked: Vec::new(),
+    };
     let written_by = match sc.last_write(&slot, traced.events.len()) {
         Some(w) => ex.writer(w, &slot, 0),
         None => {
@@ -551,6 +594,7 @@ fn explain_slot(
         }
     };
     let operands = ex.finish(scan)?;
+    ex.history(scan)?;
     Ok(Explanation {
         var: name,
         value: vm::to_json(&value),
@@ -591,6 +635,8 @@ struct Explainer<'a, 'b> {
     operands: Vec<Found>,
     path: Vec<PowerStep>,
     block: Option<Block>,
+    /// The block's variables whose history is kept.
+    tracked: Vec<(String, Slot)>,
 }
 
 impl Explainer<'_, '_> {
@@ -832,20 +878,44 @@ impl Explainer<'_, '_> {
         let instance = sc.prefix(fb, base);
         let instance = instance.trim_end_matches('.').to_string();
         let pou = sc.program.pou(fb);
-        self.block = Some(Block { instance: instance.clone(), fb: pou.name.clone() });
         let view = &sc.traced.view;
+        let mut tracked = Vec::new();
         for v in &pou.vars {
             if !matches!(v.section, VarSection::Input | VarSection::Output) {
                 continue;
             }
             let name = format!("{instance}.{}", v.name);
             let Ok(slot) = view.locate(&name) else { continue };
+            // The history follows what switches: BOOLs and a counter's value.
+            if v.ty == crate::semantic::Type::BOOL || v.name.eq_ignore_ascii_case("CV") {
+                tracked.push((name.clone(), slot));
+            }
             if slot == *explained {
                 continue;
             }
             let value = view.read_slot(&slot);
             self.push(Found { name, slot, value });
         }
+        self.block = Some(Block { instance, fb: pou.name.clone(), history: Vec::new() });
+        self.tracked = tracked;
+    }
+
+    /// The block's history up to `scan`: the last changes of its tracked variables.
+    fn history(&mut self, scan: u64) -> Result<(), WhyError> {
+        let Some(block) = self.block.as_mut() else { return Ok(()) };
+        let mut out = Vec::new();
+        for (name, slot) in &self.tracked {
+            let mut at = scan;
+            for _ in 0..HISTORY {
+                let Some(k) = self.sim.last_changes(&[*slot], at)?[0] else { break };
+                let value = self.sim.view_at(k)?.read_slot(slot);
+                out.push(Change { scan: k, name: name.clone(), value: vm::to_json(&value) });
+                at = k - 1;
+            }
+        }
+        crate::order::sort_by_key(&mut out, |c| c.scan);
+        block.history = out;
+        Ok(())
     }
 
     /// One place read by the writer (`at`: the event before which it was read, `mem`: the

@@ -207,7 +207,11 @@ fn a_timer_output_names_the_call_with_in_pt_and_et() {
     let ctx = Context::new(&p, &b);
     let q = explain(&ctx, &sim, "T1.Q", 8).unwrap();
     assert_eq!((q.written_by.kind, q.written_by.line), (Kind::Statement, Some(6)));
-    assert_eq!(q.block, Some(Block { instance: "T1".into(), fb: "TON".into() }));
+    let block = q.block.as_ref().unwrap();
+    assert_eq!((block.instance.as_str(), block.fb.as_str()), ("T1", "TON"));
+    let history: Vec<(u64, &str, Json)> =
+        block.history.iter().map(|c| (c.scan, c.name.as_str(), c.value.clone())).collect();
+    assert_eq!(history, [(3, "T1.IN", Json::Bool(true)), (8, "T1.Q", Json::Bool(true))]);
     assert_eq!(operand(&q, "T1.IN").since_scan, 3);
     assert_eq!(operand(&q, "T1.ET").text, "T#50ms");
     let lamp = explain(&ctx, &sim, "Lamp", 10).unwrap();
@@ -293,4 +297,36 @@ fn labels_are_the_accessible_names_the_issue_gives() {
     assert_eq!(why_label("Stop", &Value::Bool(false)), "Why is Stop FALSE?");
     assert_eq!(why_place_label("P3"), "Why does P3 hold a token?");
     assert_eq!(when_label("Motor"), "When did Motor change?");
+}
+
+#[test]
+fn a_counter_output_keeps_the_history_of_its_count() {
+    let p = st_project(
+        "PROGRAM Main
+VAR_INPUT Pulse : BOOL; END_VAR
+VAR_OUTPUT Full : BOOL; END_VAR
+VAR C1 : CTU; END_VAR
+C1(CU := Pulse, PV := 3);
+Full := C1.Q;
+END_PROGRAM",
+    );
+    let b = build_project(&p);
+    // Rising edges on scans 2, 4, 6 and 8: the count reaches 3 on scan 6.
+    let script: Vec<(u64, &str, &str)> =
+        (2..=9).map(|k| (k, "Pulse", if k % 2 == 0 { "TRUE" } else { "FALSE" })).collect();
+    let sim = recorded(&p, &b, &script, 10);
+    let ctx = Context::new(&p, &b);
+    let q = explain(&ctx, &sim, "C1.Q", 6).unwrap();
+    assert_eq!(q.value, Json::Bool(true));
+    assert_eq!(operand(&q, "C1.CV").value, serde_json::json!(3));
+    assert_eq!(operand(&q, "C1.CU").since_scan, 6);
+    let history = &q.block.as_ref().unwrap().history;
+    let counts: Vec<(u64, Json)> =
+        history.iter().filter(|c| c.name == "C1.CV").map(|c| (c.scan, c.value.clone())).collect();
+    assert_eq!(
+        counts,
+        [(2, serde_json::json!(1)), (4, serde_json::json!(2)), (6, serde_json::json!(3))]
+    );
+    let edges = history.iter().filter(|c| c.name == "C1.CU").count();
+    assert_eq!(edges, HISTORY, "the last four changes of CU up to scan 6: 3, 4, 5, 6");
 }
