@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# B5, B6 and B7 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 (release,
+# B5, B6, B7 and B8 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 (release,
 # as the web app), binds it with wasm-bindgen, and times it in a page driven by
 # playwright-core (scripts/bench-browser.mjs). Prints one JSON object; see BENCHMARKS.md.
 # Needs what scripts/setup.sh installs: the wasm32 target, the wasm-bindgen CLI, Debian's

@@ -996,14 +996,17 @@ impl Stretch {
             return;
         }
         let now = &now[..self.cells.min(now.len())];
-        if let Some(prev) = &self.previous {
-            for (c, (a, b)) in prev.iter().zip(now).enumerate() {
-                if a != b {
-                    self.changed[c / 64] |= 1 << (c % 64);
+        match &mut self.previous {
+            Some(prev) => {
+                for (c, (a, b)) in prev.iter_mut().zip(now).enumerate() {
+                    if *a != *b {
+                        self.changed[c / 64] |= 1 << (c % 64);
+                        *a = *b;
+                    }
                 }
             }
+            None => self.previous = Some(now.to_vec()),
         }
-        self.previous = Some(now.to_vec());
     }
 
     /// Remembers what changed, when the whole stretch was seen.
