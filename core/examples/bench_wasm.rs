@@ -71,7 +71,8 @@ impl WeighingPlant {
     /// B8: shows recorded scan `scan` again (`Simulator::view_at`); returns the scan
     /// shown. The longest replays are one interval minus one past a snapshot.
     pub fn view(&self, scan: u32) -> Result<u32, JsValue> {
-        let view = self.sim.view_at(u64::from(scan)).map_err(|e| JsValue::from_str(&e.to_string()))?;
+        let view =
+            self.sim.view_at(u64::from(scan)).map_err(|e| JsValue::from_str(&e.to_string()))?;
         Ok(view.scan() as u32)
     }
 
