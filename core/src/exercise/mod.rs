@@ -6,6 +6,7 @@ mod format;
 mod grade;
 mod link;
 mod random;
+mod starter;
 mod statement;
 mod view;
 
@@ -17,6 +18,7 @@ pub use grade::{
     grade, grade_by, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport,
 };
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
+pub use starter::{graded_program, Language};
 pub use statement::{next_to, statement_html};
 pub use view::{ExerciseView, ScenarioView};
 
