@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# B5, B6 and B7 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 exactly
+# B5, B6, B7 and B8 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 exactly
 # as the site is built (scripts/wasm-build.sh: the `wasm-release` profile with its
 # per-package opt-levels, the same flags, the same wasm-opt pass), binds it with
 # wasm-bindgen, times it in a page driven by playwright-core (scripts/bench-browser.mjs),
