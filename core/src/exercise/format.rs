@@ -391,6 +391,10 @@ fn line_column(text: &str, offset: usize) -> (usize, usize) {
     (line, column)
 }
 
+/// The codes of the languages an exercise can be written in (`languages = […]`), in the
+/// order of `starter::Language::ALL` (which reads its codes from here).
+pub(super) const LANGUAGE_CODES: [&str; 4] = ["st", "ld", "petri", "sfc"];
+
 impl Exercise {
     /// Reads an exercise file (TOML).
     pub fn from_toml(text: &str) -> Result<Exercise, ExerciseError> {
@@ -442,7 +446,7 @@ impl Exercise {
         if let Some(code) = exercise
             .languages
             .iter()
-            .find(|code| super::starter::Language::from_code(code).is_none())
+            .find(|code| !LANGUAGE_CODES.iter().any(|c| c.eq_ignore_ascii_case(code.trim())))
         {
             return Err(ExerciseError {
                 message: format!("languages: “{code}” is not one of st, ld, petri, sfc"),
