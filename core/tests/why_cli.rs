@@ -3,6 +3,7 @@
 
 use std::io::Write;
 use std::process::{Command, Output};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use serde_json::{json, Value};
 
@@ -10,8 +11,12 @@ fn plc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_plc")).args(args).output().expect("plc runs")
 }
 
+/// Writes `text` to a file of its own: the tests run in parallel, and a file they shared
+/// could be truncated by one test while `plc` reads it for another.
 fn source_file(name: &str, text: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("plc-why-{}", std::process::id()));
+    static NEXT: AtomicUsize = AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("plc-why-{}-{n}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("temp dir");
     let path = dir.join(name);
     let mut f = std::fs::File::create(&path).expect("create");
