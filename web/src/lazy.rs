@@ -19,6 +19,7 @@ use leptos::__reexports::send_wrapper::SendWrapper;
 use leptos::prelude::*;
 use leptos::wasm_split::wasm_split;
 use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
+use plc_core::semantic::{IlPass, SfcPass};
 
 /// A chunk of the app could not be fetched.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -167,6 +168,15 @@ pub fn share_fragment(project: plc_core::project::Project) -> Result<String, Loa
     Ok(plc_core::project::encode_share(&project))
 }
 
+/// The project in a share link's fragment (`#p=…`): its base64 and DEFLATE reader is
+/// fetched only when the page opens a link.
+#[wasm_split(share_reader, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn read_share(
+    fragment: String,
+) -> Result<Result<plc_core::project::Project, plc_core::project::ShareError>, LoadFailed> {
+    Ok(plc_core::project::decode_share(&fragment))
+}
+
 /// The plant's scene (its widgets drawn and its buttons and switches).
 #[wasm_split(scene, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn scene_view() -> Result<AnyView, LoadFailed> {
@@ -206,6 +216,8 @@ pub async fn load_lowerings(kinds: &[&str]) -> Result<(), LoadFailed> {
             "ladder" => passes.ladder = Some(ladder_pass().await?),
             "network" => passes.network = Some(network_pass().await?),
             "petri" => passes.petri = Some(petri_pass().await?),
+            "sfc" => passes.text.sfc = Some(sfc_pass().await?),
+            "il" => passes.text.il = Some(il_pass().await?),
             _ => {}
         }
         PASSES.with(|p| p.set(passes));
@@ -223,6 +235,19 @@ fn ladder_pass() -> Result<LadderLowering, LoadFailed> {
 #[wasm_split(network_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn network_pass() -> Result<NetworkPass, LoadFailed> {
     Ok(plc_core::network::NetworkPou::to_st)
+}
+
+/// Textual SFC bodies (typed, or generated for an SFC network chart) lowered to
+/// statements.
+#[wasm_split(sfc_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn sfc_pass() -> Result<SfcPass, LoadFailed> {
+    Ok(plc_core::sfc::desugar)
+}
+
+/// Instruction List bodies lowered to statements.
+#[wasm_split(il_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn il_pass() -> Result<IlPass, LoadFailed> {
+    Ok(plc_core::semantic::desugar_il)
 }
 
 /// The Petri net POUs' generated code and analysis.
