@@ -4,6 +4,7 @@
 
 mod format;
 mod grade;
+mod interface;
 mod link;
 mod random;
 mod statement;
@@ -14,6 +15,7 @@ pub use format::{
     Expectation, InterfaceVar, Random, RandomInput, Restart, Scenario, Step,
 };
 pub use grade::{grade, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport};
+pub use interface::interface_declarations;
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
 pub use statement::{next_to, statement_html};
 pub use view::{ExerciseView, ScenarioView};
