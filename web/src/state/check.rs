@@ -71,10 +71,12 @@ pub(super) fn trace_paths(sim: &mut Simulator, paths: &[String]) {
 impl AppState {
     /// Builds the project; when it is clean, powers a fresh simulator on for the chosen
     /// PROGRAM (held inputs are re-applied; a running PLC keeps running with the new
-    /// program). With errors the previous program keeps running.
+    /// program). With errors the previous program keeps running, marked stale (the
+    /// controls say so, and Run does not start it unless the user chooses to).
     pub fn check_now(&self) {
         let project = self.project.get_untracked();
         let build = build_project(&project);
+        self.last_checked.set_value(Some(project.clone()));
         self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
         let charts: Vec<String> =
             plc_core::sfc::outline::outlines(&project.source).into_iter().map(|o| o.pou).collect();
@@ -82,8 +84,10 @@ impl AppState {
             self.sfc_charts.set(charts);
         }
         if build.has_errors() {
+            self.set_stale(self.sim.with_value(Option::is_some));
             return;
         }
+        self.set_stale(false);
         let names = build.program_names();
         let chosen = project
             .settings
@@ -129,9 +133,26 @@ impl AppState {
                 self.marked_line.set(None);
                 self.fault_site.set(None);
             }
-            Err(e) => self.error(e.located_message()),
+            Err(e) => {
+                self.set_stale(self.sim.with_value(Option::is_some));
+                self.error(e.located_message());
+            }
         }
         self.bump();
+    }
+
+    /// Notes whether the simulator holds an older build than the text on the screen; the
+    /// choice to run that one ends when the project builds again.
+    fn set_stale(&self, stale: bool) {
+        if self.stale.get_untracked() != stale {
+            self.stale.set(stale);
+        }
+        if !stale {
+            if self.run_old.get_untracked() {
+                self.run_old.set(false);
+            }
+            self.clear_refusal();
+        }
     }
 
     /// Chooses the PROGRAM to run (kept in the project's settings) and restarts on it.

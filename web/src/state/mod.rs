@@ -3,6 +3,7 @@
 //! in `run.rs`.
 
 mod check;
+mod gate;
 mod projects;
 mod run;
 
@@ -15,6 +16,7 @@ use plc_core::project::{Project, ProjectSummary};
 use plc_core::sim::{BreakpointId, Simulator};
 
 pub use check::DiagView;
+pub use gate::version_text;
 pub use projects::{clear_fragment, note_panic, project_file_name};
 pub use run::marking_of;
 
@@ -91,6 +93,8 @@ pub enum NoticeAction {
     DeleteDamaged(String),
     /// Open a share link (the URL fragment) held back after it stopped the page.
     OpenShared(String),
+    /// Run the build the simulator holds although the project has errors since.
+    RunLastBuilt,
 }
 
 impl NoticeAction {
@@ -104,6 +108,7 @@ impl NoticeAction {
             NoticeAction::DownloadDamaged(_) => "Download its text",
             NoticeAction::DeleteDamaged(_) => "Delete it",
             NoticeAction::OpenShared(_) => "Open it anyway",
+            NoticeAction::RunLastBuilt => "Run the last version that built",
         }
     }
 }
@@ -132,6 +137,15 @@ pub struct AppState {
     pub running: RwSignal<Option<String>>,
     /// The simulator of the last project that built clean.
     pub sim: StoredValue<Option<Simulator>>,
+    /// The simulator holds an older build than the project on the screen (which has errors
+    /// since): the controls say so.
+    pub stale: RwSignal<bool>,
+    /// The user chose `Run the last version that built` (until the project builds again).
+    pub run_old: RwSignal<bool>,
+    /// The project as it was last checked (Run checks first when it changed since).
+    last_checked: StoredValue<Option<Project>>,
+    /// Bumped by every Step and Step N that scanned (the guided tour waits for one).
+    pub steps_taken: RwSignal<u64>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
     /// and Petri net elements).
     pub sim_build: StoredValue<Option<ProjectBuild>>,
@@ -193,6 +207,10 @@ impl AppState {
             sfc_charts: RwSignal::new(Vec::new()),
             running: RwSignal::new(None),
             sim: StoredValue::new(None),
+            stale: RwSignal::new(false),
+            run_old: RwSignal::new(false),
+            last_checked: StoredValue::new(None),
+            steps_taken: RwSignal::new(0),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),
             run_mode: RwSignal::new(RunMode::Stopped),
@@ -261,6 +279,8 @@ impl AppState {
         self.held.set(BTreeMap::new());
         self.run_mode.set(RunMode::Stopped);
         self.sim.set_value(None);
+        self.stale.set(false);
+        self.run_old.set(false);
         self.sim_build.set_value(None);
         self.running_places.set_value(None);
         self.running.set(None);
