@@ -1,11 +1,18 @@
-//! The page layout: header with the project menu, the editor pane (POU navigator, the
+//! The page layout: header with the project menu, the `Start here` strip of a first
+//! visit, the editor pane (POU navigator, the
 //! selected POU's view, the problem list) and the simulation panels.
 
 use leptos::prelude::*;
 
 use crate::components::{
-    controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, scene::ScenePanel,
-    timeline::Timeline, variables::Variables,
+    controls::Controls,
+    header::Header,
+    io::IoPanel,
+    pou_pane::PouPane,
+    scene::ScenePanel,
+    timeline::Timeline,
+    tour::{Tour, TourPanel},
+    variables::Variables,
 };
 use crate::exercises::{Catalogue, ExercisePanel, Exercises, Screen};
 use crate::state::AppState;
@@ -18,10 +25,12 @@ pub fn App() -> impl IntoView {
     provide_context(state);
     let exercises = Exercises::new(state);
     provide_context(exercises);
+    provide_context(Tour::new());
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
     view! {
         <Header/>
         <Banner/>
+        <TourPanel/>
         <Show when=catalogue>
             <Catalogue/>
         </Show>

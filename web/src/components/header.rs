@@ -1,5 +1,5 @@
-//! The page header: the app title, the open project's name, and the project menu (open,
-//! new, open an example, rename, duplicate, delete, export, import, share).
+//! The page header: the app title, the open project's name, the project menu (open,
+//! new, open an example, rename, duplicate, delete, export, import, share) and `Help`.
 
 use leptos::ev;
 use leptos::html;
@@ -8,6 +8,7 @@ use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
+use crate::components::help::HelpMenu;
 use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
@@ -240,6 +241,7 @@ pub fn Header() -> impl IntoView {
                     on:change=on_file/>
                 <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
             </nav>
+            <HelpMenu/>
             {move || share_link.get().map(|link| view! {
                 <ShareBox link=link label="Share link" close_label="Close share link"
                     on_close=move || share_link.set(None)/>

@@ -1,0 +1,285 @@
+//! `Start here`: a short guided lesson shown on the first visit, in a strip under the
+//! header (never modal, never over the page: it keeps one height, so nothing under it moves
+//! while it goes on). Each step says what to do, marks the controls to use, and moves on
+//! when the student has done it (an input flipped, the ST edited, a rung drawn, a Step
+//! pressed, an exercise opened) or on `Next`. Finished or skipped, it stays closed after
+//! reloads; `Help` → `Start here` opens it again.
+
+use std::collections::BTreeMap;
+
+use leptos::prelude::*;
+use plc_core::ladder::Element;
+use plc_core::project::{Project, StorageBackend};
+
+use crate::exercises::Exercises;
+use crate::state::AppState;
+use crate::storage::LocalStorage;
+
+/// The local storage key noting that the tour was finished or skipped (in the trainer's
+/// versioned key space).
+const DONE_KEY: &str = "plc-trainer/v1/tour";
+
+/// How long a step shows that it is done before the next one.
+const ADVANCE_DELAY: std::time::Duration = std::time::Duration::from_millis(1200);
+
+/// One step of the lesson.
+struct Step {
+    title: &'static str,
+    text: &'static str,
+    /// What the page marks (`data-tour-target` on the document, matched by the CSS).
+    target: &'static str,
+}
+
+/// The lesson (its words in one place).
+const STEPS: [Step; 5] = [
+    Step {
+        title: "Flip an input and see a lamp",
+        text: "Press Run, then tick Start under Inputs and outputs: the Motor lamp lights, and stays lit when you untick Start, because the program in the editor latches it. Tick Stop to switch it off.",
+        target: "run io",
+    },
+    Step {
+        title: "Change one line of ST",
+        text: "In the ST editor, change the last line to Motor := Start AND NOT Stop; and watch the problems list: once it builds, the PLC runs your change and Motor follows Start.",
+        target: "st",
+    },
+    Step {
+        title: "Draw one rung",
+        text: "Press New ladder POU, then Create. Drag NO contact from the palette onto the rung and type Start, then a Coil beside it named Lamp (Enter after each; or select a cell and press c or o). Press Declare under Problems for each new name.",
+        target: "ladder",
+    },
+    Step {
+        title: "Press Step and read the timeline",
+        text: "Press Step under Simulation: the PLC runs one scan and the scan count goes up. Tick Chart beside a variable under Variables: the timeline draws its value scan by scan, and a click on it reads any scan.",
+        target: "step",
+    },
+    Step {
+        title: "Open the first exercise",
+        text: "Press Exercises, choose Level 1 and open an exercise. Write your answer in ST or ladder, then press Check: it runs the exercise's scenarios and tells you what passed.",
+        target: "exercises",
+    },
+];
+
+/// What the page showed when a step began, to tell when the student has done it.
+#[derive(Debug, Clone, PartialEq)]
+enum Mark {
+    /// The inputs held by the I/O panel.
+    Held(BTreeMap<String, String>),
+    /// The open project's id and ST text.
+    Source(Option<String>, String),
+    /// How many rungs have a contact and a coil.
+    Rungs(usize),
+    /// How many Steps were taken.
+    Steps(u64),
+    /// The open exercise's id.
+    Exercise(Option<String>),
+}
+
+/// Whether the student did what the step asks between `before` and `now`.
+fn acted(before: &Mark, now: &Mark) -> bool {
+    match (before, now) {
+        (Mark::Held(b), Mark::Held(n)) => n.iter().any(|(k, v)| b.get(k) != Some(v)),
+        (Mark::Source(bid, b), Mark::Source(nid, n)) => bid == nid && b != n,
+        (Mark::Rungs(b), Mark::Rungs(n)) => n > b,
+        (Mark::Steps(b), Mark::Steps(n)) => n > b,
+        (Mark::Exercise(b), Mark::Exercise(n)) => n.is_some() && n != b,
+        _ => false,
+    }
+}
+
+/// The rungs of the project's ladder POUs that hold a contact and a coil.
+fn drawn_rungs(project: &Project) -> usize {
+    project
+        .ladder
+        .iter()
+        .flat_map(|pou| &pou.rungs)
+        .filter(|rung| {
+            let has = |f: fn(&Element) -> bool| rung.cells.iter().flatten().any(|c| f(&c.element));
+            has(|e| matches!(e, Element::Contact { .. }))
+                && has(|e| matches!(e, Element::Coil { .. }))
+        })
+        .count()
+}
+
+/// The tour's place, shared by the strip and the `Help` menu.
+#[derive(Clone, Copy)]
+pub struct Tour {
+    /// The step shown (`None`: closed; `STEPS.len()`: finished).
+    pub step: RwSignal<Option<usize>>,
+}
+
+impl Tour {
+    /// Open at the first step unless it was finished or skipped in this browser.
+    pub fn new() -> Self {
+        let done = LocalStorage::open().get(DONE_KEY).ok().flatten().is_some();
+        Tour { step: RwSignal::new((!done).then_some(0)) }
+    }
+
+    /// Opens the tour at its first step (`Help` → `Start here`).
+    pub fn restart(self) {
+        self.step.set(Some(0));
+    }
+
+    /// Notes in storage that the tour was seen to its end or skipped.
+    fn remember_done() {
+        let _ = LocalStorage::open().set(DONE_KEY, "done");
+    }
+
+    fn go(self, step: usize) {
+        if step >= STEPS.len() {
+            Self::remember_done();
+        }
+        self.step.set(Some(step.min(STEPS.len())));
+    }
+
+    fn skip(self) {
+        Self::remember_done();
+        self.step.set(None);
+    }
+}
+
+/// What the page shows of `step` now (read reactively).
+fn mark(state: AppState, ex: Exercises, step: usize) -> Mark {
+    match step {
+        0 => Mark::Held(state.held.get()),
+        1 => Mark::Source(state.project_id.get(), state.project.with(|p| p.source.clone())),
+        2 => Mark::Rungs(state.project.with(drawn_rungs)),
+        3 => Mark::Steps(state.steps_taken.get()),
+        _ => Mark::Exercise(ex.open.with(|o| o.as_ref().map(|o| o.opened.view.id.clone()))),
+    }
+}
+
+/// Marks the step's controls on the page (`data-tour-target` on the document element).
+fn point_at(target: Option<&str>) {
+    let Some(root) =
+        web_sys::window().and_then(|w| w.document()).and_then(|d| d.document_element())
+    else {
+        return;
+    };
+    let _ = match target {
+        Some(t) => root.set_attribute("data-tour-target", t),
+        None => root.remove_attribute("data-tour-target"),
+    };
+}
+
+/// The `Start here` strip.
+#[component]
+pub fn TourPanel() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let ex = expect_context::<Exercises>();
+    let tour = expect_context::<Tour>();
+    // The step's action was seen: it says so for a moment, then the next step shows.
+    let done = RwSignal::new(false);
+
+    // Watches what the current step asks for, from the moment the step began.
+    Effect::new(move |prev: Option<Option<(usize, Mark)>>| {
+        let step = tour.step.get().filter(|s| *s < STEPS.len())?;
+        let now = mark(state, ex, step);
+        match prev.flatten() {
+            Some((s, before)) if s == step => {
+                if !done.get_untracked() && acted(&before, &now) {
+                    done.set(true);
+                    set_timeout(
+                        move || {
+                            if tour.step.try_get_untracked() == Some(Some(step)) {
+                                tour.go(step + 1);
+                            }
+                        },
+                        ADVANCE_DELAY,
+                    );
+                }
+                Some((s, before))
+            }
+            _ => {
+                done.set(false);
+                Some((step, now))
+            }
+        }
+    });
+    Effect::new(move |_| {
+        let target = tour.step.get().and_then(|s| STEPS.get(s)).map(|s| s.target);
+        point_at(target);
+    });
+
+    move || {
+        let step = tour.step.get()?;
+        let total = STEPS.len();
+        let body = match STEPS.get(step) {
+            Some(s) => view! {
+                <p class="tour-count" aria-live="polite">{format!("Step {} of {total}", step + 1)}</p>
+                <div class="tour-body">
+                    <h2 class="tour-title">{s.title}
+                        {move || done.get().then(|| view! { <span class="tour-done">" ✓ Done"</span> })}
+                    </h2>
+                    <p class="tour-text">{s.text}</p>
+                </div>
+                <div class="tour-actions">
+                    <button disabled=step == 0 on:click=move |_| tour.go(step.saturating_sub(1))>"Back"</button>
+                    <button class="primary" on:click=move |_| tour.go(step + 1)>"Next"</button>
+                    <button on:click=move |_| tour.skip()>"Skip tour"</button>
+                </div>
+            }
+            .into_any(),
+            None => view! {
+                <p class="tour-count" aria-live="polite">"Finished"</p>
+                <div class="tour-body">
+                    <h2 class="tour-title">"You are ready"</h2>
+                    <p class="tour-text">"That was the tour: inputs and lamps, ST, ladder, Step and the timeline, exercises. Help opens it again, with the keyboard shortcuts and the problems explained."</p>
+                </div>
+                <div class="tour-actions">
+                    <button disabled=false on:click=move |_| tour.go(total - 1)>"Back"</button>
+                    <button class="primary" on:click=move |_| tour.step.set(None)>"Close tour"</button>
+                </div>
+            }
+            .into_any(),
+        };
+        Some(view! {
+            <section class="tour" role="region" aria-label="Start here">
+                <p class="tour-name">"Start here"</p>
+                {body}
+            </section>
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use plc_core::ladder::{Cell, CoilKind, ContactKind, LadderPouKind};
+
+    #[test]
+    fn each_step_waits_for_its_own_action() {
+        let held = |pairs: &[(&str, &str)]| {
+            Mark::Held(pairs.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect())
+        };
+        assert!(acted(&held(&[]), &held(&[("Start", "TRUE")])));
+        assert!(acted(&held(&[("Start", "TRUE")]), &held(&[("Start", "FALSE")])));
+        assert!(!acted(&held(&[("Start", "TRUE")]), &held(&[])), "another project cleared them");
+        let src = |id: &str, text: &str| Mark::Source(Some(id.into()), text.into());
+        assert!(acted(&src("a", "x := 1;"), &src("a", "x := 2;")));
+        assert!(!acted(&src("a", "x := 1;"), &src("b", "y := 1;")), "another project opened");
+        assert!(acted(&Mark::Rungs(0), &Mark::Rungs(1)));
+        assert!(!acted(&Mark::Rungs(1), &Mark::Rungs(0)));
+        assert!(acted(&Mark::Steps(4), &Mark::Steps(5)));
+        assert!(acted(&Mark::Exercise(None), &Mark::Exercise(Some("latch".into()))));
+        assert!(!acted(&Mark::Exercise(Some("latch".into())), &Mark::Exercise(None)));
+        assert!(!acted(&Mark::Steps(0), &Mark::Rungs(3)), "marks of different steps");
+    }
+
+    #[test]
+    fn a_rung_is_drawn_once_it_has_a_contact_and_a_coil() {
+        let mut p = Project::new("p");
+        p.add_ladder_pou("L", LadderPouKind::Program).unwrap();
+        assert_eq!(drawn_rungs(&p), 0);
+        p.ladder[0].rungs[0].cells[0][0] = Cell {
+            element: Element::Contact { kind: ContactKind::NormallyOpen, operand: "A".into() },
+            ..Cell::default()
+        };
+        assert_eq!(drawn_rungs(&p), 0, "a contact alone");
+        p.ladder[0].rungs[0].cells[0][1] = Cell {
+            element: Element::Coil { kind: CoilKind::Normal, operand: "B".into() },
+            ..Cell::default()
+        };
+        assert_eq!(drawn_rungs(&p), 1);
+        assert_eq!(STEPS.len(), 5);
+    }
+}
