@@ -4,13 +4,16 @@
 //! The ST editor stays mounted while another POU is shown (hidden), so its undo history
 //! and caret survive switching; ladder and net views are built when selected.
 
+use leptos::html;
 use leptos::prelude::*;
+use plc_core::exercise::interface_declarations;
 use plc_core::ladder::LadderPouKind;
 
 use crate::components::editor::Editor;
 use crate::components::ladder::LadderView;
 use crate::components::petri::PetriView;
 use crate::components::problems::Problems;
+use crate::exercises::Exercises;
 use crate::state::{AppState, PouView};
 
 /// One entry of the navigator.
@@ -87,108 +90,202 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
 fn Navigator() -> impl IntoView {
     let state = expect_context::<AppState>();
     let items = Memo::new(move |_| nav_items(state));
-    move || {
+    let tabs = move || {
         let running = state.running.get();
-        view! {
-            <nav class="pou-nav" aria-label="POUs">
-                {items.get().into_iter().map(|item| {
-                    let target = item.view.clone();
-                    let selected = {
-                        let v = item.view.clone();
-                        move || state.view.get() == v
-                    };
-                    let runs = running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&item.name))
-                        && item.view != PouView::St;
-                    let title = if runs { "This PROGRAM runs in the simulator" } else { "" };
-                    view! {
-                        <button class="pou-tab" aria-label=item.label.clone() title=title
-                            aria-pressed=move || if selected() { "true" } else { "false" }
-                            on:click=move |_| state.view.set(target.clone())>
-                            <span class=format!("pou-badge pou-badge-{}", item.badge.to_ascii_lowercase())>{item.badge}</span>
-                            <span>{item.name.clone()}</span>
-                            {runs.then(|| view! { <span class="pou-running" aria-hidden="true">"▶"</span> })}
-                            {(item.errors > 0).then(|| view! {
-                                <span class="pou-errors" aria-hidden="true">{item.errors}</span>
-                            })}
-                        </button>
-                    }
-                }).collect_view()}
-                <NewPou petri=false/>
-                <NewPou petri=true/>
-            </nav>
-        }
+        items
+            .get()
+            .into_iter()
+            .map(|item| {
+                let target = item.view.clone();
+                let selected = {
+                    let v = item.view.clone();
+                    move || state.view.get() == v
+                };
+                let runs = running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&item.name))
+                    && item.view != PouView::St;
+                let title = if runs { "This PROGRAM runs in the simulator" } else { "" };
+                view! {
+                    <button class="pou-tab" aria-label=item.label.clone() title=title
+                        aria-pressed=move || if selected() { "true" } else { "false" }
+                        on:click=move |_| state.view.set(target.clone())>
+                        <span class=format!("pou-badge pou-badge-{}", item.badge.to_ascii_lowercase())>{item.badge}</span>
+                        <span>{item.name.clone()}</span>
+                        {runs.then(|| view! { <span class="pou-running" aria-hidden="true">"▶"</span> })}
+                        {(item.errors > 0).then(|| view! {
+                            <span class="pou-errors" aria-hidden="true">{item.errors}</span>
+                        })}
+                    </button>
+                }
+            })
+            .collect_view()
+    };
+    // The two New buttons (and their dialogs) stay mounted while the tabs change.
+    view! {
+        <nav class="pou-nav" aria-label="POUs">
+            {tabs}
+            <NewPou petri=false/>
+            <NewPou petri=true/>
+        </nav>
     }
 }
 
-/// `New ladder POU` (name, kind, Create) or `New Petri net POU` (name, Create): a small
-/// dialog that adds an empty POU to the project and shows it.
+/// Where a suggested POU name starts: in an exercise its id in CamelCase (`latch` →
+/// `Latch`, `garage-door` → `GarageDoor`; a language tag such as `ld` is left out), else
+/// `Ladder` or `Net`. [`Project::free_pou_name`] adds the first free number.
+fn name_base(exercise: Option<&str>, petri: bool) -> String {
+    const TAGS: [&str; 6] = ["ld", "st", "il", "sfc", "petri", "fb"];
+    let from_exercise: String = exercise
+        .unwrap_or_default()
+        .split(|c: char| !c.is_ascii_alphanumeric())
+        .filter(|w| !w.is_empty() && !TAGS.contains(&w.to_ascii_lowercase().as_str()))
+        .map(|w| {
+            let mut chars = w.chars();
+            chars
+                .next()
+                .map(|c| c.to_ascii_uppercase().to_string() + chars.as_str())
+                .unwrap_or_default()
+        })
+        .collect();
+    if from_exercise.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        from_exercise
+    } else if petri {
+        "Net".to_string()
+    } else {
+        "Ladder".to_string()
+    }
+}
+
+/// A core message as a sentence under a field (`Type a name for the POU.`).
+fn sentence(message: &str) -> String {
+    let mut chars = message.chars();
+    let first = chars.next().map(|c| c.to_uppercase().collect::<String>()).unwrap_or_default();
+    format!("{first}{}.", chars.as_str())
+}
+
+/// `New ladder POU` or `New Petri net POU`: a dialog with a free name already filled in
+/// (checked as it is typed), the kind for ladder, `Create` and `Cancel`. Inside an
+/// exercise the new POU declares the exercise's interface and, when it is a PROGRAM,
+/// becomes the program that runs and is graded.
 #[component]
 fn NewPou(petri: bool) -> impl IntoView {
     let state = expect_context::<AppState>();
+    let exercises = use_context::<Exercises>();
     let title = if petri { "New Petri net POU" } else { "New ladder POU" };
-    let open = RwSignal::new(false);
+    let dialog = NodeRef::<html::Dialog>::new();
+    let input = NodeRef::<html::Input>::new();
     let name = RwSignal::new(String::new());
     let kind = RwSignal::new(LadderPouKind::Program);
-    let problem = RwSignal::new(None::<String>);
+    let problem = Memo::new(move |_| {
+        name.with(|n| state.project.with(|p| p.check_pou_name(n).err()))
+            .map(|e| sentence(&e.to_string()))
+    });
+    let interface = move || {
+        exercises.and_then(|ex| {
+            ex.open.with_untracked(|o| o.as_ref().map(|o| o.opened.view.interface.clone()))
+        })
+    };
+    let exercise_id = move || {
+        exercises
+            .and_then(|ex| ex.open.with_untracked(|o| o.as_ref().map(|o| o.opened.view.id.clone())))
+    };
+    let error_id = if petri { "new-petri-error" } else { "new-ladder-error" };
+    let show = move |_| {
+        let base = name_base(exercise_id().as_deref(), petri);
+        name.set(state.project.with_untracked(|p| p.free_pou_name(&base)));
+        kind.set(LadderPouKind::Program);
+        if let Some(d) = dialog.get_untracked() {
+            let _ = d.show_modal();
+        }
+        if let Some(i) = input.get_untracked() {
+            let _ = i.focus();
+            i.select();
+        }
+    };
+    let close = move || {
+        if let Some(d) = dialog.get_untracked() {
+            d.close();
+        }
+    };
     let create = move || {
+        if problem.get_untracked().is_some() {
+            return;
+        }
         let text = name.get_untracked().trim().to_string();
         let mut project = state.project.get_untracked();
         let program = petri || kind.get_untracked() == LadderPouKind::Program;
-        let added = if petri {
-            project.add_petri_pou(&text)
-        } else {
-            project.add_ladder_pou(&text, kind.get_untracked())
+        let declared = interface().filter(|_| program).map(|i| interface_declarations(&i));
+        let added = match (petri, &declared) {
+            (true, Some(d)) => project.add_petri_pou_with(&text, d),
+            (true, None) => project.add_petri_pou(&text),
+            (false, Some(d)) => project.add_ladder_pou_with(
+                &text,
+                LadderPouKind::Program,
+                &format!("{d}VAR\nEND_VAR\n"),
+            ),
+            (false, None) => project.add_ladder_pou(&text, kind.get_untracked()),
         };
-        match added {
-            Ok(()) => {
-                if program
-                    && project.settings.program.is_none()
-                    && state.running.get_untracked().is_none()
-                {
-                    project.settings.program = Some(text.clone());
-                }
-                state.project.set(project);
-                state.save();
-                state.check_now();
-                state.view.set(if petri { PouView::Petri(text) } else { PouView::Ladder(text) });
-                open.set(false);
-                name.set(String::new());
-                problem.set(None);
-            }
-            Err(e) => problem.set(Some(e.to_string())),
+        if let Err(e) = added {
+            // Checked as typed; the project may have changed meanwhile.
+            state.error(format!("Not created: {e}."));
+            return;
+        }
+        let in_exercise = declared.is_some();
+        if program
+            && (in_exercise
+                || (project.settings.program.is_none() && state.running.get_untracked().is_none()))
+        {
+            project.settings.program = Some(text.clone());
+        }
+        state.project.set(project);
+        state.save();
+        state.check_now();
+        state.view.set(if petri {
+            PouView::Petri(text.clone())
+        } else {
+            PouView::Ladder(text.clone())
+        });
+        close();
+        if in_exercise {
+            state.info(format!(
+                "{text} declares the exercise's interface and is now the program that runs and that Check grades (Program under Simulation chooses another)."
+            ));
         }
     };
     view! {
-        <button class="pou-tab pou-new" on:click=move |_| { open.update(|o| *o = !*o); problem.set(None); }
-            aria-expanded=move || if open.get() { "true" } else { "false" }>{title}</button>
-        {move || open.get().then(|| view! {
-            <div class="pou-dialog" role="dialog" aria-label=title>
+        <button class="pou-tab pou-new" data-kind=if petri { "petri" } else { "ladder" }
+            aria-haspopup="dialog" on:click=show>{title}</button>
+        <dialog class="app-dialog pou-dialog" node_ref=dialog aria-label=title>
+            <h2>{title}</h2>
+            <form on:submit=move |ev: leptos::ev::SubmitEvent| { ev.prevent_default(); create(); }>
                 <label class="field">
-                    <span>"POU name"</span>
-                    <input type="text" aria-label="POU name" prop:value=move || name.get()
-                        spellcheck="false" autofocus
-                        on:input=move |ev| name.set(event_target_value(&ev))
-                        on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
-                            "Enter" => { ev.prevent_default(); create(); }
-                            "Escape" => open.set(false),
-                            _ => {}
-                        }/>
+                    <span>"Name"</span>
+                    <input type="text" node_ref=input aria-label="POU name" spellcheck="false" autocomplete="off"
+                        prop:value=move || name.get()
+                        aria-invalid=move || problem.get().is_some().to_string()
+                        aria-describedby=error_id
+                        on:input=move |ev| name.set(event_target_value(&ev))/>
                 </label>
+                <p class="field-error" id=error_id aria-live="polite">{move || problem.get()}</p>
                 {(!petri).then(|| view! {
                     <label class="field">
-                        <span>"POU kind"</span>
-                        <select aria-label="POU kind" on:change=move |ev| kind.set(
+                        <span>"Kind"</span>
+                        <select aria-label="POU kind" prop:value=move || if kind.get() == LadderPouKind::Program { "PROGRAM" } else { "FUNCTION_BLOCK" }
+                            on:change=move |ev| kind.set(
                             if event_target_value(&ev) == "FUNCTION_BLOCK" { LadderPouKind::FunctionBlock } else { LadderPouKind::Program })>
-                            <option value="PROGRAM" selected=true>"PROGRAM"</option>
+                            <option value="PROGRAM">"PROGRAM"</option>
                             <option value="FUNCTION_BLOCK">"FUNCTION_BLOCK"</option>
                         </select>
                     </label>
                 })}
-                <button on:click=move |_| create()>"Create"</button>
-                <button on:click=move |_| open.set(false)>"Cancel"</button>
-                {move || problem.get().map(|p| view! { <p class="field-error" aria-live="polite">{p}</p> })}
-            </div>
-        })}
+                {move || interface().filter(|i| !i.is_empty()).map(|_| view! {
+                    <p class="muted small-text">"A PROGRAM made here declares the exercise's interface and becomes the program that is checked."</p>
+                })}
+                <div class="dialog-actions">
+                    <button type="submit" class="primary" disabled=move || problem.get().is_some()>"Create"</button>
+                    <button type="button" on:click=move |_| close()>"Cancel"</button>
+                </div>
+            </form>
+        </dialog>
     }
 }
 
@@ -210,5 +307,28 @@ pub fn PouPane() -> impl IntoView {
             PouView::Network(name) => view! { <crate::components::network::NetworkView name=name/> }.into_any(),
         }}
         <Problems/>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_suggested_name_comes_from_the_exercise() {
+        assert_eq!(name_base(None, false), "Ladder");
+        assert_eq!(name_base(None, true), "Net");
+        assert_eq!(name_base(Some("latch"), false), "Latch");
+        assert_eq!(name_base(Some("garage-door"), true), "GarageDoor");
+        assert_eq!(name_base(Some("counter-reset-ld"), false), "CounterReset");
+        assert_eq!(name_base(Some("2-hand"), false), "Ladder", "a name cannot start with a digit");
+        let p = plc_core::project::Project::new("p");
+        assert_eq!(p.free_pou_name(&name_base(Some("latch"), false)), "Latch1");
+    }
+
+    #[test]
+    fn core_messages_read_as_sentences() {
+        assert_eq!(sentence("type a name for the POU"), "Type a name for the POU.");
+        assert_eq!(sentence("“1x” is not a name"), "“1x” is not a name.");
     }
 }
