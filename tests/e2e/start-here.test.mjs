@@ -47,6 +47,7 @@ const cell = (view, rung, row, col) =>
   view.getByRole('gridcell', { name: new RegExp(`^Rung ${rung}, row ${row}, column ${col}: `) });
 
 async function place(page, view, at, tool, operand) {
+  await cell(view, ...at).waitFor();
   await drag(page, view.getByRole('button', { name: tool, exact: true }), cell(view, ...at));
   const box = view.getByRole('textbox', { name: 'Operand' });
   await box.fill(operand);

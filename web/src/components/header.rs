@@ -175,6 +175,7 @@ pub fn Header() -> impl IntoView {
             <button class="exercises-button" aria-pressed=move || (exercises.screen.get() == Screen::Catalogue).to_string()
                 on:click=move |_| exercises.screen.update(|s| *s = if *s == Screen::Catalogue { Screen::Workspace } else { Screen::Catalogue })
                 title="Exercises that grade themselves">"Exercises"</button>
+            <HelpMenu/>
             <nav class="project-menu" aria-label="Project">
                 <label class="project-select">
                     <span class="visually-hidden">"Open project"</span>
@@ -241,7 +242,6 @@ pub fn Header() -> impl IntoView {
                     on:change=on_file/>
                 <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
             </nav>
-            <HelpMenu/>
             {move || share_link.get().map(|link| view! {
                 <ShareBox link=link label="Share link" close_label="Close share link"
                     on_close=move || share_link.set(None)/>

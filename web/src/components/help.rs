@@ -64,6 +64,21 @@ const SHORTCUTS: &[(&str, &[(&str, &str)])] = &[
     ),
 ];
 
+/// The shortcut tables as HTML (the text is this file's constants).
+fn shortcuts_html() -> String {
+    let mut html = String::new();
+    for (area, keys) in SHORTCUTS {
+        html.push_str(&format!("<table class=\"shortcut-table\"><caption>{area}</caption><tbody>"));
+        for (k, what) in *keys {
+            html.push_str(&format!(
+                "<tr><th scope=\"row\"><kbd>{k}</kbd></th><td>{what}</td></tr>"
+            ));
+        }
+        html.push_str("</tbody></table>");
+    }
+    html
+}
+
 /// The `Help` button and its menu, with the shortcuts dialog.
 #[component]
 pub fn HelpMenu() -> impl IntoView {
@@ -172,20 +187,34 @@ pub fn HelpMenu() -> impl IntoView {
             <dialog class="app-dialog shortcuts" node_ref=dialog aria-labelledby="shortcuts-title">
                 <h2 id="shortcuts-title">"Keyboard shortcuts"</h2>
                 <p class="muted">"On a Mac, Cmd works where Ctrl is written."</p>
-                {SHORTCUTS.iter().map(|(area, keys)| view! {
-                    <table class="shortcut-table">
-                        <caption>{*area}</caption>
-                        <tbody>
-                            {keys.iter().map(|(k, what)| view! {
-                                <tr><th scope="row"><kbd>{*k}</kbd></th><td>{*what}</td></tr>
-                            }).collect_view()}
-                        </tbody>
-                    </table>
-                }).collect_view()}
+                // Fixed text of this file: one block of HTML, not a view per row.
+                <div inner_html=shortcuts_html()></div>
                 <form method="dialog" class="dialog-actions">
                     <button class="primary">"Close"</button>
                 </form>
             </dialog>
         </div>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_shortcuts_are_plain_text_in_tables() {
+        let html = shortcuts_html();
+        assert_eq!(html.matches("<table").count(), SHORTCUTS.len());
+        assert!(html.contains("<caption>Ladder rungs (on a selected cell)</caption>"));
+        assert!(html.contains(
+            "<tr><th scope=\"row\"><kbd>c / n</kbd></th><td>NO contact / NC contact</td></tr>"
+        ));
+        // Inserted as HTML: the texts must hold no markup of their own.
+        for (area, keys) in SHORTCUTS {
+            let texts = std::iter::once(*area).chain(keys.iter().flat_map(|(k, w)| [*k, *w]));
+            for t in texts {
+                assert!(!t.contains(['<', '>', '&']), "{t}");
+            }
+        }
     }
 }

@@ -277,7 +277,7 @@ fn NewPou(petri: bool) -> impl IntoView {
                         </select>
                     </label>
                 })}
-                {move || interface().filter(|i| !i.is_empty()).map(|_| view! {
+                {move || exercises.is_some_and(|ex| ex.open.with(|o| o.as_ref().is_some_and(|o| !o.opened.view.interface.is_empty()))).then(|| view! {
                     <p class="muted small-text">"A PROGRAM made here declares the exercise's interface and becomes the program that is checked."</p>
                 })}
                 <div class="dialog-actions">

@@ -59,6 +59,12 @@ const STEPS: [Step; 5] = [
     },
 ];
 
+/// The title and text shown once the last step is done.
+const FINISHED: (&str, &str) = (
+    "You are ready",
+    "That was the tour: inputs and lamps, ST, ladder, Step and the timeline, exercises. Help opens it again, with the keyboard shortcuts and the problems explained.",
+);
+
 /// What the page showed when a step began, to tell when the student has done it.
 #[derive(Debug, Clone, PartialEq)]
 enum Mark {
@@ -203,39 +209,32 @@ pub fn TourPanel() -> impl IntoView {
     move || {
         let step = tour.step.get()?;
         let total = STEPS.len();
-        let body = match STEPS.get(step) {
-            Some(s) => view! {
-                <p class="tour-count" aria-live="polite">{format!("Step {} of {total}", step + 1)}</p>
-                <div class="tour-body">
-                    <h2 class="tour-title">{s.title}
-                        {move || done.get().then(|| view! { <span class="tour-done">" ✓ Done"</span> })}
-                    </h2>
-                    <p class="tour-text">{s.text}</p>
-                </div>
-                <div class="tour-actions">
-                    <button disabled=step == 0 on:click=move |_| tour.go(step.saturating_sub(1))>"Back"</button>
-                    <button class="primary" on:click=move |_| tour.go(step + 1)>"Next"</button>
-                    <button on:click=move |_| tour.skip()>"Skip tour"</button>
-                </div>
-            }
-            .into_any(),
-            None => view! {
-                <p class="tour-count" aria-live="polite">"Finished"</p>
-                <div class="tour-body">
-                    <h2 class="tour-title">"You are ready"</h2>
-                    <p class="tour-text">"That was the tour: inputs and lamps, ST, ladder, Step and the timeline, exercises. Help opens it again, with the keyboard shortcuts and the problems explained."</p>
-                </div>
-                <div class="tour-actions">
-                    <button disabled=false on:click=move |_| tour.go(total - 1)>"Back"</button>
-                    <button class="primary" on:click=move |_| tour.step.set(None)>"Close tour"</button>
-                </div>
-            }
-            .into_any(),
+        let (count, title, text) = match STEPS.get(step) {
+            Some(s) => (format!("Step {} of {total}", step + 1), s.title, s.text),
+            None => ("Finished".to_string(), FINISHED.0, FINISHED.1),
         };
+        let more = step < total;
         Some(view! {
             <section class="tour" role="region" aria-label="Start here">
                 <p class="tour-name">"Start here"</p>
-                {body}
+                <p class="tour-count" aria-live="polite">{count}</p>
+                <div class="tour-body">
+                    <h2 class="tour-title">{title}
+                        {move || done.get().then_some(view! { <span class="tour-done">" ✓ Done"</span> })}
+                    </h2>
+                    <p class="tour-text">{text}</p>
+                </div>
+                <div class="tour-actions">
+                    <button disabled=step == 0 on:click=move |_| tour.go(step.saturating_sub(1))>"Back"</button>
+                    {if more {
+                        view! {
+                            <button class="primary" on:click=move |_| tour.go(step + 1)>"Next"</button>
+                            <button on:click=move |_| tour.skip()>"Skip tour"</button>
+                        }.into_any()
+                    } else {
+                        view! { <button class="primary" on:click=move |_| tour.step.set(None)>"Close tour"</button> }.into_any()
+                    }}
+                </div>
             </section>
         })
     }

@@ -76,7 +76,7 @@ impl AppState {
     pub fn check_now(&self) {
         let project = self.project.get_untracked();
         let build = build_project(&project);
-        self.last_checked.set_value(Some(project.clone()));
+        self.check_pending.set_value(false);
         self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
         let charts: Vec<String> =
             plc_core::sfc::outline::outlines(&project.source).into_iter().map(|o| o.pou).collect();

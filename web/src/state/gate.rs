@@ -65,13 +65,11 @@ impl AppState {
         self.diagnostics.with_untracked(|ds| ds.iter().filter(|d| d.error).count())
     }
 
-    /// Checks now when the project changed since its last check (the ST editor checks a
-    /// moment after typing stops; Run must not act on the text before that).
-    fn check_if_changed(&self) {
-        let changed = self
-            .last_checked
-            .with_value(|c| self.project.with_untracked(|p| c.as_ref() != Some(p)));
-        if changed {
+    /// Checks now when an edit has not been checked yet (the editors check a moment after
+    /// an edit; Run must not act on the text before that). Only then: a check powers a
+    /// fresh simulator on.
+    pub fn check_if_pending(&self) {
+        if self.check_pending.get_value() {
             self.check_now();
         }
     }
@@ -80,7 +78,7 @@ impl AppState {
     /// (with a link to the first problem and, when a version built before, the choice to
     /// run that one).
     pub(super) fn may_scan(&self) -> bool {
-        self.check_if_changed();
+        self.check_if_pending();
         let has_sim = self.sim.with_value(Option::is_some);
         match gate(self.error_count(), has_sim, self.run_old.get_untracked()) {
             Gate::Go => {

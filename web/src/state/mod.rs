@@ -142,8 +142,9 @@ pub struct AppState {
     pub stale: RwSignal<bool>,
     /// The user chose `Run the last version that built` (until the project builds again).
     pub run_old: RwSignal<bool>,
-    /// The project as it was last checked (Run checks first when it changed since).
-    last_checked: StoredValue<Option<Project>>,
+    /// The project changed since its last check (the editors check a moment after an
+    /// edit; Run checks first when that moment has not come yet).
+    check_pending: StoredValue<bool>,
     /// Bumped by every Step and Step N that scanned (the guided tour waits for one).
     pub steps_taken: RwSignal<u64>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
@@ -209,7 +210,7 @@ impl AppState {
             sim: StoredValue::new(None),
             stale: RwSignal::new(false),
             run_old: RwSignal::new(false),
-            last_checked: StoredValue::new(None),
+            check_pending: StoredValue::new(false),
             steps_taken: RwSignal::new(0),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),
@@ -240,13 +241,15 @@ impl AppState {
     /// Checks and saves the project a moment after the last call (the diagram editors call
     /// it after every edit, as the ST editor checks after a pause in typing).
     pub fn check_soon(&self) {
+        self.check_pending.set_value(true);
         self.check_generation.update_value(|g| *g += 1);
         let generation = self.check_generation.get_value();
         let state = *self;
         set_timeout(
             move || {
                 if state.check_generation.try_get_value() == Some(generation) {
-                    state.check_now();
+                    // Run may have checked the edit already (a check restarts the PLC).
+                    state.check_if_pending();
                     state.save();
                 }
             },
@@ -293,6 +296,7 @@ impl AppState {
 
     /// Replaces the source text (from the editor). The caller debounces checks and saves.
     pub fn set_source(&self, text: String) {
+        self.check_pending.set_value(true);
         self.project.update(|p| p.source = text);
     }
 
