@@ -25,17 +25,21 @@ pub fn App() -> impl IntoView {
     provide_context(state);
     let exercises = Exercises::new(state);
     provide_context(exercises);
-    provide_context(Tour::new());
+    let tour = Tour::new();
+    provide_context(tour);
+    tour.watch(state, exercises);
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
     view! {
         <Header/>
         <Banner/>
-        <TourPanel/>
         <Show when=catalogue>
+            <TourPanel/>
             <Catalogue/>
         </Show>
         // Kept while the catalogue is shown (hidden), so the editors keep their state.
         <main class="workspace" hidden=catalogue>
+            // At the top of the simulation column: the editors never move for it.
+            <TourPanel/>
             <section class="editor-pane" aria-label="Program">
                 <ExercisePanel/>
                 <PouPane/>

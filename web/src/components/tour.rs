@@ -1,6 +1,6 @@
-//! `Start here`: a short guided lesson shown on the first visit, in a strip under the
-//! header (never modal, never over the page: it keeps one height, so nothing under it moves
-//! while it goes on). Each step says what to do, marks the controls to use, and moves on
+//! `Start here`: a short guided lesson shown on the first visit, in a box at the top of the
+//! simulation column (never modal, never over the page, and the editors do not move when it
+//! shows, changes or closes; above the exercise catalogue while that is shown). Each step says what to do, marks the controls to use, and moves on
 //! when the student has done it (an input flipped, the ST edited, a rung drawn, a Step
 //! pressed, an exercise opened) or on `Next`. Finished or skipped, it stays closed after
 //! reloads; `Help` → `Start here` opens it again.
@@ -111,13 +111,15 @@ fn drawn_rungs(project: &Project) -> usize {
 pub struct Tour {
     /// The step shown (`None`: closed; `STEPS.len()`: finished).
     pub step: RwSignal<Option<usize>>,
+    /// The step's action was seen: it says so for a moment, then the next step shows.
+    done: RwSignal<bool>,
 }
 
 impl Tour {
     /// Open at the first step unless it was finished or skipped in this browser.
     pub fn new() -> Self {
         let done = LocalStorage::open().get(DONE_KEY).ok().flatten().is_some();
-        Tour { step: RwSignal::new((!done).then_some(0)) }
+        Tour { step: RwSignal::new((!done).then_some(0)), done: RwSignal::new(false) }
     }
 
     /// Opens the tour at its first step (`Help` → `Start here`).
@@ -167,45 +169,48 @@ fn point_at(target: Option<&str>) {
     };
 }
 
+impl Tour {
+    /// Watches what the current step asks for, from the moment the step began, and marks
+    /// the step's controls on the page (once for the page: the strip is shown in two
+    /// places, the workspace and the exercise catalogue).
+    pub fn watch(self, state: AppState, ex: Exercises) {
+        let (tour, done) = (self, self.done);
+        Effect::new(move |prev: Option<Option<(usize, Mark)>>| {
+            let step = tour.step.get().filter(|s| *s < STEPS.len())?;
+            let now = mark(state, ex, step);
+            match prev.flatten() {
+                Some((s, before)) if s == step => {
+                    if !done.get_untracked() && acted(&before, &now) {
+                        done.set(true);
+                        set_timeout(
+                            move || {
+                                if tour.step.try_get_untracked() == Some(Some(step)) {
+                                    tour.go(step + 1);
+                                }
+                            },
+                            ADVANCE_DELAY,
+                        );
+                    }
+                    Some((s, before))
+                }
+                _ => {
+                    done.set(false);
+                    Some((step, now))
+                }
+            }
+        });
+        Effect::new(move |_| {
+            let target = tour.step.get().and_then(|s| STEPS.get(s)).map(|s| s.target);
+            point_at(target);
+        });
+    }
+}
+
 /// The `Start here` strip.
 #[component]
 pub fn TourPanel() -> impl IntoView {
-    let state = expect_context::<AppState>();
-    let ex = expect_context::<Exercises>();
     let tour = expect_context::<Tour>();
-    // The step's action was seen: it says so for a moment, then the next step shows.
-    let done = RwSignal::new(false);
-
-    // Watches what the current step asks for, from the moment the step began.
-    Effect::new(move |prev: Option<Option<(usize, Mark)>>| {
-        let step = tour.step.get().filter(|s| *s < STEPS.len())?;
-        let now = mark(state, ex, step);
-        match prev.flatten() {
-            Some((s, before)) if s == step => {
-                if !done.get_untracked() && acted(&before, &now) {
-                    done.set(true);
-                    set_timeout(
-                        move || {
-                            if tour.step.try_get_untracked() == Some(Some(step)) {
-                                tour.go(step + 1);
-                            }
-                        },
-                        ADVANCE_DELAY,
-                    );
-                }
-                Some((s, before))
-            }
-            _ => {
-                done.set(false);
-                Some((step, now))
-            }
-        }
-    });
-    Effect::new(move |_| {
-        let target = tour.step.get().and_then(|s| STEPS.get(s)).map(|s| s.target);
-        point_at(target);
-    });
-
+    let done = tour.done;
     move || {
         let step = tour.step.get()?;
         let total = STEPS.len();
