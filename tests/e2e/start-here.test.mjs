@@ -105,8 +105,9 @@ test('a first visit walks Start here to its end by doing each step; it stays clo
   // 4. Press Step and read the timeline.
   await at(4);
   assert.equal(await target(page), 'step');
-  await page.getByRole('checkbox', { name: 'Chart Motor' }).check();
+  await page.evaluate(() => window.scrollTo(0, 0));
   await shot(4);
+  await page.getByRole('checkbox', { name: 'Chart Motor' }).check();
   await page.getByRole('button', { name: 'Step', exact: true }).click();
   await page.getByRole('img', { name: 'Timeline chart' }).waitFor();
 

@@ -188,7 +188,10 @@ pub fn HelpMenu() -> impl IntoView {
                 <h2 id="shortcuts-title">"Keyboard shortcuts"</h2>
                 <p class="muted">"On a Mac, Cmd works where Ctrl is written."</p>
                 // Fixed text of this file: one block of HTML, not a view per row.
-                <div inner_html=shortcuts_html()></div>
+                // Focused first (not the Close button below), so the list opens at its top
+                // and the arrow keys scroll it.
+                <div class="shortcut-list" tabindex="0" autofocus=true aria-label="Shortcuts"
+                    inner_html=shortcuts_html()></div>
                 <form method="dialog" class="dialog-actions">
                     <button class="primary">"Close"</button>
                 </form>

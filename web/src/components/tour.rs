@@ -39,7 +39,7 @@ const STEPS: [Step; 5] = [
     },
     Step {
         title: "Change one line of ST",
-        text: "In the ST editor, change the last line to Motor := Start AND NOT Stop; and watch the problems list: once it builds, the PLC runs your change and Motor follows Start.",
+        text: "In the ST editor, change Motor := (Start OR Motor) AND NOT Stop; to Motor := Start AND NOT Stop; and watch Problems: once it builds, the PLC runs your change, and Motor is on only while Start is ticked.",
         target: "st",
     },
     Step {
