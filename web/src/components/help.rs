@@ -3,7 +3,6 @@
 //! explained` (the static page of every problem code, `problems.html`).
 
 use leptos::ev;
-use leptos::html;
 use leptos::prelude::*;
 
 use crate::components::tour::Tour;
@@ -64,9 +63,22 @@ const SHORTCUTS: &[(&str, &[(&str, &str)])] = &[
     ),
 ];
 
-/// The shortcut tables as HTML (the text is this file's constants).
+/// The id of the shortcuts dialog.
+const DIALOG_ID: &str = "shortcuts-dialog";
+
+/// The menu's items: `data-help` names what each does.
+const MENU_HTML: &str = concat!(
+    r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="tour">Start here</button></li>"#,
+    r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="keys">Keyboard shortcuts</button></li>"#,
+    r#"<li role="none"><a role="menuitem" tabindex="-1" data-help="page" href="problems.html" target="_blank" rel="noopener">Problems explained</a></li>"#,
+);
+
+/// The shortcuts dialog's content: the title, the list (focused when it opens, so it
+/// opens at its top and the arrow keys scroll it) and `Close`.
 fn shortcuts_html() -> String {
-    let mut html = String::new();
+    let mut html = String::from(
+        r#"<h2 id="shortcuts-title">Keyboard shortcuts</h2><p class="muted">On a Mac, Cmd works where Ctrl is written.</p><div class="shortcut-list" tabindex="0" autofocus aria-label="Shortcuts">"#,
+    );
     for (area, keys) in SHORTCUTS {
         html.push_str(&format!("<table class=\"shortcut-table\"><caption>{area}</caption><tbody>"));
         for (k, what) in *keys {
@@ -76,126 +88,126 @@ fn shortcuts_html() -> String {
         }
         html.push_str("</tbody></table>");
     }
+    html.push_str(r#"</div><form method="dialog" class="dialog-actions"><button class="primary">Close</button></form>"#);
     html
 }
 
-/// The `Help` button and its menu, with the shortcuts dialog.
+/// The menu's items, in order.
+fn items(menu: &web_sys::Element) -> Vec<web_sys::HtmlElement> {
+    use wasm_bindgen::JsCast;
+    let Ok(list) = menu.query_selector_all("[role=menuitem]") else { return Vec::new() };
+    (0..list.length()).filter_map(|i| list.item(i)?.dyn_into().ok()).collect()
+}
+
+/// Focuses the item at `index` (from the end when negative) of the open menu, or the `Help`
+/// button itself (`None`).
+fn focus_in_menu(index: Option<i32>) {
+    use wasm_bindgen::JsCast;
+    let Some(doc) = web_sys::window().and_then(|w| w.document()) else { return };
+    let target: Option<web_sys::HtmlElement> = match index {
+        None => {
+            doc.query_selector(".help-menu > button").ok().flatten().and_then(|e| e.dyn_into().ok())
+        }
+        Some(i) => doc.query_selector(".help-menu .menu").ok().flatten().and_then(|menu| {
+            let items = items(&menu);
+            let n = items.len() as i32;
+            (n > 0).then(|| items[i.rem_euclid(n) as usize].clone())
+        }),
+    };
+    if let Some(t) = target {
+        let _ = t.focus();
+    }
+}
+
+/// The `Help` button and its menu, with the shortcuts dialog. The menu and the dialog are
+/// fixed markup handled by one listener each (far less code in the page than a view per
+/// item; the first load has a size budget).
 #[component]
 pub fn HelpMenu() -> impl IntoView {
+    use wasm_bindgen::JsCast;
     let tour = expect_context::<Tour>();
     let open = RwSignal::new(false);
-    let wrap = NodeRef::<html::Div>::new();
-    let button = NodeRef::<html::Button>::new();
-    let menu = NodeRef::<html::Ul>::new();
-    let dialog = NodeRef::<html::Dialog>::new();
-
-    let items = move || -> Vec<web_sys::HtmlElement> {
-        use wasm_bindgen::JsCast;
-        let Some(menu) = menu.get_untracked() else { return Vec::new() };
-        let Ok(list) = menu.query_selector_all("[role=menuitem]") else { return Vec::new() };
-        (0..list.length())
-            .filter_map(|i| list.item(i)?.dyn_into::<web_sys::HtmlElement>().ok())
-            .collect()
-    };
-    let focus_item = move |index: i32| {
-        let items = items();
-        if items.is_empty() {
-            return;
+    let show = move |on: bool| {
+        open.set(on);
+        if on {
+            request_animation_frame(|| focus_in_menu(Some(0)));
         }
-        let n = items.len() as i32;
-        let _ = items[index.rem_euclid(n) as usize].focus();
     };
-    let close = move |refocus: bool| {
-        open.set(false);
-        if refocus {
-            if let Some(b) = button.get_untracked() {
-                let _ = b.focus();
+    let on_click = move |e: ev::MouseEvent| {
+        let target = e.target().and_then(|t| t.dyn_into::<web_sys::Element>().ok());
+        let action = target
+            .and_then(|t| t.closest("[data-help]").ok().flatten())
+            .and_then(|t| t.get_attribute("data-help"));
+        match action.as_deref() {
+            Some("menu") => show(!open.get_untracked()),
+            Some("tour") => {
+                open.set(false);
+                tour.restart();
             }
+            Some("keys") => {
+                open.set(false);
+                let dialog = web_sys::window()
+                    .and_then(|w| w.document())
+                    .and_then(|d| d.get_element_by_id(DIALOG_ID))
+                    .and_then(|d| d.dyn_into::<web_sys::HtmlDialogElement>().ok());
+                if let Some(d) = dialog {
+                    let _ = d.show_modal();
+                }
+            }
+            Some("page") => open.set(false),
+            _ => {}
         }
     };
-    // The menu's first item takes the focus when it opens.
-    Effect::new(move |_| {
-        if open.get() {
-            request_animation_frame(move || focus_item(0));
-        }
-    });
-    // A press anywhere else closes it.
-    let outside = window_event_listener(ev::pointerdown, move |e| {
-        use wasm_bindgen::JsCast;
+    let on_key = move |e: ev::KeyboardEvent| {
+        let key = e.key();
         if !open.get_untracked() {
+            if key == "ArrowDown" {
+                e.prevent_default();
+                show(true);
+            }
             return;
         }
-        let target = e.target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
-        let inside = wrap.get_untracked().is_some_and(|w| w.contains(target.as_ref()));
+        let active = web_sys::window().and_then(|w| w.document()).and_then(|d| d.active_element());
+        let menu = web_sys::window()
+            .and_then(|w| w.document())
+            .and_then(|d| d.query_selector(".help-menu .menu").ok().flatten());
+        let at = menu
+            .map(|m| items(&m))
+            .and_then(|items| {
+                items.iter().position(|i| active.as_ref().is_some_and(|a| a.is_same_node(Some(i))))
+            })
+            .map_or(-1, |p| p as i32);
+        let to = match key.as_str() {
+            "ArrowDown" => Some(at + 1),
+            "ArrowUp" if at < 0 => Some(-1),
+            "ArrowUp" => Some(at - 1),
+            "Home" => Some(0),
+            "End" => Some(-1),
+            "Escape" => {
+                open.set(false);
+                None
+            }
+            _ => return,
+        };
+        e.prevent_default();
+        focus_in_menu(to);
+    };
+    // Focus leaving the button and the menu (Tab, a click elsewhere) closes it.
+    let on_focusout = move |e: ev::FocusEvent| {
+        let next = e.related_target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
+        let current = e.current_target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
+        let inside = current.is_some_and(|c| next.is_some_and(|n| c.contains(Some(&n))));
         if !inside {
             open.set(false);
         }
-    });
-    on_cleanup(move || outside.remove());
-
-    let on_menu_key = move |e: ev::KeyboardEvent| {
-        let items = items();
-        let active = web_sys::window().and_then(|w| w.document()).and_then(|d| d.active_element());
-        let at = items
-            .iter()
-            .position(|i| active.as_ref().is_some_and(|a| a.is_same_node(Some(i))))
-            .map_or(-1, |p| p as i32);
-        match e.key().as_str() {
-            "ArrowDown" => focus_item(at + 1),
-            "ArrowUp" => focus_item(if at < 0 { -1 } else { at - 1 }),
-            "Home" => focus_item(0),
-            "End" => focus_item(-1),
-            "Escape" => close(true),
-            "Tab" => {
-                open.set(false);
-                return;
-            }
-            _ => return,
-        }
-        e.prevent_default();
     };
-    let show_shortcuts = move |_| {
-        open.set(false);
-        if let Some(d) = dialog.get_untracked() {
-            let _ = d.show_modal();
-        }
-    };
-
     view! {
-        <div class="help-menu" node_ref=wrap>
-            <button class="header-button" node_ref=button aria-haspopup="menu"
-                aria-expanded=move || open.get().to_string()
-                on:click=move |_| open.update(|o| *o = !*o)
-                on:keydown=move |e: ev::KeyboardEvent| if e.key() == "ArrowDown" {
-                    e.prevent_default();
-                    open.set(true);
-                }>"Help"</button>
-            <ul class="menu" role="menu" aria-label="Help" node_ref=menu hidden=move || !open.get()
-                on:keydown=on_menu_key>
-                <li role="none">
-                    <button role="menuitem" tabindex="-1"
-                        on:click=move |_| { close(false); tour.restart(); }>"Start here"</button>
-                </li>
-                <li role="none">
-                    <button role="menuitem" tabindex="-1" on:click=show_shortcuts>"Keyboard shortcuts"</button>
-                </li>
-                <li role="none">
-                    <a role="menuitem" tabindex="-1" href="problems.html" target="_blank" rel="noopener"
-                        on:click=move |_| close(false)>"Problems explained"</a>
-                </li>
-            </ul>
-            <dialog class="app-dialog shortcuts" node_ref=dialog aria-labelledby="shortcuts-title">
-                <h2 id="shortcuts-title">"Keyboard shortcuts"</h2>
-                <p class="muted">"On a Mac, Cmd works where Ctrl is written."</p>
-                // Fixed text of this file: one block of HTML, not a view per row.
-                // Focused first (not the Close button below), so the list opens at its top
-                // and the arrow keys scroll it.
-                <div class="shortcut-list" tabindex="0" autofocus=true aria-label="Shortcuts"
-                    inner_html=shortcuts_html()></div>
-                <form method="dialog" class="dialog-actions">
-                    <button class="primary">"Close"</button>
-                </form>
-            </dialog>
+        <div class="help-menu" on:click=on_click on:keydown=on_key on:focusout=on_focusout>
+            <button class="header-button" data-help="menu" aria-haspopup="menu"
+                aria-expanded=move || open.get().to_string()>"Help"</button>
+            <ul class="menu" role="menu" aria-label="Help" hidden=move || !open.get() inner_html=MENU_HTML></ul>
+            <dialog id=DIALOG_ID class="app-dialog shortcuts" aria-labelledby="shortcuts-title"
+                inner_html=shortcuts_html()></dialog>
         </div>
     }
 }

@@ -112,7 +112,7 @@ pub struct Tour {
     /// The step shown (`None`: closed; `STEPS.len()`: finished).
     pub step: RwSignal<Option<usize>>,
     /// The step's action was seen: it says so for a moment, then the next step shows.
-    done: RwSignal<bool>,
+    pub done: RwSignal<bool>,
 }
 
 impl Tour {
@@ -206,40 +206,70 @@ impl Tour {
     }
 }
 
-/// The `Start here` strip.
+/// The strip's content at `step` (`STEPS.len()`: finished); `done`: the step's action was
+/// seen. Fixed markup whose buttons name their action in `data-tour-action`.
+fn tour_html(step: usize, done: bool) -> String {
+    let total = STEPS.len();
+    let (count, title, text) = match STEPS.get(step) {
+        Some(s) => (format!("Step {} of {total}", step + 1), s.title, s.text),
+        None => ("Finished".to_string(), FINISHED.0, FINISHED.1),
+    };
+    let done = if done { r#"<span class="tour-done"> ✓ Done</span>"# } else { "" };
+    let back = if step == 0 { " disabled" } else { "" };
+    let buttons = if step < total {
+        r#"<button class="primary" data-tour-action="next">Next</button><button data-tour-action="skip">Skip tour</button>"#
+    } else {
+        r#"<button class="primary" data-tour-action="close">Close tour</button>"#
+    };
+    format!(
+        r#"<p class="tour-name">Start here</p><p class="tour-count">{count}</p><div class="tour-body"><h2 class="tour-title">{title}{done}</h2><p class="tour-text">{text}</p></div><div class="tour-actions"><button data-tour-action="back"{back}>Back</button>{buttons}</div>"#
+    )
+}
+
+/// The `Start here` strip. Its content is fixed markup handled by one click listener (far
+/// less code in the page than a view per element; the first load has a size budget).
 #[component]
 pub fn TourPanel() -> impl IntoView {
+    use wasm_bindgen::JsCast;
     let tour = expect_context::<Tour>();
-    let done = tour.done;
+    let on_click = move |e: leptos::ev::MouseEvent| {
+        let action = e
+            .target()
+            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+            .and_then(|t| t.closest("[data-tour-action]").ok().flatten())
+            .and_then(|t| t.get_attribute("data-tour-action"));
+        let Some(step) = tour.step.get_untracked() else { return };
+        match action.as_deref() {
+            Some("back") => tour.go(step.saturating_sub(1)),
+            Some("next") => tour.go(step + 1),
+            Some("skip") => return tour.skip(),
+            Some("close") => return tour.step.set(None),
+            _ => return,
+        }
+        // The buttons are made anew: the focus goes back to the one pressed (or the first
+        // button that is there now).
+        let action = action.unwrap_or_default();
+        request_animation_frame(move || {
+            let doc = web_sys::window().and_then(|w| w.document());
+            let find = |sel: &str| doc.as_ref().and_then(|d| d.query_selector(sel).ok().flatten());
+            let button = find(&format!(".tour [data-tour-action={action}]:not([disabled])"))
+                .or_else(|| find(".tour .primary"))
+                .and_then(|b| b.dyn_into::<web_sys::HtmlElement>().ok());
+            if let Some(b) = button {
+                let _ = b.focus();
+            }
+        });
+    };
     move || {
         let step = tour.step.get()?;
-        let total = STEPS.len();
-        let (count, title, text) = match STEPS.get(step) {
-            Some(s) => (format!("Step {} of {total}", step + 1), s.title, s.text),
-            None => ("Finished".to_string(), FINISHED.0, FINISHED.1),
+        let spoken = match STEPS.get(step) {
+            Some(s) => format!("Start here, step {} of {}: {}", step + 1, STEPS.len(), s.title),
+            None => FINISHED.0.to_string(),
         };
-        let more = step < total;
         Some(view! {
-            <section class="tour" role="region" aria-label="Start here">
-                <p class="tour-name">"Start here"</p>
-                <p class="tour-count" aria-live="polite">{count}</p>
-                <div class="tour-body">
-                    <h2 class="tour-title">{title}
-                        {move || done.get().then_some(view! { <span class="tour-done">" ✓ Done"</span> })}
-                    </h2>
-                    <p class="tour-text">{text}</p>
-                </div>
-                <div class="tour-actions">
-                    <button disabled=step == 0 on:click=move |_| tour.go(step.saturating_sub(1))>"Back"</button>
-                    {if more {
-                        view! {
-                            <button class="primary" on:click=move |_| tour.go(step + 1)>"Next"</button>
-                            <button on:click=move |_| tour.skip()>"Skip tour"</button>
-                        }.into_any()
-                    } else {
-                        view! { <button class="primary" on:click=move |_| tour.step.set(None)>"Close tour"</button> }.into_any()
-                    }}
-                </div>
+            <section class="tour" role="region" aria-label="Start here" on:click=on_click>
+                <div class="tour-grid" inner_html=move || tour_html(step, tour.done.get())></div>
+                <p class="visually-hidden" aria-live="polite">{spoken}</p>
             </section>
         })
     }
@@ -285,5 +315,24 @@ mod tests {
         };
         assert_eq!(drawn_rungs(&p), 1);
         assert_eq!(STEPS.len(), 5);
+    }
+
+    #[test]
+    fn the_strip_names_the_step_and_offers_what_fits() {
+        let first = tour_html(0, false);
+        assert!(first.contains(r#"<p class="tour-count">Step 1 of 5</p>"#), "{first}");
+        assert!(first.contains(r#"<button data-tour-action="back" disabled>Back</button>"#));
+        assert!(first.contains(">Next<") && first.contains(">Skip tour<") && !first.contains("✓"));
+        let done = tour_html(2, true);
+        assert!(done.contains("Draw one rung<span class=\"tour-done\"> ✓ Done</span>"), "{done}");
+        assert!(done.contains(r#"<button data-tour-action="back">Back</button>"#));
+        let end = tour_html(5, false);
+        assert!(
+            end.contains(">Finished<") && end.contains(">Close tour<") && !end.contains(">Next<")
+        );
+        // Inserted as HTML: the texts must hold no markup of their own.
+        for t in STEPS.iter().flat_map(|s| [s.title, s.text]).chain([FINISHED.0, FINISHED.1]) {
+            assert!(!t.contains(['<', '>', '&']), "{t}");
+        }
     }
 }
