@@ -11,7 +11,7 @@ use crate::components::{
     pou_pane::PouPane,
     scene::ScenePanel,
     timeline::Timeline,
-    tour::{Tour, TourPanel},
+    tour::{tour_panel, Tour},
     variables::Variables,
 };
 use crate::exercises::{Catalogue, ExercisePanel, Exercises, Screen};
@@ -33,13 +33,13 @@ pub fn App() -> impl IntoView {
         <Header/>
         <Banner/>
         <Show when=catalogue>
-            <TourPanel/>
+            {tour_panel()}
             <Catalogue/>
         </Show>
         // Kept while the catalogue is shown (hidden), so the editors keep their state.
         <main class="workspace" hidden=catalogue>
             // At the top of the simulation column: the editors never move for it.
-            <TourPanel/>
+            {tour_panel()}
             <section class="editor-pane" aria-label="Program">
                 <ExercisePanel/>
                 <PouPane/>

@@ -66,12 +66,22 @@ const SHORTCUTS: &[(&str, &[(&str, &str)])] = &[
 /// The id of the shortcuts dialog.
 const DIALOG_ID: &str = "shortcuts-dialog";
 
-/// The menu's items: `data-help` names what each does.
-const MENU_HTML: &str = concat!(
-    r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="tour">Start here</button></li>"#,
-    r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="keys">Keyboard shortcuts</button></li>"#,
-    r#"<li role="none"><a role="menuitem" tabindex="-1" data-help="page" href="problems.html" target="_blank" rel="noopener">Problems explained</a></li>"#,
-);
+/// The button, the menu (closed; `data-help` names what each item does) and the dialog.
+fn menu_html() -> String {
+    let mut html = String::from(concat!(
+        r#"<button class="header-button" data-help="menu" aria-haspopup="menu" aria-expanded="false">Help</button>"#,
+        r#"<ul class="menu" role="menu" aria-label="Help" hidden>"#,
+        r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="tour">Start here</button></li>"#,
+        r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="keys">Keyboard shortcuts</button></li>"#,
+        r#"<li role="none"><a role="menuitem" tabindex="-1" data-help="page" href="problems.html" target="_blank" rel="noopener">Problems explained</a></li>"#,
+        r#"</ul>"#,
+    ));
+    html.push_str(&format!(
+        r#"<dialog id="{DIALOG_ID}" class="app-dialog shortcuts" aria-labelledby="shortcuts-title">{}</dialog>"#,
+        shortcuts_html()
+    ));
+    html
+}
 
 /// The shortcuts dialog's content: the title, the list (focused when it opens, so it
 /// opens at its top and the arrow keys scroll it) and `Close`.
@@ -92,26 +102,34 @@ fn shortcuts_html() -> String {
     html
 }
 
-/// The menu's items, in order.
-fn items(menu: &web_sys::Element) -> Vec<web_sys::HtmlElement> {
+/// The first element under `root` that `selector` finds, as an HTML element.
+fn find(root: &web_sys::Element, selector: &str) -> Option<web_sys::HtmlElement> {
     use wasm_bindgen::JsCast;
-    let Ok(list) = menu.query_selector_all("[role=menuitem]") else { return Vec::new() };
-    (0..list.length()).filter_map(|i| list.item(i)?.dyn_into().ok()).collect()
+    root.query_selector(selector).ok().flatten()?.dyn_into().ok()
 }
 
-/// Focuses the item at `index` (from the end when negative) of the open menu, or the `Help`
-/// button itself (`None`).
-fn focus_in_menu(index: Option<i32>) {
+/// Opens or closes the menu under `root` (its first item takes the focus when it opens,
+/// the `Help` button when it closes from the keyboard).
+fn set_open(root: &web_sys::Element, open: bool, focus: bool) {
+    let (Some(button), Some(menu)) = (find(root, "[data-help=menu]"), find(root, ".menu")) else {
+        return;
+    };
+    let _ = button.set_attribute("aria-expanded", if open { "true" } else { "false" });
+    menu.set_hidden(!open);
+    if focus {
+        focus_item(root, if open { Some(0) } else { None });
+    }
+}
+
+/// Focuses the menu item at `index` (from the end when negative), or the `Help` button
+/// (`None`).
+fn focus_item(root: &web_sys::Element, index: Option<i32>) {
     use wasm_bindgen::JsCast;
-    let Some(doc) = web_sys::window().and_then(|w| w.document()) else { return };
-    let target: Option<web_sys::HtmlElement> = match index {
-        None => {
-            doc.query_selector(".help-menu > button").ok().flatten().and_then(|e| e.dyn_into().ok())
-        }
-        Some(i) => doc.query_selector(".help-menu .menu").ok().flatten().and_then(|menu| {
-            let items = items(&menu);
-            let n = items.len() as i32;
-            (n > 0).then(|| items[i.rem_euclid(n) as usize].clone())
+    let target = match index {
+        None => find(root, "[data-help=menu]"),
+        Some(i) => root.query_selector_all("[role=menuitem]").ok().and_then(|list| {
+            let n = list.length() as i32;
+            (n > 0).then(|| list.item(i.rem_euclid(n) as u32)?.dyn_into().ok()).flatten()
         }),
     };
     if let Some(t) = target {
@@ -119,96 +137,89 @@ fn focus_in_menu(index: Option<i32>) {
     }
 }
 
-/// The `Help` button and its menu, with the shortcuts dialog. The menu and the dialog are
-/// fixed markup handled by one listener each (far less code in the page than a view per
-/// item; the first load has a size budget).
-#[component]
-pub fn HelpMenu() -> impl IntoView {
+/// The `Help` button and its menu, with the shortcuts dialog: fixed markup handled by one
+/// listener per event kind (far less code in the page than a view per element; the first
+/// load has a size budget).
+pub fn help_menu() -> impl IntoView {
     use wasm_bindgen::JsCast;
     let tour = expect_context::<Tour>();
-    let open = RwSignal::new(false);
-    let show = move |on: bool| {
-        open.set(on);
-        if on {
-            request_animation_frame(|| focus_in_menu(Some(0)));
-        }
-    };
+    let root_of =
+        |e: &web_sys::Event| e.current_target().and_then(|t| t.dyn_into::<web_sys::Element>().ok());
     let on_click = move |e: ev::MouseEvent| {
-        let target = e.target().and_then(|t| t.dyn_into::<web_sys::Element>().ok());
-        let action = target
+        let Some(root) = root_of(&e) else { return };
+        let action = e
+            .target()
+            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
             .and_then(|t| t.closest("[data-help]").ok().flatten())
             .and_then(|t| t.get_attribute("data-help"));
+        let open = find(&root, ".menu").is_some_and(|m| !m.hidden());
         match action.as_deref() {
-            Some("menu") => show(!open.get_untracked()),
+            Some("menu") => set_open(&root, !open, true),
             Some("tour") => {
-                open.set(false);
+                set_open(&root, false, false);
                 tour.restart();
             }
             Some("keys") => {
-                open.set(false);
-                let dialog = web_sys::window()
-                    .and_then(|w| w.document())
-                    .and_then(|d| d.get_element_by_id(DIALOG_ID))
+                set_open(&root, false, false);
+                let dialog = root
+                    .query_selector(&format!("#{DIALOG_ID}"))
+                    .ok()
+                    .flatten()
                     .and_then(|d| d.dyn_into::<web_sys::HtmlDialogElement>().ok());
                 if let Some(d) = dialog {
                     let _ = d.show_modal();
                 }
             }
-            Some("page") => open.set(false),
+            Some("page") => set_open(&root, false, false),
             _ => {}
         }
     };
     let on_key = move |e: ev::KeyboardEvent| {
+        let Some(root) = root_of(&e) else { return };
+        let Some(menu) = find(&root, ".menu") else { return };
         let key = e.key();
-        if !open.get_untracked() {
-            if key == "ArrowDown" {
+        if menu.hidden() {
+            let on_button = e
+                .target()
+                .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+                .is_some_and(|t| t.get_attribute("data-help").as_deref() == Some("menu"));
+            if key == "ArrowDown" && on_button {
                 e.prevent_default();
-                show(true);
+                set_open(&root, true, true);
             }
             return;
         }
         let active = web_sys::window().and_then(|w| w.document()).and_then(|d| d.active_element());
-        let menu = web_sys::window()
-            .and_then(|w| w.document())
-            .and_then(|d| d.query_selector(".help-menu .menu").ok().flatten());
-        let at = menu
-            .map(|m| items(&m))
-            .and_then(|items| {
-                items.iter().position(|i| active.as_ref().is_some_and(|a| a.is_same_node(Some(i))))
+        let items = root.query_selector_all("[role=menuitem]").ok();
+        let at = items
+            .and_then(|list| {
+                (0..list.length()).position(|i| {
+                    list.item(i)
+                        .is_some_and(|n| active.as_ref().is_some_and(|a| a.is_same_node(Some(&n))))
+                })
             })
             .map_or(-1, |p| p as i32);
-        let to = match key.as_str() {
-            "ArrowDown" => Some(at + 1),
-            "ArrowUp" if at < 0 => Some(-1),
-            "ArrowUp" => Some(at - 1),
-            "Home" => Some(0),
-            "End" => Some(-1),
-            "Escape" => {
-                open.set(false);
-                None
-            }
+        match key.as_str() {
+            "ArrowDown" => focus_item(&root, Some(at + 1)),
+            "ArrowUp" => focus_item(&root, Some(if at < 0 { -1 } else { at - 1 })),
+            "Home" => focus_item(&root, Some(0)),
+            "End" => focus_item(&root, Some(-1)),
+            "Escape" => set_open(&root, false, true),
             _ => return,
-        };
+        }
         e.prevent_default();
-        focus_in_menu(to);
     };
     // Focus leaving the button and the menu (Tab, a click elsewhere) closes it.
     let on_focusout = move |e: ev::FocusEvent| {
+        let Some(root) = root_of(&e) else { return };
         let next = e.related_target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
-        let current = e.current_target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
-        let inside = current.is_some_and(|c| next.is_some_and(|n| c.contains(Some(&n))));
-        if !inside {
-            open.set(false);
+        if !next.is_some_and(|n| root.contains(Some(&n))) {
+            set_open(&root, false, false);
         }
     };
     view! {
-        <div class="help-menu" on:click=on_click on:keydown=on_key on:focusout=on_focusout>
-            <button class="header-button" data-help="menu" aria-haspopup="menu"
-                aria-expanded=move || open.get().to_string()>"Help"</button>
-            <ul class="menu" role="menu" aria-label="Help" hidden=move || !open.get() inner_html=MENU_HTML></ul>
-            <dialog id=DIALOG_ID class="app-dialog shortcuts" aria-labelledby="shortcuts-title"
-                inner_html=shortcuts_html()></dialog>
-        </div>
+        <div class="help-menu" on:click=on_click on:keydown=on_key on:focusout=on_focusout
+            inner_html=menu_html()></div>
     }
 }
 

@@ -175,10 +175,11 @@ fn NewPou(petri: bool) -> impl IntoView {
     let input = NodeRef::<html::Input>::new();
     let name = RwSignal::new(String::new());
     let kind = RwSignal::new(LadderPouKind::Program);
-    let problem = Memo::new(move |_| {
+    // Recomputed where shown (cheap: one name against the project's POU names).
+    let problem = move || {
         name.with(|n| state.project.with(|p| p.check_pou_name(n).err()))
             .map(|e| sentence(&e.to_string()))
-    });
+    };
     let interface = move || {
         exercises.and_then(|ex| {
             ex.open.with_untracked(|o| o.as_ref().map(|o| o.opened.view.interface.clone()))
@@ -192,7 +193,6 @@ fn NewPou(petri: bool) -> impl IntoView {
     let show = move |_| {
         let base = name_base(exercise_id().as_deref(), petri);
         name.set(state.project.with_untracked(|p| p.free_pou_name(&base)));
-        kind.set(LadderPouKind::Program);
         if let Some(d) = dialog.get_untracked() {
             let _ = d.show_modal();
         }
@@ -207,7 +207,7 @@ fn NewPou(petri: bool) -> impl IntoView {
         }
     };
     let create = move || {
-        if problem.get_untracked().is_some() {
+        if untrack(problem).is_some() {
             return;
         }
         let text = name.get_untracked().trim().to_string();
@@ -261,27 +261,26 @@ fn NewPou(petri: bool) -> impl IntoView {
                     <span>"Name"</span>
                     <input type="text" node_ref=input aria-label="POU name" spellcheck="false" autocomplete="off"
                         prop:value=move || name.get()
-                        aria-invalid=move || problem.get().is_some().to_string()
+                        aria-invalid=move || problem().is_some().to_string()
                         aria-describedby=error_id
                         on:input=move |ev| name.set(event_target_value(&ev))/>
                 </label>
-                <p class="field-error" id=error_id aria-live="polite">{move || problem.get()}</p>
+                <p class="field-error" id=error_id aria-live="polite">{problem}</p>
                 {(!petri).then(|| view! {
                     <label class="field">
                         <span>"Kind"</span>
-                        <select aria-label="POU kind" prop:value=move || if kind.get() == LadderPouKind::Program { "PROGRAM" } else { "FUNCTION_BLOCK" }
-                            on:change=move |ev| kind.set(
+                        <select aria-label="POU kind" on:change=move |ev| kind.set(
                             if event_target_value(&ev) == "FUNCTION_BLOCK" { LadderPouKind::FunctionBlock } else { LadderPouKind::Program })>
                             <option value="PROGRAM">"PROGRAM"</option>
                             <option value="FUNCTION_BLOCK">"FUNCTION_BLOCK"</option>
                         </select>
                     </label>
                 })}
-                {move || exercises.is_some_and(|ex| ex.open.with(|o| o.as_ref().is_some_and(|o| !o.opened.view.interface.is_empty()))).then(|| view! {
-                    <p class="muted small-text">"A PROGRAM made here declares the exercise's interface and becomes the program that is checked."</p>
-                })}
+                <p class="muted small-text" hidden=move || !exercises.is_some_and(|ex| ex.open.with(|o| o.as_ref().is_some_and(|o| !o.opened.view.interface.is_empty())))>
+                    "A PROGRAM made here declares the exercise's interface and becomes the program that is checked."
+                </p>
                 <div class="dialog-actions">
-                    <button type="submit" class="primary" disabled=move || problem.get().is_some()>"Create"</button>
+                    <button type="submit" class="primary" disabled=move || problem().is_some()>"Create"</button>
                     <button type="button" on:click=move |_| close()>"Cancel"</button>
                 </div>
             </form>

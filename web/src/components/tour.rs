@@ -228,8 +228,7 @@ fn tour_html(step: usize, done: bool) -> String {
 
 /// The `Start here` strip. Its content is fixed markup handled by one click listener (far
 /// less code in the page than a view per element; the first load has a size budget).
-#[component]
-pub fn TourPanel() -> impl IntoView {
+pub fn tour_panel() -> impl IntoView {
     use wasm_bindgen::JsCast;
     let tour = expect_context::<Tour>();
     let on_click = move |e: leptos::ev::MouseEvent| {
