@@ -158,7 +158,7 @@ fn name_base(exercise: Option<&str>, petri: bool) -> String {
 /// A core message as a sentence under a field (`Type a name for the POU.`).
 fn sentence(message: &str) -> String {
     let mut chars = message.chars();
-    let first = chars.next().map(|c| c.to_uppercase().collect::<String>()).unwrap_or_default();
+    let first = chars.next().map(|c| c.to_ascii_uppercase()).map(String::from).unwrap_or_default();
     format!("{first}{}.", chars.as_str())
 }
 
