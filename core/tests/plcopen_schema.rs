@@ -7,7 +7,8 @@
 //! Checked, for every element the exporter writes (project, headers, coordinate info, data
 //! types, POUs and their interfaces and variables, ST, LD and FBD bodies, rails, contacts, coils,
 //! blocks and their pin lists, in/out variables, labels, jumps, returns, comments,
-//! connection points and connections, configurations, resources, tasks, POU instances):
+//! connection points and connections, configurations, resources, tasks, POU instances,
+//! configuration variables):
 //! - the children that may appear, in the order the schema's `xsd:sequence` fixes, and how
 //!   often (`minOccurs` / `maxOccurs`); free-order `xsd:choice` lists (LD body objects,
 //!   interface variable lists) as sets;
@@ -484,6 +485,13 @@ fn rule(name: &str, parent: &str) -> Option<Rule> {
             ]),
         ),
         (_, "task") => r(&["name", "priority"], with_tail(vec![Seq(("pouInstance", 0, MANY))])),
+        ("configuration", "configVars") => {
+            r(&[], with_tail(vec![Seq(("configVariable", 0, MANY))]))
+        }
+        ("configVars", "configVariable") => r(
+            &["instancePathAndName"],
+            with_tail(vec![Seq(("type", 1, ONE)), Seq(("initialValue", 0, ONE))]),
+        ),
         (_, "pouInstance") => r(&["name", "typeName"], with_tail(vec![])),
         (_, "content" | "documentation" | "p" | "expression" | "variable" | "addData") => open(&[]),
         _ => None,
@@ -666,11 +674,7 @@ fn projects() -> Vec<(String, Project)> {
         };
         out.push((name, project));
     }
-    let samples = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .map(|a| a.join("shared/samples/plcopen"))
-        .find(|d| d.is_dir())
-        .expect("shared/samples/plcopen");
+    let samples = repo_root().join("tests/samples");
     let mut paths: Vec<_> =
         std::fs::read_dir(&samples).unwrap().map(|e| e.unwrap().path()).collect();
     paths.sort();
@@ -684,6 +688,8 @@ fn projects() -> Vec<(String, Project)> {
 #[test]
 fn every_exported_project_has_the_tc6_0201_structure() {
     let all = projects();
+    let samples = all.iter().filter(|(n, _)| n.contains("tests/samples")).count();
+    assert_eq!(samples, 8, "the samples of tests/samples");
     assert!(all.len() >= 9, "examples and samples found: {}", all.len());
     let mut ld_seen = HashSet::new();
     let all_kinds = ("all kinds".to_string(), all_kinds_project());
@@ -827,11 +833,35 @@ fn the_all_kinds_project_is_valid_and_round_trips_through_its_export() {
 }
 
 #[test]
-fn the_wired_inputs_and_data_wires_of_the_mixing_tank_export_cleanly() {
+fn the_wired_inputs_and_data_wires_of_the_mixing_plant_export_cleanly() {
     let samples = projects();
-    let (_, mixer) = samples.iter().find(|(n, _)| n.ends_with("ld_mixing_tank_plant.xml")).unwrap();
+    let (_, mixer) =
+        samples.iter().find(|(n, _)| n.ends_with("ld_mixing_plant_shared_address.xml")).unwrap();
     let xml = export(mixer);
     assert!(problems(&xml).is_empty(), "{:?}", problems(&xml));
-    // SR0's R pin is wired to the two contacts of its own network.
-    assert!(xml.contains("<variable formalParameter=\"R\">"));
+    // FillLatch's and MixLatch's R pins are wired to the contacts (and MixEnd) of their own
+    // network, DrainLatch's R1 likewise.
+    assert_eq!(xml.matches("<variable formalParameter=\"R\">").count(), 2);
+    assert_eq!(xml.matches("<variable formalParameter=\"R1\">").count(), 1);
+}
+
+#[test]
+fn var_config_entries_export_as_tc6_config_variables() {
+    let mut p = Project::new("Configured");
+    p.source = "FUNCTION_BLOCK Valve VAR_INPUT Setpoint : INT; END_VAR VAR_OUTPUT Open AT %Q* : BOOL; END_VAR Open := Setpoint > 0; END_FUNCTION_BLOCK
+PROGRAM Cell VAR V1 : Valve; END_VAR V1(); END_PROGRAM
+CONFIGURATION Plant
+    PROGRAM Line : Cell;
+    VAR_CONFIG
+        Line.V1.Setpoint : INT := 50;
+        Line.V1.Open AT %QX1.0 : BOOL := TRUE;
+    END_VAR
+END_CONFIGURATION
+"
+    .into();
+    let xml = export(&p);
+    assert!(xml.contains("<configVars>"), "{xml}");
+    assert_eq!(problems(&xml), Vec::<String>::new(), "{xml}");
+    let broken = xml.replacen(" instancePathAndName=\"Line.V1.Setpoint\"", "", 1);
+    assert!(!problems(&broken).is_empty(), "a configVariable without its path is caught");
 }

@@ -10,7 +10,7 @@ use super::{Code, CompileError, ConditionId, Executable, PouCode, Slot, VarEntry
 use crate::program::memory::{string_cells, string_header};
 use crate::program::{Layouts, PouLayout};
 use crate::semantic::ir::{Expr, InitValue, Program, Var};
-use crate::semantic::types::{PouId, StructId, Type};
+use crate::semantic::types::{PouId, RefInit, RefRoot, RefStep, StructId, Type};
 use crate::syntax::{PouKind, VarSection};
 
 impl Layouts {
@@ -178,6 +178,7 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
                 library: false,
                 temps: Vec::new(),
                 template: Vec::new(),
+                relocs: Vec::new(),
                 vars: Vec::new(),
                 offsets: Vec::new(),
                 trusted: false,
@@ -197,14 +198,14 @@ pub(crate) fn build(p: &Program, main: PouId, more: &[PouId]) -> Result<Executab
     exe.out.init = vec![0; at as usize];
     for (i, g) in p.globals.iter().enumerate() {
         let a = exe.lay.globals[i];
-        write_init(&mut exe, p, a, g.ty, g.init.as_ref(), g.range)?;
+        write_init(&mut exe, p, a, g.ty, g.init.as_ref(), g.range, &mut InitCtx::default())?;
     }
     let mb = exe.main_base;
-    write_instance(&mut exe, p, mb, main, None)?;
+    write_instance(&mut exe, p, mb, main, None, &mut InitCtx::default())?;
     exe.pous[main as usize].frame = Some(exe.main_base);
     let more: Vec<(PouId, u32)> = exe.instances[inline..].to_vec();
     for &(q, base) in &more {
-        write_instance(&mut exe, p, base, q, None)?;
+        write_instance(&mut exe, p, base, q, None, &mut InitCtx::default())?;
     }
     finish_new_pous(&mut exe, p)?;
     init_located(&mut exe, p, &p.globals)?;
@@ -292,7 +293,7 @@ fn finish_new_pous(exe: &mut Executable, p: &Program) -> Result<(), CompileError
             exe.out.init.resize(end as usize, 0);
             exe.lay.frames[q as usize] = Some(base);
             exe.pous[q as usize].frame = Some(base);
-            write_instance(exe, p, base, q, None)?;
+            write_instance(exe, p, base, q, None, &mut InitCtx::default())?;
         }
     }
     exe.lay.real = true;
@@ -327,17 +328,65 @@ fn finish_new_pous(exe: &mut Executable, p: &Program) -> Result<(), CompileError
         code.library = pou.library;
         if !temps.is_empty() {
             // Template of one instance at address 0 of a scratch image.
+            // A reference in it that points into the instance is moved to each instance
+            // when its temporaries start over (`relocs`).
             let saved = std::mem::replace(&mut exe.out.init, vec![0; l.size as usize]);
-            let r = write_instance(exe, p, 0, q, None);
+            let mut ctx = InitCtx::default();
+            let r = write_instance(exe, p, 0, q, None, &mut ctx);
             let template = std::mem::replace(&mut exe.out.init, saved);
             r?;
             exe.pous[q as usize].template = template;
+            let in_temps = |c: &u32| temps.iter().any(|&(off, n)| (off..off + n).contains(c));
+            exe.pous[q as usize].relocs = ctx.relocs.into_iter().filter(in_temps).collect();
         }
         exe.pous[q as usize].temps = temps;
         exe.pous[q as usize].vars = pou.vars.clone();
         exe.pous[q as usize].offsets = l.offsets;
     }
     Ok(())
+}
+
+/// What writing initial values needs besides the value: the instances being initialised
+/// (outermost first), where a reference's initial value `REF(x)` finds the instance
+/// holding `x`; and the cells given such a reference into an instance, which must move with
+/// it (a VAR_TEMP template is written at address 0).
+#[derive(Default)]
+struct InitCtx {
+    chain: Vec<(PouId, u32)>,
+    relocs: Vec<u32>,
+}
+
+/// The address of the variable a reference's initial value points to.
+fn ref_target(
+    exe: &mut Executable,
+    p: &Program,
+    r: &RefInit,
+    ctx: &InitCtx,
+) -> Result<u32, CompileError> {
+    let mut at = match r.root {
+        RefRoot::Own(q, i) => {
+            let base = ctx.chain.iter().rev().find(|(c, _)| *c == q).map(|&(_, b)| b);
+            let base = base.ok_or_else(|| bad("reference initial value outside its POU"))?;
+            add(base, u64::from(exe.lay.var_offset(p, q, i)?))?
+        }
+        RefRoot::Global(g) => {
+            exe.lay.globals.get(g as usize).copied().ok_or_else(|| bad("global index"))?
+        }
+        RefRoot::Pending(_) => return Err(bad("unchecked reference initial value")),
+    };
+    for step in &r.steps {
+        let off = match *step {
+            RefStep::Field(s, i) => u64::from(exe.lay.field_offset(p, s, i)?),
+            RefStep::Member(q, i) => u64::from(exe.lay.var_offset(p, q, i)?),
+            RefStep::Element(a, k) => {
+                let def = p.types.arrays.get(a as usize).ok_or_else(|| bad("array type"))?;
+                let size = exe.lay.size_of(p, def.element)?;
+                k.checked_mul(u64::from(size)).ok_or(too_large(k))?
+            }
+        };
+        at = add(at, off)?;
+    }
+    Ok(at)
 }
 
 /// Writes the initial value of a `ty` at `addr` of the image.
@@ -348,9 +397,19 @@ fn write_init(
     ty: Type,
     init: Option<&InitValue>,
     range: Option<(i64, i64)>,
+    ctx: &mut InitCtx,
 ) -> Result<(), CompileError> {
     let a = addr as usize;
     match ty {
+        Type::Ref(_) if matches!(init, Some(InitValue::Ref(_))) => {
+            let Some(InitValue::Ref(r)) = init else { return Err(bad("reference")) };
+            // A reference holds its target's address plus one (0 is NULL).
+            let target = ref_target(exe, p, r, ctx)?;
+            if matches!(r.root, RefRoot::Own(..)) {
+                ctx.relocs.push(addr);
+            }
+            set(exe, a, u64::from(target) + 1)
+        }
         Type::Elem(_) | Type::Enum(_) | Type::Ref(_) => {
             let bits = match (init, range, ty) {
                 (Some(InitValue::Scalar(b)), _, _) => *b,
@@ -390,7 +449,7 @@ fn write_init(
             for k in 0..def.len() {
                 let item = items.get(k as usize).or(def.element_init.as_ref());
                 let at = add(addr, k * u64::from(esize))?;
-                write_init(exe, p, at, def.element, item, def.element_range)?;
+                write_init(exe, p, at, def.element, item, def.element_range, ctx)?;
             }
             Ok(())
         }
@@ -402,11 +461,12 @@ fn write_init(
                     Some(InitValue::Struct(v)) => v.get(i).and_then(|o| o.as_ref()),
                     _ => None,
                 };
-                write_init(exe, p, addr + offs[i], f.ty, over.or(f.init.as_ref()), f.range)?;
+                let init = over.or(f.init.as_ref());
+                write_init(exe, p, addr + offs[i], f.ty, init, f.range, ctx)?;
             }
             Ok(())
         }
-        Type::Fb(q) => write_instance(exe, p, addr, q, init),
+        Type::Fb(q) => write_instance(exe, p, addr, q, init, ctx),
         Type::Void => Ok(()),
     }
 }
@@ -418,6 +478,22 @@ fn write_instance(
     addr: u32,
     q: PouId,
     init: Option<&InitValue>,
+    ctx: &mut InitCtx,
+) -> Result<(), CompileError> {
+    ctx.chain.push((q, addr));
+    let r = write_members(exe, p, addr, q, init, ctx);
+    ctx.chain.pop();
+    r
+}
+
+/// The members' part of [`write_instance`].
+fn write_members(
+    exe: &mut Executable,
+    p: &Program,
+    addr: u32,
+    q: PouId,
+    init: Option<&InitValue>,
+    ctx: &mut InitCtx,
 ) -> Result<(), CompileError> {
     let pou = p.pous.get(q as usize).ok_or_else(|| bad("POU id"))?;
     for (i, v) in pou.vars.iter().enumerate() {
@@ -429,7 +505,7 @@ fn write_instance(
             Some(InitValue::Struct(o)) => o.get(i).and_then(|x| x.as_ref()),
             _ => None,
         };
-        write_init(exe, p, addr + off, v.ty, over.or(v.init.as_ref()), v.range)?;
+        write_init(exe, p, addr + off, v.ty, over.or(v.init.as_ref()), v.range, ctx)?;
     }
     Ok(())
 }

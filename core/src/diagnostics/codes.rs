@@ -100,7 +100,7 @@ problem_codes! {
     InvalidArraySize = "E0170": "an array or string too large, or with bad bounds",
     TooManyInitializers = "E0171": "more initial values than array elements",
     NotAReference = "E0180": "`^` applied to something that is not a reference (or to NULL)",
-    RefNotAVariable = "E0181": "`REF()` of something that has no address of its own: a bit, a subrange variable",
+    RefNotAVariable = "E0181": "`REF()` of something that has no address of its own (a bit, a subrange variable), or, as an initial value, of a variable without one place for the whole run",
 
     // ---- calls (checker): E0200–E0249 ----
     UnknownFunction = "E0200": "a call of something that is not a function or function block",
@@ -199,7 +199,7 @@ problem_codes! {
     NotAProgramType = "E0622": "a program instance whose type is not a PROGRAM",
     BadTaskSetting = "E0623": "a task INTERVAL that is not a constant TIME above zero, a PRIORITY that is not a constant 0 to 9999, or a SINGLE that is not a BOOL variable",
     BadProgramConnection = "E0624": "a program connection naming no input or output of the program, or a variable of another type",
-    BadConfigVar = "E0625": "a VAR_CONFIG entry whose path names no variable declared at an incomplete address (`%Q*`), or whose address or type does not match it",
+    BadConfigVar = "E0625": "a VAR_CONFIG entry whose path names no variable, whose type is not the variable's, whose address does not complete an incomplete address (`%Q*`), or whose initial value that variable cannot take",
 
     // ---- warnings: W0001– ----
     UnusedVariable = "W0001": "a variable that is declared but never used",

@@ -396,6 +396,16 @@ impl Exercise {
     /// place of any POU of the plant's name, named as the plant in the settings, and its
     /// scene. The student's own PROGRAM stays the one that runs.
     pub fn with_plant(&self, project: &crate::project::Project) -> crate::project::Project {
+        self.with_plant_by(project, &crate::build::Lowerings::ALL)
+    }
+
+    /// [`Exercise::with_plant`], building the project with the given passes for its
+    /// diagram POUs (to find the PROGRAM that runs).
+    pub fn with_plant_by(
+        &self,
+        project: &crate::project::Project,
+        lowerings: &crate::build::Lowerings,
+    ) -> crate::project::Project {
         let mut project = project.clone();
         let Some(plant) = &self.plant else { return project };
         let (file, _) = crate::syntax::parse(&project.source);
@@ -419,7 +429,7 @@ impl Exercise {
         }
         if project.settings.program.is_none() {
             // The PROGRAM that ran before the plant joined (the first one) keeps running.
-            let names = crate::build::build_project(&project).program_names();
+            let names = crate::build::build_project_by(&project, lowerings).program_names();
             project.settings.program = names.into_iter().next();
         }
         let source = project.source.trim_end();

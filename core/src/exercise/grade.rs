@@ -8,7 +8,7 @@ use std::collections::VecDeque;
 
 use serde::{Deserialize, Serialize};
 
-use crate::build::{build_project, Site};
+use crate::build::{build_project_by, Lowerings, Site};
 use crate::export::value_text;
 use crate::program::Slot;
 use crate::project::Project;
@@ -146,12 +146,23 @@ pub fn grade_with(
     project: &Project,
     options: GradeOptions,
 ) -> Result<Report, ExerciseError> {
+    grade_by(exercise, project, options, &Lowerings::ALL)
+}
+
+/// [`grade_with`], building the project with the given passes for its diagram POUs (the
+/// exercise worker of the web app loads those a submission needs: see [`Lowerings`]).
+pub fn grade_by(
+    exercise: &Exercise,
+    project: &Project,
+    options: GradeOptions,
+    lowerings: &Lowerings,
+) -> Result<Report, ExerciseError> {
     let total = exercise.scenarios.iter().map(|s| s.weight).sum();
     // The exercise's plant, never the submission's copy; without one, the scenarios
     // alone drive the inputs (a plant the submission names is not run).
-    let project = &exercise.with_plant(project);
+    let project = &exercise.with_plant_by(project, lowerings);
     let plant = exercise.plant.as_ref().map(|p| p.name.as_str());
-    let build = build_project(project);
+    let build = build_project_by(project, lowerings);
     let not_run =
         |message: String| Report { error: Some(message), scenarios: Vec::new(), score: 0, total };
     if let Some(d) = build.diagnostics.iter().find(|d| d.is_error()) {

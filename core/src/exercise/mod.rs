@@ -14,7 +14,9 @@ pub use format::{
     parse_duration, scenarios_from_toml, time_text, Direction, Exercise, ExerciseError, Expect,
     Expectation, InterfaceVar, Random, RandomInput, Restart, Scenario, Step,
 };
-pub use grade::{grade, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport};
+pub use grade::{
+    grade, grade_by, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport,
+};
 pub use interface::interface_declarations;
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
 pub use statement::{next_to, statement_html};

@@ -234,7 +234,9 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         .map(str::to_string)
         .collect();
     if let Some(conf) = confs.and_then(|c| c.children_named("configuration").next()) {
-        if let Some((text, tick)) = super::tasks::configuration_text(conf, &programs, &mut warnings)
+        let config_vars = config_var_lines(conf, &mut warnings);
+        if let Some((text, tick)) =
+            super::tasks::configuration_text(conf, &programs, &config_vars, &mut warnings)
         {
             source.push("\n", None);
             source.append(text);
@@ -250,6 +252,50 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     let file_map =
         crate::build::FileMap { places, lines: source.lines, declarations: declaration_lines };
     Ok(Import { project, warnings, skipped, file_map })
+}
+
+/// The VAR_CONFIG entries of the `<configVariable>`s of `conf`, each with its element.
+/// An entry the trainer cannot read is noted and left out.
+fn config_var_lines<'n>(conf: &'n Node, notes: &mut Vec<ImportNote>) -> Vec<(String, &'n Node)> {
+    let mut out = Vec::new();
+    for v in conf.children_named("configVars").flat_map(|c| c.children_named("configVariable")) {
+        match config_var_text(v) {
+            Ok(line) => out.push((line, v)),
+            Err(why) => {
+                let path = v.attr("instancePathAndName").unwrap_or("");
+                notes.push(ImportNote::on(
+                    v,
+                    format!("VAR_CONFIG entry `{path}`: {why}; it was left out"),
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// One `<configVariable>` as a VAR_CONFIG entry: `Line.V1.Open AT %QX1.0 : BOOL := TRUE;`.
+fn config_var_text(v: &Node) -> Result<String, String> {
+    let path = v
+        .attr("instancePathAndName")
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+        .ok_or("it has no instancePathAndName")?;
+    let path: Vec<String> = path.split('.').map(|n| super::tasks::ident(n.trim())).collect();
+    let at = match v.attr("address").map(str::trim).filter(|a| !a.is_empty()) {
+        None => String::new(),
+        Some(a) => match a.strip_prefix('%') {
+            Some(rest) if rest.chars().all(|c| c.is_ascii_alphanumeric() || c == '.') => {
+                format!(" AT {a}")
+            }
+            _ => return Err(format!("`{a}` is not a complete address such as %QX1.0")),
+        },
+    };
+    let ty = type_text(v.child("type").ok_or("it has no <type>")?)?;
+    let init = match v.child("initialValue") {
+        Some(w) => format!(" := {}", value_text(w)?),
+        None => String::new(),
+    };
+    Ok(format!("        {}{at} : {ty}{init};\n", path.join(".")))
 }
 
 /// Leaves the POU `name` out of the import, with a note at its body saying why.

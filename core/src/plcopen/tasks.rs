@@ -4,25 +4,29 @@
 //! becomes an ST `CONFIGURATION` block (each `<resource>` a RESOURCE, each `<task>` a
 //! TASK, each `<pouInstance>` a PROGRAM instance WITH its task), so every instance runs
 //! under its task; with one instance the file's program simply runs, as before. Its
-//! globals are written as top-level VAR_GLOBAL blocks by the import itself.
+//! globals are written as top-level VAR_GLOBAL blocks by the import itself, and its
+//! `<configVars>` read there become the VAR_CONFIG block.
 //! Export: the source's CONFIGURATION becomes the file's configuration, resources, tasks
-//! and instances.
+//! and instances, and its VAR_CONFIG entries `<configVariable>`s (TC6: the instance path,
+//! the address, the type and the initial value).
 
 use std::fmt::Write;
 
-use super::decl_xml::vars_xml;
+use super::decl_xml::{init_xml, type_xml, vars_xml};
 use super::source_out::SourceOut;
 use super::xml::{esc, Node};
 use super::ImportNote;
 use crate::syntax::ast::Configuration;
 
 /// The CONFIGURATION text for the instances of `conf` whose type is one of `programs`
-/// (the PROGRAM POUs the import kept), and the clock tick (ms) that serves every task:
+/// (the PROGRAM POUs the import kept), with the VAR_CONFIG entries `config_vars` (each
+/// line with its element), and the clock tick (ms) that serves every task:
 /// `None` when fewer than two instances would run. Instances of other types are noted in
 /// `notes` and left out.
 pub(super) fn configuration_text(
     conf: &Node,
     programs: &[String],
+    config_vars: &[(String, &Node)],
     notes: &mut Vec<ImportNote>,
 ) -> Option<(SourceOut, u64)> {
     let known = |t: &str| programs.iter().any(|p| p.eq_ignore_ascii_case(t));
@@ -59,7 +63,20 @@ pub(super) fn configuration_text(
         }
         out.push("    END_RESOURCE\n", None);
     }
+    if !config_vars.is_empty() {
+        out.push("    VAR_CONFIG\n", None);
+        for (line, node) in config_vars {
+            out.push_from(line, node);
+        }
+        out.push("    END_VAR\n", None);
+    }
     out.push("END_CONFIGURATION\n", None);
+    if instances < 2 && !config_vars.is_empty() {
+        notes.push(ImportNote::on(
+            conf,
+            format!("configuration {cname}: its program runs on its own, without the configuration, so its VAR_CONFIG entries (configVars) do not apply"),
+        ));
+    }
     (instances > 1).then_some((out, tick))
 }
 
@@ -87,7 +104,7 @@ fn instance(
 }
 
 /// A name from the file as an ST identifier (characters that cannot be in one become `_`).
-fn ident(name: &str) -> String {
+pub(super) fn ident(name: &str) -> String {
     let s: String =
         name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
     if s.starts_with(|c: char| c.is_ascii_digit()) || s.is_empty() {
@@ -154,6 +171,30 @@ pub(super) fn configuration_xml(config: &Configuration, src: &str, extra_globals
     out.push_str(extra_globals);
     for g in &config.globals {
         out.push_str(&vars_xml(g, src, "globalVars", "        "));
+    }
+    if !config.var_config.is_empty() {
+        out.push_str("        <configVars>\n");
+        for v in &config.var_config {
+            let path: Vec<&str> = v.path.iter().map(|i| i.name.as_str()).collect();
+            let _ = write!(
+                out,
+                "          <configVariable instancePathAndName=\"{}\"",
+                esc(&path.join("."))
+            );
+            if let Some(loc) = &v.location {
+                let _ = write!(out, " address=\"{}\"", esc(&loc.text));
+            }
+            let _ = writeln!(out, ">\n            <type>{}</type>", type_xml(&v.ty, src));
+            if let Some(init) = &v.init {
+                let _ = writeln!(
+                    out,
+                    "            <initialValue>{}</initialValue>",
+                    init_xml(init, src)
+                );
+            }
+            out.push_str("          </configVariable>\n");
+        }
+        out.push_str("        </configVars>\n");
     }
     out.push_str("      </configuration>\n");
     out

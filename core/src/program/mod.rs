@@ -75,6 +75,10 @@ pub(crate) struct PouCode {
     pub temps: Vec<(u32, u32)>,
     /// The initial image of one instance (only for POUs with VAR_TEMP).
     pub template: Vec<u64>,
+    /// Cells of `temps` whose template holds a reference into the instance (an initial
+    /// value `REF(x)`), counted from the instance's start: the instance's address is added
+    /// when they are copied.
+    pub relocs: Vec<u32>,
     /// The POU's variables (for reading FB instances and locating paths).
     pub vars: Vec<Var>,
     /// Their offsets in the frame.

@@ -43,6 +43,24 @@ pub(super) struct BodyState {
     pub read_only: bool,
 }
 
+/// Where a declaration whose initial value may be `REF()` is: the POU whose variables it
+/// sees (`PouId::MAX` for VAR_GLOBAL: the globals only).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct RefScope {
+    /// The declaring POU.
+    pub pou: PouId,
+}
+
+/// A `REF(…)` initial value waiting for every declaration (`ref_init.rs`).
+pub(super) struct PendingRefInit {
+    /// Where it is declared.
+    pub scope: RefScope,
+    /// The `REF(…)` call.
+    pub expr: ast::Expr,
+    /// The type of the variable it initialises.
+    pub ty: Type,
+}
+
 /// The checker's state for one program.
 pub(super) struct Checker<'a> {
     pub types: TypeTable,
@@ -68,6 +86,11 @@ pub(super) struct Checker<'a> {
     /// referring to its own type): the reference type's id and `X`'s key, completed when
     /// `X` is (`refs.rs`).
     pub pending_refs: Vec<(super::types::RefId, String)>,
+    /// Set while the initial value of a variable is checked: `REF(x)` may be that value,
+    /// `x` a variable of this POU or a global (`ref_init.rs`).
+    pub ref_scope: Option<RefScope>,
+    /// The `REF(x)` initial values met, checked once every variable is declared.
+    pub ref_inits: Vec<PendingRefInit>,
 }
 
 impl<'a> Checker<'a> {
@@ -88,6 +111,8 @@ impl<'a> Checker<'a> {
             var_index: HashMap::new(),
             resolve_depth: 0,
             pending_refs: Vec::new(),
+            ref_scope: None,
+            ref_inits: Vec::new(),
         }
     }
 
@@ -275,6 +300,8 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
     for i in blocks.into_iter().chain(programs) {
         checker.declare_pou_vars(i as PouId);
     }
+    // Initial values `REF(x)`: now that every variable is declared, in any order.
+    checker.resolve_ref_inits();
     checker.place_located_vars();
     for i in 0..checker.pous.len() {
         checker.check_body(i as PouId);

@@ -107,7 +107,7 @@ impl Checker<'_> {
             library: false,
             span: c.span,
         });
-        let io = c.var_config.iter().filter_map(|v| self.config_var(v, &instances)).collect();
+        let io = self.config_vars(c, &instances, pou);
         ir::Configuration { name: c.name.name.clone(), pou, tasks, instances, io, span: c.span }
     }
 
@@ -275,35 +275,87 @@ impl Checker<'_> {
 }
 
 impl Checker<'_> {
-    /// Checks a `VAR_CONFIG` entry: its path from a program instance to a variable
-    /// declared at an incomplete address of the same area and size, and its type.
-    fn config_var(
+    /// Checks the `VAR_CONFIG` entries: each one's path and type; the complete address of
+    /// one that gives an address (returned, for the image), and the initial value of one
+    /// that gives a value, which becomes the initial value of that variable of that
+    /// instance (`pou` is the configuration's PROGRAM, whose variables are the instances).
+    fn config_vars(
+        &mut self,
+        c: &ast::Configuration,
+        instances: &[ir::ProgramInstance],
+        pou: PouId,
+    ) -> Vec<(String, crate::syntax::DirectAddress)> {
+        let mut io = Vec::new();
+        let mut initialised = std::collections::HashSet::new();
+        for v in &c.var_config {
+            let Some((steps, var)) = self.config_path(v, instances, pou) else { continue };
+            let Some(ty) = self.resolve_type(&v.ty, &var.name).map(|r| r.ty) else { continue };
+            if ty != var.ty {
+                let msg = format!(
+                    "`{}` is declared {}; a VAR_CONFIG entry gives the variable's own type, not {}",
+                    var.name,
+                    self.tname(var.ty),
+                    self.tname(ty)
+                );
+                self.error(Code::BadConfigVar, v.ty.span(), msg);
+                continue;
+            }
+            if let Some(init) = &v.init {
+                let key = v.path.iter().map(|i| i.key()).collect::<Vec<_>>().join(".");
+                if self.config_init(v, init, &var, &steps) && !initialised.insert(key) {
+                    let msg = "this variable is given an initial value by an entry above already";
+                    self.error(Code::BadConfigVar, init.span(), msg);
+                }
+            }
+            if let Some(loc) = &v.location {
+                if let Some(entry) = self.config_address(v, loc, &var) {
+                    io.push(entry);
+                }
+            }
+        }
+        io
+    }
+
+    /// The variable `v`'s path names: the `(POU, variable index)` of each name (the first
+    /// one the instance among `pou`'s variables), and the variable.
+    fn config_path(
         &mut self,
         v: &ast::ConfigVar,
         instances: &[ir::ProgramInstance],
-    ) -> Option<(String, crate::syntax::DirectAddress)> {
+        pou: PouId,
+    ) -> Option<(Vec<(PouId, u32)>, Var)> {
         let fail = |c: &mut Self, span, msg: String| {
             c.error(Code::BadConfigVar, span, msg);
             None
         };
         let (first, rest) = v.path.split_first()?;
-        let Some(inst) = instances.iter().find(|i| i.name.eq_ignore_ascii_case(&first.name)) else {
+        let Some(k) = instances.iter().position(|i| i.name.eq_ignore_ascii_case(&first.name))
+        else {
             return fail(
                 self,
                 first.span,
                 format!("`{}` is no program instance of the configuration", first.name),
             );
         };
-        let mut pou = inst.pou;
+        if rest.is_empty() {
+            let msg = format!(
+                "`{}` is a program instance; name one of its variables (`{}.Name`)",
+                first.name, first.name
+            );
+            return fail(self, first.span, msg);
+        }
+        let mut steps = vec![(pou, k as u32)];
+        let mut owner = instances[k].pou;
         let mut found = None;
-        for (k, name) in rest.iter().enumerate() {
-            let vars = &self.pous[pou as usize].vars;
-            let Some(var) = vars.iter().find(|x| x.name.eq_ignore_ascii_case(&name.name)).cloned()
-            else {
-                let owner = self.pous[pou as usize].name.clone();
-                return fail(self, name.span, format!("`{owner}` has no `{}`", name.name));
+        for (j, name) in rest.iter().enumerate() {
+            let vars = &self.pous[owner as usize].vars;
+            let Some(i) = vars.iter().position(|x| x.name.eq_ignore_ascii_case(&name.name)) else {
+                let o = self.pous[owner as usize].name.clone();
+                return fail(self, name.span, format!("`{o}` has no `{}`", name.name));
             };
-            if k + 1 < rest.len() {
+            let var = vars[i].clone();
+            steps.push((owner, i as u32));
+            if j + 1 < rest.len() {
                 let Type::Fb(q) = var.ty else {
                     return fail(
                         self,
@@ -311,31 +363,118 @@ impl Checker<'_> {
                         format!("`{}` is no function block instance", name.name),
                     );
                 };
-                pou = q;
+                owner = q;
             } else {
                 found = Some(var);
             }
         }
-        let var = found?;
+        Some((steps, found?))
+    }
+
+    /// Checks the initial value of entry `v` for `var` and makes it the initial value of
+    /// the variable at `steps`; false when it is refused.
+    fn config_init(
+        &mut self,
+        v: &ast::ConfigVar,
+        init: &ast::Initializer,
+        var: &Var,
+        steps: &[(PouId, u32)],
+    ) -> bool {
+        let refused = match var.section {
+            VarSection::Temp => Some("it is a VAR_TEMP, which starts over on every call"),
+            VarSection::InOut => Some("it is a VAR_IN_OUT, which names the caller's variable"),
+            VarSection::External => {
+                Some("it is a VAR_EXTERNAL: give the global its initial value in its VAR_GLOBAL")
+            }
+            _ if var.constant => Some("it is a CONSTANT, the same in every instance"),
+            _ if var.location.as_ref().is_some_and(|l| !l.path.is_empty()) => {
+                Some("it is at a complete address, in the process image: give the value in its declaration")
+            }
+            _ => None,
+        };
+        if let Some(why) = refused {
+            let name = v.path.last().map_or(v.span, |n| n.span);
+            let msg = format!("`{}` cannot take an initial value from VAR_CONFIG: {why}", var.name);
+            self.error(Code::BadConfigVar, name, msg);
+            return false;
+        }
+        let errors = self.diags.len();
+        let Some(value) = self.init_value(init, var.ty, var.range) else { return false };
+        if crate::diagnostics::has_errors(&self.diags[errors..]) {
+            return false;
+        }
+        self.override_init(steps, value);
+        true
+    }
+
+    /// Makes `value` the initial value of the variable at `steps` (the instance among the
+    /// configuration's variables, then a variable of each POU): each instance on the way
+    /// starts from its declared initial value, so what the entry does not name stays as
+    /// declared.
+    fn override_init(&mut self, steps: &[(PouId, u32)], value: ir::InitValue) {
+        let declared: Vec<Option<ir::InitValue>> = steps
+            .iter()
+            .map(|&(q, i)| self.pous.get(q as usize)?.vars.get(i as usize)?.init.clone())
+            .collect();
+        let widths: Vec<usize> = steps
+            .iter()
+            .skip(1)
+            .map(|&(q, _)| self.pous.get(q as usize).map_or(0, |p| p.vars.len()))
+            .collect();
+        let Some(&(q0, i0)) = steps.first() else { return };
+        let Some(mut slot) = self
+            .pous
+            .get_mut(q0 as usize)
+            .and_then(|p| p.vars.get_mut(i0 as usize))
+            .map(|v| &mut v.init)
+        else {
+            return;
+        };
+        for (j, &(_, member)) in steps.iter().enumerate().skip(1) {
+            // `slot` is the initial value of an instance of the POU declaring `member`.
+            let width = widths.get(j - 1).copied().unwrap_or(0);
+            if !matches!(slot, Some(ir::InitValue::Struct(_))) {
+                *slot = match declared.get(j - 1).cloned().flatten() {
+                    Some(s @ ir::InitValue::Struct(_)) => Some(s),
+                    _ => Some(ir::InitValue::Struct(vec![None; width])),
+                };
+            }
+            let Some(ir::InitValue::Struct(members)) = slot else { return };
+            if members.len() < width {
+                members.resize(width, None);
+            }
+            let Some(next) = members.get_mut(member as usize) else { return };
+            slot = next;
+        }
+        *slot = Some(value);
+    }
+
+    /// Checks the address of entry `v` for `var`, declared at an incomplete address of
+    /// the same area and size: the instance path and the complete address.
+    fn config_address(
+        &mut self,
+        v: &ast::ConfigVar,
+        loc: &crate::syntax::DirectAddress,
+        var: &Var,
+    ) -> Option<(String, crate::syntax::DirectAddress)> {
         let incomplete = var.location.as_ref().filter(|l| l.path.is_empty());
         let Some(decl) = incomplete else {
-            return fail(self, v.span, format!("`{}` is not declared at an incomplete address (`AT %Q*`), so it has none to complete", var.name));
+            let msg = format!("`{}` is not declared at an incomplete address (`AT %Q*`), so it has none to complete", var.name);
+            self.error(Code::BadConfigVar, v.span, msg);
+            return None;
         };
-        let ty = self.resolve_type(&v.ty, &var.name).map(|r| r.ty);
-        if decl.area != v.location.area
-            || decl.size != v.location.size
-            || ty != Some(var.ty)
-            || v.location.path.is_empty()
-        {
-            return fail(self, v.location.span, format!(
+        if decl.area != loc.area || decl.size != loc.size || loc.path.is_empty() {
+            let msg = format!(
                 "`{}` is declared `AT {} : {}`: give it a complete address of that area and size, and its type",
                 var.name, decl.text, self.tname(var.ty)
-            ));
+            );
+            self.error(Code::BadConfigVar, loc.span, msg);
+            return None;
         }
         // The image holds the completed address.
-        self.image_place(&Var { location: Some(v.location.clone()), ..var.clone() });
+        self.image_place(&Var { location: Some(loc.clone()), ..var.clone() });
         let path: Vec<&str> = v.path.iter().map(|i| i.name.as_str()).collect();
-        Some((path.join("."), v.location.clone()))
+        Some((path.join("."), loc.clone()))
     }
 }
 

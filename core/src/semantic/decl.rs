@@ -264,6 +264,9 @@ impl<'a> Checker<'a> {
     ) -> Option<InitValue> {
         match (init, ty) {
             (ast::Initializer::Expr(e), _) => {
+                if let Some(pending) = self.ref_init(e, ty) {
+                    return pending;
+                }
                 let typed = self.expr(e, Some(ty))?;
                 let value = self.coerce(typed, ty, e.span)?;
                 let Some(v) = consts::to_init_value(&value) else {
@@ -401,7 +404,14 @@ impl<'a> Checker<'a> {
                 }
             }
             let init = match &decl.init {
-                Some(i) => self.init_value(i, r.ty, r.range),
+                Some(i) => {
+                    // `REF(x)` may be the initial value here, of a variable of this POU.
+                    let scope = super::check::RefScope { pou: self.body.pou };
+                    let outer = self.ref_scope.replace(scope);
+                    let v = self.init_value(i, r.ty, r.range);
+                    self.ref_scope = outer;
+                    v
+                }
                 None => r.init.clone(),
             };
             if let Some(loc) = &decl.location {
@@ -514,13 +524,14 @@ impl<'a> Checker<'a> {
         let constant_later = ast.var_blocks.iter().skip_while(|b| b.constant).any(|b| b.constant);
         let mut known = Vec::new();
         if constant_later {
-            let quiet = self.diags.len();
+            let (quiet, pending) = (self.diags.len(), self.ref_inits.len());
             for block in
                 ast.var_blocks.iter().filter(|b| b.constant && b.section != VarSection::Global)
             {
                 self.declare_block(block, kind, &mut known);
             }
             self.diags.truncate(quiet);
+            self.ref_inits.truncate(pending);
             self.set_declared_vars(id, Vec::new(), &known);
         }
         for block in &ast.var_blocks {

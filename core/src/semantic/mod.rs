@@ -16,6 +16,7 @@ mod image;
 pub mod ir;
 mod nesting;
 mod prelude;
+mod ref_init;
 mod refs;
 mod stmt;
 pub mod types;

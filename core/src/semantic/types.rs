@@ -240,4 +240,40 @@ pub enum InitValue {
     Array(Vec<InitValue>),
     /// Struct fields by index; `None` keeps the field's default.
     Struct(Vec<Option<InitValue>>),
+    /// A reference's initial value `REF(x)`: where `x` is, written as an address when the
+    /// program is laid out (`docs/references.md`).
+    Ref(RefInit),
+}
+
+/// The variable a reference's initial value points to: a variable of the POU whose
+/// declaration holds the value, or a global; then fields, members and constant elements.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RefInit {
+    /// The variable the path starts at.
+    pub root: RefRoot,
+    /// The fields, members and elements from there to the referenced variable.
+    pub steps: Vec<RefStep>,
+}
+
+/// Where a reference's initial value starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RefRoot {
+    /// Variable `.1` of POU `.0`, in the instance (or static frame) of `.0` that holds the
+    /// declaration: the innermost instance of `.0` among those being initialised.
+    Own(PouId, u32),
+    /// Global variable `index`.
+    Global(u32),
+    /// Not resolved yet: the checker's pending entry `index` (never in a checked program).
+    Pending(u32),
+}
+
+/// One step of a [`RefInit`] path.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RefStep {
+    /// Field `.1` of struct `.0`.
+    Field(StructId, u32),
+    /// Variable `.1` of an instance of function block (or PROGRAM) `.0`.
+    Member(PouId, u32),
+    /// Element `.1` (counted from 0, last dimension fastest) of an array of type `.0`.
+    Element(ArrayId, u64),
 }

@@ -472,3 +472,53 @@ fn a_var_external_of_the_main_program_reads_and_writes_its_global() {
     s.scan();
     assert_eq!(int(&s, "Total"), 11);
 }
+
+#[test]
+fn reference_initial_values_come_back_on_a_restart_as_other_initial_values() {
+    // Scan 1 adds 1 and 10 to `a` through r and k, then points both at `b`.
+    let src = "PROGRAM P
+VAR r : REF_TO INT := REF(a); a, b : INT; END_VAR
+VAR RETAIN k : REF_TO INT := REF(a); END_VAR
+r^ := r^ + 1;
+k^ := k^ + 10;
+r := REF(b);
+k := REF(b);
+END_PROGRAM";
+    let mut s = sim(src);
+    s.run_scans(2);
+    assert_eq!((int(&s, "a"), int(&s, "b")), (11, 11));
+    // Warm: r is REF(a) again, the RETAIN k keeps pointing at b.
+    s.warm_restart();
+    s.scan();
+    assert_eq!((int(&s, "a"), int(&s, "b")), (1, 10));
+    // Cold: both are REF(a) again.
+    s.cold_restart();
+    s.scan();
+    assert_eq!((int(&s, "a"), int(&s, "b")), (11, 0));
+}
+
+#[test]
+fn var_config_initial_values_come_back_on_a_restart_as_other_initial_values() {
+    let src = "FUNCTION_BLOCK Valve
+VAR_INPUT Setpoint : INT := 10; END_VAR
+VAR RETAIN Kept : INT := 1; END_VAR
+Setpoint := Setpoint + 1;
+Kept := Kept + 1;
+END_FUNCTION_BLOCK
+PROGRAM Cell VAR V1 : Valve; END_VAR V1(); END_PROGRAM
+CONFIGURATION Plant
+  PROGRAM Line : Cell;
+  VAR_CONFIG
+    Line.V1.Setpoint : INT := 50;
+    Line.V1.Kept : INT := 7;
+  END_VAR
+END_CONFIGURATION";
+    let mut s = config_sim(src);
+    assert_eq!((int(&s, "Line.V1.Setpoint"), int(&s, "Line.V1.Kept")), (50, 7));
+    s.run_scans(3);
+    assert_eq!((int(&s, "Line.V1.Setpoint"), int(&s, "Line.V1.Kept")), (53, 10));
+    s.warm_restart();
+    assert_eq!((int(&s, "Line.V1.Setpoint"), int(&s, "Line.V1.Kept")), (50, 10));
+    s.cold_restart();
+    assert_eq!((int(&s, "Line.V1.Setpoint"), int(&s, "Line.V1.Kept")), (50, 7));
+}

@@ -358,6 +358,13 @@ impl Machine {
                         let d = base as usize + s;
                         cells.get_mut(d..d + (e - s)).ok_or(BAD)?.copy_from_slice(src);
                     }
+                    // A reference into the instance: its offset plus one, moved to `base`.
+                    for &off in &f.relocs {
+                        let c = cells.get_mut(base as usize + off as usize).ok_or(BAD)?;
+                        if *c != 0 {
+                            *c = c.wrapping_add(u64::from(base));
+                        }
+                    }
                 }
                 Op::Ret => match self.stack.pop() {
                     Some(f) => {

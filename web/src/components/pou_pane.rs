@@ -10,10 +10,9 @@ use plc_core::exercise::interface_declarations;
 use plc_core::ladder::LadderPouKind;
 
 use crate::components::editor::Editor;
-use crate::components::ladder::LadderView;
-use crate::components::petri::PetriView;
 use crate::components::problems::Problems;
 use crate::exercises::Exercises;
+use crate::lazy::{self, lazy_view};
 use crate::state::{AppState, PouView};
 
 /// One entry of the navigator.
@@ -193,6 +192,10 @@ fn NewPou(petri: bool) -> impl IntoView {
     let show = move |_| {
         let base = name_base(exercise_id().as_deref(), petri);
         name.set(state.project.with_untracked(|p| p.free_pou_name(&base)));
+        // The editor and the pass that build the new POU come while the user names it.
+        leptos::task::spawn_local(async move {
+            let _ = lazy::preload_editor(petri).await;
+        });
         if let Some(d) = dialog.get_untracked() {
             let _ = d.show_modal();
         }
@@ -206,10 +209,7 @@ fn NewPou(petri: bool) -> impl IntoView {
             d.close();
         }
     };
-    let create = move || {
-        if untrack(problem).is_some() {
-            return;
-        }
+    let create_now = move || {
         let text = name.get_untracked().trim().to_string();
         let mut project = state.project.get_untracked();
         let program = petri || kind.get_untracked() == LadderPouKind::Program;
@@ -250,6 +250,17 @@ fn NewPou(petri: bool) -> impl IntoView {
                 "{text} declares the exercise's interface and is now the program that runs and that Check grades (Program under Simulation chooses another)."
             ));
         }
+    };
+    // Create waits for the editor and its pass, so the new POU is built (and its PROGRAM
+    // runs) before it is shown.
+    let create = move || {
+        if untrack(problem).is_some() {
+            return;
+        }
+        leptos::task::spawn_local(async move {
+            let _ = lazy::preload_editor(petri).await;
+            create_now();
+        });
     };
     view! {
         <button class="pou-tab pou-new" data-kind=if petri { "petri" } else { "ladder" }
@@ -300,10 +311,17 @@ pub fn PouPane() -> impl IntoView {
         </div>
         {move || match view.get() {
             PouView::St => ().into_any(),
-            PouView::Ladder(name) => view! { <LadderView name=name/> }.into_any(),
-            PouView::Petri(name) => view! { <PetriView name=name/> }.into_any(),
-            PouView::Sfc(name) => view! { <crate::components::sfc::SfcView name=name/> }.into_any(),
-            PouView::Network(name) => view! { <crate::components::network::NetworkView name=name/> }.into_any(),
+            // Each view comes from its own chunk, fetched the first time it is shown.
+            PouView::Ladder(name) => {
+                lazy_view("the ladder editor", move || lazy::ladder_view(name.clone()))
+            }
+            PouView::Petri(name) => {
+                lazy_view("the Petri net editor", move || lazy::petri_view(name.clone()))
+            }
+            PouView::Sfc(name) => lazy_view("the SFC chart", move || lazy::sfc_view(name.clone())),
+            PouView::Network(name) => {
+                lazy_view("the network view", move || lazy::network_view(name.clone()))
+            }
         }}
         <Problems/>
     }

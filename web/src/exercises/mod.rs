@@ -1,7 +1,7 @@
 //! Exercises in the page: the catalogue of shipped exercises, opening one (shipped, from an
 //! address `?exercise=URL`, or from a `#x=…` link) with the attempt the student saved or
 //! the starter, checking an attempt, and the report. The exercise worker
-//! (`src/bin/plc-exercise.rs`) reads the files and grades; the page keeps what it shows.
+//! (`src/workers/exercise.rs`) reads the files and grades; the page keeps what it shows.
 
 mod catalogue;
 mod panel;
@@ -26,8 +26,8 @@ mod list {
     include!(concat!(env!("OUT_DIR"), "/exercises.rs"));
 }
 
-/// The worker's loader script, next to `index.html`.
-const WORKER_SCRIPT: &str = "./plc-exercise_loader.js";
+/// The exercise worker's name (`src/workers/mod.rs`).
+const WORKER: &str = "exercise";
 
 /// What the page's main area shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -328,8 +328,11 @@ fn starter_project(opened: &Opened) -> Option<Project> {
 /// Sends one request to a fresh exercise worker.
 async fn ask(request: &Request) -> Result<Reply, String> {
     let text = serde_json::to_string(request).map_err(|e| e.to_string())?;
-    let answer = crate::import::ask_worker_at(WORKER_SCRIPT, &JsValue::from_str(&text)).await?;
-    serde_json::from_str(&answer).map_err(|_| "the exercise worker gave no answer".to_string())
+    let answer = crate::import::ask_worker_at(WORKER, &JsValue::from_str(&text)).await?;
+    crate::lazy::read_exercise_reply(answer)
+        .await
+        .map_err(|e| e.to_string())?
+        .ok_or_else(|| "the exercise worker gave no answer".to_string())
 }
 
 /// The text at `url` (a CORS fetch).

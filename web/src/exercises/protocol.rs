@@ -1,4 +1,4 @@
-//! The messages between the page and the exercise worker (`src/bin/plc-exercise.rs`),
+//! The messages between the page and the exercise worker (`src/workers/exercise.rs`),
 //! which reads exercise files, renders their statements and grades attempts off the
 //! page's own module (the TOML reader, the Markdown renderer and the grader are not in the
 //! first load). Both sides send one JSON text per message.

@@ -2,7 +2,7 @@
 //! variables and RESOURCEs; a resource declares TASKs and the PROGRAM instances run under
 //! them. Data only, like the rest of the AST.
 
-use super::{DirectAddress, Expr, Ident, TypeRef, VarBlock};
+use super::{DirectAddress, Expr, Ident, Initializer, TypeRef, VarBlock};
 use crate::diagnostics::Span;
 
 /// `CONFIGURATION name … END_CONFIGURATION`.
@@ -90,15 +90,19 @@ pub struct Connection {
 }
 
 /// One `VAR_CONFIG` entry: `Main1.Valve.Out AT %QX0.3 : BOOL;` gives the variable at the
-/// instance path, declared at an incomplete address (`AT %Q* : BOOL`), its address.
+/// instance path, declared at an incomplete address (`AT %Q* : BOOL`), its address;
+/// `Main1.Valve.Setpoint : INT := 50;` gives it its initial value in that instance (both
+/// may be given together).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ConfigVar {
     /// The instance path: a program instance, then instance and variable names.
     pub path: Vec<Ident>,
-    /// The complete address.
-    pub location: DirectAddress,
+    /// The complete address, when the entry gives one.
+    pub location: Option<DirectAddress>,
     /// The declared type (the variable's).
     pub ty: TypeRef,
+    /// The initial value, when the entry gives one.
+    pub init: Option<Initializer>,
     /// The whole entry.
     pub span: crate::diagnostics::Span,
 }

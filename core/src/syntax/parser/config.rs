@@ -228,23 +228,33 @@ impl Parser<'_> {
         }
     }
 
-    /// `Main1.Valve.Out AT %QX0.3 : BOOL;`
+    /// `Main1.Valve.Out AT %QX0.3 : BOOL;`, `Main1.Valve.Setpoint : INT := 50;` or both:
+    /// `Main1.Valve.Out AT %QX0.3 : BOOL := TRUE;`
     fn config_entry(&mut self) -> PResult<ConfigVar> {
         let start = self.tok().span;
         let mut path = vec![self.name("an instance path such as `Main1.Valve.Out`")?];
         while self.eat(TokenKind::Dot).is_some() {
             path.push(self.name("a name after `.`")?);
         }
-        self.expect(TokenKind::At, "`AT` and the variable's address")?;
-        let tok = self.expect(TokenKind::Direct, "an address such as `%QX0.3` after AT")?;
-        let location = self.direct_address(tok).ok_or(Fail)?;
-        self.expect(TokenKind::Colon, "`:` and the variable's type")?;
+        let location = if self.eat(TokenKind::At).is_some() {
+            let tok = self.expect(TokenKind::Direct, "an address such as `%QX0.3` after AT")?;
+            Some(self.direct_address(tok).ok_or(Fail)?)
+        } else {
+            None
+        };
+        let what = if location.is_some() {
+            "`:` and the variable's type"
+        } else {
+            "`AT` and the variable's address, or `:` and its type"
+        };
+        self.expect(TokenKind::Colon, what)?;
         let ty = self.parse_type_spec()?;
-        if self.eat(TokenKind::Assign).is_some() {
-            self.parse_initializer()?;
-        }
+        let init = match self.eat(TokenKind::Assign) {
+            Some(_) => Some(self.parse_initializer()?),
+            None => None,
+        };
         self.expect(TokenKind::Semicolon, "`;` after the entry")?;
-        Ok(ConfigVar { path, location, ty, span: start.to(self.prev_span()) })
+        Ok(ConfigVar { path, location, ty, init, span: start.to(self.prev_span()) })
     }
 
     /// `VAR_ACCESS … END_VAR`: reported and skipped.

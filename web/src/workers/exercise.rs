@@ -1,19 +1,15 @@
-//! The exercise worker: reads exercise files (shipped, fetched or carried by a link),
-//! renders their statements and grades attempts, off the page's own module so the first
-//! load stays within its size budget. It says `"ready"` once loaded, then answers each
-//! message — a JSON [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`).
+//! The exercise worker's work: reading exercise files (shipped, fetched or carried by a
+//! link), rendering their statements and grading attempts, in a chunk of the app
+//! (`split_exercise_worker.wasm`) that only the exercise worker loads (it runs the page's
+//! module, so the engine is not downloaded twice). It answers each message — a JSON
+//! [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`).
 
-#[path = "../exercises/protocol.rs"]
-mod protocol;
-
+use crate::exercises::protocol::{Opened, Reply, Request};
 use plc_core::exercise::{
-    grade_with, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
+    grade_by, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
 };
-use plc_core::open::open_text;
+use plc_core::open::open_plain;
 use plc_core::project::Project;
-use protocol::{Opened, Reply, Request};
-use wasm_bindgen::closure::Closure;
-use wasm_bindgen::{JsCast, JsValue};
 
 mod shipped {
     include!(concat!(env!("OUT_DIR"), "/exercise_files.rs"));
@@ -23,19 +19,19 @@ mod shipped {
 const PAGE_WINDOW: usize = 100;
 
 /// The reply to one request.
-fn answer(request: Request) -> Reply {
+async fn answer(request: Request) -> Reply {
     match request {
         Request::Shipped(id) => match shipped::FILES.iter().find(|(i, _, _)| *i == id) {
             Some((_, text, starter)) => {
                 let starter =
                     starter.map(|(name, text)| LinkedFile { name: name.into(), text: text.into() });
-                open(ExerciseLink { exercise: (*text).to_string(), starter }, None)
+                open(ExerciseLink { exercise: (*text).to_string(), starter }, None).await
             }
             None => Reply::Error(format!("there is no exercise “{id}” in this trainer")),
         },
-        Request::File { link, base } => open(link, base),
+        Request::File { link, base } => open(link, base).await,
         Request::Link(fragment) => match ExerciseLink::decode(&fragment) {
-            Ok((link, _)) => open(link, None),
+            Ok((link, _)) => open(link, None).await,
             Err(e) => Reply::Error(e.to_string()),
         },
         Request::Grade { exercise, project } => {
@@ -47,7 +43,13 @@ fn answer(request: Request) -> Reply {
                 Ok(p) => p,
                 Err(e) => return Reply::Error(format!("the project cannot be read: {e}")),
             };
-            match grade_with(&exercise, &project, GradeOptions { window: PAGE_WINDOW }) {
+            // The passes for the submission's diagram POUs are chunks, fetched as needed.
+            let passes = match super::passes_for(&project).await {
+                Ok(passes) => passes,
+                Err(e) => return Reply::Error(format!("the exercise cannot grade: {e}")),
+            };
+            let options = GradeOptions { window: PAGE_WINDOW };
+            match grade_by(&exercise, &project, options, &passes) {
                 Ok(report) => Reply::Graded(report),
                 Err(e) => Reply::Error(format!("the exercise cannot grade: {e}")),
             }
@@ -56,7 +58,7 @@ fn answer(request: Request) -> Reply {
 }
 
 /// Opens an exercise file with its starter.
-fn open(link: ExerciseLink, base: Option<String>) -> Reply {
+async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
     let exercise = match Exercise::from_toml(&link.exercise) {
         Ok(e) => e,
         Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
@@ -69,15 +71,27 @@ fn open(link: ExerciseLink, base: Option<String>) -> Reply {
         (None, _) => {
             let mut p = Project::new(&exercise.title);
             p.source = exercise.blank_program();
-            Some(exercise.with_plant(&p).to_file())
+            Some(exercise.with_plant_by(&p, &plc_core::build::Lowerings::NONE).to_file())
         }
         (Some(_), None) => None,
         (Some(_), Some(file)) => {
             let stem = file.name.split('.').next().unwrap_or("starter");
-            match open_text(stem, &file.text) {
+            // Starters are ST or project files; the XML reader (a chunk of its own, shared
+            // with the import worker) is fetched only for a PLCopen XML or PNML starter.
+            let opened = match open_plain(stem, &file.text) {
+                Ok(Some(opened)) => Ok(opened),
+                Ok(None) => super::open_xml(stem.to_string(), file.text.clone())
+                    .await
+                    .unwrap_or_else(|e| Err(e.to_string())),
+                Err(e) => Err(e.to_string()),
+            };
+            match opened {
                 // The exercise's plant and its scene join the starter (the grader puts
                 // its own plant back in whatever the student changes).
-                Ok(opened) => Some(exercise.with_plant(&opened.project).to_file()),
+                Ok(opened) => match super::passes_for(&opened.project).await {
+                    Ok(passes) => Some(exercise.with_plant_by(&opened.project, &passes).to_file()),
+                    Err(e) => return Reply::Error(format!("the starter cannot be opened: {e}")),
+                },
                 Err(e) => {
                     return Reply::Error(format!("the starter {} cannot be opened: {e}", file.name))
                 }
@@ -89,28 +103,13 @@ fn open(link: ExerciseLink, base: Option<String>) -> Reply {
 }
 
 /// The reply to a message's text.
-fn reply_text(text: &str) -> String {
+pub async fn reply_text(text: &str) -> String {
     let reply = match serde_json::from_str::<Request>(text) {
-        Ok(request) => answer(request),
+        Ok(request) => answer(request).await,
         Err(e) => Reply::Error(format!("the exercise worker got a request it cannot read: {e}")),
     };
     serde_json::to_string(&reply)
         .unwrap_or_else(|_| r#"{"Error":"the answer could not be written"}"#.into())
-}
-
-fn main() {
-    console_error_panic_hook::set_once();
-    let scope: web_sys::DedicatedWorkerGlobalScope = js_sys::global().unchecked_into();
-    let answer_to = scope.clone();
-    let on_message =
-        Closure::<dyn Fn(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
-            let text = ev.data().as_string().unwrap_or_default();
-            let _ = answer_to.post_message(&JsValue::from_str(&reply_text(&text)));
-        });
-    scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
-    on_message.forget();
-    // Ready: the page sends its request only now.
-    let _ = scope.post_message(&JsValue::from_str("ready"));
 }
 
 #[cfg(test)]
@@ -119,7 +118,23 @@ mod tests {
     use super::*;
 
     fn ask(request: Request) -> Reply {
-        serde_json::from_str(&reply_text(&serde_json::to_string(&request).unwrap())).unwrap()
+        serde_json::from_str(&reply(&serde_json::to_string(&request).unwrap())).unwrap()
+    }
+
+    /// `reply_text` run to its end (natively nothing in it waits).
+    fn reply(text: &str) -> String {
+        block_on(reply_text(text))
+    }
+
+    fn block_on<F: std::future::Future>(f: F) -> F::Output {
+        use std::task::{Context, Poll, Waker};
+        let mut f = std::pin::pin!(f);
+        let mut cx = Context::from_waker(Waker::noop());
+        loop {
+            if let Poll::Ready(out) = f.as_mut().poll(&mut cx) {
+                return out;
+            }
+        }
     }
 
     #[test]
@@ -174,7 +189,7 @@ mod tests {
 
     #[test]
     fn bad_requests_get_messages() {
-        assert!(reply_text("nonsense").contains("cannot read"));
+        assert!(reply("nonsense").contains("cannot read"));
         let Reply::Error(e) = ask(Request::Shipped("nope".into())) else { panic!() };
         assert!(e.contains("nope"));
         let Reply::Error(e) = ask(Request::Link("x=AAAA".into())) else { panic!() };
