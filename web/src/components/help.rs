@@ -76,16 +76,17 @@ fn menu_html() -> String {
         r#"<li role="none"><a role="menuitem" tabindex="-1" data-help="page" href="problems.html" target="_blank" rel="noopener">Problems explained</a></li>"#,
         r#"</ul>"#,
     ));
-    html.push_str(&format!(
-        r#"<dialog id="{DIALOG_ID}" class="app-dialog shortcuts" aria-labelledby="shortcuts-title">{}</dialog>"#,
-        shortcuts_html()
+    // Its content comes from a chunk the first time it opens (`lazy::shortcuts_text`).
+    html.push_str(concat!(
+        r#"<dialog id="shortcuts-dialog" class="app-dialog shortcuts""#,
+        r#" aria-labelledby="shortcuts-title"></dialog>"#
     ));
     html
 }
 
 /// The shortcuts dialog's content: the title, the list (focused when it opens, so it
 /// opens at its top and the arrow keys scroll it) and `Close`.
-fn shortcuts_html() -> String {
+pub fn shortcuts_html() -> String {
     let mut html = String::from(
         r#"<h2 id="shortcuts-title">Keyboard shortcuts</h2><p class="muted">On a Mac, Cmd works where Ctrl is written.</p><div class="shortcut-list" tabindex="0" autofocus aria-label="Shortcuts">"#,
     );
@@ -143,6 +144,7 @@ fn focus_item(root: &web_sys::Element, index: Option<i32>) {
 pub fn help_menu() -> impl IntoView {
     use wasm_bindgen::JsCast;
     let tour = expect_context::<Tour>();
+    let state = expect_context::<crate::state::AppState>();
     let root_of =
         |e: &web_sys::Event| e.current_target().and_then(|t| t.dyn_into::<web_sys::Element>().ok());
     let on_click = move |e: ev::MouseEvent| {
@@ -167,7 +169,18 @@ pub fn help_menu() -> impl IntoView {
                     .flatten()
                     .and_then(|d| d.dyn_into::<web_sys::HtmlDialogElement>().ok());
                 if let Some(d) = dialog {
-                    let _ = d.show_modal();
+                    leptos::task::spawn_local(async move {
+                        if d.child_element_count() == 0 {
+                            match crate::lazy::shortcuts_text().await {
+                                Ok(html) => d.set_inner_html(&html),
+                                Err(e) => {
+                                    return state
+                                        .error(format!("Could not open the shortcuts: {e}."))
+                                }
+                            }
+                        }
+                        let _ = d.show_modal();
+                    });
                 }
             }
             Some("page") => set_open(&root, false, false),

@@ -8,6 +8,7 @@ pub mod help;
 pub mod io;
 pub mod ladder;
 pub mod network;
+pub mod new_pou;
 pub mod petri;
 pub mod pou_actions;
 pub mod pou_pane;

@@ -22,40 +22,38 @@ const DONE_KEY: &str = "plc-trainer/v1/tour";
 /// How long a step shows that it is done before the next one.
 const ADVANCE_DELAY: std::time::Duration = std::time::Duration::from_millis(1200);
 
-/// One step of the lesson.
+/// One step of the lesson (its words come from a chunk loaded on first use:
+/// `lazy::tour_text`).
 struct Step {
     title: &'static str,
     text: &'static str,
-    /// What the page marks (`data-tour-target` on the document, matched by the CSS).
-    target: &'static str,
 }
+
+/// What the page marks at each step (`data-tour-target` on the document, matched by the
+/// CSS).
+const TARGETS: [&str; 5] = ["run io", "st", "ladder", "step", "exercises"];
 
 /// The lesson (its words in one place).
 const STEPS: [Step; 5] = [
     Step {
         title: "Flip an input and see a lamp",
         text: "Press Run, then tick Start under Inputs and outputs: the Motor lamp lights, and stays lit when you untick Start, because the program in the editor latches it. Tick Stop to switch it off.",
-        target: "run io",
     },
     Step {
         title: "Change one line of ST",
         text: "In the ST editor, change Motor := (Start OR Motor) AND NOT Stop; to Motor := Start AND NOT Stop; and watch Problems: once it builds, the PLC runs your change, and Motor is on only while Start is ticked.",
-        target: "st",
     },
     Step {
         title: "Draw one rung",
         text: "Press New ladder POU, then Create. Drag NO contact from the palette onto the rung and type Start, then a Coil beside it named Lamp (Enter after each; or select a cell and press c or o). Press Declare under Problems for each new name.",
-        target: "ladder",
     },
     Step {
         title: "Press Step and read the timeline",
         text: "Press Step under Simulation: the PLC runs one scan and the scan count goes up. Tick Chart beside a variable under Variables: the timeline draws its value scan by scan, and a click on it reads any scan.",
-        target: "step",
     },
     Step {
         title: "Open the first exercise",
         text: "Press Exercises, choose Level 1 and open an exercise. Write your answer in ST or ladder, then press Check: it runs the exercise's scenarios and tells you what passed.",
-        target: "exercises",
     },
 ];
 
@@ -109,21 +107,28 @@ fn drawn_rungs(project: &Project) -> usize {
 /// The tour's place, shared by the strip and the `Help` menu.
 #[derive(Clone, Copy)]
 pub struct Tour {
-    /// The step shown (`None`: closed; `STEPS.len()`: finished).
+    /// The step shown (`None`: closed; `TARGETS.len()`: finished).
     pub step: RwSignal<Option<usize>>,
     /// The step's action was seen: it says so for a moment, then the next step shows.
     pub done: RwSignal<bool>,
+    /// The strip's markup for the step shown, and what it says to a screen reader.
+    content: RwSignal<Option<(String, String)>>,
 }
 
 impl Tour {
     /// Open at the first step unless it was finished or skipped in this browser.
     pub fn new() -> Self {
         let done = LocalStorage::open().get(DONE_KEY).ok().flatten().is_some();
-        Tour { step: RwSignal::new((!done).then_some(0)), done: RwSignal::new(false) }
+        Tour {
+            step: RwSignal::new((!done).then_some(0)),
+            done: RwSignal::new(false),
+            content: RwSignal::new(None),
+        }
     }
 
     /// Opens the tour at its first step (`Help` → `Start here`).
     pub fn restart(self) {
+        self.content.set(None);
         self.step.set(Some(0));
     }
 
@@ -133,10 +138,10 @@ impl Tour {
     }
 
     fn go(self, step: usize) {
-        if step >= STEPS.len() {
+        if step >= TARGETS.len() {
             Self::remember_done();
         }
-        self.step.set(Some(step.min(STEPS.len())));
+        self.step.set(Some(step.min(TARGETS.len())));
     }
 
     fn skip(self) {
@@ -176,7 +181,7 @@ impl Tour {
     pub fn watch(self, state: AppState, ex: Exercises) {
         let (tour, done) = (self, self.done);
         Effect::new(move |prev: Option<Option<(usize, Mark)>>| {
-            let step = tour.step.get().filter(|s| *s < STEPS.len())?;
+            let step = tour.step.get().filter(|s| *s < TARGETS.len())?;
             let now = mark(state, ex, step);
             match prev.flatten() {
                 Some((s, before)) if s == step => {
@@ -200,16 +205,35 @@ impl Tour {
             }
         });
         Effect::new(move |_| {
-            let target = tour.step.get().and_then(|s| STEPS.get(s)).map(|s| s.target);
-            point_at(target);
+            let step = tour.step.get();
+            point_at(step.and_then(|s| TARGETS.get(s)).copied());
+            let Some(step) = step else { return };
+            let done = tour.done.get();
+            leptos::task::spawn_local(async move {
+                if let Ok(text) = crate::lazy::tour_text(step, done).await {
+                    if let Some((spoken, html)) = text.split_once('\u{1}') {
+                        tour.content.set(Some((spoken.to_string(), html.to_string())));
+                    }
+                }
+            });
         });
     }
 }
 
-/// The strip's content at `step` (`STEPS.len()`: finished); `done`: the step's action was
+/// What a screen reader hears of `step`, then `\u{1}`, then the strip's markup
+/// ([`tour_html`]): `lazy::tour_text` gives it from the chunk that holds the words.
+pub fn tour_text(step: usize, done: bool) -> String {
+    let spoken = match STEPS.get(step) {
+        Some(s) => format!("Start here, step {} of {}: {}", step + 1, STEPS.len(), s.title),
+        None => FINISHED.0.to_string(),
+    };
+    format!("{spoken}\u{1}{}", tour_html(step, done))
+}
+
+/// The strip's content at `step` (`TARGETS.len()`: finished); `done`: the step's action was
 /// seen. Fixed markup whose buttons name their action in `data-tour-action`.
 fn tour_html(step: usize, done: bool) -> String {
-    let total = STEPS.len();
+    let total = TARGETS.len();
     let (count, title, text) = match STEPS.get(step) {
         Some(s) => (format!("Step {} of {total}", step + 1), s.title, s.text),
         None => ("Finished".to_string(), FINISHED.0, FINISHED.1),
@@ -260,14 +284,11 @@ pub fn tour_panel() -> impl IntoView {
         });
     };
     move || {
-        let step = tour.step.get()?;
-        let spoken = match STEPS.get(step) {
-            Some(s) => format!("Start here, step {} of {}: {}", step + 1, STEPS.len(), s.title),
-            None => FINISHED.0.to_string(),
-        };
+        tour.step.get()?;
+        let (spoken, html) = tour.content.get()?;
         Some(view! {
             <section class="tour" role="region" aria-label="Start here" on:click=on_click>
-                <div class="tour-grid" inner_html=move || tour_html(step, tour.done.get())></div>
+                <div class="tour-grid" inner_html=html></div>
                 <p class="visually-hidden" aria-live="polite">{spoken}</p>
             </section>
         })
@@ -313,7 +334,7 @@ mod tests {
             ..Cell::default()
         };
         assert_eq!(drawn_rungs(&p), 1);
-        assert_eq!(STEPS.len(), 5);
+        assert_eq!(STEPS.len(), TARGETS.len());
     }
 
     #[test]
