@@ -29,9 +29,33 @@ struct Entry {
     title: String,
     level: u8,
     #[serde(default)]
+    order: Option<u32>,
+    #[serde(default)]
     languages: Vec<String>,
     #[serde(default)]
     starter: Option<String>,
+    #[serde(default)]
+    starter_st: Option<String>,
+    #[serde(default)]
+    starter_ld: Option<String>,
+    #[serde(default)]
+    starter_petri: Option<String>,
+    #[serde(default)]
+    starter_sfc: Option<String>,
+}
+
+impl Entry {
+    /// Every starter file the exercise names, once each.
+    fn starter_files(&self) -> Vec<&str> {
+        let mut out: Vec<&str> = Vec::new();
+        let named = [&self.starter, &self.starter_st, &self.starter_ld, &self.starter_petri];
+        for f in named.into_iter().chain([&self.starter_sfc]).filter_map(|f| f.as_deref()) {
+            if !out.contains(&f) {
+                out.push(f);
+            }
+        }
+        out
+    }
 }
 
 /// Writes the exercise catalogue and files (see the module's doc).
@@ -50,12 +74,15 @@ fn exercises(out: &Path) {
             Err(e) => panic!("{}: {e}", file.display()),
         }
     }
-    entries.sort_by(|a, b| a.0.level.cmp(&b.0.level).then_with(|| a.0.title.cmp(&b.0.title)));
+    entries.sort_by(|a, b| {
+        let key = |e: &Entry| (e.level, e.order.unwrap_or(u32::MAX));
+        key(&a.0).cmp(&key(&b.0)).then_with(|| a.0.title.cmp(&b.0.title))
+    });
     let mut catalogue = String::from(
         "/// The shipped exercises, easiest first: (id, title, level, languages).\npub const CATALOGUE: &[(&str, &str, u8, &[&str])] = &[\n",
     );
     let mut files = String::from(
-        "/// A starter file: (name, text).\npub type Starter = (&'static str, &'static str);\n/// The shipped exercises' files: (id, exercise file, starter).\npub const FILES: &[(&str, &str, Option<Starter>)] = &[\n",
+        "/// A starter file: (name, text).\npub type Starter = (&'static str, &'static str);\n/// The shipped exercises' files: (id, exercise file, the starter files it names).\npub const FILES: &[(&str, &str, &[Starter])] = &[\n",
     );
     for (e, folder) in &entries {
         let _ = writeln!(
@@ -64,14 +91,16 @@ fn exercises(out: &Path) {
             e.id, e.title, e.level, e.languages
         );
         let file = folder.join(format!("{}.toml", e.id));
-        let starter = match &e.starter {
-            Some(name) => {
+        let starters: Vec<String> = e
+            .starter_files()
+            .into_iter()
+            .map(|name| {
                 let path = folder.join(name);
                 println!("cargo:rerun-if-changed={}", path.display());
-                format!("Some(({name:?}, include_str!({:?})))", path.display().to_string())
-            }
-            None => "None".to_string(),
-        };
+                format!("({name:?}, include_str!({:?}))", path.display().to_string())
+            })
+            .collect();
+        let starter = format!("&[{}]", starters.join(", "));
         let _ = writeln!(
             files,
             "    ({:?}, include_str!({:?}), {starter}),",

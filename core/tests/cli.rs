@@ -293,12 +293,12 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = String::from_utf8_lossy(&out.stdout).into_owned();
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines[0], "submission,score,total,passed,failed,error,first_failure");
+    assert_eq!(lines[0], "submission,score,total,passed,failed,error,first_failure,program");
     assert_eq!(lines.len(), 5, "{text}");
-    assert!(lines[1].ends_with("a-right.st,3,3,2,0,,"), "{}", lines[1]);
+    assert!(lines[1].ends_with("a-right.st,3,3,2,0,,,Main"), "{}", lines[1]);
     assert!(
         lines[2].ends_with(
-            "b-wrong.st,1,3,1,1,,\"Start, release, stop: Motor was FALSE at 0.21 s (scan 21)\""
+            "b-wrong.st,1,3,1,1,,\"Start, release, stop: Motor was FALSE at 0.21 s (scan 21)\",Main"
         ),
         "{}",
         lines[2]
@@ -309,12 +309,20 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
         lines[3]
     );
     assert!(lines[4].contains("d-unreadable.plcproj.json,,,,,"), "{}", lines[4]);
+    // The text names the PROGRAM graded.
+    let plain = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["grade", &exercise, &dir.join("b-wrong.st").to_string_lossy()])
+        .output()
+        .unwrap();
+    let plain = String::from_utf8_lossy(&plain.stdout).into_owned();
+    assert!(plain.contains("b-wrong.st: 1/3 — checked PROGRAM Main (ST)"), "{plain}");
     let json = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
         .args(["grade", &exercise, &dir.join("b-wrong.st").to_string_lossy(), "--format", "json"])
         .output()
         .unwrap();
     let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     assert_eq!(v[0]["score"], 1);
+    assert_eq!((&v[0]["program"], &v[0]["language"]), (&"Main".into(), &"ST".into()));
     assert_eq!(v[0]["scenarios"][0]["expected"], "Motor stays TRUE from 0.21 s to 0.49 s");
     assert_eq!(v[0]["scenarios"][0]["scan"], 21);
     assert_eq!(v[0]["scenarios"][0]["hint"], "Does the motor hold itself when Start is released?");
@@ -342,11 +350,22 @@ fn every_shipped_exercise_validates() {
         })
         .collect();
     let mut checked = 0;
+    let mut level_one = Vec::new();
     for (id, child) in running {
         let out = child.wait_with_output().unwrap();
         let text = String::from_utf8_lossy(&out.stdout).into_owned();
         assert!(out.status.success(), "{id}:\n{text}");
         assert!(text.contains("reference: passes all"), "{id}:\n{text}");
+        let file = std::fs::read_to_string(format!("{root}/{id}/{id}.toml")).unwrap();
+        let exercise = plc_core::exercise::Exercise::from_toml(&file).unwrap();
+        if exercise.level == 1 {
+            // A first exercise is in ST and ladder, with a right answer in each.
+            assert_eq!(exercise.languages, ["st", "ld"], "{id}");
+            assert!(text.contains("reference_ld: passes all"), "{id}:\n{text}");
+            assert!(text.contains("checked PROGRAM Main (ladder)"), "{id}:\n{text}");
+            assert!(text.contains("starter (Ladder): fails, as it should"), "{id}:\n{text}");
+            level_one.push(id.clone());
+        }
         assert!(
             text.lines().filter(|l| l.starts_with("mutant ")).all(|l| l.contains(": caught: ")),
             "{id}:\n{text}"
@@ -358,6 +377,7 @@ fn every_shipped_exercise_validates() {
         checked += 1;
     }
     assert!(checked >= 20, "the shipped exercises ({checked})");
+    assert!(level_one.len() >= 5, "five Level 1 exercises: {level_one:?}");
 }
 
 /// `plc exercise new` writes a skeleton that validates, and never overwrites.

@@ -17,18 +17,52 @@ pub struct Exercise {
     pub title: String,
     /// 1 (beginner) … 5 (advanced).
     pub level: u8,
+    /// Its place among the exercises of its level in the catalogue (those without one
+    /// come after, by title).
+    #[serde(default)]
+    pub order: Option<u32>,
     /// The languages a solution may use: `st`, `ld`, `petri`, `sfc`.
     #[serde(default)]
     pub languages: Vec<String>,
     /// The task, in Markdown.
     #[serde(default)]
     pub statement: String,
-    /// The starter project: a file next to the exercise (project, ST or PLCopen XML).
+    /// The PROGRAM the exercise grades (`Main`) when the student has not chosen another;
+    /// by default the one the starter declares.
+    #[serde(default)]
+    pub program: Option<String>,
+    /// The starter project in the first of `languages`: a file next to the exercise
+    /// (project, ST or PLCopen XML).
     #[serde(default)]
     pub starter: Option<String>,
+    /// The starter in Structured Text, when it is not `starter` (else made from the
+    /// interface).
+    #[serde(default)]
+    pub starter_st: Option<String>,
+    /// The starter in ladder (a project file with a ladder PROGRAM).
+    #[serde(default)]
+    pub starter_ld: Option<String>,
+    /// The starter as a Petri net (a project file with a Petri net PROGRAM).
+    #[serde(default)]
+    pub starter_petri: Option<String>,
+    /// The starter as a textual SFC (an ST file).
+    #[serde(default)]
+    pub starter_sfc: Option<String>,
     /// The reference solution: a file next to the exercise.
     #[serde(default)]
     pub reference: Option<String>,
+    /// A reference solution in Structured Text, besides `reference`.
+    #[serde(default)]
+    pub reference_st: Option<String>,
+    /// A reference solution in ladder, besides `reference`.
+    #[serde(default)]
+    pub reference_ld: Option<String>,
+    /// A reference solution as a Petri net, besides `reference`.
+    #[serde(default)]
+    pub reference_petri: Option<String>,
+    /// A reference solution as a textual SFC, besides `reference`.
+    #[serde(default)]
+    pub reference_sfc: Option<String>,
     /// The variables the solution must declare.
     #[serde(default)]
     pub interface: Vec<InterfaceVar>,
@@ -372,6 +406,22 @@ impl Exercise {
         })?;
         if !(1..=5).contains(&exercise.level) {
             return Err(ExerciseError { message: "level is 1 (beginner) to 5 (advanced)".into() });
+        }
+        if let Some(code) = exercise
+            .languages
+            .iter()
+            .find(|code| super::starter::Language::from_code(code).is_none())
+        {
+            return Err(ExerciseError {
+                message: format!("languages: “{code}” is not one of st, ld, petri, sfc"),
+            });
+        }
+        if let Some(name) = exercise.program.as_deref() {
+            if !crate::syntax::is_identifier(name) {
+                return Err(ExerciseError {
+                    message: format!("program: “{name}” is not a PROGRAM name"),
+                });
+            }
         }
         for s in &exercise.scenarios {
             s.check()?;

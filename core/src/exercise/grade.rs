@@ -88,6 +88,13 @@ impl ScenarioReport {
 /// A submission's grade.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Report {
+    /// The PROGRAM graded (`Latch`), when the submission has one.
+    #[serde(default)]
+    pub program: Option<String>,
+    /// The language it is written in, as a report names it (`ST`, `ladder`, `Petri net`,
+    /// `SFC`, `IL`, `network`).
+    #[serde(default)]
+    pub language: Option<String>,
     /// Why nothing could run (the project does not build, has no PROGRAM …), located.
     pub error: Option<String>,
     /// Per scenario.
@@ -96,6 +103,40 @@ pub struct Report {
     pub score: u32,
     /// All the weights.
     pub total: u32,
+}
+
+impl Report {
+    /// What was graded, the report's first line: `Checked PROGRAM Latch (ladder)`.
+    pub fn checked_line(&self) -> Option<String> {
+        let program = self.program.as_deref()?;
+        Some(match self.language.as_deref() {
+            Some(language) => format!("Checked PROGRAM {program} ({language})"),
+            None => format!("Checked PROGRAM {program}"),
+        })
+    }
+
+    /// The score, with the scenarios' weights when they explain it: `Score 1 of 3
+    /// (scenario weights: 2 + 1)` when the weights differ, `Score 2 of 4 (4 scenarios, 1
+    /// point each)` when they do not; just `Score 3 of 3` with every scenario passed or
+    /// a single scenario.
+    pub fn score_line(&self) -> String {
+        let score = format!("Score {} of {}", self.score, self.total);
+        let weights: Vec<u32> = self.scenarios.iter().map(|s| s.weight).collect();
+        if self.score == self.total || weights.len() < 2 {
+            return score;
+        }
+        if weights.iter().all(|w| *w == weights[0]) {
+            let each = if weights[0] == 1 {
+                "1 point".to_string()
+            } else {
+                format!("{} points", weights[0])
+            };
+            format!("{score} ({} scenarios, {each} each)", weights.len())
+        } else {
+            let list: Vec<String> = weights.iter().map(u32::to_string).collect();
+            format!("{score} (scenario weights: {})", list.join(" + "))
+        }
+    }
 }
 
 /// Where a site is, for a report.
@@ -158,13 +199,27 @@ pub fn grade_by(
     lowerings: &Lowerings,
 ) -> Result<Report, ExerciseError> {
     let total = exercise.scenarios.iter().map(|s| s.weight).sum();
+    // The PROGRAM the student chose (the project's settings), else the exercise's.
+    let graded = exercise.graded_program(project);
+    let mut project = project.clone();
+    if let Some(g) = &graded {
+        project.settings.program = Some(g.name.clone());
+    }
     // The exercise's plant, never the submission's copy; without one, the scenarios
     // alone drive the inputs (a plant the submission names is not run).
-    let project = &exercise.with_plant_by(project, lowerings);
+    let project = &exercise.with_plant_by(&project, lowerings);
     let plant = exercise.plant.as_ref().map(|p| p.name.as_str());
     let build = build_project_by(project, lowerings);
-    let not_run =
-        |message: String| Report { error: Some(message), scenarios: Vec::new(), score: 0, total };
+    let program = graded.as_ref().map(|g| g.name.clone());
+    let language = graded.as_ref().map(|g| g.language.label().to_string());
+    let not_run = |message: String| Report {
+        program: program.clone(),
+        language: language.clone(),
+        error: Some(message),
+        scenarios: Vec::new(),
+        score: 0,
+        total,
+    };
     if let Some(d) = build.diagnostics.iter().find(|d| d.is_error()) {
         return Ok(not_run(format!(
             "the program does not build: {}: {} [{}]",
@@ -193,7 +248,7 @@ pub fn grade_by(
         });
     }
     let score = scenarios.iter().filter(|s| s.passed()).map(|s| s.weight).sum();
-    Ok(Report { error: None, scenarios, score, total })
+    Ok(Report { program, language, error: None, scenarios, score, total })
 }
 
 use super::random::Event;

@@ -20,6 +20,9 @@ pub struct ExerciseLink {
     /// The starter file, when the exercise names one.
     #[serde(default)]
     pub starter: Option<LinkedFile>,
+    /// The starters in its other languages the exercise names (`starter_ld` …).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub starters: Vec<LinkedFile>,
 }
 
 /// A file carried by a link.
@@ -32,6 +35,24 @@ pub struct LinkedFile {
 }
 
 impl ExerciseLink {
+    /// The link with every file in its place: the one `exercise` names as `starter` in
+    /// `starter` (as links made before other languages' starters carry it), the others in
+    /// `starters`.
+    pub fn arranged(mut self, exercise: &Exercise) -> ExerciseLink {
+        let mut files: Vec<LinkedFile> = self.starter.take().into_iter().collect();
+        files.append(&mut self.starters);
+        let main = exercise.starter.as_deref();
+        self.starter =
+            main.and_then(|n| files.iter().position(|f| f.name == n)).map(|i| files.remove(i));
+        self.starters = files;
+        self
+    }
+
+    /// The carried file named `name`.
+    pub fn file(&self, name: &str) -> Option<&LinkedFile> {
+        self.starter.iter().chain(&self.starters).find(|f| f.name == name)
+    }
+
     /// The fragment (without `#`): `x=<base64url(deflate(json))>`. The exercise text is
     /// checked first, so a link never carries a file the page would refuse.
     pub fn encode(&self) -> Result<String, ExerciseError> {
@@ -74,6 +95,7 @@ mod tests {
                 name: "starter.st".into(),
                 text: "PROGRAM Main END_PROGRAM".into(),
             }),
+            starters: Vec::new(),
         };
         let fragment = link.encode().unwrap();
         assert!(fragment.starts_with("x="));
@@ -88,7 +110,7 @@ mod tests {
         assert!(e("#x=!!!").contains("damaged"));
         let not_json = format!("x={}", pack(b"hello"));
         assert!(e(&not_json).contains("holds no exercise"));
-        let bad = ExerciseLink { exercise: "id = 3".into(), starter: None };
+        let bad = ExerciseLink { exercise: "id = 3".into(), starter: None, starters: Vec::new() };
         assert!(bad.encode().is_err());
         let json = serde_json::to_vec(&bad).unwrap();
         let message = e(&format!("x={}", pack(&json)));

@@ -7,6 +7,7 @@ mod grade;
 mod interface;
 mod link;
 mod random;
+mod starter;
 mod statement;
 mod view;
 
@@ -19,6 +20,7 @@ pub use grade::{
 };
 pub use interface::interface_declarations;
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
+pub use starter::{graded_program, Language};
 pub use statement::{next_to, statement_html};
 pub use view::{ExerciseView, ScenarioView};
 

@@ -53,8 +53,20 @@ pub struct Opened {
     pub base: Option<String>,
     /// The fragment of a link that carries it (`x=…`, without `#`).
     pub fragment: String,
-    /// The starter as a project file: the starter file opened, or a program declaring the
-    /// interface when the exercise names none. `None` when the exercise names a starter
-    /// that was not given (the page fetches it next to the file and asks again).
-    pub starter: Option<String>,
+    /// The starter in each language the student may start in, in the exercise's order:
+    /// the file it names opened, or one made from the interface. Empty while `missing`
+    /// is not.
+    pub starters: Vec<StarterFile>,
+    /// The starter files the exercise names that were not given (the page fetches them
+    /// next to the file and asks again).
+    pub missing: Vec<String>,
+}
+
+/// The starter in one language.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StarterFile {
+    /// The language's code (`st`, `ld`, `petri`, `sfc`).
+    pub language: String,
+    /// The starter as a project file; its settings name the PROGRAM graded.
+    pub project: String,
 }

@@ -4,7 +4,7 @@
 //! module, so the engine is not downloaded twice). It answers each message — a JSON
 //! [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`).
 
-use crate::exercises::protocol::{Opened, Reply, Request};
+use crate::exercises::protocol::{Opened, Reply, Request, StarterFile};
 use plc_core::exercise::{
     grade_by, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
 };
@@ -22,10 +22,16 @@ const PAGE_WINDOW: usize = 100;
 async fn answer(request: Request) -> Reply {
     match request {
         Request::Shipped(id) => match shipped::FILES.iter().find(|(i, _, _)| *i == id) {
-            Some((_, text, starter)) => {
-                let starter =
-                    starter.map(|(name, text)| LinkedFile { name: name.into(), text: text.into() });
-                open(ExerciseLink { exercise: (*text).to_string(), starter }, None).await
+            Some((_, text, files)) => {
+                let starters = files
+                    .iter()
+                    .map(|(name, text)| LinkedFile { name: (*name).into(), text: (*text).into() });
+                let link = ExerciseLink {
+                    exercise: (*text).to_string(),
+                    starter: None,
+                    starters: starters.collect(),
+                };
+                open(link, None).await
             }
             None => Reply::Error(format!("there is no exercise “{id}” in this trainer")),
         },
@@ -63,43 +69,67 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
         Ok(e) => e,
         Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
     };
+    let link = link.arranged(&exercise);
     let fragment = match link.encode() {
         Ok(f) => f,
         Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
     };
-    let starter = match (&exercise.starter, &link.starter) {
-        (None, _) => {
-            let mut p = Project::new(&exercise.title);
-            p.source = exercise.blank_program();
-            Some(exercise.with_plant_by(&p, &plc_core::build::Lowerings::NONE).to_file())
-        }
-        (Some(_), None) => None,
-        (Some(_), Some(file)) => {
+    let missing: Vec<String> = exercise
+        .starter_files()
+        .into_iter()
+        .filter(|name| link.file(name).is_none())
+        .map(String::from)
+        .collect();
+    let mut starters = Vec::new();
+    if missing.is_empty() {
+        // The starter files are ST or project files; the XML reader (a chunk of its own,
+        // shared with the import worker) is fetched only for a PLCopen XML or PNML one.
+        let mut files: Vec<(String, Result<Project, String>)> = Vec::new();
+        let mut passes = plc_core::build::Lowerings::NONE;
+        for name in exercise.starter_files() {
+            let Some(file) = link.file(name) else { continue };
             let stem = file.name.split('.').next().unwrap_or("starter");
-            // Starters are ST or project files; the XML reader (a chunk of its own, shared
-            // with the import worker) is fetched only for a PLCopen XML or PNML starter.
             let opened = match open_plain(stem, &file.text) {
-                Ok(Some(opened)) => Ok(opened),
-                Ok(None) => super::open_xml(stem.to_string(), file.text.clone())
-                    .await
-                    .unwrap_or_else(|e| Err(e.to_string())),
+                Ok(Some(opened)) => Ok(opened.project),
+                Ok(None) => match super::open_xml(stem.to_string(), file.text.clone()).await {
+                    Ok(r) => r.map(|o| o.project),
+                    Err(e) => Err(e.to_string()),
+                },
                 Err(e) => Err(e.to_string()),
             };
-            match opened {
-                // The exercise's plant and its scene join the starter (the grader puts
-                // its own plant back in whatever the student changes).
-                Ok(opened) => match super::passes_for(&opened.project).await {
-                    Ok(passes) => Some(exercise.with_plant_by(&opened.project, &passes).to_file()),
+            if let Ok(project) = &opened {
+                // The passes its diagram POUs need, fetched when missing.
+                match super::passes_for(project).await {
+                    Ok(p) => passes = p,
                     Err(e) => return Reply::Error(format!("the starter cannot be opened: {e}")),
-                },
-                Err(e) => {
-                    return Reply::Error(format!("the starter {} cannot be opened: {e}", file.name))
                 }
             }
+            files.push((name.to_string(), opened));
         }
-    };
+        let opened = exercise.starters_by(
+            |name| match files.iter().find(|(n, _)| n == name) {
+                Some((_, opened)) => opened.clone(),
+                None => Err("it was not given".to_string()),
+            },
+            &passes,
+        );
+        match opened {
+            // The exercise's plant and its scene are in each starter (the grader puts its
+            // own plant back in whatever the student changes).
+            Ok(list) => {
+                starters = list
+                    .into_iter()
+                    .map(|(language, project)| StarterFile {
+                        language: language.code().to_string(),
+                        project: project.to_file(),
+                    })
+                    .collect();
+            }
+            Err(e) => return Reply::Error(e.to_string()),
+        }
+    }
     let view = ExerciseView::of(&exercise, base.as_deref());
-    Reply::Opened(Box::new(Opened { view, link, base, fragment, starter }))
+    Reply::Opened(Box::new(Opened { view, link, base, fragment, starters, missing }))
 }
 
 /// The reply to a message's text.
@@ -145,7 +175,12 @@ mod tests {
                 panic!("{id} does not open");
             };
             assert_eq!(opened.view.id, *id);
-            assert!(Project::from_file(opened.starter.as_deref().unwrap()).is_ok(), "{id}");
+            assert!(opened.missing.is_empty(), "{id}");
+            assert!(!opened.starters.is_empty(), "{id}");
+            for s in &opened.starters {
+                let p = Project::from_file(&s.project).unwrap();
+                assert!(p.settings.program.is_some(), "{id} in {}", s.language);
+            }
         }
     }
 
@@ -154,7 +189,7 @@ mod tests {
     #[test]
     fn a_plant_exercise_brings_its_plant_and_grades_with_it() {
         let Reply::Opened(opened) = ask(Request::Shipped("tank-plant".into())) else { panic!() };
-        let starter = Project::from_file(opened.starter.as_deref().unwrap()).unwrap();
+        let starter = Project::from_file(&opened.starters[0].project).unwrap();
         assert_eq!(starter.settings.plant.as_deref(), Some("TankPlant"));
         assert_eq!(starter.settings.program.as_deref(), Some("TankControl"));
         assert!(starter.source.contains("PROGRAM TankPlant"));
@@ -175,7 +210,7 @@ mod tests {
         let Reply::Opened(opened) = ask(Request::Shipped("latch".into())) else { panic!() };
         let graded = ask(Request::Grade {
             exercise: opened.link.exercise.clone(),
-            project: opened.starter.clone().unwrap(),
+            project: opened.starters[0].project.clone(),
         });
         let Reply::Graded(report) = graded else { panic!("{graded:?}") };
         assert!(report.score < report.total);
@@ -187,6 +222,43 @@ mod tests {
         assert_eq!(again.view, opened.view);
     }
 
+    /// The latch opens with a starter in ST and one in ladder, each naming PROGRAM Main;
+    /// the ladder reference in the ladder starter's place is graded as that ladder POU.
+    #[test]
+    fn an_exercise_opens_in_each_of_its_languages() {
+        let Reply::Opened(opened) = ask(Request::Shipped("latch".into())) else { panic!() };
+        let languages: Vec<&str> = opened.starters.iter().map(|s| s.language.as_str()).collect();
+        assert_eq!(languages, ["st", "ld"]);
+        let ld = Project::from_file(&opened.starters[1].project).unwrap();
+        assert_eq!(ld.settings.program.as_deref(), Some("Main"));
+        assert_eq!((ld.ladder.len(), ld.source.trim()), (1, ""));
+        assert!(ld.ladder[0].declarations.contains("Motor : BOOL; (* motor contactor *)"));
+        let mut solved = ld.clone();
+        let reference: Project =
+            Project::from_file(include_str!("../../../exercises/latch/reference-ld.plcproj.json"))
+                .unwrap();
+        solved.ladder[0].rungs = reference.ladder[0].rungs.clone();
+        let Reply::Graded(report) = ask(Request::Grade {
+            exercise: opened.link.exercise.clone(),
+            project: solved.to_file(),
+        }) else {
+            panic!()
+        };
+        assert_eq!((report.score, report.total), (3, 3));
+        assert_eq!(report.checked_line().unwrap(), "Checked PROGRAM Main (ladder)");
+        // A file given without its starter names it as missing (the page fetches it).
+        let bare = ExerciseLink {
+            exercise: opened.link.exercise.clone(),
+            starter: None,
+            starters: Vec::new(),
+        };
+        let Reply::Opened(bare) = ask(Request::File { link: bare, base: None }) else { panic!() };
+        assert_eq!(
+            (bare.missing.as_slice(), bare.starters.len()),
+            (&["starter.st".to_string()][..], 0)
+        );
+    }
+
     #[test]
     fn bad_requests_get_messages() {
         assert!(reply("nonsense").contains("cannot read"));
@@ -194,7 +266,7 @@ mod tests {
         assert!(e.contains("nope"));
         let Reply::Error(e) = ask(Request::Link("x=AAAA".into())) else { panic!() };
         assert!(e.contains("damaged"), "{e}");
-        let bad = ExerciseLink { exercise: "id = 1".into(), starter: None };
+        let bad = ExerciseLink { exercise: "id = 1".into(), starter: None, starters: Vec::new() };
         let Reply::Error(e) = ask(Request::File { link: bad, base: None }) else { panic!() };
         assert!(e.starts_with("the exercise file cannot be used: line 1"), "{e}");
         let Reply::Error(e) = ask(Request::Grade {

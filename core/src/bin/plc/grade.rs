@@ -115,7 +115,16 @@ fn print_text(rows: &[Row]) {
         match &row.result {
             Err(e) => println!("{}: cannot be graded: {e}", row.name),
             Ok(r) => {
-                println!("{}: {}/{}", row.name, r.score, r.total);
+                match r.checked_line() {
+                    Some(line) => println!(
+                        "{}: {}/{} — {}",
+                        row.name,
+                        r.score,
+                        r.total,
+                        line.replacen("Checked", "checked", 1)
+                    ),
+                    None => println!("{}: {}/{}", row.name, r.score, r.total),
+                }
                 if let Some(e) = &r.error {
                     println!("  {e}");
                 }
@@ -139,6 +148,8 @@ fn json(rows: &[Row]) -> serde_json::Value {
             Err(e) => serde_json::json!({ "submission": row.name, "error": e }),
             Ok(r) => serde_json::json!({
                 "submission": row.name,
+                "program": r.program,
+                "language": r.language,
                 "score": r.score,
                 "total": r.total,
                 "error": r.error,
@@ -168,10 +179,11 @@ fn field(text: &str) -> String {
 }
 
 fn csv(rows: &[Row]) -> String {
-    let mut out = String::from("submission,score,total,passed,failed,error,first_failure\n");
+    let mut out =
+        String::from("submission,score,total,passed,failed,error,first_failure,program\n");
     for row in rows {
         let line = match &row.result {
-            Err(e) => format!("{},,,,,{},", field(&row.name), field(e)),
+            Err(e) => format!("{},,,,,{},,", field(&row.name), field(e)),
             Ok(r) => {
                 let passed = r.scenarios.iter().filter(|s| s.passed()).count();
                 let failed = r.scenarios.len() - passed;
@@ -181,12 +193,13 @@ fn csv(rows: &[Row]) -> String {
                     .find_map(|s| s.failure.as_ref().map(|f| format!("{}: {}", s.name, f.actual)))
                     .unwrap_or_default();
                 format!(
-                    "{},{},{},{passed},{failed},{},{}",
+                    "{},{},{},{passed},{failed},{},{},{}",
                     field(&row.name),
                     r.score,
                     r.total,
                     field(r.error.as_deref().unwrap_or_default()),
-                    field(&first)
+                    field(&first),
+                    field(r.program.as_deref().unwrap_or_default())
                 )
             }
         };
@@ -243,14 +256,13 @@ fn link(path: &Path, base: &str) -> ExitCode {
         let text = read(path)?;
         let exercise =
             Exercise::from_toml(&text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
-        let starter = match &exercise.starter {
-            Some(name) => {
-                let file = path.parent().unwrap_or(Path::new(".")).join(name);
-                Some(LinkedFile { name: name.clone(), text: read(&file)? })
-            }
-            None => None,
-        };
-        let fragment = ExerciseLink { exercise: text, starter }
+        let dir = path.parent().unwrap_or(Path::new("."));
+        let mut files = Vec::new();
+        for name in exercise.starter_files() {
+            files.push(LinkedFile { name: name.to_string(), text: read(&dir.join(name))? });
+        }
+        let fragment = ExerciseLink { exercise: text, starter: None, starters: files }
+            .arranged(&exercise)
             .encode()
             .map_err(|e| format!("plc: {}: {e}", path.display()))?;
         Ok(format!("{base}#{fragment}"))
@@ -307,30 +319,44 @@ fn validate(path: &Path, hidden: Option<&Path>) -> ExitCode {
             }
         }
     };
-    match &ex.reference {
-        None => {
-            println!("reference: missing (give `reference = \"FILE\"`)");
-            problems.set(problems.get() + 1);
-        }
-        Some(file) => {
-            if let Some(r) = graded("reference", &dir.join(file)) {
-                match first_failure(&r) {
-                    None => println!("reference: passes all {} scenarios", r.scenarios.len()),
-                    Some(f) => {
-                        println!("reference: FAILS {f}");
-                        problems.set(problems.get() + 1);
-                    }
+    if ex.reference.is_none() {
+        println!("reference: missing (give `reference = \"FILE\"`)");
+        problems.set(problems.get() + 1);
+    }
+    for (key, file) in ex.reference_files() {
+        if let Some(r) = graded(key, &dir.join(file)) {
+            let program = r
+                .checked_line()
+                .map(|l| format!(" — {}", l.replacen("Checked", "checked", 1)))
+                .unwrap_or_default();
+            match first_failure(&r) {
+                None => println!("{key}: passes all {} scenarios{program}", r.scenarios.len()),
+                Some(f) => {
+                    println!("{key}: FAILS {f}");
+                    problems.set(problems.get() + 1);
                 }
             }
         }
     }
-    if let Some(file) = &ex.starter {
-        if let Some(r) = graded("starter", &dir.join(file)) {
-            match first_failure(&r) {
-                Some(f) => println!("starter: fails, as it should: {f}"),
-                None => {
-                    println!("starter: PASSES every scenario (it should leave work to do)");
-                    problems.set(problems.get() + 1);
+    // The starter in every language the student may start in, given or made.
+    match ex.starters(|file| super::load_project(&dir.join(file))) {
+        Err(e) => {
+            println!("starter: cannot be opened: {e}");
+            problems.set(problems.get() + 1);
+        }
+        Ok(starters) => {
+            for (language, project) in starters {
+                let label = format!("starter ({})", language.name());
+                match grade(&ex, &project).map(|r| first_failure(&r)) {
+                    Ok(Some(f)) => println!("{label}: fails, as it should: {f}"),
+                    Ok(None) => {
+                        println!("{label}: PASSES every scenario (it should leave work to do)");
+                        problems.set(problems.get() + 1);
+                    }
+                    Err(e) => {
+                        println!("{label}: cannot be graded: {e}");
+                        problems.set(problems.get() + 1);
+                    }
                 }
             }
         }
