@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# B5, B6 and B7 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 exactly
+# B5, B6, B7 and B8 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 exactly
 # as the site is built (scripts/wasm-build.sh: the `wasm-release` profile with its
 # per-package opt-levels, the same flags, the same wasm-opt pass), binds it with
 # wasm-bindgen, times it in a page driven by playwright-core (scripts/bench-browser.mjs),
@@ -10,11 +10,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 source scripts/wasm-build.sh
-out=target/bench-browser
-cargo build -q -p plc-core --example bench_wasm --target wasm32-unknown-unknown --profile "$WASM_PROFILE"
+out=${BENCH_OUT:-target/bench-browser}
+cargo build -q -p plc-core --example bench_wasm --target wasm32-unknown-unknown --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}"
 wasm-bindgen --target web --no-typescript --out-dir "$out" \
-  "target/wasm32-unknown-unknown/$WASM_PROFILE/examples/bench_wasm.wasm"
+  "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/$WASM_PROFILE/examples/bench_wasm.wasm"
 wasm_opt "$out/bench_wasm_bg.wasm" "$out/bench_wasm_bg.wasm"
+# The module's transfer size (gzip -9), to weigh the engine's opt-level against B5.
+gz_bytes=$(node -e 'console.log(require("zlib").gzipSync(require("fs").readFileSync(process.argv[1]), { level: 9 }).length)' "$out/bench_wasm_bg.wasm")
 [ -d node_modules/playwright-core ] || npm ci --no-audit --no-fund
 browser=$(node scripts/bench-browser.mjs "$out" "$@")
 # The native figure beside it, on the same machine at the same moment.
@@ -23,9 +25,10 @@ quick=()
 for a in "$@"; do [ "$a" = "--quick" ] && quick=(--quick); done
 native=$(cargo run -q --release -p plc-core --bin plc -- bench --json --only B5 "${quick[@]}")
 node -e '
-  const [browser, native] = process.argv.slice(1).map((s) => JSON.parse(s));
+  const [browser, native] = process.argv.slice(1, 3).map((s) => JSON.parse(s));
   const n = native.B5.native_ms;
   browser.B5.native_ms = n;
   browser.B5.ratio = browser.B5.chromium_ms / n;
+  browser.module = { gzip_bytes: Number(process.argv[3]), core_opt_level: process.argv[4] || "profile" };
   console.log(JSON.stringify(browser));
-' "$browser" "$native"
+' "$browser" "$native" "$gz_bytes" "${WASM_CORE_OPT_LEVEL:-}"

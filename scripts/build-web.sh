@@ -20,12 +20,22 @@ export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 
 (cd web && trunk build --release)
 
-source scripts/wasm-build.sh
-cargo build --profile "$WASM_PROFILE" --target wasm32-unknown-unknown -p plc-web --bin plc-web
-
 work=target/site
 rm -rf "$work"
 mkdir -p "$work/split" "$work/app"
+
+source scripts/wasm-build.sh
+# The JSON messages name the build script's output folder, where web/build.rs writes the
+# shipped exercises in their built form (exercises/ID.json, fetched by the exercise worker).
+cargo build --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}" --target wasm32-unknown-unknown -p plc-web --bin plc-web \
+  --message-format=json-render-diagnostics >"$work/cargo.json"
+out_dir=$(node -e '
+  for (const line of require("fs").readFileSync(process.argv[1], "utf8").split("\n")) {
+    if (!line.startsWith("{")) continue;
+    const m = JSON.parse(line);
+    if (m.reason === "build-script-executed" && /(^|[/#])plc-web[#@ ]/.test(m.package_id)) { console.log(m.out_dir); break; }
+  }' "$work/cargo.json")
+[ -d "$out_dir/exercises" ] || { echo "no built exercises in '$out_dir'" >&2; exit 1; }
 wasm-split-cli "target/wasm32-unknown-unknown/$WASM_PROFILE/plc-web.wasm" "$work/split" --out-name plc-web
 # The main module before wasm-opt, names kept, for the check of what the first load holds.
 cp "$work/split/plc-web.wasm" "$work/main-names.wasm"
@@ -40,7 +50,12 @@ for f in "$work"/split/split_*.wasm "$work"/split/chunk_*.wasm; do
 done
 wait "$main_opt"
 cp "$work/split/__wasm_split.js" web/boot.js web/worker.js "$work/app/"
+cp -r "$out_dir/exercises" "$work/app/exercises"
 node scripts/minify-js.mjs "$work/app"
 node scripts/site.mjs assemble dist "$work"
 node scripts/csp.mjs dist/index.html
+# The site's files, for the page's `Export SCORM package` (the exercise worker packs them):
+# all of dist/ with the sw.js that `finish` writes (before its size checks).
+{ (cd dist && find . -type f ! -name site-files.txt ! -name sw.js | sed 's|^\./||'); echo sw.js; } \
+  | LC_ALL=C sort > dist/site-files.txt
 node scripts/site.mjs finish dist "$work"

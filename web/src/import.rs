@@ -101,6 +101,11 @@ fn start_worker(name: &str) -> Result<web_sys::Worker, JsValue> {
 /// it is ready (its module and chunk load asynchronously; a message sent before would be
 /// lost).
 pub async fn ask_worker_at(name: &str, request: &JsValue) -> Result<String, String> {
+    ask_worker_raw(name, request).await.map(|v| v.as_string().unwrap_or_default())
+}
+
+/// [`ask_worker_at`], the answer as the worker sent it (text, or bytes).
+pub async fn ask_worker_raw(name: &str, request: &JsValue) -> Result<JsValue, String> {
     let worker = start_worker(name).map_err(|e| format!("the importer could not start ({e:?})"))?;
     let stopped = |_| "the importer stopped (the file may be too large or damaged)".to_string();
     let answer = async {
@@ -113,7 +118,7 @@ pub async fn ask_worker_at(name: &str, request: &JsValue) -> Result<String, Stri
         worker
             .post_message(request)
             .map_err(|e| format!("the importer did not take the file ({e:?})"))?;
-        reply.await.map_err(stopped).map(|v| v.as_string().unwrap_or_default())
+        reply.await.map_err(stopped)
     }
     .await;
     worker.terminate();

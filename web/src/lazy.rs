@@ -19,6 +19,7 @@ use leptos::__reexports::send_wrapper::SendWrapper;
 use leptos::prelude::*;
 use leptos::wasm_split::wasm_split;
 use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
+use plc_core::semantic::{IlPass, SfcPass};
 
 /// A chunk of the app could not be fetched.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -122,6 +123,25 @@ pub fn read_exercise_reply(
     Ok(serde_json::from_str(&text).ok())
 }
 
+/// Starts the SCORM session when the page was launched by an LMS (false without one).
+#[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scorm_launch(
+    ex: crate::exercises::Exercises,
+    state: crate::state::AppState,
+) -> Result<bool, LoadFailed> {
+    Ok(crate::exercises::scorm::launch(ex, state))
+}
+
+/// Opens the attempt the LMS kept, once the launched exercise is open.
+#[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scorm_resume(
+    ex: crate::exercises::Exercises,
+    state: crate::state::AppState,
+) -> Result<(), LoadFailed> {
+    crate::exercises::scorm::resume(ex, state);
+    Ok(())
+}
+
 /// The timeline as a file, CSV (`csv`) or VCD for GTKWave; `None` before a program runs.
 #[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn timeline_file(
@@ -139,6 +159,22 @@ pub fn timeline_file(
 pub fn variables_file(state: crate::state::AppState) -> Result<Option<String>, LoadFailed> {
     use plc_core::export::{snapshot, variables_csv};
     Ok(state.sim.with_value(|s| s.as_ref().map(|s| variables_csv(&snapshot(s)))))
+}
+
+/// The share fragment of `project` (`p=…`): its DEFLATE writer is only needed when the
+/// user shares, so it comes with the exports (opening a share link needs only the reader).
+#[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn share_fragment(project: plc_core::project::Project) -> Result<String, LoadFailed> {
+    Ok(plc_core::project::encode_share(&project))
+}
+
+/// The project in a share link's fragment (`#p=…`): its base64 and DEFLATE reader is
+/// fetched only when the page opens a link.
+#[wasm_split(share_reader, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn read_share(
+    fragment: String,
+) -> Result<Result<plc_core::project::Project, plc_core::project::ShareError>, LoadFailed> {
+    Ok(plc_core::project::decode_share(&fragment))
 }
 
 /// The plant's scene (its widgets drawn and its buttons and switches).
@@ -180,6 +216,8 @@ pub async fn load_lowerings(kinds: &[&str]) -> Result<(), LoadFailed> {
             "ladder" => passes.ladder = Some(ladder_pass().await?),
             "network" => passes.network = Some(network_pass().await?),
             "petri" => passes.petri = Some(petri_pass().await?),
+            "sfc" => passes.text.sfc = Some(sfc_pass().await?),
+            "il" => passes.text.il = Some(il_pass().await?),
             _ => {}
         }
         PASSES.with(|p| p.set(passes));
@@ -197,6 +235,19 @@ fn ladder_pass() -> Result<LadderLowering, LoadFailed> {
 #[wasm_split(network_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn network_pass() -> Result<NetworkPass, LoadFailed> {
     Ok(plc_core::network::NetworkPou::to_st)
+}
+
+/// Textual SFC bodies (typed, or generated for an SFC network chart) lowered to
+/// statements.
+#[wasm_split(sfc_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn sfc_pass() -> Result<SfcPass, LoadFailed> {
+    Ok(plc_core::sfc::desugar)
+}
+
+/// Instruction List bodies lowered to statements.
+#[wasm_split(il_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn il_pass() -> Result<IlPass, LoadFailed> {
+    Ok(plc_core::semantic::desugar_il)
 }
 
 /// The Petri net POUs' generated code and analysis.

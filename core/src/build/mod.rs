@@ -385,7 +385,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
     let mut diagnostics: Vec<ProjectDiagnostic> =
         source.warnings.iter().cloned().map(ladder_diag).collect();
     diagnostics.extend(petri_diags);
-    let analysis = semantic::analyze(&source.text);
+    let analysis = semantic::analyze_by(&source.text, &lowerings.text);
     let index = LineIndex::new(&source.text);
     diagnostics.extend(analysis.diagnostics.into_iter().map(|d| ProjectDiagnostic {
         severity: d.severity,

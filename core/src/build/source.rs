@@ -3,9 +3,10 @@
 //! that text back to where it came from (an ST line, a ladder cell, a net element).
 
 use crate::ladder::{lower, validate_with, Catalog, LadderDiagnostic, LadderPou, LoweredPou};
-use crate::network::{NetError, NetworkPou, NetworkText};
+use crate::network::{NetError, NetworkLanguage, NetworkPou, NetworkText};
 use crate::petri::{self, NetElement, PetriPou, TextPosition};
 use crate::project::Project;
+use crate::semantic::{text_passes_needed, TextPasses};
 
 /// One lowered ladder POU inside a combined project source.
 #[derive(Debug, Clone, PartialEq)]
@@ -232,6 +233,9 @@ pub struct Lowerings {
     pub network: Option<NetworkPass>,
     /// Petri net POUs: the generated CASE OF program with its analysis.
     pub petri: Option<PetriPass>,
+    /// Textual SFC bodies (typed, and generated for SFC network charts) and Instruction
+    /// List bodies, lowered to statements before the check.
+    pub text: TextPasses,
 }
 
 /// The network pass of [`Lowerings`]: a network POU's ST.
@@ -255,13 +259,20 @@ impl Lowerings {
         ladder: Some(LadderLowering { validate: validate_with, lower }),
         network: Some(NetworkPou::to_st),
         petri: Some(petri::compile),
+        text: TextPasses::ALL,
     };
 
     /// No pass (an ST-only project needs none).
-    pub const NONE: Lowerings = Lowerings { ladder: None, network: None, petri: None };
+    pub const NONE: Lowerings = Lowerings {
+        ladder: None,
+        network: None,
+        petri: None,
+        text: TextPasses { sfc: None, il: None },
+    };
 
-    /// The kinds of diagram POU the project has that these passes cannot build, by name
-    /// (`"ladder"`, `"network"`, `"petri"`).
+    /// The kinds of POU the project has that these passes cannot build, by name
+    /// (`"ladder"`, `"network"`, `"petri"`, and `"sfc"`, `"il"` for textual SFC and
+    /// Instruction List bodies).
     pub fn lacks(&self, project: &Project) -> Vec<&'static str> {
         let mut out = Vec::new();
         if self.ladder.is_none() && !project.ladder.is_empty() {
@@ -272,6 +283,16 @@ impl Lowerings {
         }
         if self.petri.is_none() && !project.petri.is_empty() {
             out.push("petri");
+        }
+        if self.text.sfc.is_none() || self.text.il.is_none() {
+            let (sfc, il) = text_passes_needed(&project.source);
+            let sfc_chart = project.networks.iter().any(|n| n.language == NetworkLanguage::Sfc);
+            if self.text.sfc.is_none() && (sfc || sfc_chart) {
+                out.push("sfc");
+            }
+            if self.text.il.is_none() && il {
+                out.push("il");
+            }
         }
         out
     }

@@ -3,6 +3,7 @@
 use super::*;
 use crate::ladder::{Cell, CoilKind, ContactKind, Element, LadderPou, LadderPouKind, Rung};
 use crate::petri::{Arc, Net, PetriPou, Place, Transition};
+use crate::semantic::TextPasses;
 use crate::sim::ScanOutcome;
 
 /// `Start` (NO contact) → coil `Motor` in one rung of PROGRAM `name`.
@@ -190,4 +191,30 @@ fn a_build_by_the_loaded_passes_names_what_it_lacks() {
     let only_ladder = Lowerings { ladder: Lowerings::ALL.ladder, ..Lowerings::NONE };
     assert_eq!(only_ladder.lacks(&mixed), ["petri"]);
     assert!(same(&build_project_by(&mixed, &Lowerings::ALL), &build_project(&mixed)));
+}
+
+/// Textual SFC and Instruction List bodies need their passes (the page loads each the
+/// first time a project has such a body); with both, the build is `build_project`'s.
+#[test]
+fn textual_sfc_and_il_bodies_name_the_text_passes_they_lack() {
+    let sfc = project(
+        "PROGRAM Main\nVAR go : BOOL; lamp : BOOL; END_VAR\nINITIAL_STEP Idle: END_STEP\n\
+         TRANSITION FROM Idle TO Run := go; END_TRANSITION\nSTEP Run: lamp(N); END_STEP\n\
+         TRANSITION FROM Run TO Idle := NOT go; END_TRANSITION\nEND_PROGRAM\n",
+    );
+    assert_eq!(Lowerings::NONE.lacks(&sfc), ["sfc"]);
+    let il =
+        project("PROGRAM Main\nVAR a : BOOL; b : BOOL; END_VAR\nLD a\nANDN b\nST b\nEND_PROGRAM\n");
+    assert_eq!(Lowerings::NONE.lacks(&il), ["il"]);
+    let with_sfc =
+        Lowerings { text: TextPasses { sfc: TextPasses::ALL.sfc, il: None }, ..Lowerings::NONE };
+    assert!(with_sfc.lacks(&sfc).is_empty());
+    assert_eq!(with_sfc.lacks(&il), ["il"]);
+    for p in [&sfc, &il] {
+        assert!(Lowerings::ALL.lacks(p).is_empty());
+        let (by, all) = (build_project_by(p, &Lowerings::ALL), build_project(p));
+        assert!(!by.has_errors(), "{:?}", by.diagnostics);
+        assert_eq!(by.diagnostics, all.diagnostics);
+        assert!(by.program.is_some());
+    }
 }

@@ -391,6 +391,10 @@ fn line_column(text: &str, offset: usize) -> (usize, usize) {
     (line, column)
 }
 
+/// The codes of the languages an exercise can be written in (`languages = […]`), in the
+/// order of `starter::Language::ALL` (which reads its codes from here).
+pub(super) const LANGUAGE_CODES: [&str; 4] = ["st", "ld", "petri", "sfc"];
+
 impl Exercise {
     /// Reads an exercise file (TOML).
     pub fn from_toml(text: &str) -> Result<Exercise, ExerciseError> {
@@ -404,13 +408,45 @@ impl Exercise {
                 },
             }
         })?;
+        exercise.checked()
+    }
+
+    /// Reads an exercise in the built form (`built_form.rs`): the exercise, whose
+    /// `statement` is empty, and its statement as HTML. Checked as a TOML file is.
+    pub fn from_built(text: &str) -> Result<(Exercise, String), ExerciseError> {
+        #[derive(Deserialize)]
+        #[serde(deny_unknown_fields)]
+        struct Built {
+            #[allow(dead_code)]
+            plc_exercise: u32,
+            statement_html: String,
+            exercise: Exercise,
+        }
+        let built: Built = serde_json::from_str(text).map_err(|e| ExerciseError {
+            message: format!("the built exercise cannot be read: {e}"),
+        })?;
+        Ok((built.exercise.checked()?, built.statement_html))
+    }
+
+    /// Reads an exercise file, TOML or the built form.
+    pub fn from_text(text: &str) -> Result<Exercise, ExerciseError> {
+        if super::built_form::is_built(text) {
+            Ok(Exercise::from_built(text)?.0)
+        } else {
+            Exercise::from_toml(text)
+        }
+    }
+
+    /// The exercise, if everything it says can be used.
+    fn checked(self) -> Result<Exercise, ExerciseError> {
+        let exercise = self;
         if !(1..=5).contains(&exercise.level) {
             return Err(ExerciseError { message: "level is 1 (beginner) to 5 (advanced)".into() });
         }
         if let Some(code) = exercise
             .languages
             .iter()
-            .find(|code| super::starter::Language::from_code(code).is_none())
+            .find(|code| !LANGUAGE_CODES.iter().any(|c| c.eq_ignore_ascii_case(code.trim())))
         {
             return Err(ExerciseError {
                 message: format!("languages: “{code}” is not one of st, ld, petri, sfc"),

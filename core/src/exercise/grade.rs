@@ -147,15 +147,33 @@ fn place(site: &Site) -> String {
     }
 }
 
+/// The direction a variable of the running PROGRAM has on a PLC: VAR_INPUT and VAR_OUTPUT
+/// (RETAIN or not) by their section, and a local variable (VAR) by its location — at
+/// `%I…` an input, at `%Q…` an output, as OpenPLC Editor and Beremiz declare a program's
+/// I/O. Anything else is neither.
+fn direction_of(var: &crate::semantic::ir::Var) -> Option<Direction> {
+    use crate::syntax::AddressArea;
+    match var.section {
+        VarSection::Input => Some(Direction::Input),
+        VarSection::Output => Some(Direction::Output),
+        VarSection::Var => match var.location.as_ref().map(|l| l.area) {
+            Some(AddressArea::Input) => Some(Direction::Input),
+            Some(AddressArea::Output) => Some(Direction::Output),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
 /// Why the program's declarations do not match the exercise's interface: every interface
-/// variable must be declared by the running PROGRAM in its section (VAR_INPUT or
-/// VAR_OUTPUT) with its type.
+/// variable must be declared by the running PROGRAM with its direction (VAR_INPUT or a
+/// VAR at `%I…` for an input, VAR_OUTPUT or a VAR at `%Q…` for an output) and its type.
 fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<String> {
     let exe = sim.executable();
     exercise.interface.iter().find_map(|v| {
-        let (section, keyword) = match v.direction {
-            Direction::Input => (VarSection::Input, "VAR_INPUT"),
-            Direction::Output => (VarSection::Output, "VAR_OUTPUT"),
+        let (keyword, area) = match v.direction {
+            Direction::Input => ("VAR_INPUT", "%I"),
+            Direction::Output => ("VAR_OUTPUT", "%Q"),
         };
         let asked = format!("{keyword} {} : {}", v.name, v.ty);
         let Some(entry) =
@@ -163,10 +181,10 @@ fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<String> {
         else {
             return Some(format!("the program does not declare {} ({asked})", v.name));
         };
-        if entry.var.section != section {
+        if direction_of(&entry.var) != Some(v.direction) {
             return Some(format!(
-                "the program declares {} in another section than the exercise asks ({asked})",
-                v.name
+                "the program declares {} in another section than the exercise asks ({asked}, or VAR {} AT {area}… : {})",
+                v.name, v.name, v.ty
             ));
         }
         let ty = exe.type_table().display(entry.var.ty).to_string();

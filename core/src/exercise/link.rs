@@ -15,7 +15,8 @@ pub const EXERCISE_LINK_PREFIX: &str = "x=";
 /// What an exercise link carries.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ExerciseLink {
-    /// The exercise file (TOML).
+    /// The exercise file: TOML, or the built form the web app ships its exercises in
+    /// (`built_form.rs`).
     pub exercise: String,
     /// The starter file, when the exercise names one.
     #[serde(default)]
@@ -56,14 +57,28 @@ impl ExerciseLink {
     /// The fragment (without `#`): `x=<base64url(deflate(json))>`. The exercise text is
     /// checked first, so a link never carries a file the page would refuse.
     pub fn encode(&self) -> Result<String, ExerciseError> {
-        Exercise::from_toml(&self.exercise)?;
+        Exercise::from_text(&self.exercise)?;
+        Ok(self.fragment())
+    }
+
+    /// The fragment of a link whose exercise was already read (see [`ExerciseLink::encode`]).
+    pub fn fragment(&self) -> String {
         let json = serde_json::to_vec(self).unwrap_or_default();
-        Ok(format!("{EXERCISE_LINK_PREFIX}{}", pack(&json)))
+        format!("{EXERCISE_LINK_PREFIX}{}", pack(&json))
     }
 
     /// Reads a fragment (with or without `#`) made by [`ExerciseLink::encode`]; the
     /// exercise it holds is checked as a file is.
     pub fn decode(fragment: &str) -> Result<(ExerciseLink, Exercise), ExerciseError> {
+        let link = ExerciseLink::unpack(fragment)?;
+        let exercise = Exercise::from_text(&link.exercise).map_err(|e| ExerciseError {
+            message: format!("the exercise in this link cannot be used: {e}"),
+        })?;
+        Ok((link, exercise))
+    }
+
+    /// What a fragment carries, its exercise not read yet (see [`ExerciseLink::decode`]).
+    pub fn unpack(fragment: &str) -> Result<ExerciseLink, ExerciseError> {
         let fragment = fragment.strip_prefix('#').unwrap_or(fragment);
         let fail = |m: &str| ExerciseError { message: m.to_string() };
         let data = fragment
@@ -71,12 +86,7 @@ impl ExerciseLink {
             .ok_or_else(|| fail("this link does not hold an exercise"))?;
         let text = unpack(data)
             .map_err(|_| fail("this exercise link is damaged (was it copied completely?)"))?;
-        let link: ExerciseLink = serde_json::from_str(&text)
-            .map_err(|_| fail("this exercise link holds no exercise"))?;
-        let exercise = Exercise::from_toml(&link.exercise).map_err(|e| ExerciseError {
-            message: format!("the exercise in this link cannot be used: {e}"),
-        })?;
-        Ok((link, exercise))
+        serde_json::from_str(&text).map_err(|_| fail("this exercise link holds no exercise"))
     }
 }
 

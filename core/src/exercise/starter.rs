@@ -39,12 +39,7 @@ impl Language {
 
     /// Its code in the exercise file.
     pub fn code(self) -> &'static str {
-        match self {
-            Language::St => "st",
-            Language::Ld => "ld",
-            Language::Petri => "petri",
-            Language::Sfc => "sfc",
-        }
+        super::format::LANGUAGE_CODES[self as usize]
     }
 
     /// Its name for people (the options of `Start in`).

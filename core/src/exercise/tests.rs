@@ -154,7 +154,7 @@ fn broken_missing_and_faulting_programs_are_reported_with_their_place() {
     let local = GOOD.replace("VAR_OUTPUT Motor : BOOL; END_VAR", "VAR Motor : BOOL; END_VAR");
     assert_eq!(
         grade(&e, &project(&local)).unwrap().error.as_deref(),
-        Some("the program declares Motor in another section than the exercise asks (VAR_OUTPUT Motor : BOOL)")
+        Some("the program declares Motor in another section than the exercise asks (VAR_OUTPUT Motor : BOOL, or VAR Motor AT %Q… : BOOL)")
     );
     let int = GOOD
         .replace("VAR_INPUT Start, Stop : BOOL;", "VAR_INPUT Start : BOOL; Stop : INT;")
@@ -177,6 +177,47 @@ END_PROGRAM
         "{}",
         f.actual
     );
+}
+
+/// On a PLC a variable at `%I…` is an input and one at `%Q…` an output: a PROGRAM that
+/// declares its I/O as located locals (as OpenPLC Editor and Beremiz write them) has the
+/// exercise's interface; a local in memory (`%M…`) or unlocated has not, and an input
+/// located at `%Q…` is not an input.
+#[test]
+fn located_locals_are_inputs_and_outputs_by_their_area() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let located = "PROGRAM program0
+VAR
+    Start AT %IX0.0 : BOOL;
+    Stop AT %IX0.1 : BOOL;
+    Motor AT %QX0.0 : BOOL;
+END_VAR
+Motor := (Start OR Motor) AND NOT Stop;
+END_PROGRAM
+";
+    let r = grade(&e, &project(located)).unwrap();
+    assert_eq!((r.error.as_deref(), r.score, r.total), (None, 3, 3), "{r:#?}");
+    // RETAIN outputs and a mix of sections are outputs and inputs too.
+    let mixed = "PROGRAM Main
+VAR_INPUT Start : BOOL; END_VAR
+VAR Stop AT %IX0.1 : BOOL; END_VAR
+VAR_OUTPUT RETAIN Motor : BOOL; END_VAR
+Motor := (Start OR Motor) AND NOT Stop;
+END_PROGRAM
+";
+    let r = grade(&e, &project(mixed)).unwrap();
+    assert_eq!((r.error.as_deref(), r.score), (None, 3), "{r:#?}");
+    let error = |text: &str| grade(&e, &project(text)).unwrap().error.unwrap_or_default();
+    assert_eq!(
+        error(&located.replace("%QX0.0", "%MX0.0")),
+        "the program declares Motor in another section than the exercise asks (VAR_OUTPUT Motor : BOOL, or VAR Motor AT %Q… : BOOL)"
+    );
+    assert_eq!(
+        error(&located.replace("%IX0.0", "%QX0.1")),
+        "the program declares Start in another section than the exercise asks (VAR_INPUT Start : BOOL, or VAR Start AT %I… : BOOL)"
+    );
+    assert!(error(&located.replace("Stop AT %IX0.1", "Stop"))
+        .contains("declares Stop in another section"));
 }
 
 #[test]
@@ -439,4 +480,33 @@ fn the_score_line_explains_the_weights_when_they_matter() {
     let broken = grade(&e, &project(&GOOD.replace("NOT Stop", "NOT Stopp"))).unwrap();
     assert_eq!(broken.checked_line().unwrap(), "Checked PROGRAM Main (ST)");
     assert_eq!(broken.score_line(), "Score 0 of 3");
+}
+
+/// The built form (what the web app ships) reads as the TOML file does, with the statement
+/// already rendered, and is checked as a file is.
+#[test]
+fn the_built_form_reads_as_the_toml_file() {
+    let render = |m: &str| statement_html(m, None);
+    let built = built_form(LATCH, render).unwrap();
+    assert!(is_built(&built) && !is_built(LATCH), "{built}");
+    let (read, html) = Exercise::from_built(&built).unwrap();
+    let toml = Exercise::from_toml(LATCH).unwrap();
+    assert_eq!(read, Exercise { statement: String::new(), ..toml.clone() });
+    assert_eq!(ExerciseView::with_statement(&read, html), ExerciseView::of(&toml, None));
+    assert_eq!(Exercise::from_text(&built).unwrap(), read);
+    assert_eq!(Exercise::from_text(LATCH).unwrap(), toml);
+    // A link carries either form.
+    let link = ExerciseLink { exercise: built.clone(), starter: None, starters: Vec::new() };
+    let (back, exercise) = ExerciseLink::decode(&link.encode().unwrap()).unwrap();
+    assert_eq!((back, exercise), (link, read));
+
+    let bad = built_form(&LATCH.replace("level = 1", "level = 9"), render).unwrap();
+    assert_eq!(
+        Exercise::from_built(&bad).unwrap_err().message,
+        "level is 1 (beginner) to 5 (advanced)"
+    );
+    let damaged = format!("{BUILT_PREFIX}\"statement_html\":3}}");
+    assert!(Exercise::from_built(&damaged).unwrap_err().message.starts_with("the built exercise"));
+    assert!(built_form("id = 1979-05-27", render).unwrap_err().contains("date"));
+    assert!(built_form("id = ", render).is_err());
 }

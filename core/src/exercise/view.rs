@@ -47,12 +47,17 @@ impl ExerciseView {
     /// The view of `exercise`; relative links in its statement are resolved against
     /// `base`, the exercise file's address.
     pub fn of(exercise: &Exercise, base: Option<&str>) -> ExerciseView {
+        ExerciseView::with_statement(exercise, statement_html(&exercise.statement, base))
+    }
+
+    /// The view of `exercise` with its statement already rendered (the built form).
+    pub fn with_statement(exercise: &Exercise, statement_html: String) -> ExerciseView {
         ExerciseView {
             id: exercise.id.clone(),
             title: exercise.title.clone(),
             level: exercise.level,
             languages: exercise.languages.clone(),
-            statement_html: statement_html(&exercise.statement, base),
+            statement_html,
             interface: exercise.interface.clone(),
             scenarios: exercise
                 .scenarios

@@ -46,10 +46,60 @@ pub struct Analysis {
 /// Parses and checks `source` together with the standard library prelude. Textual SFC
 /// and Instruction List bodies are lowered to statements first (`crate::sfc`, `crate::il`).
 pub fn analyze(source: &str) -> Analysis {
+    analyze_by(source, &TextPasses::ALL)
+}
+
+/// The passes that lower textual SFC and Instruction List bodies to statements before the
+/// check. The web app's page loads each as a chunk of its wasm the first time a project
+/// has such a body (`crate::build::Lowerings::lacks`), so an ST-only page never downloads
+/// them; every other build of the engine uses [`TextPasses::ALL`].
+#[derive(Debug, Clone, Copy)]
+pub struct TextPasses {
+    /// Textual SFC bodies ([`crate::sfc::desugar`]).
+    pub sfc: Option<SfcPass>,
+    /// Instruction List bodies ([`desugar_il`]).
+    pub il: Option<IlPass>,
+}
+
+/// The SFC pass of [`TextPasses`].
+pub type SfcPass = fn(&mut syntax::SourceFile) -> crate::sfc::Desugared;
+
+/// The Instruction List pass of [`TextPasses`].
+pub type IlPass = fn(&mut syntax::SourceFile) -> Vec<Diagnostic>;
+
+impl TextPasses {
+    /// Both passes.
+    pub const ALL: TextPasses = TextPasses { sfc: Some(crate::sfc::desugar), il: Some(desugar_il) };
+}
+
+/// Lowers the Instruction List bodies of `file` to statements, typing their operands with
+/// the checker.
+pub fn desugar_il(file: &mut syntax::SourceFile) -> Vec<Diagnostic> {
+    crate::il::desugar(file, check::IlTyping::new)
+}
+
+/// Which text passes `source` needs: `(sfc, il)`, whether some POU has a textual SFC or an
+/// Instruction List body.
+pub fn text_passes_needed(source: &str) -> (bool, bool) {
+    let (file, _) = syntax::parse(source);
+    let pous = || {
+        file.items.iter().filter_map(|i| match i {
+            syntax::Item::Pou(p) => Some(p),
+            _ => None,
+        })
+    };
+    (pous().any(|p| p.sfc.is_some()), pous().any(|p| p.il.is_some()))
+}
+
+/// [`analyze`] with the text passes `passes` has: a body whose pass is missing is left
+/// out of the check (the page loads the pass first; see [`TextPasses`]).
+pub fn analyze_by(source: &str, passes: &TextPasses) -> Analysis {
     let (mut file, mut diagnostics) = syntax::parse(source);
-    let sfc = crate::sfc::desugar(&mut file);
+    let sfc = passes.sfc.map(|desugar| desugar(&mut file)).unwrap_or_default();
     diagnostics.extend(sfc.diagnostics.iter().cloned());
-    diagnostics.extend(crate::il::desugar(&mut file, check::IlTyping::new));
+    if let Some(desugar) = passes.il {
+        diagnostics.extend(desugar(&mut file));
+    }
     let (program, more) = check::check_with_prelude(&file);
     diagnostics.extend(sfc.reword(more));
     crate::order::sort_by_key(&mut diagnostics, |d| (d.span.start, d.span.end));

@@ -4,9 +4,11 @@
 //! (`src/workers/exercise.rs`) reads the files and grades; the page keeps what it shows.
 
 mod catalogue;
+mod handin;
 mod panel;
 pub mod protocol;
 mod report;
+pub(crate) mod scorm;
 mod store;
 
 use std::collections::BTreeSet;
@@ -19,6 +21,7 @@ use wasm_bindgen_futures::JsFuture;
 
 use crate::state::{clear_fragment, AppState};
 pub use catalogue::Catalogue;
+use handin::HandInActions;
 pub use panel::ExercisePanel;
 use protocol::{Opened, Reply, Request};
 
@@ -116,7 +119,16 @@ impl Exercises {
                 ex.open_with(state, Request::Link(fragment), None).await;
             });
         } else if let Some(url) = query_param(&search, "exercise") {
-            leptos::task::spawn_local(async move { ex.open_url(state, &url).await });
+            // Launched by an LMS (a SCORM package): report to it (the SCORM runtime is a
+            // chunk of its own, fetched only then).
+            let scorm = query_param(&search, "scorm").as_deref() == Some("1");
+            leptos::task::spawn_local(async move {
+                let lms = scorm && crate::lazy::scorm_launch(ex, state).await.unwrap_or(false);
+                ex.open_url(state, &url).await;
+                if lms {
+                    let _ = crate::lazy::scorm_resume(ex, state).await;
+                }
+            });
         }
         // The open project decides which exercise the panel shows.
         Effect::new(move |_| {
@@ -275,6 +287,7 @@ impl Exercises {
                     if report.error.is_none() && report.score == report.total {
                         self.passed.set(store::mark_passed(&open.opened.view.id));
                     }
+                    scorm::report(state, &open.opened.view.id, &report);
                     self.report.set(Some(report));
                 }
                 Ok(Reply::Error(e)) | Err(e) => state.error(format!("Could not check: {e}")),

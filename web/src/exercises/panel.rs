@@ -72,7 +72,8 @@ pub fn ExercisePanel() -> impl IntoView {
                             </button>
                             <button on:click=move |_| ex.reset_to_starter(state)>"Reset to starter"</button>
                             <button on:click=share title="Copy a link that carries this exercise">"Share exercise"</button>
-                            <button on:click=move |_| ex.screen.set(Screen::Catalogue)>"All exercises"</button>
+                            <super::HandInActions/>
+                            <button class="lms-hidden" on:click=move |_| ex.screen.set(Screen::Catalogue)>"All exercises"</button>
                         </div>
                     </div>
                     <div class="exercise-setup">

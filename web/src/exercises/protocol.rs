@@ -28,6 +28,15 @@ pub enum Request {
         /// The project file of the attempt.
         project: String,
     },
+    /// Pack the exercise (its file and starter) with the site's files into a SCORM 1.2
+    /// package; the worker answers with the ZIP's bytes (a `Uint8Array`) or an `Error`.
+    Scorm {
+        /// The exercise and its starter.
+        link: ExerciseLink,
+        /// The site's root URL (the page's folder, ending in `/`): its `site-files.txt`
+        /// lists the files to pack.
+        site: String,
+    },
 }
 
 /// What the worker answers.

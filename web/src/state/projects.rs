@@ -13,7 +13,7 @@
 //!   stopped while opening one does not open it again on reload.
 
 use leptos::prelude::*;
-use plc_core::project::{decode_share, encode_share, Project, ProjectStore, StoreError};
+use plc_core::project::{Project, ProjectStore, StoreError};
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::JsCast;
 
@@ -93,10 +93,24 @@ impl AppState {
                     "The shared project in this link stopped the page the last time it was opened, so it was not opened again. Your own projects are unchanged.",
                     vec![NoticeAction::OpenShared(hash)],
                 );
-            } else if self.open_shared(&hash) {
+            } else {
+                // The link's reader (base64 and DEFLATE) is a chunk fetched only for links.
+                let state = *self;
+                leptos::task::spawn_local(async move {
+                    if !state.open_shared(&hash).await {
+                        state.open_most_recent(interrupted);
+                    }
+                });
                 return;
             }
         }
+        self.open_most_recent(interrupted);
+    }
+
+    /// Opens the most recent project that opens (not the one whose opening stopped the
+    /// page last time, `interrupted`), else a new one.
+    fn open_most_recent(&self, interrupted: Option<String>) {
+        let store = store();
         self.refresh_list();
         let damage = store.index_damage().ok().flatten();
         let damaged = self.damaged.get_untracked();
@@ -134,8 +148,17 @@ impl AppState {
 
     /// Opens the shared project in `fragment` as a new project; false when the link is
     /// unusable (the most recent project opens instead).
-    fn open_shared(&self, fragment: &str) -> bool {
-        let project = match decode_share(fragment) {
+    async fn open_shared(&self, fragment: &str) -> bool {
+        let decoded = match crate::lazy::read_share(fragment.to_string()).await {
+            Ok(decoded) => decoded,
+            Err(e) => {
+                self.error(format!(
+                    "Could not open the shared project: {e}. Your own projects are unchanged; reload the page with this link to try again."
+                ));
+                return false;
+            }
+        };
+        let project = match decoded {
             Ok(project) => project,
             Err(e) => {
                 clear_fragment();
@@ -373,7 +396,10 @@ impl AppState {
                 }
             }
             NoticeAction::OpenShared(fragment) => {
-                self.open_shared(fragment);
+                let (state, fragment) = (*self, fragment.clone());
+                leptos::task::spawn_local(async move {
+                    state.open_shared(&fragment).await;
+                });
             }
         }
     }
@@ -437,14 +463,14 @@ impl AppState {
         self.save();
     }
 
-    /// The share link of the open project.
-    pub fn share_link(&self) -> String {
-        let fragment = encode_share(&self.project.get_untracked());
+    /// The share link of the open project (its writer is a chunk, `lazy::share_fragment`).
+    pub async fn share_link(&self) -> Result<String, crate::lazy::LoadFailed> {
+        let fragment = crate::lazy::share_fragment(self.project.get_untracked()).await?;
         let base = web_sys::window()
             .and_then(|w| w.location().href().ok())
             .map(|h| h.split('#').next().unwrap_or_default().to_string())
             .unwrap_or_default();
-        format!("{base}#{fragment}")
+        Ok(format!("{base}#{fragment}"))
     }
 }
 

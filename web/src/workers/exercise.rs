@@ -2,18 +2,22 @@
 //! link), rendering their statements and grading attempts, in a chunk of the app
 //! (`split_exercise_worker.wasm`) that only the exercise worker loads (it runs the page's
 //! module, so the engine is not downloaded twice). It answers each message — a JSON
-//! [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`).
+//! [`Request`] — with a JSON [`Reply`] (see `src/exercises/protocol.rs`), or, for a SCORM
+//! package, with the ZIP's bytes (the packing and its ZIP writer stay in this chunk).
+//!
+//! The shipped exercises are files next to the app (`exercises/ID.json`, written by
+//! `build.rs`) in the built form: JSON with the statement rendered, read without a TOML
+//! reader or a Markdown renderer. An exercise file in TOML (from an address or a link)
+//! is read by a chunk of its own (`exercise_toml`), fetched only then.
 
 use crate::exercises::protocol::{Opened, Reply, Request, StarterFile};
 use plc_core::exercise::{
-    grade_by, Exercise, ExerciseLink, ExerciseView, GradeOptions, LinkedFile,
+    grade_by, is_built, Exercise, ExerciseLink, ExerciseView, GradeOptions, SITE_FILE_LIST,
 };
 use plc_core::open::open_plain;
 use plc_core::project::Project;
-
-mod shipped {
-    include!(concat!(env!("OUT_DIR"), "/exercise_files.rs"));
-}
+use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen_futures::JsFuture;
 
 /// Scans shown around a failure on the page's timeline.
 const PAGE_WINDOW: usize = 100;
@@ -21,28 +25,21 @@ const PAGE_WINDOW: usize = 100;
 /// The reply to one request.
 async fn answer(request: Request) -> Reply {
     match request {
-        Request::Shipped(id) => match shipped::FILES.iter().find(|(i, _, _)| *i == id) {
-            Some((_, text, files)) => {
-                let starters = files
-                    .iter()
-                    .map(|(name, text)| LinkedFile { name: (*name).into(), text: (*text).into() });
-                let link = ExerciseLink {
-                    exercise: (*text).to_string(),
-                    starter: None,
-                    starters: starters.collect(),
-                };
-                open(link, None).await
-            }
-            None => Reply::Error(format!("there is no exercise “{id}” in this trainer")),
+        Request::Shipped(id) => match shipped(&id).await {
+            Ok(link) => open(link, None).await,
+            Err(e) => Reply::Error(e),
         },
         Request::File { link, base } => open(link, base).await,
-        Request::Link(fragment) => match ExerciseLink::decode(&fragment) {
-            Ok((link, _)) => open(link, None).await,
+        Request::Link(fragment) => match ExerciseLink::unpack(&fragment) {
+            Ok(link) => match read(&link.exercise, None).await {
+                Ok(_) => open(link, None).await,
+                Err(e) => Reply::Error(format!("the exercise in this link cannot be used: {e}")),
+            },
             Err(e) => Reply::Error(e.to_string()),
         },
         Request::Grade { exercise, project } => {
-            let exercise = match Exercise::from_toml(&exercise) {
-                Ok(e) => e,
+            let exercise = match read(&exercise, None).await {
+                Ok((e, _)) => e,
                 Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
             };
             let project = match Project::from_file(&project) {
@@ -60,20 +57,120 @@ async fn answer(request: Request) -> Reply {
                 Err(e) => Reply::Error(format!("the exercise cannot grade: {e}")),
             }
         }
+        // Answered by `reply` (with the package's bytes).
+        Request::Scorm { .. } => Reply::Error("a package is not a text answer".into()),
     }
+}
+
+/// Reads an exercise text and renders its statement (relative links against `base`): the
+/// built form here, TOML in the `exercise_toml` chunk.
+async fn read(text: &str, base: Option<&str>) -> Result<(Exercise, String), String> {
+    if is_built(text) {
+        return Exercise::from_built(text).map_err(|e| e.to_string());
+    }
+    super::read_toml(text.to_string(), base.map(str::to_string))
+        .await
+        .unwrap_or_else(|e| Err(e.to_string()))
+}
+
+/// The link that opens the shipped exercise `id` (the file `build.rs` wrote).
+async fn shipped(id: &str) -> Result<ExerciseLink, String> {
+    let missing = || format!("there is no exercise “{id}” in this trainer");
+    if id.is_empty() || !id.chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_') {
+        return Err(missing());
+    }
+    let text = shipped_file(id).await?.ok_or_else(missing)?;
+    serde_json::from_str(&text).map_err(|e| format!("the exercise “{id}” cannot be read: {e}"))
+}
+
+/// The text of `exercises/ID.json` next to the worker's script, `None` when there is none.
+#[cfg(target_arch = "wasm32")]
+async fn shipped_file(id: &str) -> Result<Option<String>, String> {
+    let failed = |_| format!("the exercise “{id}” could not be loaded (is the network off?)");
+    let scope: web_sys::WorkerGlobalScope = js_sys::global().unchecked_into();
+    let response: web_sys::Response =
+        JsFuture::from(scope.fetch_with_str(&format!("exercises/{id}.json")))
+            .await
+            .map_err(failed)?
+            .unchecked_into();
+    if response.status() == 404 {
+        return Ok(None);
+    }
+    if !response.ok() {
+        return Err(format!(
+            "the exercise “{id}” could not be loaded (HTTP {})",
+            response.status()
+        ));
+    }
+    let text = JsFuture::from(response.text().map_err(failed)?).await.map_err(failed)?;
+    Ok(text.as_string())
+}
+
+/// Natively (tests) the files are built in.
+#[cfg(not(target_arch = "wasm32"))]
+async fn shipped_file(id: &str) -> Result<Option<String>, String> {
+    mod files {
+        include!(concat!(env!("OUT_DIR"), "/exercise_files.rs"));
+    }
+    Ok(files::FILES.iter().find(|(i, _)| *i == id).map(|(_, text)| (*text).to_string()))
+}
+
+/// The bytes at `url`.
+async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
+    let failed = |_| format!("{url} cannot be read");
+    let scope: web_sys::WorkerGlobalScope = js_sys::global().unchecked_into();
+    let response: web_sys::Response = JsFuture::from(scope.fetch_with_str(url))
+        .await
+        .map_err(failed)?
+        .dyn_into()
+        .map_err(failed)?;
+    if !response.ok() {
+        return Err(format!("{url}: HTTP {}", response.status()));
+    }
+    let buffer = JsFuture::from(response.array_buffer().map_err(failed)?).await.map_err(failed)?;
+    Ok(js_sys::Uint8Array::new(&buffer).to_vec())
+}
+
+/// The SCORM package of `link`: the files of the site at `site` (its root URL, ending in
+/// `/`) as its `site-files.txt` lists them, the exercise and its starter, and the manifest.
+async fn package(link: ExerciseLink, site: &str) -> Result<Vec<u8>, String> {
+    let list = fetch_bytes(&format!("{site}{SITE_FILE_LIST}")).await.map_err(|_| {
+        format!(
+            "this copy of the trainer has no list of its files ({SITE_FILE_LIST}; `bash scripts/build-web.sh` writes it). Use `plc exercise scorm EXERCISE.toml` instead"
+        )
+    })?;
+    let mut files = Vec::new();
+    for path in String::from_utf8_lossy(&list).lines().map(str::trim).filter(|l| !l.is_empty()) {
+        files.push((path.to_string(), fetch_bytes(&format!("{site}{path}")).await?));
+    }
+    let starters: Vec<_> = link.starter.into_iter().chain(link.starters).collect();
+    super::scorm_zip(link.exercise, starters, files).await.map_err(|e| e.to_string())?
+}
+
+/// The answer to one message: a SCORM package's bytes (a `Uint8Array`), or the JSON text
+/// of a [`Reply`].
+pub async fn reply(message: JsValue) -> JsValue {
+    let text = message.as_string().unwrap_or_default();
+    if let Ok(Request::Scorm { link, site }) = serde_json::from_str::<Request>(&text) {
+        return match package(link, &site).await {
+            Ok(zip) => js_sys::Uint8Array::from(zip.as_slice()).into(),
+            Err(e) => {
+                JsValue::from_str(&serde_json::to_string(&Reply::Error(e)).unwrap_or_default())
+            }
+        };
+    }
+    JsValue::from_str(&reply_text(&text).await)
 }
 
 /// Opens an exercise file with its starter.
 async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
-    let exercise = match Exercise::from_toml(&link.exercise) {
-        Ok(e) => e,
+    let (exercise, statement_html) = match read(&link.exercise, base.as_deref()).await {
+        Ok(read) => read,
         Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
     };
     let link = link.arranged(&exercise);
-    let fragment = match link.encode() {
-        Ok(f) => f,
-        Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
-    };
+    // The exercise was read just now: the link carries nothing the page would refuse.
+    let fragment = link.fragment();
     let missing: Vec<String> = exercise
         .starter_files()
         .into_iter()
@@ -128,7 +225,7 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
             Err(e) => return Reply::Error(e.to_string()),
         }
     }
-    let view = ExerciseView::of(&exercise, base.as_deref());
+    let view = ExerciseView::with_statement(&exercise, statement_html);
     Reply::Opened(Box::new(Opened { view, link, base, fragment, starters, missing }))
 }
 
@@ -169,8 +266,9 @@ mod tests {
 
     #[test]
     fn every_shipped_exercise_opens_with_its_starter() {
-        assert!(shipped::FILES.len() >= 2);
-        for (id, _, _) in shipped::FILES {
+        let catalogue = crate::exercises::catalogue();
+        assert!(catalogue.len() >= 2);
+        for id in catalogue.iter().map(|e| e.id) {
             let Reply::Opened(opened) = ask(Request::Shipped((*id).to_string())) else {
                 panic!("{id} does not open");
             };
