@@ -1,10 +1,16 @@
-//! The page layout: header with the project menu, the editor pane (POU navigator, the
+//! The page layout: header with the project menu, the `Start here` strip of a first
+//! visit, the editor pane (POU navigator, the
 //! selected POU's view, the problem list) and the simulation panels.
 
 use leptos::prelude::*;
 
 use crate::components::{
-    controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, timeline::Timeline,
+    controls::Controls,
+    header::Header,
+    io::IoPanel,
+    pou_pane::PouPane,
+    timeline::Timeline,
+    tour::{tour_panel, Tour},
     variables::Variables,
 };
 use crate::exercises::{Exercises, Screen};
@@ -19,16 +25,22 @@ pub fn App() -> impl IntoView {
     provide_context(state);
     let exercises = Exercises::new(state);
     provide_context(exercises);
+    let tour = Tour::new();
+    provide_context(tour);
+    tour.watch(state, exercises);
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
     let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));
     view! {
         <Header/>
         <Banner/>
         <Show when=catalogue>
+            {tour_panel()}
             {lazy_view("the exercise catalogue", lazy::catalogue_view)}
         </Show>
         // Kept while the catalogue is shown (hidden), so the editors keep their state.
         <main class="workspace" hidden=catalogue>
+            // At the top of the simulation column: the editors never move for it.
+            {tour_panel()}
             <section class="editor-pane" aria-label="Program">
                 {move || exercises.open.with(Option::is_some).then(|| {
                     lazy_view("the exercise", lazy::exercise_panel_view)

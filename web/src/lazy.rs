@@ -255,3 +255,24 @@ fn il_pass() -> Result<IlPass, LoadFailed> {
 fn petri_pass() -> Result<PetriPass, LoadFailed> {
     Ok(plc_core::petri::compile)
 }
+
+/// The `New ladder POU` (`petri` false) or `New Petri net POU` dialog; `open` goes false
+/// when it closes.
+#[wasm_split(new_pou, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn new_pou_dialog(petri: bool, open: RwSignal<bool>) -> Result<AnyView, LoadFailed> {
+    use crate::components::new_pou::NewPouDialog;
+    Ok(view! { <NewPouDialog petri=petri open=open/> }.into_any())
+}
+
+/// The `Start here` strip at `step` (`done`: its action was seen): what a screen reader
+/// hears, `\u{1}`, the strip's markup (`components::tour::tour_text`).
+#[wasm_split(tour, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn tour_text(step: usize, done: bool) -> Result<String, LoadFailed> {
+    Ok(crate::components::tour::tour_text(step, done))
+}
+
+/// The content of the `Keyboard shortcuts` dialog.
+#[wasm_split(help, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn shortcuts_text() -> Result<String, LoadFailed> {
+    Ok(crate::components::help::shortcuts_html())
+}

@@ -6,6 +6,7 @@ mod built_form;
 mod format;
 mod grade;
 mod handin;
+mod interface;
 mod link;
 mod random;
 mod scorm;
@@ -22,6 +23,7 @@ pub use grade::{
     grade, grade_by, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport,
 };
 pub use handin::{HandIn, HAND_IN_EXTENSION};
+pub use interface::interface_declarations;
 pub use link::{ExerciseLink, LinkedFile, EXERCISE_LINK_PREFIX};
 pub use scorm::{
     scorm_files, scorm_launch, scorm_manifest, scorm_package, PackageFile, ScormVersion,

@@ -14,8 +14,13 @@ use crate::syntax::{self, Item};
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum PouError {
+    /// No name was given.
+    Empty,
     /// The name is not an IEC identifier.
     NotAName(String),
+    /// The name is reserved: a keyword, a type or a standard block (the name, and what it
+    /// is).
+    Reserved(String, &'static str),
     /// Another POU (ST, ladder or Petri net) already has the name.
     Taken(String),
     /// No ladder POU has that name.
@@ -29,6 +34,8 @@ pub enum PouError {
 impl fmt::Display for PouError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            PouError::Empty => f.write_str("type a name for the POU"),
+            PouError::Reserved(n, what) => write!(f, "{n} is {what}: choose another name"),
             PouError::NotAName(n) => write!(
                 f,
                 "“{n}” is not a name: use letters, digits and single underscores, starting with a letter"
@@ -57,9 +64,37 @@ impl Project {
             .collect()
     }
 
+    /// Whether `name` (trimmed) can name a new POU: not empty, an IEC identifier, not a
+    /// keyword, type or standard block, and not the name of another POU (any case). The
+    /// error says why, for a message under the name field.
+    pub fn check_pou_name(&self, name: &str) -> Result<(), PouError> {
+        self.check_new_name(name.trim(), None)
+    }
+
+    /// The first of `base1`, `base2`, … that [`Project::check_pou_name`] accepts (`Ladder1`,
+    /// `Net1`, `Latch2`); a `base` that cannot start a name becomes `Pou`.
+    pub fn free_pou_name(&self, base: &str) -> String {
+        let base = base.trim();
+        let base = if syntax::is_identifier(base) { base } else { "Pou" };
+        let taken = self.pou_names();
+        (1u32..)
+            .map(|n| format!("{base}{n}"))
+            .find(|name| {
+                !taken.iter().any(|t| t.eq_ignore_ascii_case(name))
+                    && self.check_new_name(name, None).is_ok()
+            })
+            .unwrap_or_else(|| base.to_string())
+    }
+
     fn check_new_name(&self, name: &str, except: Option<&str>) -> Result<(), PouError> {
+        if name.is_empty() {
+            return Err(PouError::Empty);
+        }
         if !syntax::is_identifier(name) {
             return Err(PouError::NotAName(name.to_string()));
+        }
+        if let Some(what) = reserved(name) {
+            return Err(PouError::Reserved(name.to_string(), what));
         }
         let taken = self.pou_names().iter().any(|n| {
             n.eq_ignore_ascii_case(name) && except.is_none_or(|e| !e.eq_ignore_ascii_case(n))
@@ -73,9 +108,23 @@ impl Project {
     /// Adds a ladder POU named `name` with one empty rung of the default grid (8 × 10) and
     /// an empty declaration block.
     pub fn add_ladder_pou(&mut self, name: &str, kind: LadderPouKind) -> Result<(), PouError> {
+        self.add_ladder_pou_with(
+            name,
+            kind,
+            "VAR_INPUT\nEND_VAR\nVAR_OUTPUT\nEND_VAR\nVAR\nEND_VAR\n",
+        )
+    }
+
+    /// Adds a ladder POU named `name` with one empty rung of the default grid and the
+    /// given declarations (an exercise's interface, declared for the student).
+    pub fn add_ladder_pou_with(
+        &mut self,
+        name: &str,
+        kind: LadderPouKind,
+        declarations: &str,
+    ) -> Result<(), PouError> {
         let name = name.trim();
         self.check_new_name(name, None)?;
-        let declarations = "VAR_INPUT\nEND_VAR\nVAR_OUTPUT\nEND_VAR\nVAR\nEND_VAR\n";
         self.ladder.push(LadderPou {
             name: name.to_string(),
             kind,
@@ -106,11 +155,16 @@ impl Project {
     /// Adds a Petri net PROGRAM named `name` with an empty net and empty input and output
     /// declarations.
     pub fn add_petri_pou(&mut self, name: &str) -> Result<(), PouError> {
+        self.add_petri_pou_with(name, "VAR_INPUT\nEND_VAR\nVAR_OUTPUT\nEND_VAR\n")
+    }
+
+    /// Adds a Petri net PROGRAM named `name` with an empty net and the given declarations.
+    pub fn add_petri_pou_with(&mut self, name: &str, declarations: &str) -> Result<(), PouError> {
         let name = name.trim();
         self.check_new_name(name, None)?;
         self.petri.push(PetriPou {
             name: name.to_string(),
-            declarations: "VAR_INPUT\nEND_VAR\nVAR_OUTPUT\nEND_VAR\n".to_string(),
+            declarations: declarations.to_string(),
             prologue: String::new(),
             epilogue: String::new(),
             net: Net::default(),
@@ -213,6 +267,25 @@ impl Project {
     }
 }
 
+/// What `name` already is in the language when it cannot name a POU: a keyword, an
+/// elementary type, a standard function block or a standard function.
+fn reserved(name: &str) -> Option<&'static str> {
+    let upper = name.to_ascii_uppercase();
+    if syntax::is_keyword(name) {
+        Some("a keyword of ST")
+    } else if crate::semantic::Elem::from_name(&upper).is_some()
+        || matches!(upper.as_str(), "STRING" | "WSTRING")
+    {
+        Some("the name of a data type")
+    } else if crate::ladder::standard_fb_power(name).is_some() {
+        Some("the name of a standard function block")
+    } else if crate::ladder::blocks::is_standard_function(name) {
+        Some("the name of a standard function")
+    } else {
+        None
+    }
+}
+
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used)]
@@ -252,6 +325,59 @@ mod tests {
         p.delete_ladder_pou("line1").unwrap();
         assert!(p.ladder.is_empty() && p.settings.program.is_none());
         assert_eq!(p.delete_ladder_pou("x"), Err(PouError::NoSuchPou("x".into())));
+    }
+
+    #[test]
+    fn a_new_name_is_checked_with_a_message_that_says_why() {
+        let p = Project::new("p"); // the ST source has PROGRAM Main
+        let why = |name: &str| p.check_pou_name(name).map_err(|e| e.to_string());
+        assert_eq!(why("  "), Err("type a name for the POU".into()));
+        assert_eq!(why("Latch"), Ok(()));
+        assert_eq!(why(" Latch "), Ok(()), "the name is trimmed, as adding trims it");
+        assert_eq!(why("main"), Err("the project already has a POU named main".into()));
+        assert_eq!(why("if"), Err("if is a keyword of ST: choose another name".into()));
+        assert_eq!(why("Int"), Err("Int is the name of a data type: choose another name".into()));
+        assert_eq!(
+            why("TON"),
+            Err("TON is the name of a standard function block: choose another name".into())
+        );
+        assert_eq!(
+            why("sqrt"),
+            Err("sqrt is the name of a standard function: choose another name".into())
+        );
+        assert!(why("1st").unwrap_err().contains("is not a name"));
+        let mut q = Project::new("q");
+        assert_eq!(
+            q.add_ladder_pou("END_VAR", LadderPouKind::Program).unwrap_err(),
+            PouError::Reserved("END_VAR".into(), "a keyword of ST")
+        );
+        assert_eq!(q.add_petri_pou("").unwrap_err(), PouError::Empty);
+    }
+
+    #[test]
+    fn a_free_name_is_suggested_from_a_base() {
+        let mut p = Project::new("p");
+        assert_eq!(p.free_pou_name("Ladder"), "Ladder1");
+        p.add_ladder_pou("ladder1", LadderPouKind::Program).unwrap();
+        p.add_petri_pou("Ladder2").unwrap();
+        assert_eq!(p.free_pou_name("Ladder"), "Ladder3", "any kind of POU, any case");
+        p.source.push_str("\nFUNCTION_BLOCK Net1\nEND_FUNCTION_BLOCK\n");
+        assert_eq!(p.free_pou_name("Net"), "Net2", "ST POUs count too");
+        assert_eq!(p.free_pou_name("9 lives"), "Pou1", "a base that is no name");
+        assert_eq!(p.free_pou_name("CTU"), "CTU1", "a standard name with a number is free");
+    }
+
+    #[test]
+    fn a_pou_can_start_with_declarations() {
+        let mut p = Project::new("p");
+        let decls = "VAR_INPUT\n    Start : BOOL;\nEND_VAR\n";
+        p.add_ladder_pou_with("Latch1", LadderPouKind::Program, decls).unwrap();
+        p.add_petri_pou_with("Net1", decls).unwrap();
+        assert_eq!(
+            (p.ladder[0].declarations.as_str(), p.petri[0].declarations.as_str()),
+            (decls, decls)
+        );
+        assert_eq!(p.add_petri_pou_with("latch1", decls), Err(PouError::Taken("latch1".into())));
     }
 
     #[test]

@@ -223,7 +223,7 @@ pub enum TokenKind {
 
 impl TokenKind {
     /// The keyword spelled `word` (any case), if it is one.
-    fn keyword(word: &str) -> Option<TokenKind> {
+    pub(crate) fn keyword(word: &str) -> Option<TokenKind> {
         use TokenKind::*;
         let upper = word.to_ascii_uppercase();
         Some(match upper.as_str() {

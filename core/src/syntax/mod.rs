@@ -32,6 +32,12 @@ pub fn parse_expression(source: &str) -> Result<Expr, Vec<Diagnostic>> {
     parser::parse_single_expression(source)
 }
 
+/// Whether `word` (any case) is a keyword of ST (`IF`, `END_VAR`, `TRUE`), which cannot name
+/// a variable or a POU.
+pub fn is_keyword(word: &str) -> bool {
+    lexer::TokenKind::keyword(word).is_some()
+}
+
 /// Whether `name` is an IEC identifier (letters, digits, single underscores, not starting
 /// with a digit, not ending with an underscore).
 pub fn is_identifier(name: &str) -> bool {

@@ -1,12 +1,13 @@
 //! The simulation controls: the PROGRAM to run (when the project has several), run,
 //! pause, single scan, N scans, restarts, cycle time,
-//! speed, and read-outs of the run state, scan count and virtual time.
+//! speed, and read-outs of the run state, scan count and virtual time, and which version
+//! runs when it is not the text on the screen.
 
 use leptos::prelude::*;
 use plc_core::sim::SimState;
 use plc_core::vm::format_time;
 
-use crate::state::{AppState, RunMode, Speed};
+use crate::state::{version_text, AppState, RunMode, Speed};
 
 /// The control bar of the simulation pane.
 #[component]
@@ -16,7 +17,11 @@ pub fn Controls() -> impl IntoView {
     let has_sim = move || state.with_sim(|_| ()).is_some();
     let faulted =
         move || state.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);
-    let can_scan = move || has_sim() && !faulted();
+    // With errors the buttons stay enabled: pressing one says what to fix (and offers the
+    // last version that built) instead of silently running an older build.
+    let has_errors = move || state.diagnostics.with(|ds| ds.iter().any(|d| d.error));
+    let can_scan = move || (has_sim() || has_errors()) && !faulted();
+    let version = move || version_text(state.stale.get(), mode.get()).unwrap_or_default();
     let running = move || mode.get() == RunMode::Running;
     let scans_per_step = RwSignal::new(10u64);
 
@@ -49,7 +54,7 @@ pub fn Controls() -> impl IntoView {
                 <button class="primary" disabled=move || !can_scan() || running()
                     on:click=move |_| state.run()>"Run"</button>
                 <button disabled=move || !running() on:click=move |_| state.pause()>"Pause"</button>
-                <button disabled=move || !can_scan() on:click=move |_| state.step(1)>"Step"</button>
+                <button data-tour="step" disabled=move || !can_scan() on:click=move |_| state.step(1)>"Step"</button>
                 <button disabled=move || !has_sim() on:click=move |_| state.reset()>"Reset"</button>
                 <button disabled=move || !has_sim() on:click=move |_| state.warm_restart()>
                     "Warm restart"
@@ -120,6 +125,7 @@ pub fn Controls() -> impl IntoView {
                 <span class="readout">"Scan " <output aria-label="Scan count">{scans}</output></span>
                 <span class="readout">"Time " <output aria-label="Virtual time">{time}</output></span>
             </div>
+            <p class="run-version" role="status" aria-live="polite">{version}</p>
         </section>
     }
 }

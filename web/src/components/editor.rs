@@ -119,7 +119,8 @@ impl Ed {
             return;
         }
         self.pending.set_value(false);
-        self.state.check_now();
+        // Run may have checked this text already (a check restarts the simulator).
+        self.state.check_if_pending();
         self.state.save();
     }
 

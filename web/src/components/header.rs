@@ -1,5 +1,5 @@
-//! The page header: the app title, the open project's name, and the project menu (open,
-//! new, open an example, rename, duplicate, delete, export, import, share).
+//! The page header: the app title, the open project's name, the project menu (open,
+//! new, open an example, rename, duplicate, delete, export, import, share) and `Help`.
 
 use leptos::ev;
 use leptos::html;
@@ -8,6 +8,7 @@ use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
+use crate::components::help::help_menu;
 use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
@@ -175,6 +176,7 @@ pub fn Header() -> impl IntoView {
             <button class="exercises-button" aria-pressed=move || (exercises.screen.get() == Screen::Catalogue).to_string()
                 on:click=move |_| exercises.screen.update(|s| *s = if *s == Screen::Catalogue { Screen::Workspace } else { Screen::Catalogue })
                 title="Exercises that grade themselves">"Exercises"</button>
+            {help_menu()}
             <nav class="project-menu" aria-label="Project">
                 <label class="project-select">
                     <span class="visually-hidden">"Open project"</span>

@@ -5,7 +5,6 @@
 //! and caret survive switching; ladder and net views are built when selected.
 
 use leptos::prelude::*;
-use plc_core::ladder::LadderPouKind;
 
 use crate::components::editor::Editor;
 use crate::components::problems::Problems;
@@ -86,126 +85,62 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
 fn Navigator() -> impl IntoView {
     let state = expect_context::<AppState>();
     let items = Memo::new(move |_| nav_items(state));
-    move || {
+    let tabs = move || {
         let running = state.running.get();
-        view! {
-            <nav class="pou-nav" aria-label="POUs">
-                {items.get().into_iter().map(|item| {
-                    let target = item.view.clone();
-                    let selected = {
-                        let v = item.view.clone();
-                        move || state.view.get() == v
-                    };
-                    let runs = running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&item.name))
-                        && item.view != PouView::St;
-                    let title = if runs { "This PROGRAM runs in the simulator" } else { "" };
-                    view! {
-                        <button class="pou-tab" aria-label=item.label.clone() title=title
-                            aria-pressed=move || if selected() { "true" } else { "false" }
-                            on:click=move |_| state.view.set(target.clone())>
-                            <span class=format!("pou-badge pou-badge-{}", item.badge.to_ascii_lowercase())>{item.badge}</span>
-                            <span>{item.name.clone()}</span>
-                            {runs.then(|| view! { <span class="pou-running" aria-hidden="true">"▶"</span> })}
-                            {(item.errors > 0).then(|| view! {
-                                <span class="pou-errors" aria-hidden="true">{item.errors}</span>
-                            })}
-                        </button>
-                    }
-                }).collect_view()}
-                <NewPou petri=false/>
-                <NewPou petri=true/>
-            </nav>
-        }
+        items
+            .get()
+            .into_iter()
+            .map(|item| {
+                let target = item.view.clone();
+                let selected = {
+                    let v = item.view.clone();
+                    move || state.view.get() == v
+                };
+                let runs = running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&item.name))
+                    && item.view != PouView::St;
+                let title = if runs { "This PROGRAM runs in the simulator" } else { "" };
+                view! {
+                    <button class="pou-tab" aria-label=item.label.clone() title=title
+                        aria-pressed=move || if selected() { "true" } else { "false" }
+                        on:click=move |_| state.view.set(target.clone())>
+                        <span class=format!("pou-badge pou-badge-{}", item.badge.to_ascii_lowercase())>{item.badge}</span>
+                        <span>{item.name.clone()}</span>
+                        {runs.then(|| view! { <span class="pou-running" aria-hidden="true">"▶"</span> })}
+                        {(item.errors > 0).then(|| view! {
+                            <span class="pou-errors" aria-hidden="true">{item.errors}</span>
+                        })}
+                    </button>
+                }
+            })
+            .collect_view()
+    };
+    // The two New buttons (and their dialogs) stay mounted while the tabs change.
+    view! {
+        <nav class="pou-nav" aria-label="POUs">
+            {tabs}
+            <NewPou petri=false/>
+            <NewPou petri=true/>
+        </nav>
     }
 }
 
-/// `New ladder POU` (name, kind, Create) or `New Petri net POU` (name, Create): a small
-/// dialog that adds an empty POU to the project and shows it.
+/// `New ladder POU` or `New Petri net POU`: the button, and while it is open the dialog
+/// (`components::new_pou`, loaded on first use: the first screen has a size budget).
 #[component]
 fn NewPou(petri: bool) -> impl IntoView {
-    let state = expect_context::<AppState>();
     let title = if petri { "New Petri net POU" } else { "New ladder POU" };
     let open = RwSignal::new(false);
-    let name = RwSignal::new(String::new());
-    let kind = RwSignal::new(LadderPouKind::Program);
-    let problem = RwSignal::new(None::<String>);
-    // The editor and the pass that builds the new POU come while the user names it; Create
-    // waits for them, so the new POU is built (and its PROGRAM runs) before it is shown.
-    let preload = move || {
-        leptos::task::spawn_local(async move {
-            let _ = crate::lazy::preload_editor(petri).await;
-        });
-    };
-    let create_now = move || {
-        let text = name.get_untracked().trim().to_string();
-        let mut project = state.project.get_untracked();
-        let program = petri || kind.get_untracked() == LadderPouKind::Program;
-        let added = if petri {
-            project.add_petri_pou(&text)
-        } else {
-            project.add_ladder_pou(&text, kind.get_untracked())
-        };
-        match added {
-            Ok(()) => {
-                if program
-                    && project.settings.program.is_none()
-                    && state.running.get_untracked().is_none()
-                {
-                    project.settings.program = Some(text.clone());
-                }
-                state.project.set(project);
-                state.save();
-                state.check_now();
-                state.view.set(if petri { PouView::Petri(text) } else { PouView::Ladder(text) });
-                open.set(false);
-                name.set(String::new());
-                problem.set(None);
-            }
-            Err(e) => problem.set(Some(e.to_string())),
-        }
-    };
-    let create = move || {
-        leptos::task::spawn_local(async move {
-            let _ = crate::lazy::preload_editor(petri).await;
-            create_now();
-        });
-    };
     view! {
-        <button class="pou-tab pou-new" on:click=move |_| {
-                open.update(|o| *o = !*o);
-                problem.set(None);
-                if open.get_untracked() {
-                    preload();
-                }
-            }
-            aria-expanded=move || if open.get() { "true" } else { "false" }>{title}</button>
-        {move || open.get().then(|| view! {
-            <div class="pou-dialog" role="dialog" aria-label=title>
-                <label class="field">
-                    <span>"POU name"</span>
-                    <input type="text" aria-label="POU name" prop:value=move || name.get()
-                        spellcheck="false" autofocus
-                        on:input=move |ev| name.set(event_target_value(&ev))
-                        on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
-                            "Enter" => { ev.prevent_default(); create(); }
-                            "Escape" => open.set(false),
-                            _ => {}
-                        }/>
-                </label>
-                {(!petri).then(|| view! {
-                    <label class="field">
-                        <span>"POU kind"</span>
-                        <select aria-label="POU kind" on:change=move |ev| kind.set(
-                            if event_target_value(&ev) == "FUNCTION_BLOCK" { LadderPouKind::FunctionBlock } else { LadderPouKind::Program })>
-                            <option value="PROGRAM" selected=true>"PROGRAM"</option>
-                            <option value="FUNCTION_BLOCK">"FUNCTION_BLOCK"</option>
-                        </select>
-                    </label>
-                })}
-                <button on:click=move |_| create()>"Create"</button>
-                <button on:click=move |_| open.set(false)>"Cancel"</button>
-                {move || problem.get().map(|p| view! { <p class="field-error" aria-live="polite">{p}</p> })}
-            </div>
+        <button class="pou-tab pou-new" data-kind=if petri { "petri" } else { "ladder" }
+            aria-haspopup="dialog" on:click=move |_| {
+                open.set(true);
+                // The editor and the pass that build the new POU come while it is named.
+                leptos::task::spawn_local(async move {
+                    let _ = lazy::preload_editor(petri).await;
+                });
+            }>{title}</button>
+        {move || open.get().then(|| {
+            lazy_view("the New POU dialog", move || lazy::new_pou_dialog(petri, open))
         })}
     }
 }

@@ -82,7 +82,8 @@ pub(super) fn trace_paths(sim: &mut Simulator, paths: &[String]) {
 impl AppState {
     /// Builds the project; when it is clean, powers a fresh simulator on for the chosen
     /// PROGRAM (held inputs are re-applied; a running PLC keeps running with the new
-    /// program). With errors the previous program keeps running.
+    /// program). With errors the previous program keeps running, marked stale (the
+    /// controls say so, and Run does not start it unless the user chooses to).
     ///
     /// A project with diagram POUs is built only once the passes for them are loaded (a
     /// chunk each, fetched the first time: `crate::lazy::load_lowerings`); until then the
@@ -106,6 +107,7 @@ impl AppState {
             });
             return;
         }
+        self.check_pending.set_value(false);
         let build = build_project_by(&project, &lowerings);
         self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
         let charts: Vec<String> =
@@ -114,8 +116,10 @@ impl AppState {
             self.sfc_charts.set(charts);
         }
         if build.has_errors() {
+            self.set_stale(self.sim.with_value(Option::is_some));
             return;
         }
+        self.set_stale(false);
         let names = build.program_names();
         let chosen = project
             .settings
@@ -161,9 +165,26 @@ impl AppState {
                 self.marked_line.set(None);
                 self.fault_site.set(None);
             }
-            Err(e) => self.error(e.located_message()),
+            Err(e) => {
+                self.set_stale(self.sim.with_value(Option::is_some));
+                self.error(e.located_message());
+            }
         }
         self.bump();
+    }
+
+    /// Notes whether the simulator holds an older build than the text on the screen; the
+    /// choice to run that one ends when the project builds again.
+    fn set_stale(&self, stale: bool) {
+        if self.stale.get_untracked() != stale {
+            self.stale.set(stale);
+        }
+        if !stale {
+            if self.run_old.get_untracked() {
+                self.run_old.set(false);
+            }
+            self.clear_refusal();
+        }
     }
 
     /// Chooses the PROGRAM to run (kept in the project's settings) and restarts on it.

@@ -3,6 +3,7 @@
 //! in `run.rs`.
 
 mod check;
+mod gate;
 mod projects;
 mod run;
 
@@ -15,6 +16,7 @@ use plc_core::project::{Project, ProjectSummary};
 use plc_core::sim::{BreakpointId, Simulator};
 
 pub use check::DiagView;
+pub use gate::version_text;
 pub use projects::{clear_fragment, note_panic, project_file_name};
 pub use run::marking_of;
 
@@ -91,6 +93,8 @@ pub enum NoticeAction {
     DeleteDamaged(String),
     /// Open a share link (the URL fragment) held back after it stopped the page.
     OpenShared(String),
+    /// Run the build the simulator holds although the project has errors since.
+    RunLastBuilt,
 }
 
 impl NoticeAction {
@@ -104,6 +108,7 @@ impl NoticeAction {
             NoticeAction::DownloadDamaged(_) => "Download its text",
             NoticeAction::DeleteDamaged(_) => "Delete it",
             NoticeAction::OpenShared(_) => "Open it anyway",
+            NoticeAction::RunLastBuilt => "Run the last version that built",
         }
     }
 }
@@ -132,6 +137,16 @@ pub struct AppState {
     pub running: RwSignal<Option<String>>,
     /// The simulator of the last project that built clean.
     pub sim: StoredValue<Option<Simulator>>,
+    /// The simulator holds an older build than the project on the screen (which has errors
+    /// since): the controls say so.
+    pub stale: RwSignal<bool>,
+    /// The user chose `Run the last version that built` (until the project builds again).
+    pub run_old: RwSignal<bool>,
+    /// The project changed since its last check (the editors check a moment after an
+    /// edit; Run checks first when that moment has not come yet).
+    check_pending: StoredValue<bool>,
+    /// Bumped by every Step and Step N that scanned (the guided tour waits for one).
+    pub steps_taken: RwSignal<u64>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
     /// and Petri net elements).
     pub sim_build: StoredValue<Option<ProjectBuild>>,
@@ -201,6 +216,10 @@ impl AppState {
             sfc_charts: RwSignal::new(Vec::new()),
             running: RwSignal::new(None),
             sim: StoredValue::new(None),
+            stale: RwSignal::new(false),
+            run_old: RwSignal::new(false),
+            check_pending: StoredValue::new(false),
+            steps_taken: RwSignal::new(0),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),
             run_mode: RwSignal::new(RunMode::Stopped),
@@ -232,13 +251,15 @@ impl AppState {
     /// Checks and saves the project a moment after the last call (the diagram editors call
     /// it after every edit, as the ST editor checks after a pause in typing).
     pub fn check_soon(&self) {
+        self.check_pending.set_value(true);
         self.check_generation.update_value(|g| *g += 1);
         let generation = self.check_generation.get_value();
         let state = *self;
         set_timeout(
             move || {
                 if state.check_generation.try_get_value() == Some(generation) {
-                    state.check_now();
+                    // Run may have checked the edit already (a check restarts the PLC).
+                    state.check_if_pending();
                     state.save();
                 }
             },
@@ -271,6 +292,8 @@ impl AppState {
         self.held.set(BTreeMap::new());
         self.run_mode.set(RunMode::Stopped);
         self.sim.set_value(None);
+        self.stale.set(false);
+        self.run_old.set(false);
         self.sim_build.set_value(None);
         self.running_places.set_value(None);
         self.running.set(None);
@@ -283,6 +306,7 @@ impl AppState {
 
     /// Replaces the source text (from the editor). The caller debounces checks and saves.
     pub fn set_source(&self, text: String) {
+        self.check_pending.set_value(true);
         self.project.update(|p| p.source = text);
     }
 

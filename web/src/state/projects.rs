@@ -351,6 +351,7 @@ impl AppState {
         self.notice.set(None);
         match action {
             NoticeAction::Export => self.export_project(),
+            NoticeAction::RunLastBuilt => self.run_last_built(),
             NoticeAction::LoadTheirs => {
                 if let Some(id) = self.project_id.get_untracked() {
                     self.open(&id);

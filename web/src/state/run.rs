@@ -99,6 +99,9 @@ impl AppState {
 
     /// Runs `n` scans now (Step, Step N).
     pub fn step(&self, n: u64) {
+        if !self.may_scan() {
+            return;
+        }
         if self.run_mode.get_untracked() == RunMode::Running {
             self.run_mode.set(RunMode::Paused);
         }
@@ -110,13 +113,14 @@ impl AppState {
                 self.run_mode.set(RunMode::Paused);
             }
             self.after_outcome(outcome);
+            self.steps_taken.update(|s| *s += 1);
         }
     }
 
-    /// Starts scanning every animation frame.
+    /// Starts scanning every animation frame (not an older build than the text on the
+    /// screen unless the user chose it: see `gate.rs`).
     pub fn run(&self) {
-        if self.sim.with_value(|s| s.is_none()) {
-            self.error("The program has errors: fix them to run it.");
+        if !self.may_scan() {
             return;
         }
         let faulted = self.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);
