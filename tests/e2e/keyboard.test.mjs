@@ -31,11 +31,15 @@ function focused(page) {
   });
 }
 
-/** Presses Tab until `wanted(focus)` holds; returns how many presses it took. */
+/** Presses Tab until `wanted` (a test of `focused`, or a locator) has the focus; returns
+ * how many presses it took. */
 async function tabUntil(page, wanted, limit = 80) {
+  const holds = typeof wanted === 'function'
+    ? async () => wanted(await focused(page))
+    : () => wanted.evaluate((e) => e === document.activeElement);
   for (let n = 1; n <= limit; n++) {
     await page.keyboard.press('Tab');
-    if (wanted(await focused(page))) return n;
+    if (await holds()) return n;
   }
   throw new Error(`not reached within ${limit} Tabs; focus is on ${JSON.stringify(await focused(page))}`);
 }
@@ -59,16 +63,16 @@ test('by keyboard alone: Tab enters the ST editor and leaves it with the code un
   assert.ok(!isEditor(await focused(page)), 'Tab leaves the editor');
   assert.equal(await editor.inputValue(), before, 'the code is unchanged');
 
-  await tabUntil(page, (f) => f.tag === 'button' && f.label === 'Run');
+  await tabUntil(page, page.getByRole('button', { name: 'Run', exact: true }));
   await page.keyboard.press('Enter');
-  await tabUntil(page, (f) => f.type === 'checkbox' && f.label === 'Start');
+  await tabUntil(page, page.getByRole('checkbox', { name: 'Start', exact: true }));
   await page.keyboard.press('Space');
   await page.getByRole('img', { name: 'Motor: ON' }).waitFor();
   await page.keyboard.press('Space');
   // Released, the motor holds itself.
   await page.waitForTimeout(200);
   await page.getByRole('img', { name: 'Motor: ON' }).waitFor();
-  await tabUntil(page, (f) => f.type === 'checkbox' && f.label === 'Stop');
+  await tabUntil(page, page.getByRole('checkbox', { name: 'Stop', exact: true }));
   await page.keyboard.press('Space');
   await page.getByRole('img', { name: 'Motor: OFF' }).waitFor();
   assert.deepEqual(errors, []);
@@ -88,7 +92,7 @@ test('the first Tab offers Skip to simulation, which leads straight to Run', asy
   await page.keyboard.press('Enter');
   assert.equal(await page.evaluate(() => document.activeElement?.id), 'simulation');
   assert.equal(new URL(page.url()).hash, '', 'the address keeps no fragment (a share link lives there)');
-  const presses = await tabUntil(page, (f) => f.tag === 'button' && f.label === 'Run', 5);
+  const presses = await tabUntil(page, page.getByRole('button', { name: 'Run', exact: true }), 5);
   assert.ok(presses <= 5);
   await context.close();
 });
