@@ -1,5 +1,6 @@
 // Times B5 (the weighing example fast-forwarded 360,000 scans of 10 ms against its plant),
-// B7 (a plant hour of the weighing controller alone and with its plant PROGRAM)
+// B7 (a plant hour of the weighing controller alone and with its plant PROGRAM), B8 (that
+// hour recorded, and recorded scans shown again)
 // and B6 (check + compile of the generated 5,000-line program) in headless Chromium, with
 // performance.now() in the page. Usage: node scripts/bench-browser.mjs DIR [--quick], where
 // DIR holds bench_wasm.js and bench_wasm_bg.wasm (scripts/bench-browser.sh builds them).
@@ -40,6 +41,26 @@ try {
     hour(true);
     const alone = hour(false);
     const plant = hour(true);
+    // B8: a recorded plant hour, then 200 recorded scans spread over it shown again,
+    // each one interval minus one past a snapshot (the longest replay).
+    const rec = new m.WeighingPlant(true);
+    rec.record();
+    t = performance.now();
+    rec.run(scans);
+    const recorded = performance.now() - t;
+    const interval = rec.interval();
+    let worst = 0;
+    let total = 0;
+    for (let k = 0; k < 200; k++) {
+      const at = Math.min(scans, Math.floor(k * scans / 200) + interval - 1);
+      t = performance.now();
+      rec.view(at);
+      const took = performance.now() - t;
+      worst = Math.max(worst, took);
+      total += took;
+    }
+    const bytes = rec.recorded_bytes();
+    rec.free();
     // B6: best of 5 (after one warm-up), as natively.
     const source = m.b6_source(lines);
     m.check_and_compile(source);
@@ -54,6 +75,7 @@ try {
       B5: { chromium_ms: b5, scans, batches },
       B6: { wasm_ms: b6, lines: source.split('\n').length - 1, instructions },
       B7: { controller_ms: alone.ms, with_plant_ms: plant.ms, ratio: plant.ms / alone.ms, scans, batches: plant.counted },
+      B8: { recorded_hour_ms: recorded, hour_ms_without: plant.ms, hour_mb: bytes / 1e6, view_mean_ms: total / 200, view_max_ms: worst, interval },
       userAgent: navigator.userAgent,
     };
   }, quick ? { scans: 3600, lines: 200 } : { scans: 360000, lines: 5000 });

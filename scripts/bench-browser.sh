@@ -1,15 +1,34 @@
 #!/usr/bin/env bash
-# B5, B6 and B7 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 (release,
-# as the web app), binds it with wasm-bindgen, and times it in a page driven by
-# playwright-core (scripts/bench-browser.mjs). Prints one JSON object; see BENCHMARKS.md.
-# Needs what scripts/setup.sh installs: the wasm32 target, the wasm-bindgen CLI, Debian's
-# Chromium and the npm packages (npm ci).
+# B5, B6, B7 and B8 in headless Chromium: builds core/examples/bench_wasm.rs for wasm32 exactly
+# as the site is built (scripts/wasm-build.sh: the `wasm-release` profile with its
+# per-package opt-levels, the same flags, the same wasm-opt pass), binds it with
+# wasm-bindgen, times it in a page driven by playwright-core (scripts/bench-browser.mjs),
+# then runs the native B5 beside it (`plc bench --only B5`, release build). Prints one JSON
+# object with both; see BENCHMARKS.md. Needs what scripts/setup.sh installs: the wasm32
+# target, the wasm-bindgen CLI, Debian's Chromium and the npm packages (npm ci).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-export PATH="$HOME/.cargo/bin:$PATH"
-out=target/bench-browser
-cargo build -q -p plc-core --example bench_wasm --target wasm32-unknown-unknown --release
+export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
+source scripts/wasm-build.sh
+out=${BENCH_OUT:-target/bench-browser}
+cargo build -q -p plc-core --example bench_wasm --target wasm32-unknown-unknown --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}"
 wasm-bindgen --target web --no-typescript --out-dir "$out" \
-  target/wasm32-unknown-unknown/release/examples/bench_wasm.wasm
+  "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/$WASM_PROFILE/examples/bench_wasm.wasm"
+wasm_opt "$out/bench_wasm_bg.wasm" "$out/bench_wasm_bg.wasm"
+# The module's transfer size (gzip -9), to weigh the engine's opt-level against B5.
+gz_bytes=$(node -e 'console.log(require("zlib").gzipSync(require("fs").readFileSync(process.argv[1]), { level: 9 }).length)' "$out/bench_wasm_bg.wasm")
 [ -d node_modules/playwright-core ] || npm ci --no-audit --no-fund
-node scripts/bench-browser.mjs "$out" "$@"
+browser=$(node scripts/bench-browser.mjs "$out" "$@")
+# The native figure beside it, on the same machine at the same moment.
+unset CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS
+quick=()
+for a in "$@"; do [ "$a" = "--quick" ] && quick=(--quick); done
+native=$(cargo run -q --release -p plc-core --bin plc -- bench --json --only B5 "${quick[@]}")
+node -e '
+  const [browser, native] = process.argv.slice(1, 3).map((s) => JSON.parse(s));
+  const n = native.B5.native_ms;
+  browser.B5.native_ms = n;
+  browser.B5.ratio = browser.B5.chromium_ms / n;
+  browser.module = { gzip_bytes: Number(process.argv[3]), core_opt_level: process.argv[4] || "profile" };
+  console.log(JSON.stringify(browser));
+' "$browser" "$native" "$gz_bytes" "${WASM_CORE_OPT_LEVEL:-}"

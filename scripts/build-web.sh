@@ -1,41 +1,61 @@
 #!/usr/bin/env bash
-# Builds the release site into dist/ (static files; works from any sub-path), reports its
-# transfer size (gzip -9) and fails when the first load is over the budget the README
-# states ("size budget: **N KB**"). The first load is what index.html loads: the app's
-# wasm and js and the css; the import worker (plc-import*) loads only when a PLCopen XML or
-# PNML file is imported, the exercise worker (plc-exercise*) only when an exercise is
-# opened or checked; they are reported on their own.
+# Builds the release site into dist/ (static files with relative URLs; works from any
+# sub-path), reports each part's transfer size (gzip -9) and fails when the first load is
+# over the budget the README states ("size budget: **N KB**"), when a part loaded on first
+# use is over 200 KB, or when the first load holds ladder-editor, Petri-editor or exporter
+# code (scripts/site.mjs). See docs/loading.md.
+#
+#   1. Trunk builds the page and its CSS and copies the static files (no Rust).
+#   2. cargo builds the app (web/, `wasm-release` profile) keeping its relocations.
+#   3. wasm-split cuts it at the `#[wasm_split]` functions (web/src/lazy.rs,
+#      web/src/workers/mod.rs): the main module (the first load) and the chunks fetched on
+#      first use, with the JS that links them (`__wasm_split.js`).
+#   4. wasm-bindgen binds the main module; wasm-opt -Oz shrinks it and each chunk; terser
+#      minifies the JS.
+#   5. scripts/site.mjs puts it all into dist/app-<hash>/, starts it from index.html, writes
+#      the service worker dist/sw.js with the build's file list and id, and checks sizes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
+
 (cd web && trunk build --release)
-node scripts/minify-js.mjs dist
-node scripts/csp.mjs dist/index.html
-gz() { gzip -9 -c "$1" | wc -c; }
-first=0
-lazy=0
-exercise=0
-for f in dist/*.wasm dist/*.js dist/*.css; do
+
+work=target/site
+rm -rf "$work"
+mkdir -p "$work/split" "$work/app"
+
+source scripts/wasm-build.sh
+# The JSON messages name the build script's output folder, where web/build.rs writes the
+# shipped exercises in their built form (exercises/ID.json, fetched by the exercise worker).
+cargo build --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}" --target wasm32-unknown-unknown -p plc-web --bin plc-web \
+  --message-format=json-render-diagnostics >"$work/cargo.json"
+out_dir=$(node -e '
+  for (const line of require("fs").readFileSync(process.argv[1], "utf8").split("\n")) {
+    if (!line.startsWith("{")) continue;
+    const m = JSON.parse(line);
+    if (m.reason === "build-script-executed" && /(^|[/#])plc-web[#@ ]/.test(m.package_id)) { console.log(m.out_dir); break; }
+  }' "$work/cargo.json")
+[ -d "$out_dir/exercises" ] || { echo "no built exercises in '$out_dir'" >&2; exit 1; }
+wasm-split-cli "target/wasm32-unknown-unknown/$WASM_PROFILE/plc-web.wasm" "$work/split" --out-name plc-web
+# The main module before wasm-opt, names kept, for the check of what the first load holds.
+cp "$work/split/plc-web.wasm" "$work/main-names.wasm"
+wasm-bindgen --target web --no-typescript --keep-lld-exports --no-demangle \
+  --out-dir "$work/app" --out-name plc-web "$work/split/plc-web.wasm"
+# The main module (the longest) beside the chunks, one after another.
+wasm_opt "$work/app/plc-web_bg.wasm" "$work/app/plc-web_bg.wasm" &
+main_opt=$!
+for f in "$work"/split/split_*.wasm "$work"/split/chunk_*.wasm; do
   [ -f "$f" ] || continue
-  size=$(gz "$f")
-  case "$(basename "$f")" in
-    plc-import*) lazy=$((lazy + size)); when="on import" ;;
-    plc-exercise*) exercise=$((exercise + size)); when="on an exercise" ;;
-    *) first=$((first + size)); when="first load" ;;
-  esac
-  printf '  %-40s %8d bytes gzipped (%s)\n' "$(basename "$f")" "$size" "$when"
+  wasm_opt "$f" "$work/app/$(basename "$f")"
 done
-printf '  %-40s %8d bytes gzipped (%d KB)\n' "first load" "$first" "$((first / 1024))"
-printf '  %-40s %8d bytes gzipped (%d KB)\n' "import worker, loaded on import" "$lazy" "$((lazy / 1024))"
-printf '  %-40s %8d bytes gzipped (%d KB)\n' "exercise worker, loaded on an exercise" "$exercise" "$((exercise / 1024))"
-budget_kb=$(grep -oE 'size budget: \*\*[0-9]+ KB\*\*' README.md | grep -oE '[0-9]+' || true)
-if [ -z "$budget_kb" ]; then
-  echo "error: README.md states no size budget (\"size budget: **N KB**\")" >&2
-  exit 1
-fi
-if [ "$first" -gt $((budget_kb * 1024)) ]; then
-  echo "error: the first load is $((first / 1024)) KB gzipped, over the ${budget_kb} KB budget in README.md" >&2
-  echo "       (raise the budget only with a line in BENCHMARKS.md saying what paid for it)" >&2
-  exit 1
-fi
-echo "  within the ${budget_kb} KB size budget"
+wait "$main_opt"
+cp "$work/split/__wasm_split.js" web/boot.js web/worker.js "$work/app/"
+cp -r "$out_dir/exercises" "$work/app/exercises"
+node scripts/minify-js.mjs "$work/app"
+node scripts/site.mjs assemble dist "$work"
+node scripts/csp.mjs dist/index.html
+# The site's files, for the page's `Export SCORM package` (the exercise worker packs them):
+# all of dist/ with the sw.js that `finish` writes (before its size checks).
+{ (cd dist && find . -type f ! -name site-files.txt ! -name sw.js | sed 's|^\./||'); echo sw.js; } \
+  | LC_ALL=C sort > dist/site-files.txt
+node scripts/site.mjs finish dist "$work"

@@ -1,35 +1,124 @@
-// First render on loopback: how long from navigation start until the ST editor is on the
-// screen, in headless Chromium against the release build in dist/, each run in a fresh
-// browser context (an empty cache, as a first visit). Prints the median and the slowest
-// of the runs. Usage: node scripts/first-render.mjs [runs]
+// How fast the trainer is usable, in headless Chromium against the release build in dist/
+// (issue 32), each run in a fresh browser context (an empty cache, as a first visit):
+//
+//   first visit   navigation start → `New project` clicked and done (the new project's
+//                 ST editor on screen), on loopback and on two throttled profiles (CDP
+//                 Network.emulateNetworkConditions and Emulation.setCPUThrottlingRate);
+//   second visit  the same after the service worker cached the build, loopback;
+//   ladder editor from `Create` in `New ladder POU` to the rung grid on screen, the first
+//                 time in the page (its chunk fetched then), on the 9 Mbit/s profile.
+//
+// Prints each figure's median and slowest run. Usage: node scripts/first-render.mjs [runs]
+// (default 5) [--only NAME] where NAME is loopback, 9mbit, 1.6mbit, second or ladder.
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { startServer } from '../tests/e2e/server.mjs';
 import { launch } from '../tests/e2e/browser.mjs';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const runs = Number(process.argv[2] ?? 10);
-const server = await startServer(path.join(root, 'dist'));
-const browser = await launch();
-const times = [];
-for (let i = 0; i < runs; i++) {
+const args = process.argv.slice(2);
+const runs = Number(args.find((a) => /^\d+$/.test(a)) ?? 5);
+const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
+
+const PROFILES = {
+  loopback: null,
+  '9mbit': { label: '9 Mbit/s, 60 ms RTT, CPU 4× slower', kbit: 9000, rtt: 60, cpu: 4 },
+  '1.6mbit': { label: '1.6 Mbit/s, 150 ms RTT, CPU 4× slower', kbit: 1600, rtt: 150, cpu: 4 },
+};
+
+async function throttle(context, page, profile) {
+  if (!profile) return;
+  const cdp = await context.newCDPSession(page);
+  await cdp.send('Network.enable');
+  const bytes = (profile.kbit * 1000) / 8;
+  await cdp.send('Network.emulateNetworkConditions', {
+    offline: false, latency: profile.rtt, downloadThroughput: bytes, uploadThroughput: bytes,
+  });
+  await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.cpu });
+}
+
+/** Navigation start → `New project` clicked and its ST editor on screen, in ms. */
+async function newProjectUsable(page, url) {
+  await page.goto(url, { waitUntil: 'commit' });
+  const button = page.getByRole('button', { name: 'New project' });
+  await button.click({ timeout: 60000 });
+  await page.waitForFunction(() => {
+    const name = document.querySelector('.project-name')?.textContent ?? '';
+    const editor = document.querySelector('textarea[aria-label="ST source"]');
+    return /^Untitled \d+$/.test(name) && editor && editor.offsetParent !== null;
+  }, null, { timeout: 60000, polling: 'raf' });
+  return page.evaluate(() => performance.now());
+}
+
+async function firstVisit(browser, url, profile) {
   const context = await browser.newContext();
   const page = await context.newPage();
-  await page.addInitScript(() => {
-    new MutationObserver((_, observer) => {
-      if (document.querySelector('textarea[aria-label="ST source"]')) {
-        window.__firstRender = performance.now();
-        observer.disconnect();
-      }
-    }).observe(document, { childList: true, subtree: true });
-  });
-  await page.goto(server.url);
-  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
-  times.push(await page.evaluate(() => window.__firstRender));
+  await throttle(context, page, profile);
+  const ms = await newProjectUsable(page, url);
   await context.close();
+  return ms;
 }
-await browser.close();
-await server.close();
-times.sort((a, b) => a - b);
-const median = times[Math.floor(times.length / 2)];
-console.log(`first render (navigation start to the editor on screen), ${runs} runs: median ${median.toFixed(0)} ms, slowest ${times[times.length - 1].toFixed(0)} ms`);
+
+async function secondVisit(browser, url) {
+  const context = await browser.newContext();
+  let page = await context.newPage();
+  await newProjectUsable(page, url);
+  await page.evaluate(async () => {
+    const worker = (await navigator.serviceWorker.ready).active;
+    if (worker.state !== 'activated') {
+      await new Promise((done) => worker.addEventListener('statechange', () => {
+        if (worker.state === 'activated') done();
+      }));
+    }
+  });
+  await page.close();
+  page = await context.newPage();
+  const ms = await newProjectUsable(page, url);
+  const controlled = await page.evaluate(() => navigator.serviceWorker.controller !== null);
+  await context.close();
+  if (!controlled) throw new Error('the second visit was not served by the service worker');
+  return ms;
+}
+
+async function ladderOpen(browser, url, profile) {
+  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 } });
+  const page = await context.newPage();
+  await throttle(context, page, profile);
+  await newProjectUsable(page, url);
+  await page.getByRole('button', { name: 'New ladder POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill('Rungs');
+  const create = page.getByRole('button', { name: 'Create' });
+  await create.evaluate((b) => b.addEventListener('click', () => { window.__created = performance.now(); }, { once: true }));
+  await create.click();
+  await page.getByRole('region', { name: 'Ladder diagram Rungs' }).getByRole('gridcell').first().waitFor({ timeout: 60000 });
+  const ms = await page.evaluate(() => performance.now() - window.__created);
+  await context.close();
+  return ms;
+}
+
+const server = await startServer(path.join(root, 'dist'));
+const browser = await launch();
+const figures = [];
+const measure = async (name, label, once) => {
+  if (only && only !== name) return;
+  const times = [];
+  for (let i = 0; i < runs; i++) times.push(await once());
+  times.sort((a, b) => a - b);
+  const median = times[Math.floor(times.length / 2)];
+  figures.push({ name, label, median, slowest: times[times.length - 1], runs: times.map(Math.round) });
+  console.log(`${label}: median ${median.toFixed(0)} ms, slowest ${times[times.length - 1].toFixed(0)} ms (${runs} runs)`);
+};
+try {
+  for (const [name, profile] of Object.entries(PROFILES)) {
+    await measure(name, `first visit, New project usable, ${profile?.label ?? 'loopback'}`,
+      () => firstVisit(browser, server.url, profile));
+  }
+  await measure('second', 'second visit (service worker cache), New project usable, loopback',
+    () => secondVisit(browser, server.url));
+  await measure('ladder', `first open of the ladder editor to its grid, ${PROFILES['9mbit'].label}`,
+    () => ladderOpen(browser, server.url, PROFILES['9mbit']));
+} finally {
+  await browser.close();
+  await server.close();
+}
+console.log(JSON.stringify(figures));

@@ -2,9 +2,15 @@
 """The interop report of docs/interop.md: opens, runs and round-trips a corpus of PLCopen
 XML projects with `plc`, and tallies the causes of the failures.
 
-Usage: python3 scripts/interop.py PLC CORPUS_DIR [--tsv OUT.tsv]
+An opt-in check: the corpus is other people's projects, which the repository does not
+carry, and the default test suite does not run this script.
 
-CORPUS_DIR holds the `.xml` files (any layout below it). For each file:
+Usage: PLC_INTEROP_CORPUS=DIR python3 scripts/interop.py [PLC] [--tsv OUT.tsv]
+       python3 scripts/interop.py PLC DIR [--tsv OUT.tsv]
+
+DIR (the second argument, else $PLC_INTEROP_CORPUS) holds the `.xml` files, any layout
+below it. PLC is the `plc` binary, by default target/release/plc of this repository
+(`cargo build -p plc-core --release --bin plc`). For each file:
   opens       `plc run FILE --cycles 0 --json` has no E0304 (the import succeeded)
   runs        `plc run FILE --cycles 20 --json` ends with status "ok"
   round-trips the file imported (`plc import`), exported again (`plc export --plcopen`)
@@ -54,11 +60,39 @@ def cause(rep):
     return rep.get("status", "?")
 
 
-def main():
-    if len(sys.argv) < 3:
+def arguments():
+    """(plc binary, corpus folder, tsv path or None); exits saying why when one is missing."""
+    args = sys.argv[1:]
+    tsv = None
+    if "--tsv" in args:
+        k = args.index("--tsv")
+        if k + 1 >= len(args):
+            sys.exit("--tsv needs a file name\n\n" + __doc__)
+        tsv = args[k + 1]
+        del args[k : k + 2]
+    if len(args) > 2 or any(a.startswith("-") for a in args):
         sys.exit(__doc__)
-    binary, corpus = sys.argv[1], sys.argv[2]
-    tsv = sys.argv[sys.argv.index("--tsv") + 1] if "--tsv" in sys.argv else None
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    binary = args[0] if args else os.path.join(root, "target", "release", "plc")
+    corpus = args[1] if len(args) > 1 else os.environ.get("PLC_INTEROP_CORPUS", "")
+    if not corpus:
+        sys.exit(
+            "PLC_INTEROP_CORPUS is not set and no corpus folder was given: nothing to check.\n"
+            "This check is opt-in (the default test suite does not run it); point it at a\n"
+            "folder of PLCopen XML files, e.g.\n"
+            "  PLC_INTEROP_CORPUS=~/plcopen-corpus python3 scripts/interop.py\n"
+            "docs/interop.md says how the reported corpus was gathered."
+        )
+    if not os.path.isdir(corpus):
+        sys.exit(f"the corpus folder {corpus} does not exist")
+    if not os.access(binary, os.X_OK):
+        sys.exit(f"no plc binary at {binary}: build it with "
+                 "`cargo build -p plc-core --release --bin plc`, or name one")
+    return binary, corpus, tsv
+
+
+def main():
+    binary, corpus, tsv = arguments()
     files = sorted(
         os.path.join(d, f) for d, _, fs in os.walk(corpus) for f in fs if f.endswith(".xml")
     )

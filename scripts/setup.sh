@@ -34,6 +34,14 @@ if [ "$(trunk --version 2>/dev/null | awk '{print $2}')" != "0.21.14" ]; then
   cargo install trunk --version 0.21.14 --locked
 fi
 
+# wasm-split-cli cuts the app's wasm into the first load and the chunks loaded on first use
+# (scripts/build-web.sh, docs/loading.md).
+if ! command -v wasm-split-cli >/dev/null 2>&1 \
+  || ! cargo install --list | grep -q '^wasm_split_cli_support v0.2.4:'; then
+  log "installing wasm-split-cli 0.2.4 (wasm_split_cli_support, about 3 minutes)"
+  cargo install --locked wasm_split_cli_support --version 0.2.4 --features build-binary
+fi
+
 apt_updated=""
 apt_install() {
   if [ -z "$apt_updated" ]; then apt-get update -qq; apt_updated=1; fi
@@ -57,4 +65,4 @@ if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/playwright-core ] 
   log "installing npm packages"
   npm ci --no-audit --no-fund
 fi
-log "ready: $(rustc --version), wasm-bindgen $want, trunk $(trunk --version | awk '{print $2}'), node $(node --version)"
+log "ready: $(rustc --version), wasm-bindgen $want, trunk $(trunk --version | awk '{print $2}'), wasm-split-cli 0.2.4, node $(node --version)"

@@ -1,4 +1,5 @@
-//! Embeds every conformance case: walks `conformance/cases/**.st` and writes
+//! Embeds every conformance case: walks `conformance/cases/**.st` (and the project files
+//! `**.plcproj.json`) and writes
 //! `$OUT_DIR/cases.rs` holding `CASE_FILES: &[(name, source)]`, sorted by name, with each
 //! source pulled in by `include_str!` so the suite runs the same natively and in wasm.
 
@@ -30,8 +31,9 @@ fn main() {
     fs::write(&dest, out).expect("write cases.rs");
 }
 
-/// Collects `(name, absolute path)` of every `.st` file below `dir`; the name is the path
-/// relative to `root` without the extension, with `/` separators (`timers/ton_basic`).
+/// Collects `(name, absolute path)` of every `.st` and `.plcproj.json` file below `dir`;
+/// the name is the path relative to `root` without the last extension, with `/`
+/// separators (`timers/ton_basic`, `why/ladder_latch.plcproj`).
 fn collect(root: &Path, dir: &Path, cases: &mut Vec<(String, String)>) {
     let Ok(entries) = fs::read_dir(dir) else {
         return;
@@ -40,7 +42,10 @@ fn collect(root: &Path, dir: &Path, cases: &mut Vec<(String, String)>) {
         let path = entry.path();
         if path.is_dir() {
             collect(root, &path, cases);
-        } else if path.extension().is_some_and(|e| e == "st") {
+        } else if path.extension().is_some_and(|e| e == "st")
+            || path.to_string_lossy().ends_with(".plcproj.json")
+        {
+            // `name.st` → `group/name`; `name.plcproj.json` → `group/name.plcproj`.
             let rel = path.strip_prefix(root).expect("case below root").with_extension("");
             let name = rel
                 .components()

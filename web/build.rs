@@ -5,8 +5,13 @@
 //!
 //! Lists the shipped exercises (`../exercises/ID/ID.toml`) too: `$OUT_DIR/exercises.rs`
 //! holds the catalogue (id, title, level, languages: all the page needs before one is
-//! opened) and `$OUT_DIR/exercise_files.rs` each exercise file and its starter, which only
-//! the exercise worker includes (the reference solutions and mutants are never built in).
+//! opened), and `$OUT_DIR/exercises/ID.json` each exercise with its starter, as the
+//! exercise link that opens it (`plc_core::exercise::ExerciseLink`), the exercise in the
+//! built form (`core/src/exercise/built_form.rs`: JSON, its statement rendered), so that
+//! the exercise worker reads it without a TOML reader or a Markdown renderer.
+//! `scripts/build-web.sh` puts these files next to the app; the worker fetches the one it
+//! opens (natively, in tests, `$OUT_DIR/exercise_files.rs` includes them). The reference
+//! solutions and mutants are never shipped.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -14,6 +19,16 @@ use std::path::Path;
 mod naming {
     include!("src/examples/naming.rs");
 }
+
+/// The statement's renderer, as the exercise worker would run it.
+#[allow(dead_code)]
+#[path = "../core/src/exercise/statement.rs"]
+mod statement;
+
+/// The built form of an exercise file.
+#[allow(dead_code)]
+#[path = "../core/src/exercise/built_form.rs"]
+mod built_form;
 
 /// The project name and whether it has ladder and Petri net POUs.
 fn project_facts(text: &str) -> Option<(String, bool, bool)> {
@@ -29,15 +44,42 @@ struct Entry {
     title: String,
     level: u8,
     #[serde(default)]
+    order: Option<u32>,
+    #[serde(default)]
     languages: Vec<String>,
     #[serde(default)]
     starter: Option<String>,
+    #[serde(default)]
+    starter_st: Option<String>,
+    #[serde(default)]
+    starter_ld: Option<String>,
+    #[serde(default)]
+    starter_petri: Option<String>,
+    #[serde(default)]
+    starter_sfc: Option<String>,
+}
+
+impl Entry {
+    /// Every starter file the exercise names, once each.
+    fn starter_files(&self) -> Vec<&str> {
+        let mut out: Vec<&str> = Vec::new();
+        let named = [&self.starter, &self.starter_st, &self.starter_ld, &self.starter_petri];
+        for f in named.into_iter().chain([&self.starter_sfc]).filter_map(|f| f.as_deref()) {
+            if !out.contains(&f) {
+                out.push(f);
+            }
+        }
+        out
+    }
 }
 
 /// Writes the exercise catalogue and files (see the module's doc).
 fn exercises(out: &Path) {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../exercises");
     println!("cargo:rerun-if-changed={}", dir.display());
+    for file in ["statement.rs", "built_form.rs"] {
+        println!("cargo:rerun-if-changed=../core/src/exercise/{file}");
+    }
     let mut entries: Vec<(Entry, std::path::PathBuf)> = Vec::new();
     for folder in std::fs::read_dir(&dir).into_iter().flatten().flatten() {
         let id = folder.file_name().to_string_lossy().into_owned();
@@ -50,13 +92,20 @@ fn exercises(out: &Path) {
             Err(e) => panic!("{}: {e}", file.display()),
         }
     }
-    entries.sort_by(|a, b| a.0.level.cmp(&b.0.level).then_with(|| a.0.title.cmp(&b.0.title)));
+    entries.sort_by(|a, b| {
+        let key = |e: &Entry| (e.level, e.order.unwrap_or(u32::MAX));
+        key(&a.0).cmp(&key(&b.0)).then_with(|| a.0.title.cmp(&b.0.title))
+    });
     let mut catalogue = String::from(
         "/// The shipped exercises, easiest first: (id, title, level, languages).\npub const CATALOGUE: &[(&str, &str, u8, &[&str])] = &[\n",
     );
     let mut files = String::from(
-        "/// A starter file: (name, text).\npub type Starter = (&'static str, &'static str);\n/// The shipped exercises' files: (id, exercise file, starter).\npub const FILES: &[(&str, &str, Option<Starter>)] = &[\n",
+        "/// The shipped exercises as the links that open them: (id, JSON of the link).\npub const FILES: &[(&str, &str)] = &[\n",
     );
+    let folder_out = out.join("exercises");
+    if let Err(e) = std::fs::create_dir_all(&folder_out) {
+        panic!("cannot create {}: {e}", folder_out.display());
+    }
     for (e, folder) in &entries {
         let _ = writeln!(
             catalogue,
@@ -64,20 +113,33 @@ fn exercises(out: &Path) {
             e.id, e.title, e.level, e.languages
         );
         let file = folder.join(format!("{}.toml", e.id));
-        let starter = match &e.starter {
-            Some(name) => {
-                let path = folder.join(name);
-                println!("cargo:rerun-if-changed={}", path.display());
-                format!("Some(({name:?}, include_str!({:?})))", path.display().to_string())
+        let text = std::fs::read_to_string(&file).unwrap_or_default();
+        let built = built_form::built_form(&text, |m| statement::statement_html(m, None))
+            .unwrap_or_else(|err| panic!("{}: {err}", file.display()));
+        // Every starter file the exercise names: the one named `starter` in its place, the
+        // other languages' in `starters` (as `ExerciseLink::arranged` puts them).
+        let mut starter = None;
+        let mut starters = Vec::new();
+        for name in e.starter_files() {
+            let path = folder.join(name);
+            println!("cargo:rerun-if-changed={}", path.display());
+            let text = std::fs::read_to_string(&path)
+                .unwrap_or_else(|err| panic!("{}: {err}", path.display()));
+            let linked = serde_json::json!({ "name": name, "text": text });
+            if e.starter.as_deref() == Some(name) {
+                starter = Some(linked);
+            } else {
+                starters.push(linked);
             }
-            None => "None".to_string(),
-        };
-        let _ = writeln!(
-            files,
-            "    ({:?}, include_str!({:?}), {starter}),",
-            e.id,
-            file.display().to_string()
-        );
+        }
+        let link =
+            serde_json::json!({ "exercise": built, "starter": starter, "starters": starters });
+        let target = folder_out.join(format!("{}.json", e.id));
+        if let Err(err) = std::fs::write(&target, link.to_string()) {
+            panic!("cannot write {}: {err}", target.display());
+        }
+        let _ =
+            writeln!(files, "    ({:?}, include_str!({:?})),", e.id, target.display().to_string());
     }
     catalogue.push_str("];\n");
     files.push_str("];\n");

@@ -1,4 +1,4 @@
-//! The browser side of B5 and B6: the same work `plc bench` times natively
+//! The browser side of B5, B6, B7 and B8: the same work `plc bench` times natively
 //! (`plc_core::bench::workload`), exported to JavaScript so that a page in headless
 //! Chromium can time it with `performance.now()` (the core never reads a clock).
 //! Built and driven by `scripts/bench-browser.sh`; see BENCHMARKS.md.
@@ -56,6 +56,29 @@ impl WeighingPlant {
         sim.set_watchdog(u64::MAX / 2);
         sim.hold("Start", "TRUE").map_err(|e| JsValue::from_str(&e.to_string()))?;
         Ok(WeighingPlant { sim })
+    }
+
+    /// B8: keeps the history from now on (`Simulator::set_recording`).
+    pub fn record(&mut self) -> Result<(), JsValue> {
+        self.sim.set_recording(true).map_err(|e| JsValue::from_str(&e.to_string()))
+    }
+
+    /// B8: the bytes the recording takes.
+    pub fn recorded_bytes(&self) -> f64 {
+        self.sim.recording().map_or(0.0, |r| r.bytes as f64)
+    }
+
+    /// B8: shows recorded scan `scan` again (`Simulator::view_at`); returns the scan
+    /// shown. The longest replays are one interval minus one past a snapshot.
+    pub fn view(&self, scan: u32) -> Result<u32, JsValue> {
+        let view =
+            self.sim.view_at(u64::from(scan)).map_err(|e| JsValue::from_str(&e.to_string()))?;
+        Ok(view.scan() as u32)
+    }
+
+    /// B8: the snapshot interval.
+    pub fn interval(&self) -> u32 {
+        self.sim.recording().map_or(0, |r| r.interval as u32)
     }
 
     /// Runs `scans` scans of 10 ms; returns the batches the plant counted (0 alone).

@@ -53,3 +53,4 @@ pub mod sim;
 pub mod syntax;
 pub(crate) mod values;
 pub mod vm;
+pub mod why;

@@ -56,6 +56,22 @@ pub const WATCHDOG_BYTES_PER_UNIT: u64 = 8;
 /// fewer samples than asked when its samples are large.
 pub const TRACE_BUDGET_BYTES: usize = 32 << 20;
 
+/// The most memory the recording of a run's history may use, in bytes (snapshots of the
+/// memory image and the changes from outside; `sim/record.rs`).
+pub const RECORD_BUDGET_BYTES: usize = 48 << 20;
+
+/// The history a recording keeps, in scans, when the budget affords it: one simulated
+/// hour at 10 ms.
+pub const RECORD_SCANS: u64 = 360_000;
+
+/// The fewest scans between two snapshots of a recording (smaller images are still
+/// snapshotted this rarely, which bounds the recording's cost per scan).
+pub const RECORD_MIN_INTERVAL: u64 = 64;
+
+/// The most scans between two snapshots: showing a recorded scan replays at most this
+/// many. A larger image keeps a shorter history instead.
+pub const RECORD_MAX_INTERVAL: u64 = 1024;
+
 /// Longest STRING the checker accepts, in characters.
 pub const MAX_STRING_LEN: i64 = 65_535;
 

@@ -31,6 +31,13 @@ pub struct RunOptions {
     /// Variables recorded after every scan (`plc run --trace`); the report then carries
     /// the trace as CSV (the web app's timeline export).
     pub trace: Vec<String>,
+    /// `(scan, VAR, VALUE)` (`plc run --set-at SCAN:VAR=VALUE`): from scan `scan` (1-based)
+    /// on, an input is held at the value; any other variable is set before that scan. A
+    /// button pressed and released is two entries.
+    pub set_at: Vec<(u64, String, String)>,
+    /// Keep the run's history ([`Simulator::set_recording`]), to ask about its scans
+    /// afterwards (`plc why`).
+    pub record: bool,
 }
 
 impl Default for RunOptions {
@@ -43,8 +50,26 @@ impl Default for RunOptions {
             file_map: FileMap::default(),
             plant: None,
             trace: Vec::new(),
+            set_at: Vec::new(),
+            record: false,
         }
     }
+}
+
+/// Parses `SCAN:VAR=VALUE` (`plc run --set-at`).
+pub fn parse_set_at(text: &str) -> Result<(u64, String, String), String> {
+    let bad = || format!("--set-at expects SCAN:VAR=VALUE (e.g. 5:Start=TRUE), got `{text}`");
+    let (scan, rest) = text.split_once(':').ok_or_else(bad)?;
+    let scan: u64 = scan.trim().parse().map_err(|_| bad())?;
+    if scan == 0 {
+        return Err(format!("--set-at {text}: scans are numbered from 1"));
+    }
+    let (var, value) = rest.split_once('=').ok_or_else(bad)?;
+    let (var, value) = (var.trim(), value.trim());
+    if var.is_empty() || value.is_empty() {
+        return Err(bad());
+    }
+    Ok((scan, var.to_string(), value.to_string()))
 }
 
 /// The overall outcome of a run.
@@ -163,16 +188,67 @@ pub fn run_source(source: &str, options: &RunOptions) -> RunReport {
         let loc = index.location(info.span.start);
         FaultReport { message: info.fault.to_string(), line: loc.line, column: loc.column }
     })
+    .0
+}
+
+/// Sets `name` to `value` as `--set` does: an input is held, any other variable written.
+fn set_one(sim: &mut Simulator, name: &str, value: &str) -> Result<(), SimError> {
+    let is_input = sim
+        .executable()
+        .main_vars()
+        .iter()
+        .any(|v| v.var.name.eq_ignore_ascii_case(name) && v.var.is_input());
+    if is_input {
+        sim.hold(name, value)
+    } else {
+        sim.write(name, value)
+    }
+}
+
+fn set_error(flag: &str, name: &str, value: &str, e: &SimError) -> DiagnosticReport {
+    let code = match e {
+        SimError::UnknownVariable(_) => Code::UnknownSetVariable,
+        _ => Code::BadSetValue,
+    };
+    option_error(code, format!("{flag} {name}={value}: {e}"))
+}
+
+/// Runs `options.cycles` scans, applying `options.set_at` before the scans they name;
+/// stops at a fault.
+fn run_scheduled(sim: &mut Simulator, options: &RunOptions) -> ScanOutcome {
+    let mut schedule: Vec<&(u64, String, String)> = options.set_at.iter().collect();
+    crate::order::sort_by_key(&mut schedule, |(scan, ..)| *scan);
+    let mut outcome = ScanOutcome::Completed;
+    for (scan, name, value) in schedule {
+        if *scan > options.cycles {
+            break;
+        }
+        let due = scan.saturating_sub(1).saturating_sub(sim.scan_count());
+        if due > 0 {
+            outcome = sim.run_scans(due);
+            if matches!(outcome, ScanOutcome::Fault(_)) {
+                return outcome;
+            }
+        }
+        // Checked before the run: a failure here cannot happen.
+        let _ = set_one(sim, name, value);
+    }
+    let rest = options.cycles.saturating_sub(sim.scan_count());
+    if rest > 0 || options.cycles == 0 {
+        outcome = sim.run_scans(rest);
+    }
+    outcome
 }
 
 /// Runs a checked program (`None`: it did not check, and `diagnostics` say why) as `plc run`
-/// does; `fault_report` locates a runtime fault.
+/// does; `fault_report` locates a runtime fault. The simulator is handed back after the
+/// run when it could be made.
 fn run_checked(
     program: Option<semantic::Program>,
     options: &RunOptions,
     diagnostics: Vec<DiagnosticReport>,
     fault_report: impl FnOnce(&crate::sim::FaultInfo) -> FaultReport,
-) -> RunReport {
+) -> (RunReport, Option<Simulator>) {
     let mut report = RunReport {
         status: RunStatus::Error,
         cycles: 0,
@@ -181,36 +257,36 @@ fn run_checked(
         diagnostics,
         trace_csv: None,
     };
-    let Some(program) = program else { return report };
+    let Some(program) = program else { return (report, None) };
     let made =
         crate::build::simulator_for(program, options.program.as_deref(), options.plant.as_deref());
     let mut sim = match made {
         Ok(sim) => sim,
         Err((code, message)) => {
             report.diagnostics.push(option_error(code, message));
-            return report;
+            return (report, None);
         }
     };
     match crate::limits::cycle_ns(options.cycle_ms) {
         Ok(ns) => sim.set_cycle_ns(ns),
         Err(message) => {
             report.diagnostics.push(option_error(Code::BadCycleTime, message));
-            return report;
+            return (report, Some(sim));
+        }
+    }
+    if options.record {
+        if let Err(e) = sim.set_recording(true) {
+            report.diagnostics.push(option_error(Code::ProgramTooLarge, e.to_string()));
         }
     }
     for (name, value) in &options.set {
-        let is_input = sim
-            .executable()
-            .main_vars()
-            .iter()
-            .any(|v| v.var.name.eq_ignore_ascii_case(name) && v.var.is_input());
-        let result = if is_input { sim.hold(name, value) } else { sim.write(name, value) };
-        if let Err(e) = result {
-            let code = match e {
-                SimError::UnknownVariable(_) => Code::UnknownSetVariable,
-                _ => Code::BadSetValue,
-            };
-            report.diagnostics.push(option_error(code, format!("--set {name}={value}: {e}")));
+        if let Err(e) = set_one(&mut sim, name, value) {
+            report.diagnostics.push(set_error("--set", name, value, &e));
+        }
+    }
+    for (scan, name, value) in &options.set_at {
+        if let Err(e) = sim.parse_value(name, value) {
+            report.diagnostics.push(set_error(&format!("--set-at {scan}:"), name, value, &e));
         }
     }
     if !options.trace.is_empty() {
@@ -223,9 +299,9 @@ fn run_checked(
     }
     if report.diagnostics.iter().any(|d| d.severity == Severity::Error) {
         report.vars = visible_vars(&sim);
-        return report;
+        return (report, Some(sim));
     }
-    let outcome = sim.run_scans(options.cycles);
+    let outcome = run_scheduled(&mut sim, options);
     if !options.trace.is_empty() {
         report.trace_csv = Some(crate::export::trace_csv(sim.trace()));
     }
@@ -238,7 +314,7 @@ fn run_checked(
         }
         ScanOutcome::Completed | ScanOutcome::Breakpoint(_) => report.status = RunStatus::Ok,
     }
-    report
+    (report, Some(sim))
 }
 
 /// A message about `site` as reports give it: ST problems keep their line and column,
@@ -278,6 +354,23 @@ fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticRep
 /// `vars`. Without `options.program`, the PROGRAM the project's settings chose runs (when
 /// it still exists), else the first.
 pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> RunReport {
+    run_project_kept(project, options).report
+}
+
+/// A run of a project kept for questions about it (`plc why`): the build, the report and
+/// the simulator after the run (its history recorded when [`RunOptions::record`]).
+#[derive(Debug)]
+pub struct KeptRun {
+    /// The project's build (its source and where each line came from).
+    pub build: crate::build::ProjectBuild,
+    /// The report `plc run --json` prints.
+    pub report: RunReport,
+    /// The simulator after the run (`None` when the project did not build).
+    pub sim: Option<Simulator>,
+}
+
+/// [`run_project`], keeping the build and the simulator.
+pub fn run_project_kept(project: &crate::project::Project, options: &RunOptions) -> KeptRun {
     let build = build_project(project);
     let diagnostics =
         build.diagnostics.iter().map(|d| project_report_in(d, &options.file_map)).collect();
@@ -287,14 +380,15 @@ pub fn run_project(project: &crate::project::Project, options: &RunOptions) -> R
     if options.program.is_none() {
         options.program = build.chosen_program(&project.settings).map(str::to_string);
     }
-    run_checked(program, &options, diagnostics, |info| {
+    let (report, sim) = run_checked(program, &options, diagnostics, |info| {
         let site = build.site_of(info.span);
         let (message, mut line, mut column) = located(&site, &info.fault.to_string());
         if let Some(at) = options.file_map.locate(&site) {
             (line, column) = at;
         }
         FaultReport { message, line, column }
-    })
+    });
+    KeptRun { build, report, sim }
 }
 
 /// Compiles a project and powers a simulator on for PROGRAM `program` (or the one the

@@ -293,12 +293,15 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let text = String::from_utf8_lossy(&out.stdout).into_owned();
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines[0], "submission,score,total,passed,failed,error,first_failure");
+    assert_eq!(
+        lines[0],
+        "submission,score,total,passed,failed,error,first_failure,program,name,handed_in"
+    );
     assert_eq!(lines.len(), 5, "{text}");
-    assert!(lines[1].ends_with("a-right.st,3,3,2,0,,"), "{}", lines[1]);
+    assert!(lines[1].ends_with("a-right.st,3,3,2,0,,,Main,,"), "{}", lines[1]);
     assert!(
         lines[2].ends_with(
-            "b-wrong.st,1,3,1,1,,\"Start, release, stop: Motor was FALSE at 0.21 s (scan 21)\""
+            "b-wrong.st,1,3,1,1,,\"Start, release, stop: Motor was FALSE at 0.21 s (scan 21)\",Main,,"
         ),
         "{}",
         lines[2]
@@ -309,15 +312,146 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
         lines[3]
     );
     assert!(lines[4].contains("d-unreadable.plcproj.json,,,,,"), "{}", lines[4]);
+    // The text names the PROGRAM graded.
+    let plain = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["grade", &exercise, &dir.join("b-wrong.st").to_string_lossy()])
+        .output()
+        .unwrap();
+    let plain = String::from_utf8_lossy(&plain.stdout).into_owned();
+    assert!(plain.contains("b-wrong.st: 1/3 — checked PROGRAM Main (ST)"), "{plain}");
     let json = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
         .args(["grade", &exercise, &dir.join("b-wrong.st").to_string_lossy(), "--format", "json"])
         .output()
         .unwrap();
     let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
     assert_eq!(v[0]["score"], 1);
+    assert_eq!((&v[0]["program"], &v[0]["language"]), (&"Main".into(), &"ST".into()));
     assert_eq!(v[0]["scenarios"][0]["expected"], "Motor stays TRUE from 0.21 s to 0.49 s");
     assert_eq!(v[0]["scenarios"][0]["scan"], 21);
     assert_eq!(v[0]["scenarios"][0]["hint"], "Does the motor hold itself when Start is released?");
+}
+
+/// A hand-in (`.plcsub`): graded again with the student's name in every format; one of
+/// another exercise gets its own row with the reason, and a damaged one too.
+#[test]
+fn grade_reads_hand_ins_with_the_students_name_and_refuses_another_exercises() {
+    use plc_core::exercise::HandIn;
+    let root = format!("{}/..", env!("CARGO_MANIFEST_DIR"));
+    let exercise = format!("{root}/exercises/latch/latch.toml");
+    let reference =
+        std::fs::read_to_string(format!("{root}/exercises/latch/reference.st")).unwrap();
+    let dir = std::env::temp_dir().join(format!("plc-handin-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let hand_in = |exercise: &str, name: &str, source: &str| {
+        let mut project = plc_core::project::Project::new("Exercise: latch");
+        project.source = source.to_string();
+        let text =
+            HandIn::file_text(&project.to_file(), exercise, name, "2025-03-04T10:11:12.000Z");
+        std::fs::write(dir.join(HandIn::file_name(exercise, name)), text).unwrap();
+    };
+    hand_in("latch", "Ada Lovelace", &reference);
+    hand_in("latch", "Zoë, \"B\"", &reference.replace("(Start OR Motor)", "Start"));
+    hand_in("blinker", "Ben Okri", &reference);
+    std::fs::write(dir.join("latch--Broken.plcsub"), "{ \"schema\": 1").unwrap();
+    let run = |format: &str| {
+        let out = plc(&["grade", &exercise, &dir.to_string_lossy(), "--format", format]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        stdout(&out)
+    };
+    // Rows by file name: blinker--Ben-Okri, latch--Ada-Lovelace, latch--Broken, latch--Zoë-B.
+    let text = run("text");
+    assert!(text.contains("latch--Ada-Lovelace.plcsub (Ada Lovelace): 3/3"), "{text}");
+    assert!(text.contains("latch--Zoë-B.plcsub (Zoë, \"B\"): 1/3"), "{text}");
+    assert!(
+        text.contains("blinker--Ben-Okri.plcsub (Ben Okri): cannot be graded: this is a hand-in of exercise “blinker”, not of “latch”"),
+        "{text}"
+    );
+    assert!(text.contains("latch--Broken.plcsub: cannot be graded: "), "{text}");
+    let csv = run("csv");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 5, "{csv}");
+    assert!(lines[1].ends_with(",Ben Okri,2025-03-04T10:11:12.000Z"), "{}", lines[1]);
+    assert!(lines[1].contains(",,,,,\"this is a hand-in of exercise “blinker”"), "{}", lines[1]);
+    assert!(
+        lines[2].ends_with(",3,3,2,0,,,Main,Ada Lovelace,2025-03-04T10:11:12.000Z"),
+        "{}",
+        lines[2]
+    );
+    assert!(lines[4].ends_with(",\"Zoë, \"\"B\"\"\",2025-03-04T10:11:12.000Z"), "{}", lines[4]);
+    let json: serde_json::Value = serde_json::from_str(&run("json")).unwrap();
+    assert_eq!(json[1]["name"], "Ada Lovelace");
+    assert_eq!(json[1]["handed_in"], "2025-03-04T10:11:12.000Z");
+    assert_eq!(json[1]["score"], 3);
+    assert_eq!(json[0]["name"], "Ben Okri");
+    assert!(json[0]["error"].as_str().unwrap().contains("not of “latch”"));
+    assert_eq!(json[2]["name"], serde_json::Value::Null);
+}
+
+/// `plc grade --format html`: the class report of a class's right, wrong, broken and
+/// unreadable submissions to the reversing exercise — a row each, every scenario's pass
+/// rate, the histogram of scores, the most common first failures — as one page that needs
+/// nothing else (no script, nothing fetched).
+#[test]
+fn grade_html_is_a_self_contained_class_report() {
+    let root = format!("{}/..", env!("CARGO_MANIFEST_DIR"));
+    let ex = format!("{root}/exercises/reversing");
+    let read = |f: &str| std::fs::read_to_string(format!("{ex}/{f}")).unwrap();
+    let dir = std::env::temp_dir().join(format!("plc-class-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let files = [
+        ("anna.st", read("reference.st")),
+        ("ben.st", read("reference.st")),
+        ("carl.st", read("mutants/no-interlock.st")),
+        ("dora.st", read("mutants/no-interlock.st")),
+        ("emil.st", read("mutants/stop-ignored.st")),
+        ("fay.st", read("reference.st").replace("NOT Stop", "NOT Stopp")),
+        ("gil.plcproj.json", "{ \"schema\": 1, \"name\": ".to_string()),
+    ];
+    for (name, text) in &files {
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+    let out = plc(&[
+        "grade",
+        &format!("{ex}/reversing.toml"),
+        &dir.to_string_lossy(),
+        "--format",
+        "html",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let html = stdout(&out);
+    assert!(html.starts_with("<!DOCTYPE html>"), "{html}");
+    assert!(html.contains("<title>Class report — Reversing motor with interlock</title>"));
+    // Self-contained: no script, nothing loaded from anywhere.
+    for outside in ["<script", "src=", "href=", "url(", "@import"] {
+        assert!(!html.contains(outside), "{outside} in the report");
+    }
+    // A row per submission: name, score, first failure with its time.
+    assert!(
+        html.contains(
+            "<tr><td>anna.st</td><td class=\"num\"><span class=\"full\">2 / 2</span></td>"
+        ),
+        "{html}"
+    );
+    assert!(html.contains("<td>“Random presses never run both directions”: MotorFwd AND MotorRev was TRUE at 2.65 s (scan 265)<br><small>random run with seed 7"), "{html}");
+    assert!(html.contains("<td class=\"num\">2.65 s</td>"), "{html}");
+    assert!(html.contains("the program does not build: line "), "{html}");
+    assert!(html.contains("<tr><td>gil.plcproj.json</td><td class=\"num\"><span class=\"refused\">not graded</span></td><td>this is not a project file"), "{html}");
+    // Pass rates over the six graded submissions.
+    assert!(html.contains("<td>Forward, stop, reverse</td>"), "{html}");
+    assert!(html.contains("4 / 6 (67 %)"), "{html}");
+    assert!(html.contains("3 / 6 (50 %)"), "{html}");
+    // The histogram: one bar per score 0, 1, 2.
+    assert!(
+        html.contains("<title id=\"hist-title\">Submissions per score: 0: 1, 1: 3, 2: 2</title>"),
+        "{html}"
+    );
+    assert_eq!(html.matches("<rect ").count(), 3);
+    // The common first failures, most students first.
+    let common = html.split("Most common first failures").nth(1).unwrap();
+    let first_row = common.split("<tr><td>").nth(1).unwrap();
+    assert!(first_row.starts_with("“Random presses never run both directions”: expected MotorFwd AND MotorRev is never TRUE"), "{first_row}");
+    assert!(first_row.contains("2 of 6"), "{first_row}");
+    assert!(common.contains("the program does not build</td>"), "{common}");
 }
 
 /// Every shipped exercise validates: its reference passes, its starter fails, each mutant
@@ -342,11 +476,22 @@ fn every_shipped_exercise_validates() {
         })
         .collect();
     let mut checked = 0;
+    let mut level_one = Vec::new();
     for (id, child) in running {
         let out = child.wait_with_output().unwrap();
         let text = String::from_utf8_lossy(&out.stdout).into_owned();
         assert!(out.status.success(), "{id}:\n{text}");
         assert!(text.contains("reference: passes all"), "{id}:\n{text}");
+        let file = std::fs::read_to_string(format!("{root}/{id}/{id}.toml")).unwrap();
+        let exercise = plc_core::exercise::Exercise::from_toml(&file).unwrap();
+        if exercise.level == 1 {
+            // A first exercise is in ST and ladder, with a right answer in each.
+            assert_eq!(exercise.languages, ["st", "ld"], "{id}");
+            assert!(text.contains("reference_ld: passes all"), "{id}:\n{text}");
+            assert!(text.contains("checked PROGRAM Main (ladder)"), "{id}:\n{text}");
+            assert!(text.contains("starter (Ladder): fails, as it should"), "{id}:\n{text}");
+            level_one.push(id.clone());
+        }
         assert!(
             text.lines().filter(|l| l.starts_with("mutant ")).all(|l| l.contains(": caught: ")),
             "{id}:\n{text}"
@@ -358,6 +503,7 @@ fn every_shipped_exercise_validates() {
         checked += 1;
     }
     assert!(checked >= 20, "the shipped exercises ({checked})");
+    assert!(level_one.len() >= 5, "five Level 1 exercises: {level_one:?}");
 }
 
 /// `plc exercise new` writes a skeleton that validates, and never overwrites.
@@ -406,6 +552,131 @@ fn an_exercise_link_carries_the_file_and_the_starter_only() {
     let missing = plc(&["exercise", "link", "no-such.toml"]);
     assert_eq!(missing.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&missing.stderr).contains("no-such.toml"));
+}
+
+/// The files of a ZIP archive, read through its central directory as an unzipper does.
+fn unzip(b: &[u8]) -> Vec<(String, Vec<u8>)> {
+    let u16_at = |at: usize| usize::from(u16::from_le_bytes([b[at], b[at + 1]]));
+    let u32_at = |at: usize| u32::from_le_bytes([b[at], b[at + 1], b[at + 2], b[at + 3]]) as usize;
+    let end = b.len() - 22;
+    assert_eq!(u32_at(end), 0x0605_4b50, "the end of the central directory");
+    let mut at = u32_at(end + 16);
+    (0..u16_at(end + 10))
+        .map(|_| {
+            assert_eq!(u32_at(at), 0x0201_4b50);
+            let (method, packed, name_len) = (u16_at(at + 10), u32_at(at + 20), u16_at(at + 28));
+            let local = u32_at(at + 42);
+            let name = String::from_utf8(b[at + 46..at + 46 + name_len].to_vec()).unwrap();
+            let start = local + 30 + u16_at(local + 26) + u16_at(local + 28);
+            let body = &b[start..start + packed];
+            let data = if method == 8 {
+                miniz_oxide::inflate::decompress_to_vec(body).unwrap()
+            } else {
+                body.to_vec()
+            };
+            at += 46 + name_len;
+            (name, data)
+        })
+        .collect()
+}
+
+/// `plc exercise scorm`: a package an LMS imports — the site, the exercise and its starter,
+/// and a manifest with every element SCORM 1.2 requires; never the reference nor a mutant.
+#[test]
+fn an_exercise_scorm_package_has_the_manifest_site_exercise_and_starter_only() {
+    let root = format!("{}/../exercises/latch", env!("CARGO_MANIFEST_DIR"));
+    let dir = std::env::temp_dir().join(format!("plc-scorm-{}", std::process::id()));
+    let site = dir.join("site");
+    std::fs::create_dir_all(site.join("examples")).unwrap();
+    std::fs::write(site.join("index.html"), "<!DOCTYPE html><title>PLC trainer</title>").unwrap();
+    std::fs::write(site.join("plc-web-0123.wasm"), [0u8, 97, 115, 109, 1, 0, 0, 0]).unwrap();
+    std::fs::write(site.join("examples/weighing.st"), "PROGRAM W END_PROGRAM").unwrap();
+    let zip = dir.join("latch.zip");
+    let out = plc(&[
+        "exercise",
+        "scorm",
+        &format!("{root}/latch.toml"),
+        "--site",
+        &site.to_string_lossy(),
+        "--out",
+        &zip.to_string_lossy(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout(&out).starts_with(&format!("wrote {}", zip.display())));
+    let files = unzip(&std::fs::read(&zip).unwrap());
+    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "imsmanifest.xml",
+            "examples/weighing.st",
+            "index.html",
+            "plc-web-0123.wasm",
+            "exercise/latch.toml",
+            "exercise/starter.st"
+        ]
+    );
+    let file = |name: &str| {
+        String::from_utf8(files.iter().find(|(n, _)| n == name).unwrap().1.clone()).unwrap()
+    };
+    assert_eq!(
+        file("exercise/latch.toml"),
+        std::fs::read_to_string(format!("{root}/latch.toml")).unwrap()
+    );
+    assert_eq!(
+        file("exercise/starter.st"),
+        std::fs::read_to_string(format!("{root}/starter.st")).unwrap()
+    );
+    // Neither the reference solution nor a mutant is in any file.
+    let reference = std::fs::read_to_string(format!("{root}/reference.st")).unwrap();
+    let seal_in = reference.lines().find(|l| l.contains("Motor :=")).unwrap().trim().to_string();
+    assert!(files.iter().all(|(_, data)| !String::from_utf8_lossy(data).contains(&seal_in)));
+    // SCORM 1.2 (IMS Content Packaging 1.1.2 and ADL CP): the manifest and its metadata, the
+    // default organization with an item naming the resource, the SCO resource with its
+    // launch address and its files.
+    let manifest = file("imsmanifest.xml");
+    let required = [
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>",
+        "<manifest identifier=\"plc-trainer-latch\"",
+        "xmlns=\"http://www.imsproject.org/xsd/imscp_rootv1p1p2\"",
+        "xmlns:adlcp=\"http://www.adlnet.org/xsd/adlcp_rootv1p2\"",
+        "<metadata>\n    <schema>ADL SCORM</schema>\n    <schemaversion>1.2</schemaversion>\n  </metadata>",
+        "<organizations default=\"org-latch\">\n    <organization identifier=\"org-latch\">\n      <title>Start/stop motor latch</title>",
+        "<item identifier=\"item-latch\" identifierref=\"res-latch\" isvisible=\"true\">\n        <title>Start/stop motor latch</title>",
+        "<resources>\n    <resource identifier=\"res-latch\" type=\"webcontent\" adlcp:scormtype=\"sco\" href=\"index.html?exercise=exercise/latch.toml&amp;scorm=1\">",
+        "<file href=\"index.html\"/>",
+        "<file href=\"exercise/starter.st\"/>",
+        "</resources>\n</manifest>",
+    ];
+    for part in required {
+        assert!(manifest.contains(part), "{part} in\n{manifest}");
+    }
+    // SCORM 2004 4th edition on request; a missing site is named with how to build it.
+    let out = plc(&[
+        "exercise",
+        "scorm",
+        &format!("{root}/latch.toml"),
+        "--site",
+        &site.to_string_lossy(),
+        "--out",
+        &zip.to_string_lossy(),
+        "--scorm",
+        "2004",
+    ]);
+    assert!(out.status.success());
+    let files = unzip(&std::fs::read(&zip).unwrap());
+    let manifest = String::from_utf8(files[0].1.clone()).unwrap();
+    assert!(manifest.contains("<schemaversion>2004 4th Edition</schemaversion>"), "{manifest}");
+    let missing = plc(&[
+        "exercise",
+        "scorm",
+        &format!("{root}/latch.toml"),
+        "--site",
+        &dir.join("no-site").to_string_lossy(),
+    ]);
+    assert_eq!(missing.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&missing.stderr)
+        .contains("no built site there (build it with `bash scripts/build-web.sh`"));
 }
 
 /// `st-view` prints the ST a network POU (an FBD body kept as drawn) runs as.

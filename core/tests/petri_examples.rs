@@ -1,4 +1,4 @@
-//! The worked examples of `examples/` (WEIGHING.md and a two-way traffic light), generated,
+//! The worked examples of `examples/` (docs/weighing.md and a two-way traffic light), generated,
 //! compiled and run scan by scan with a plant model. The scan numbers are derived by hand
 //! in the comments: the virtual clock reads (k − 1) × 100 ms during scan k; the plant adds
 //! 25 to the weight after every scan with the feed valve open and removes 50 (down to 0)

@@ -1,24 +1,23 @@
 #![cfg(not(target_arch = "wasm32"))]
 #![allow(clippy::unwrap_used, clippy::expect_used)]
-//! The importer never panics: the LD samples with lines dropped and wires pointed elsewhere
-//! either import (and then lower and export without panicking) or give an error.
+//! The importer never panics: the LD samples of `tests/samples/` with lines dropped and
+//! wires pointed elsewhere either import (and then lower and export without panicking) or
+//! give an error.
 
 use plc_core::plcopen::{export, import};
 use proptest::prelude::*;
 
 fn samples() -> Vec<String> {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .map(|a| a.join("shared/samples/plcopen"))
-        .find(|d| d.is_dir())
-        .expect("shared/samples/plcopen");
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/samples");
     let mut names: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
     names.sort();
-    names
+    let texts: Vec<String> = names
         .into_iter()
         .filter(|p| p.file_name().is_some_and(|n| n.to_string_lossy().starts_with("ld_")))
         .map(|p| std::fs::read_to_string(p).unwrap())
-        .collect()
+        .collect();
+    assert_eq!(texts.len(), 5, "the five LD samples");
+    texts
 }
 
 proptest! {

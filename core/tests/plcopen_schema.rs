@@ -674,11 +674,7 @@ fn projects() -> Vec<(String, Project)> {
         };
         out.push((name, project));
     }
-    let samples = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .map(|a| a.join("shared/samples/plcopen"))
-        .find(|d| d.is_dir())
-        .expect("shared/samples/plcopen");
+    let samples = repo_root().join("tests/samples");
     let mut paths: Vec<_> =
         std::fs::read_dir(&samples).unwrap().map(|e| e.unwrap().path()).collect();
     paths.sort();
@@ -692,6 +688,8 @@ fn projects() -> Vec<(String, Project)> {
 #[test]
 fn every_exported_project_has_the_tc6_0201_structure() {
     let all = projects();
+    let samples = all.iter().filter(|(n, _)| n.contains("tests/samples")).count();
+    assert_eq!(samples, 8, "the samples of tests/samples");
     assert!(all.len() >= 9, "examples and samples found: {}", all.len());
     let mut ld_seen = HashSet::new();
     let all_kinds = ("all kinds".to_string(), all_kinds_project());
@@ -835,13 +833,16 @@ fn the_all_kinds_project_is_valid_and_round_trips_through_its_export() {
 }
 
 #[test]
-fn the_wired_inputs_and_data_wires_of_the_mixing_tank_export_cleanly() {
+fn the_wired_inputs_and_data_wires_of_the_mixing_plant_export_cleanly() {
     let samples = projects();
-    let (_, mixer) = samples.iter().find(|(n, _)| n.ends_with("ld_mixing_tank_plant.xml")).unwrap();
+    let (_, mixer) =
+        samples.iter().find(|(n, _)| n.ends_with("ld_mixing_plant_shared_address.xml")).unwrap();
     let xml = export(mixer);
     assert!(problems(&xml).is_empty(), "{:?}", problems(&xml));
-    // SR0's R pin is wired to the two contacts of its own network.
-    assert!(xml.contains("<variable formalParameter=\"R\">"));
+    // FillLatch's and MixLatch's R pins are wired to the contacts (and MixEnd) of their own
+    // network, DrainLatch's R1 likewise.
+    assert_eq!(xml.matches("<variable formalParameter=\"R\">").count(), 2);
+    assert_eq!(xml.matches("<variable formalParameter=\"R1\">").count(), 1);
 }
 
 #[test]

@@ -1,4 +1,4 @@
-//! `examples/sfc-weighing.st` (shared/WEIGHING.md, sequential version, as a textual SFC)
+//! `examples/sfc-weighing.st` (docs/weighing.md, sequential version, as a textual SFC)
 //! run scan by scan against a simple plant: before each scan the load cell reads 20 more
 //! if the feed valve was open after the previous scan, 25 less (not below 0) if the
 //! discharge valve was. Setpoint 100, cycle 100 ms; expected scans derived by hand.

@@ -108,7 +108,8 @@ test('catalogue → exercise → wrong solution fails with its first wrong outpu
   assert.match(await timeline.getAttribute('aria-label'), /first wrong scan, 0\.21 s · scan 21/);
   await failed.locator('.tl-cursor').waitFor({ state: 'attached' });
   assert.ok((await failed.locator('.tl-wrong').count()) > 0, 'the wrong scans are marked');
-  assert.match(await report.locator('.report-score').textContent(), /^Score 1 of 3$/);
+  assert.match(await report.locator('.report-score').textContent(), /^Score 1 of 3 \(scenario weights: 2 \+ 1\)$/);
+  assert.equal(await report.locator('.report-program').textContent(), 'Checked PROGRAM Main (ST)');
   await panel.screenshot({ path: path.join(root, 'docs/screenshots/exercise-report.png') });
 
   // Fixed: every scenario passes and the catalogue ticks the exercise.

@@ -191,6 +191,36 @@ test('a start/stop latch dragged from the palette in a new project runs, undoes,
   await context.close();
 });
 
+test('a check that marks or clears a problem leaves the rung in place (a drag can still find its cells)', async () => {
+  // The check runs after the edit, later on a busy machine: a rung drawn again then
+  // replaced the cell a drag had just found (its bounding box null in loaded full runs).
+  const context = await browser.newContext();
+  const { page, errors } = await openApp(context);
+  const view = await newLadderProgram(page, 'Kept', 'VAR\n    a : BOOL;\nEND_VAR\n');
+  await place(page, view, [1, 1, 1], 'NO contact', 'b');
+  await place(page, view, [1, 1, 2], 'Coil', 'a');
+  await view.getByRole('gridcell', { name: 'Rung 1, row 1, column 2: coil a' }).waitFor();
+  // The mark of the undeclared b (its title names it).
+  const mark = view.locator('rect.ld-diag', { has: page.locator('title', { hasText: /\bb\b/ }) });
+  await mark.first().waitFor();
+  const grid = await view.getByRole('grid').first().elementHandle();
+  const contact = await cell(view, 1, 1, 1).elementHandle();
+  // Declaring b clears the problem: its mark goes, the rung's cells stay.
+  const decls = view.getByRole('textbox', { name: 'Declarations' });
+  await decls.fill('VAR\n    a, b : BOOL;\nEND_VAR\n');
+  await decls.press('Tab');
+  await mark.first().waitFor({ state: 'detached' });
+  assert.equal(await grid.evaluate((e) => e.isConnected), true, 'the rung was drawn again');
+  assert.equal(await contact.evaluate((e) => e.isConnected), true, 'the cell was drawn again');
+  // Undeclaring it marks the cell again, still without drawing the rung again.
+  await decls.fill('VAR\n    a : BOOL;\nEND_VAR\n');
+  await decls.press('Tab');
+  await mark.first().waitFor();
+  assert.equal(await contact.evaluate((e) => e.isConnected), true, 'the cell was drawn again');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('keys alone build a rung Start, TON and Lamp, Escape takes a placement back, and the timer delays the lamp', async () => {
   const context = await browser.newContext();
   const { page, errors } = await openApp(context);

@@ -14,6 +14,11 @@
 //! //! error_line: 5                  some error diagnostic is on this line
 //! //! error_count: 1                 exactly this many error diagnostics
 //! //! error_message: MyVar           some diagnostic message contains this text (repeatable)
+//! //! set_at: 3:Start=TRUE           SCAN:VAR=VALUE from that scan on (repeatable)
+//! //! why: Motor @ 3                 explain VAR (or a Petri net place) at SCAN
+//! //! why_value: true                the explained value (JSON)
+//! //! why_written_by: kind=rung rung=1   fields of `written_by` (dotted: then.kind=…)
+//! //! why_operand: Start = true since 3  an operand's value and since_scan (repeatable)
 //! ```
 
 use serde_json::Value;
@@ -52,6 +57,32 @@ pub struct Expectation {
     pub line: usize,
 }
 
+/// One `why_operand: NAME = JSON since N` line.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WhyOperand {
+    /// The operand's name.
+    pub name: String,
+    /// Its expected value.
+    pub value: Value,
+    /// Its expected `since_scan`.
+    pub since: u64,
+}
+
+/// What a case asks `plc why` (the `why*` lines).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Why {
+    /// The variable or place.
+    pub var: String,
+    /// The scan.
+    pub scan: u64,
+    /// `why_value:`.
+    pub value: Option<Value>,
+    /// `why_written_by:` pairs (dotted keys reach into `then`).
+    pub written_by: Vec<(String, String)>,
+    /// `why_operand:` lines.
+    pub operands: Vec<WhyOperand>,
+}
+
 /// Everything the `//!` lines of a case say.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Directives {
@@ -79,6 +110,10 @@ pub struct Directives {
     pub error_count: Option<u64>,
     /// `error_message:` lines (substrings).
     pub error_messages: Vec<String>,
+    /// `set_at:` lines as `(scan, variable, IEC literal)`.
+    pub set_at: Vec<(u64, String, String)>,
+    /// `why:` and the lines that check its answer.
+    pub why: Option<Why>,
 }
 
 /// Parses the `//!` lines of a case source. Lines may appear anywhere but by convention
@@ -147,10 +182,48 @@ pub fn parse_directives(source: &str) -> Result<Directives, String> {
             "error_message" => {
                 d.error_messages.push(non_empty(value).ok_or_else(|| err("empty text"))?)
             }
+            "set_at" => d.set_at.push(plc_core::run::parse_set_at(value).map_err(|e| err(&e))?),
+            "why" => {
+                let (var, scan) =
+                    value.split_once('@').ok_or_else(|| err("expected VAR @ SCAN"))?;
+                let scan = scan.trim().parse().map_err(|_| err("not a scan"))?;
+                let var = non_empty(var.trim()).ok_or_else(|| err("empty name"))?;
+                let why = d.why.get_or_insert_with(Why::default);
+                (why.var, why.scan) = (var, scan);
+            }
+            "why_value" => {
+                let v = serde_json::from_str(value).map_err(|e| err(&format!("bad JSON ({e})")))?;
+                d.why.get_or_insert_with(Why::default).value = Some(v);
+            }
+            "why_written_by" => {
+                let why = d.why.get_or_insert_with(Why::default);
+                for pair in value.split_whitespace() {
+                    let (k, v) = pair.split_once('=').ok_or_else(|| err("expected key=value"))?;
+                    why.written_by.push((k.to_string(), v.to_string()));
+                }
+            }
+            "why_operand" => {
+                let (name, rest) =
+                    value.split_once('=').ok_or_else(|| err("expected NAME = JSON since N"))?;
+                let (json, since) = rest
+                    .rsplit_once(" since ")
+                    .ok_or_else(|| err("expected NAME = JSON since N"))?;
+                let value = serde_json::from_str(json.trim())
+                    .map_err(|e| err(&format!("bad JSON value ({e})")))?;
+                let since = since.trim().parse().map_err(|_| err("not a scan"))?;
+                d.why.get_or_insert_with(Why::default).operands.push(WhyOperand {
+                    name: name.trim().to_string(),
+                    value,
+                    since,
+                });
+            }
             _ => return Err(format!("line {line_no}: unknown directive `{key}` — {raw:?}")),
         }
     }
 
+    if d.why.as_ref().is_some_and(|w| w.var.is_empty()) {
+        return Err("why_ lines without a `why: VAR @ SCAN` line".to_string());
+    }
     let wants_error = !d.error_codes.is_empty()
         || d.error_line.is_some()
         || d.error_count.is_some()

@@ -7,7 +7,11 @@
 //! the wasm run must produce the very same report JSON as the native one.
 //!
 //! Everything goes through [`plc_core::run::run_source`], the function behind
-//! `plc run --json`, so the suite checks exactly what the CLI prints.
+//! `plc run --json`, so the suite checks exactly what the CLI prints. A case may also be a
+//! project file (`<name>.plcproj.json`, for ladder and Petri net POUs) whose ST source
+//! holds the `//!` lines; it runs through [`plc_core::run::run_project`]. A case with a
+//! `why:` line runs recorded and its report gets the explanation (`plc why --json`) under
+//! `why`.
 
 #![deny(missing_docs)]
 
@@ -19,10 +23,11 @@ pub mod path;
 #[cfg(test)]
 mod tests;
 
-pub use directives::{parse_directives, Directives, Expectation, ExpectedStatus};
+pub use directives::{parse_directives, Directives, Expectation, ExpectedStatus, Why, WhyOperand};
 pub use path::{lookup, values_match};
 
-use plc_core::run::{run_source, RunOptions};
+use plc_core::project::Project;
+use plc_core::run::{run_project_kept, run_source, RunOptions};
 use serde_json::{Map, Value};
 
 include!(concat!(env!("OUT_DIR"), "/cases.rs"));
@@ -32,8 +37,10 @@ include!(concat!(env!("OUT_DIR"), "/cases.rs"));
 pub struct Case {
     /// `group/name`, the path below `conformance/cases` without `.st`.
     pub name: String,
-    /// The whole source file, header included.
+    /// The whole source file, header included (a project file's JSON).
     pub source: &'static str,
+    /// The project, for a project file.
+    pub project: Option<Project>,
     /// The parsed `//!` directives (defaults when they did not parse).
     pub directives: Directives,
     /// Why the directives did not parse, if they did not; such a case always fails.
@@ -43,11 +50,28 @@ pub struct Case {
 impl Case {
     /// Builds a case from its name and source, parsing the directives.
     pub fn new(name: &str, source: &'static str) -> Case {
-        let (directives, directive_error) = match parse_directives(source) {
+        Case::of(name, source, None)
+    }
+
+    /// A case from a project file: its directives are in the project's ST source.
+    pub fn project(name: &str, json: &'static str) -> Case {
+        match Project::from_file(json) {
+            Ok(p) => Case::of(name, json, Some(p)),
+            Err(e) => {
+                let mut case = Case::of(name, "", None);
+                case.directive_error = Some(format!("not a project file: {e}"));
+                case
+            }
+        }
+    }
+
+    fn of(name: &str, source: &'static str, project: Option<Project>) -> Case {
+        let header = project.as_ref().map_or(source, |p| p.source.as_str());
+        let (directives, directive_error) = match parse_directives(header) {
             Ok(d) => (d, None),
             Err(e) => (Directives::default(), Some(e)),
         };
-        Case { name: name.to_string(), source, directives, directive_error }
+        Case { name: name.to_string(), source, project, directives, directive_error }
     }
 
     /// The options the case runs with: its directives over `RunOptions::default()`.
@@ -56,9 +80,11 @@ impl Case {
         let defaults = RunOptions::default();
         RunOptions {
             program: d.program.clone(),
-            cycles: d.cycles.unwrap_or(defaults.cycles),
             cycle_ms: d.cycle_ms.unwrap_or(defaults.cycle_ms),
             set: d.set.clone(),
+            set_at: d.set_at.clone(),
+            // A `why` about scan N needs N scans.
+            cycles: d.cycles.unwrap_or(defaults.cycles).max(d.why.as_ref().map_or(0, |w| w.scan)),
             ..defaults
         }
     }
@@ -66,12 +92,51 @@ impl Case {
 
 /// Every embedded case, sorted by name.
 pub fn cases() -> Vec<Case> {
-    CASE_FILES.iter().map(|(name, source)| Case::new(name, source)).collect()
+    CASE_FILES
+        .iter()
+        .map(|(name, source)| match name.strip_suffix(".plcproj") {
+            Some(stem) => Case::project(stem, source),
+            None => Case::new(name, source),
+        })
+        .collect()
 }
 
-/// Runs one case through [`run_source`] and returns the report JSON.
+/// Runs one case through [`run_source`] (or, for a project file or a `why:` line,
+/// [`plc_core::run::run_project`]) and returns the report JSON.
 pub fn run_case(case: &Case) -> Value {
-    run_source(case.source, &case.options()).to_json()
+    let options = case.options();
+    let Some(why) = &case.directives.why else {
+        return match &case.project {
+            Some(p) => plc_core::run::run_project(p, &options).to_json(),
+            None => run_source(case.source, &options).to_json(),
+        };
+    };
+    let project = case.project.clone().unwrap_or_else(|| {
+        let mut p = Project::new("case");
+        p.source = case.source.to_string();
+        p.ladder.clear();
+        p
+    });
+    let kept = run_project_kept(&project, &RunOptions { record: true, ..options });
+    let mut report = kept.report.to_json();
+    let answer = match &kept.sim {
+        Some(sim) => {
+            let ctx = plc_core::why::Context::new(&project, &kept.build);
+            match plc_core::why::explain(&ctx, sim, &why.var, why.scan) {
+                Err(plc_core::why::WhyError::Unknown(_)) => {
+                    plc_core::why::explain_place(&ctx, sim, &why.var, why.scan)
+                }
+                other => other,
+            }
+            .map(|e| e.to_json())
+            .unwrap_or_else(|e| serde_json::json!({ "error": e.to_string() }))
+        }
+        None => serde_json::json!({ "error": "the program did not run" }),
+    };
+    if let Value::Object(map) = &mut report {
+        map.insert("why".to_string(), answer);
+    }
+    report
 }
 
 /// Checks a report against the case's directives. `Err` lists every mismatch, one per
@@ -145,6 +210,10 @@ pub fn check_case(case: &Case, report: &Value) -> Result<(), String> {
         }
     }
 
+    if let Some(why) = &d.why {
+        check_why(why, report.get("why").unwrap_or(&Value::Null), &mut problems);
+    }
+
     let vars = report.get("vars").cloned().unwrap_or(Value::Null);
     for exp in &d.expects {
         match lookup(&vars, &exp.path) {
@@ -169,6 +238,64 @@ pub fn check_case(case: &Case, report: &Value) -> Result<(), String> {
         Ok(())
     } else {
         Err(problems.iter().map(|p| format!("[{}] {p}", case.name)).collect::<Vec<_>>().join("\n"))
+    }
+}
+
+/// Checks the explanation of a `why:` case against its `why_` lines.
+fn check_why(why: &Why, answer: &Value, problems: &mut Vec<String>) {
+    let at = format!("why {} @ {}", why.var, why.scan);
+    if let Some(e) = answer.get("error") {
+        problems.push(format!("{at}: {}", path::short(e)));
+        return;
+    }
+    if let Some(v) = &why.value {
+        if answer.get("value") != Some(v) {
+            problems.push(format!(
+                "{at}: value {}, expected {}",
+                path::short(&answer["value"]),
+                path::short(v)
+            ));
+        }
+    }
+    for (key, want) in &why.written_by {
+        let mut got = &answer["written_by"];
+        for part in key.split('.') {
+            got = &got[part];
+        }
+        let text = match got {
+            Value::String(s) => s.clone(),
+            Value::Null => "<none>".to_string(),
+            other => other.to_string(),
+        };
+        if text != *want {
+            problems.push(format!(
+                "{at}: written_by.{key} is {text}, expected {want} (written_by: {})",
+                path::short(&answer["written_by"])
+            ));
+        }
+    }
+    let ops: &[Value] = answer.get("operands").and_then(Value::as_array).map_or(&[], Vec::as_slice);
+    for o in &why.operands {
+        match ops.iter().find(|x| x["name"] == o.name.as_str()) {
+            None => problems.push(format!(
+                "{at}: no operand {}; operands: {}",
+                o.name,
+                path::short(&answer["operands"])
+            )),
+            Some(x) => {
+                if !values_match(&o.value, &x["value"]) || x["since_scan"].as_u64() != Some(o.since)
+                {
+                    problems.push(format!(
+                        "{at}: operand {} is {} since {}, expected {} since {}",
+                        o.name,
+                        path::short(&x["value"]),
+                        x["since_scan"],
+                        path::short(&o.value),
+                        o.since
+                    ));
+                }
+            }
+        }
     }
 }
 

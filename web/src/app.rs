@@ -4,10 +4,11 @@
 use leptos::prelude::*;
 
 use crate::components::{
-    controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, scene::ScenePanel,
-    timeline::Timeline, variables::Variables,
+    controls::Controls, header::Header, io::IoPanel, pou_pane::PouPane, timeline::Timeline,
+    variables::Variables,
 };
-use crate::exercises::{Catalogue, ExercisePanel, Exercises, Screen};
+use crate::exercises::{Exercises, Screen};
+use crate::lazy::{self, lazy_view};
 use crate::state::AppState;
 use plc_core::build::Site;
 
@@ -19,21 +20,24 @@ pub fn App() -> impl IntoView {
     let exercises = Exercises::new(state);
     provide_context(exercises);
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
+    let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));
     view! {
         <Header/>
         <Banner/>
         <Show when=catalogue>
-            <Catalogue/>
+            {lazy_view("the exercise catalogue", lazy::catalogue_view)}
         </Show>
         // Kept while the catalogue is shown (hidden), so the editors keep their state.
         <main class="workspace" hidden=catalogue>
             <section class="editor-pane" aria-label="Program">
-                <ExercisePanel/>
+                {move || exercises.open.with(Option::is_some).then(|| {
+                    lazy_view("the exercise", lazy::exercise_panel_view)
+                })}
                 <PouPane/>
             </section>
             <section class="sim-pane" aria-label="Simulation">
                 <Controls/>
-                <ScenePanel/>
+                {move || has_scene.get().then(|| lazy_view("the plant scene", lazy::scene_view))}
                 <IoPanel/>
                 <Variables/>
                 <Timeline/>

@@ -4,10 +4,15 @@ use wasm_bindgen::{JsCast, JsValue};
 
 /// Offers `text` as a file named `name` of type `mime`; returns an error text on failure.
 pub fn download(name: &str, mime: &str, text: &str) -> Result<(), String> {
+    download_parts(name, mime, &JsValue::from_str(text))
+}
+
+/// Offers `part` (a string, or bytes as a `Uint8Array`) as a file named `name`.
+pub fn download_parts(name: &str, mime: &str, part: &JsValue) -> Result<(), String> {
     let fail = |e: JsValue| format!("Could not download {name}: {e:?}");
     let window = web_sys::window().ok_or("no window")?;
     let document = window.document().ok_or("no document")?;
-    let parts = js_sys::Array::of1(&JsValue::from_str(text));
+    let parts = js_sys::Array::of1(part);
     let opts = web_sys::BlobPropertyBag::new();
     opts.set_type(mime);
     let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &opts).map_err(fail)?;

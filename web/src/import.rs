@@ -1,5 +1,5 @@
 //! Opening a file the user imports: project files and ST text here, PLCopen XML and PNML
-//! in the import worker (`src/bin/plc-import.rs`), which the page loads only then.
+//! in the import worker (`src/workers/import.rs`), which the page starts only then.
 
 use plc_core::open::open_plain;
 use plc_core::project::Project;
@@ -7,8 +7,8 @@ use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 
-/// The worker's loader script, next to `index.html` (Trunk names it after the binary).
-const WORKER_SCRIPT: &str = "./plc-import_loader.js";
+/// The import worker's name (`src/workers/mod.rs`).
+const WORKER: &str = "import";
 
 /// A file opened as a project.
 pub struct Imported {
@@ -81,23 +81,44 @@ async fn in_worker(stem: &str, text: &str) -> Result<Imported, String> {
 
 /// Sends `request` to a fresh import worker and returns its answer.
 async fn ask_worker(request: &js_sys::Array) -> Result<String, String> {
-    ask_worker_at(WORKER_SCRIPT, request).await
+    ask_worker_at(WORKER, request).await
 }
 
-/// Sends `request` to a fresh worker of the loader `script` and returns its answer. The
-/// worker says when it is ready (its module loads asynchronously; a message sent before
-/// would be lost).
-pub async fn ask_worker_at(script: &str, request: &JsValue) -> Result<String, String> {
-    let worker = web_sys::Worker::new(script)
-        .map_err(|e| format!("the importer could not start ({e:?})"))?;
+/// Starts the app's worker `name` (`import`, `exercise`): `worker.js` in the folder of the
+/// app's files (`globalThis.plcAppBase`, set by `boot.js`), as a module worker.
+fn start_worker(name: &str) -> Result<web_sys::Worker, JsValue> {
+    let base = js_sys::Reflect::get(&js_sys::global(), &JsValue::from_str("plcAppBase"))
+        .ok()
+        .and_then(|b| b.as_string())
+        .unwrap_or_else(|| "./".to_string());
+    let options = web_sys::WorkerOptions::new();
+    options.set_type(web_sys::WorkerType::Module);
+    options.set_name(name);
+    web_sys::Worker::new_with_options(&format!("{base}worker.js"), &options)
+}
+
+/// Sends `request` to a fresh worker `name` and returns its answer. The worker says when
+/// it is ready (its module and chunk load asynchronously; a message sent before would be
+/// lost).
+pub async fn ask_worker_at(name: &str, request: &JsValue) -> Result<String, String> {
+    ask_worker_raw(name, request).await.map(|v| v.as_string().unwrap_or_default())
+}
+
+/// [`ask_worker_at`], the answer as the worker sent it (text, or bytes).
+pub async fn ask_worker_raw(name: &str, request: &JsValue) -> Result<JsValue, String> {
+    let worker = start_worker(name).map_err(|e| format!("the importer could not start ({e:?})"))?;
     let stopped = |_| "the importer stopped (the file may be too large or damaged)".to_string();
     let answer = async {
-        next_message(&worker).await.map_err(|_| "the importer could not start".to_string())?;
+        let ready =
+            next_message(&worker).await.map_err(|_| "the importer could not start".to_string())?;
+        if ready.as_string().as_deref() != Some("ready") {
+            return Err("the importer could not start (is the network off?)".to_string());
+        }
         let reply = next_message(&worker);
         worker
             .post_message(request)
             .map_err(|e| format!("the importer did not take the file ({e:?})"))?;
-        reply.await.map_err(stopped).map(|v| v.as_string().unwrap_or_default())
+        reply.await.map_err(stopped)
     }
     .await;
     worker.terminate();

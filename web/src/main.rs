@@ -6,10 +6,17 @@ mod download;
 mod examples;
 mod exercises;
 mod import;
+mod lazy;
 mod state;
 mod storage;
+mod workers;
 
 fn main() {
+    // In a worker (`worker.js` runs this module too) there is no page to draw:
+    // `workers::worker_main` starts the worker's own code.
+    if web_sys::window().is_none() {
+        return;
+    }
     std::panic::set_hook(Box::new(|info| {
         state::note_panic();
         console_error_panic_hook::hook(info);

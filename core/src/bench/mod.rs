@@ -17,6 +17,6 @@ pub mod workload;
 
 #[cfg(not(target_arch = "wasm32"))]
 pub use timing::{
-    b1, b2, b3, b4, b5, b6, report_text, run_all, run_selected, Effort, Paired, FIGURES,
+    b1, b2, b3, b4, b5, b6, b8, report_text, run_all, run_selected, Effort, Paired, FIGURES,
 };
 pub use workload::{load, BenchError};

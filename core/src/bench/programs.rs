@@ -5,8 +5,8 @@ use std::fmt::Write;
 
 use crate::petri::{Arc, Net, PetriPou, Place, Transition};
 
-/// The weighing example of the Petri net issue (seed 000's sequential weighing process as a
-/// Petri net POU), shipped in `examples/`.
+/// The weighing example of the Petri net issue (the sequential weighing process of
+/// `docs/weighing.md`, after Franczok, PAR 2014, as a Petri net POU), shipped in `examples/`.
 pub const WEIGHING: &str = include_str!("../../../examples/weighing-sequential.plcproj.json");
 
 /// B7's project: the same controller with its plant PROGRAM (`examples/weighing-plant.plcproj.json`).

@@ -219,8 +219,97 @@ pub fn b7(effort: Effort) -> Result<Json, BenchError> {
     }))
 }
 
+/// B8, recording (issue 36): the cost of keeping the history — B1 and B5 with recording on
+/// against off (best of several runs each, taken alternately) — the memory one simulated
+/// hour of the weighing plant (B7's project, Start held) takes, and the time to show any
+/// scan of that hour again (`Simulator::view_at`, 200 scans spread over it: mean and
+/// worst) and to explain one (`why::explain`).
+pub fn b8(effort: Effort) -> Result<Json, BenchError> {
+    let full = effort == Effort::Full;
+    let (n, reps) = if full { (100_000, 30) } else { (1_000, 2) };
+    let mut off = load(&programs::b1(n))?;
+    let mut on = load(&programs::b1(n))?;
+    on.set_recording(true).map_err(err)?;
+    scan(&mut off)?;
+    scan(&mut on)?;
+    let b1 = best_pair(
+        reps,
+        || {
+            let _ = scan(&mut on);
+        },
+        || {
+            let _ = scan(&mut off);
+        },
+    );
+    let scans = if full { 360_000 } else { 3_600 };
+    let (mut b5_on, mut b5_off) = (f64::INFINITY, f64::INFINITY);
+    let mut hour_b5 = 0usize;
+    for _ in 0..if full { 3 } else { 1 } {
+        let mut sim = weighing()?;
+        let t = Instant::now();
+        run_weighing(&mut sim, scans)?;
+        b5_off = b5_off.min(ms(t));
+        let mut sim = weighing()?;
+        sim.set_recording(true).map_err(err)?;
+        let t = Instant::now();
+        run_weighing(&mut sim, scans)?;
+        b5_on = b5_on.min(ms(t));
+        hour_b5 = sim.recording().map_or(0, |r| r.bytes);
+    }
+    let project = crate::project::Project::from_file(programs::WEIGHING_PLANT).map_err(err)?;
+    let build = crate::build::build_project(&project);
+    let mut sim = build
+        .simulator_with_plant(
+            build.chosen_program(&project.settings),
+            project.settings.plant.as_deref(),
+        )
+        .map_err(|d| BenchError(d.message))?;
+    sim.set_watchdog(u64::MAX / 2);
+    sim.set_recording(true).map_err(err)?;
+    sim.hold("Start", "TRUE").map_err(err)?;
+    for _ in 0..scans {
+        scan(&mut sim)?;
+    }
+    let kept = sim.recording().ok_or_else(|| BenchError("recording is off".into()))?;
+    let (mut worst, mut total) = (0f64, 0f64);
+    let probes = 200u64;
+    for k in 0..probes {
+        // Spread over the hour, and each one interval minus one past a snapshot: the
+        // longest replay.
+        let at = (kept.first + k * (kept.last - kept.first) / probes)
+            .saturating_add(kept.interval - 1)
+            .min(kept.last);
+        let t = Instant::now();
+        black_box(sim.view_at(at).map_err(err)?);
+        let took = ms(t);
+        worst = worst.max(took);
+        total += took;
+    }
+    let ctx = crate::why::Context::new(&project, &build);
+    let t = Instant::now();
+    let why = crate::why::explain(&ctx, &sim, "DischargeValve", kept.last - 1).map_err(err)?;
+    let why_ms = ms(t);
+    black_box(why);
+    Ok(json!({
+        "b1_off_ms": b1.native_ms,
+        "b1_on_ms": b1.vm_ms,
+        "b1_ratio": b1.ratio,
+        "b5_off_ms": b5_off,
+        "b5_on_ms": b5_on,
+        "b5_ratio": b5_on / b5_off.max(1e-9),
+        "b5_recording_mb": hour_b5 as f64 / 1e6,
+        "hour_mb": kept.bytes as f64 / 1e6,
+        "hour_first": kept.first,
+        "hour_scans": kept.last,
+        "interval": kept.interval,
+        "view_mean_ms": total / probes as f64,
+        "view_max_ms": worst,
+        "why_ms": why_ms,
+    }))
+}
+
 /// The figures `plc bench` measures, in the order it prints them.
-pub const FIGURES: [&str; 7] = ["B1", "B2", "B3", "B4", "B5", "B6", "B7"];
+pub const FIGURES: [&str; 8] = ["B1", "B2", "B3", "B4", "B5", "B6", "B7", "B8"];
 
 /// Runs every benchmark and returns the `plc bench --json` object.
 pub fn run_all(effort: Effort) -> Result<Json, BenchError> {
@@ -246,7 +335,8 @@ pub fn run_selected(effort: Effort, only: &[String]) -> Result<Json, BenchError>
             "B4" => b4(effort)?,
             "B5" => b5(effort)?,
             "B6" => b6(effort)?,
-            _ => b7(effort)?,
+            "B7" => b7(effort)?,
+            _ => b8(effort)?,
         };
         out.insert(f.to_string(), v);
     }
@@ -311,6 +401,15 @@ pub fn report_text(report: &Json, effort: Effort) -> String {
         let t = num("B6", "native_ms");
         let text = format!("{t:.1} ms for {} lines (native)", report["B6"]["lines"]);
         out += &line("B6", text, "<= 50 ms native", t <= 50.0);
+    }
+    if report.get("B8").is_some() {
+        let (r1, r5) = (num("B8", "b1_ratio"), num("B8", "b5_ratio"));
+        let (mb, view) = (num("B8", "hour_mb"), num("B8", "view_max_ms"));
+        let text = format!(
+            "recording on: B1 {r1:.2}x, B5 {r5:.2}x; hour {mb:.1} MB; view <= {view:.2} ms"
+        );
+        let met = r1 <= 1.1 && r5 <= 1.1 && mb <= 64.0 && report["B8"]["hour_first"] == 0;
+        out += &line("B8", text, "<= 1.1x, <= 64 MB", met);
     }
     out
 }

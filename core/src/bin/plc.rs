@@ -1,10 +1,14 @@
 //! `plc`: the command line of the PLC trainer, for instructors, CI and benchmarks.
 //! It uses exactly the same core as the browser.
 
+#[path = "plc/class_report.rs"]
+mod class_report;
 #[path = "plc/grade.rs"]
 mod grade;
 #[path = "plc/petri.rs"]
 mod petri;
+#[path = "plc/why.rs"]
+mod why;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -50,6 +54,11 @@ enum Command {
         /// variables are set before the first scan.
         #[arg(long = "set", value_name = "VAR=VALUE")]
         set: Vec<String>,
+        /// SCAN:VAR=VALUE: from scan SCAN (1-based) on, VAR is VALUE (an input is held at
+        /// it, any other variable is set before that scan). Repeatable: `--set-at
+        /// 5:Start=TRUE --set-at 7:Start=FALSE` presses Start for two scans.
+        #[arg(long = "set-at", value_name = "SCAN:VAR=VALUE")]
+        set_at: Vec<String>,
         /// Print one JSON object instead of text.
         #[arg(long)]
         json: bool,
@@ -62,6 +71,37 @@ enum Command {
         /// `--trace`, a project's timeline variables are recorded.
         #[arg(long, conflicts_with = "json")]
         csv: bool,
+    },
+    /// Explain why a variable has its value at a scan (or why a Petri net place holds a
+    /// token): what wrote it, and the values that decided it, each since when.
+    Why {
+        /// The ST source, project or PLCopen XML file.
+        file: PathBuf,
+        /// The variable (`Motor`, `T1.Q`, `Filling.X`) or Petri net place (`P3`).
+        var: String,
+        /// The scan (1-based; 0: the initial values).
+        #[arg(long)]
+        at: u64,
+        /// The PROGRAM to run (default: the first one in the file).
+        #[arg(long)]
+        program: Option<String>,
+        /// How many scans to run (default: up to the scan asked about); later scans give
+        /// the next change.
+        #[arg(long)]
+        cycles: Option<u64>,
+        /// Virtual milliseconds per scan (1 to 60000).
+        #[arg(long = "cycle-ms", default_value_t = 10,
+              value_parser = clap::value_parser!(u64).range(1..=60_000))]
+        cycle_ms: u64,
+        /// VAR=VALUE, as for `run`.
+        #[arg(long = "set", value_name = "VAR=VALUE")]
+        set: Vec<String>,
+        /// SCAN:VAR=VALUE, as for `run`.
+        #[arg(long = "set-at", value_name = "SCAN:VAR=VALUE")]
+        set_at: Vec<String>,
+        /// Print one JSON object (`var`, `value`, `scan`, `written_by`, `operands`, …).
+        #[arg(long)]
+        json: bool,
     },
     /// Explain a problem code such as E0150: what it means, how to fix it, and a wrong and a
     /// right example.
@@ -109,14 +149,15 @@ enum Command {
         /// A file of hidden scenarios to add (the same form as an exercise file).
         #[arg(long, value_name = "HIDDEN.toml")]
         scenarios: Option<PathBuf>,
-        /// text, json or csv.
+        /// text, json, csv, or html (a class report: one self-contained page).
         #[arg(long, value_enum, default_value_t = grade::Format::Text)]
         format: grade::Format,
         /// How many submissions are graded at once (default: the cores).
         #[arg(long)]
         jobs: Option<usize>,
     },
-    /// Exercises: validate one (reference, starter, mutants), or write a skeleton.
+    /// Exercises: validate one (reference, starter, mutants), write a skeleton, a link or a
+    /// SCORM package.
     Exercise {
         #[command(subcommand)]
         command: grade::ExerciseCommand,
@@ -545,17 +586,11 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Check { file } => check(&file),
-        Command::Run { file, program, cycles, cycle_ms, set, json, trace, csv } => {
-            let mut pairs = Vec::new();
-            for s in set {
-                match s.split_once('=') {
-                    Some((k, v)) => pairs.push((k.trim().to_string(), v.trim().to_string())),
-                    None => {
-                        eprintln!("plc: --set expects VAR=VALUE, got `{s}`");
-                        return ExitCode::from(2);
-                    }
-                }
-            }
+        Command::Run { file, program, cycles, cycle_ms, set, set_at, json, trace, csv } => {
+            let (pairs, set_at) = match settings(&set, &set_at) {
+                Ok(s) => s,
+                Err(code) => return code,
+            };
             run(
                 &file,
                 RunOptions {
@@ -566,6 +601,8 @@ fn main() -> ExitCode {
                     file_map: Default::default(),
                     plant: None,
                     trace,
+                    set_at,
+                    record: false,
                 },
                 if csv {
                     Output::Csv
@@ -586,6 +623,28 @@ fn main() -> ExitCode {
         }
         Command::Explain { code, .. } => explain(code.as_deref().unwrap_or_default()),
         Command::StView { project, pou } => st_view(&project, &pou),
+        Command::Why { file, var, at, program, cycles, cycle_ms, set, set_at, json } => {
+            let (pairs, set_at) = match settings(&set, &set_at) {
+                Ok(s) => s,
+                Err(code) => return code,
+            };
+            let project = match load_project(&file) {
+                Ok(p) => p,
+                Err(e) => {
+                    eprintln!("{e}");
+                    return ExitCode::from(2);
+                }
+            };
+            let options = RunOptions {
+                program,
+                cycles: cycles.unwrap_or(at).max(at),
+                cycle_ms,
+                set: pairs,
+                set_at,
+                ..RunOptions::default()
+            };
+            why::run(&file, &project, &var, at, options, json)
+        }
         Command::Bench { json, quick, only } => bench(json, quick, &only),
         Command::Petri { command } => petri::run(command),
         Command::Exercise { command } => grade::exercise(command),
@@ -595,6 +654,36 @@ fn main() -> ExitCode {
         Command::Import { file } => import(&file),
         Command::Export { plcopen: _, project } => export(&project),
     }
+}
+
+/// The `--set VAR=VALUE` and `--set-at SCAN:VAR=VALUE` options, parsed (exit code 2 and
+/// a message when one is malformed).
+#[allow(clippy::type_complexity)]
+fn settings(
+    set: &[String],
+    set_at: &[String],
+) -> Result<(Vec<(String, String)>, Vec<(u64, String, String)>), ExitCode> {
+    let mut pairs = Vec::new();
+    for s in set {
+        match s.split_once('=') {
+            Some((k, v)) => pairs.push((k.trim().to_string(), v.trim().to_string())),
+            None => {
+                eprintln!("plc: --set expects VAR=VALUE, got `{s}`");
+                return Err(ExitCode::from(2));
+            }
+        }
+    }
+    let mut scheduled = Vec::new();
+    for s in set_at {
+        match plc_core::run::parse_set_at(s) {
+            Ok(entry) => scheduled.push(entry),
+            Err(message) => {
+                eprintln!("plc: {message}");
+                return Err(ExitCode::from(2));
+            }
+        }
+    }
+    Ok((pairs, scheduled))
 }
 
 /// `plc import FILE.xml`: prints the project file converted from PLCopen XML.

@@ -17,8 +17,9 @@ use crate::syntax::PouKind;
 mod source;
 
 pub use source::{
-    compile_project, project_diagnostics, project_source, project_source_with, NetworkSegment,
-    Origin, PetriSegment, ProjectNets, ProjectSource, Segment, SourceMap,
+    compile_project, compile_project_by, project_diagnostics, project_source, project_source_by,
+    project_source_with, LadderLowering, Lowerings, NetworkPass, NetworkSegment, Origin, PetriPass,
+    PetriSegment, ProjectNets, ProjectSource, Segment, SourceMap,
 };
 
 /// Where a problem (or a runtime fault, or a running statement) is in a project.
@@ -333,7 +334,14 @@ fn site_in(source: &ProjectSource, index: &LineIndex<'_>, span: Span) -> Site {
 
 /// Builds a project as `plc check` and `plc run` do (see the module comment).
 pub fn build_project(project: &Project) -> ProjectBuild {
-    let nets = compile_project(project);
+    build_project_by(project, &Lowerings::ALL)
+}
+
+/// [`build_project`] with the given passes for the diagram POUs. The diagram POUs of a kind
+/// `lowerings` lacks are left out of the program (the web app loads the pass first: see
+/// [`Lowerings::lacks`]).
+pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuild {
+    let nets = compile_project_by(project, lowerings);
     let petri_diags: Vec<ProjectDiagnostic> = nets
         .diagnostics
         .iter()
@@ -354,7 +362,7 @@ pub fn build_project(project: &Project) -> ProjectBuild {
         message: d.message,
         site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
     };
-    let source = match project_source_with(project, &nets) {
+    let source = match project_source_by(project, &nets, lowerings) {
         Ok(source) => source,
         Err(diags) => {
             let diagnostics = diags.into_iter().map(ladder_diag).collect();

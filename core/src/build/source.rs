@@ -2,8 +2,9 @@
 //! generated Petri net POUs as one text for the checker, and the map from every line of
 //! that text back to where it came from (an ST line, a ladder cell, a net element).
 
-use crate::ladder::{lower, validate_with, LadderDiagnostic, LoweredPou};
-use crate::petri::{self, NetElement, TextPosition};
+use crate::ladder::{lower, validate_with, Catalog, LadderDiagnostic, LadderPou, LoweredPou};
+use crate::network::{NetError, NetworkPou, NetworkText};
+use crate::petri::{self, NetElement, PetriPou, TextPosition};
 use crate::project::Project;
 
 /// One lowered ladder POU inside a combined project source.
@@ -158,10 +159,24 @@ pub fn project_source_with(
     project: &Project,
     nets: &ProjectNets,
 ) -> Result<ProjectSource, Vec<(String, LadderDiagnostic)>> {
+    project_source_by(project, nets, &Lowerings::ALL)
+}
+
+/// [`project_source_with`] with the given passes for the diagram POUs: a kind of POU the
+/// project has and `lowerings` lacks is left out (see [`Lowerings::lacks`]).
+pub fn project_source_by(
+    project: &Project,
+    nets: &ProjectNets,
+    lowerings: &Lowerings,
+) -> Result<ProjectSource, Vec<(String, LadderDiagnostic)>> {
     let mut diags = Vec::new();
     let catalog = project.catalog();
-    for pou in &project.ladder {
-        diags.extend(validate_with(pou, &catalog).into_iter().map(|d| (pou.name.clone(), d)));
+    if let Some(ladder) = &lowerings.ladder {
+        for pou in &project.ladder {
+            diags.extend(
+                (ladder.validate)(pou, &catalog).into_iter().map(|d| (pou.name.clone(), d)),
+            );
+        }
     }
     if diags.iter().any(|(_, d)| d.is_error()) {
         return Err(diags);
@@ -174,31 +189,92 @@ pub fn project_source_with(
     let mut map =
         SourceMap { st_lines, segments: Vec::new(), networks: Vec::new(), petri: Vec::new() };
     let mut line = st_lines + 1;
-    for pou in &project.ladder {
-        let lowered = lower(pou);
-        let n = lowered.st.lines().count() as u32;
-        text.push_str(&lowered.st);
-        map.segments.push(Segment { pou: pou.name.clone(), first_line: line, lowered });
-        line += n;
+    if let Some(ladder) = &lowerings.ladder {
+        for pou in &project.ladder {
+            let lowered = (ladder.lower)(pou);
+            let n = lowered.st.lines().count() as u32;
+            text.push_str(&lowered.st);
+            map.segments.push(Segment { pou: pou.name.clone(), first_line: line, lowered });
+            line += n;
+        }
     }
     let mut network_errors = Vec::new();
-    for pou in &project.networks {
-        match pou.to_st() {
-            Ok(net) => {
-                let n = net.st.lines().count() as u32;
-                text.push_str(&net.st);
-                map.networks.push(NetworkSegment {
-                    pou: pou.name.clone(),
-                    first_line: line,
-                    text: net,
-                });
-                line += n;
+    if let Some(to_st) = lowerings.network {
+        for pou in &project.networks {
+            match to_st(pou) {
+                Ok(net) => {
+                    let n = net.st.lines().count() as u32;
+                    text.push_str(&net.st);
+                    map.networks.push(NetworkSegment {
+                        pou: pou.name.clone(),
+                        first_line: line,
+                        text: net,
+                    });
+                    line += n;
+                }
+                Err(e) => network_errors.push((pou.name.clone(), e)),
             }
-            Err(e) => network_errors.push((pou.name.clone(), e)),
         }
     }
     append_to_source(nets, &mut text, &mut map.petri, line);
     Ok(ProjectSource { text, map, warnings: diags, network_errors })
+}
+
+/// The passes that turn a project's diagram POUs into ST. [`Lowerings::ALL`] has every
+/// one, and every build of the engine uses it, except the web app's page: it loads each
+/// pass as a chunk of its wasm the first time a project needs it, and builds with those it
+/// has ([`crate::build::build_project_by`]), so an ST-only project never downloads them.
+#[derive(Debug, Clone, Copy)]
+pub struct Lowerings {
+    /// Ladder POUs: validation against the block catalogue, then lowering.
+    pub ladder: Option<LadderLowering>,
+    /// Network POUs (LD and FBD as drawn, and SFC charts): their ST.
+    pub network: Option<NetworkPass>,
+    /// Petri net POUs: the generated CASE OF program with its analysis.
+    pub petri: Option<PetriPass>,
+}
+
+/// The network pass of [`Lowerings`]: a network POU's ST.
+pub type NetworkPass = fn(&NetworkPou) -> Result<NetworkText, NetError>;
+
+/// The Petri net pass of [`Lowerings`]: a net POU's generated program and analysis.
+pub type PetriPass = fn(&PetriPou) -> Result<petri::Compiled, Vec<petri::PetriDiagnostic>>;
+
+/// The ladder passes of [`Lowerings`].
+#[derive(Debug, Clone, Copy)]
+pub struct LadderLowering {
+    /// Validates a ladder POU against the project's catalogue of blocks.
+    pub validate: fn(&LadderPou, &Catalog) -> Vec<LadderDiagnostic>,
+    /// Lowers a valid ladder POU to ST.
+    pub lower: fn(&LadderPou) -> LoweredPou,
+}
+
+impl Lowerings {
+    /// Every pass.
+    pub const ALL: Lowerings = Lowerings {
+        ladder: Some(LadderLowering { validate: validate_with, lower }),
+        network: Some(NetworkPou::to_st),
+        petri: Some(petri::compile),
+    };
+
+    /// No pass (an ST-only project needs none).
+    pub const NONE: Lowerings = Lowerings { ladder: None, network: None, petri: None };
+
+    /// The kinds of diagram POU the project has that these passes cannot build, by name
+    /// (`"ladder"`, `"network"`, `"petri"`).
+    pub fn lacks(&self, project: &Project) -> Vec<&'static str> {
+        let mut out = Vec::new();
+        if self.ladder.is_none() && !project.ladder.is_empty() {
+            out.push("ladder");
+        }
+        if self.network.is_none() && !project.networks.is_empty() {
+            out.push("network");
+        }
+        if self.petri.is_none() && !project.petri.is_empty() {
+            out.push("petri");
+        }
+        out
+    }
 }
 
 /// A project's Petri net POUs compiled once, for its diagnostics and its combined source.
@@ -219,9 +295,15 @@ impl ProjectNets {
 
 /// Compiles every Petri net POU of a project.
 pub fn compile_project(project: &Project) -> ProjectNets {
+    compile_project_by(project, &Lowerings::ALL)
+}
+
+/// [`compile_project`] with the given passes (none without the Petri net pass).
+pub fn compile_project_by(project: &Project, lowerings: &Lowerings) -> ProjectNets {
     let mut out = ProjectNets::default();
+    let Some(compile) = lowerings.petri else { return out };
     for pou in &project.petri {
-        match petri::compile(pou) {
+        match compile(pou) {
             Ok(c) => {
                 out.diagnostics.extend(c.warnings.iter().map(|d| (pou.name.clone(), d.clone())));
                 out.compiled.push((pou.name.clone(), c));

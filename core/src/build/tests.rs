@@ -165,3 +165,29 @@ fn empty_project_source_is_st_source() {
     assert_eq!(src.text, project.source);
     assert_eq!(src.map.origin(1), Origin::St(1));
 }
+
+/// The web app builds with the passes it has loaded: an ST-only project needs none and
+/// builds the same; a project with diagram POUs says which passes it lacks, and with every
+/// pass builds as `build_project` does.
+#[test]
+fn a_build_by_the_loaded_passes_names_what_it_lacks() {
+    let st = project("PROGRAM Main\nVAR x : INT; END_VAR\nx := x + 1;\nEND_PROGRAM\n");
+    assert!(Lowerings::NONE.lacks(&st).is_empty());
+    let same = |a: &ProjectBuild, b: &ProjectBuild| {
+        a.diagnostics == b.diagnostics
+            && a.source.as_ref().map(|s| &s.text) == b.source.as_ref().map(|s| &s.text)
+    };
+    assert!(same(&build_project_by(&st, &Lowerings::NONE), &build_project(&st)));
+    let mut mixed = project("");
+    mixed.ladder.push(ladder(
+        "Latch",
+        "Motor",
+        "VAR_INPUT Start : BOOL; END_VAR\nVAR_OUTPUT Motor : BOOL; END_VAR\n",
+    ));
+    mixed.petri.push(looping("TRUE", ""));
+    assert_eq!(Lowerings::NONE.lacks(&mixed), ["ladder", "petri"]);
+    assert!(Lowerings::ALL.lacks(&mixed).is_empty());
+    let only_ladder = Lowerings { ladder: Lowerings::ALL.ladder, ..Lowerings::NONE };
+    assert_eq!(only_ladder.lacks(&mixed), ["petri"]);
+    assert!(same(&build_project_by(&mixed, &Lowerings::ALL), &build_project(&mixed)));
+}

@@ -117,8 +117,8 @@ problem_codes! {
     NoReturnValue = "E0211": "a FUNCTION without a result type used in an expression",
 
     // ---- running: E0300–E0349 ----
-    UnknownSetVariable = "E0300": "`--set` or `--trace` names a variable the program does not have (or, for `--trace`, one that is not a single value)",
-    BadSetValue = "E0301": "`--set` gives a value that does not fit the variable",
+    UnknownSetVariable = "E0300": "`--set`, `--set-at` or `--trace` names a variable the program does not have (or, for `--trace`, one that is not a single value)",
+    BadSetValue = "E0301": "`--set` or `--set-at` gives a value that does not fit the variable",
     ProgramTooLarge = "E0302": "the program needs more memory than the simulator allows",
     BadCycleTime = "E0303": "a scan cycle time outside 1 ms to 1 minute",
     FileNotOpened = "E0304": "a file that cannot be opened (unreadable, malformed, or not a project, PLCopen XML, PNML or ST file)",

@@ -250,10 +250,10 @@ explanations! {
     NoReturnValue: "A FUNCTION declared without a result type returns nothing, so it cannot stand in an expression; call it as a statement.",
         st("FUNCTION Beep VAR_INPUT on : BOOL; END_VAR END_FUNCTION PROGRAM Main VAR x : BOOL; END_VAR x := Beep(TRUE); END_PROGRAM"),
         st("FUNCTION Beep VAR_INPUT on : BOOL; END_VAR END_FUNCTION PROGRAM Main VAR x : BOOL; END_VAR Beep(TRUE); END_PROGRAM");
-    UnknownSetVariable: "`plc run --set NAME=VALUE` (or an input set in the page) names a variable the program does not have, or `plc run --trace NAME` names one it does not have or that is not a single value (a whole array or structure cannot be recorded: name its elements). Names are those of the main PROGRAM, then the globals; members and elements are written `Tank.Level`, `Arr[2]`.",
+    UnknownSetVariable: "`plc run --set NAME=VALUE` or `--set-at SCAN:NAME=VALUE` (or an input set in the page) names a variable the program does not have, or `plc run --trace NAME` names one it does not have or that is not a single value (a whole array or structure cannot be recorded: name its elements). Names are those of the main PROGRAM, then the globals; members and elements are written `Tank.Level`, `Arr[2]`.",
         Example::St { source: "PROGRAM Main VAR start : BOOL; END_VAR END_PROGRAM", program: None, set: Some(("strat", "TRUE")) },
         Example::St { source: "PROGRAM Main VAR start : BOOL; END_VAR END_PROGRAM", program: None, set: Some(("start", "TRUE")) };
-    BadSetValue: "The value given with `--set` does not fit the variable: write it as an IEC literal of the variable's type (`TRUE`, `42`, `T#2s`, `'text'`).",
+    BadSetValue: "The value given with `--set` or `--set-at` does not fit the variable: write it as an IEC literal of the variable's type (`TRUE`, `42`, `T#2s`, `'text'`).",
         Example::St { source: "PROGRAM Main VAR level : INT; END_VAR END_PROGRAM", program: None, set: Some(("level", "high")) },
         Example::St { source: "PROGRAM Main VAR level : INT; END_VAR END_PROGRAM", program: None, set: Some(("level", "75")) };
     ProgramTooLarge: "The program needs more memory cells than the simulator provides (16 M cells of 64 bits). Make the arrays smaller.",

@@ -17,18 +17,52 @@ pub struct Exercise {
     pub title: String,
     /// 1 (beginner) … 5 (advanced).
     pub level: u8,
+    /// Its place among the exercises of its level in the catalogue (those without one
+    /// come after, by title).
+    #[serde(default)]
+    pub order: Option<u32>,
     /// The languages a solution may use: `st`, `ld`, `petri`, `sfc`.
     #[serde(default)]
     pub languages: Vec<String>,
     /// The task, in Markdown.
     #[serde(default)]
     pub statement: String,
-    /// The starter project: a file next to the exercise (project, ST or PLCopen XML).
+    /// The PROGRAM the exercise grades (`Main`) when the student has not chosen another;
+    /// by default the one the starter declares.
+    #[serde(default)]
+    pub program: Option<String>,
+    /// The starter project in the first of `languages`: a file next to the exercise
+    /// (project, ST or PLCopen XML).
     #[serde(default)]
     pub starter: Option<String>,
+    /// The starter in Structured Text, when it is not `starter` (else made from the
+    /// interface).
+    #[serde(default)]
+    pub starter_st: Option<String>,
+    /// The starter in ladder (a project file with a ladder PROGRAM).
+    #[serde(default)]
+    pub starter_ld: Option<String>,
+    /// The starter as a Petri net (a project file with a Petri net PROGRAM).
+    #[serde(default)]
+    pub starter_petri: Option<String>,
+    /// The starter as a textual SFC (an ST file).
+    #[serde(default)]
+    pub starter_sfc: Option<String>,
     /// The reference solution: a file next to the exercise.
     #[serde(default)]
     pub reference: Option<String>,
+    /// A reference solution in Structured Text, besides `reference`.
+    #[serde(default)]
+    pub reference_st: Option<String>,
+    /// A reference solution in ladder, besides `reference`.
+    #[serde(default)]
+    pub reference_ld: Option<String>,
+    /// A reference solution as a Petri net, besides `reference`.
+    #[serde(default)]
+    pub reference_petri: Option<String>,
+    /// A reference solution as a textual SFC, besides `reference`.
+    #[serde(default)]
+    pub reference_sfc: Option<String>,
     /// The variables the solution must declare.
     #[serde(default)]
     pub interface: Vec<InterfaceVar>,
@@ -357,6 +391,10 @@ fn line_column(text: &str, offset: usize) -> (usize, usize) {
     (line, column)
 }
 
+/// The codes of the languages an exercise can be written in (`languages = […]`), in the
+/// order of `starter::Language::ALL` (which reads its codes from here).
+pub(super) const LANGUAGE_CODES: [&str; 4] = ["st", "ld", "petri", "sfc"];
+
 impl Exercise {
     /// Reads an exercise file (TOML).
     pub fn from_toml(text: &str) -> Result<Exercise, ExerciseError> {
@@ -370,8 +408,56 @@ impl Exercise {
                 },
             }
         })?;
+        exercise.checked()
+    }
+
+    /// Reads an exercise in the built form (`built_form.rs`): the exercise, whose
+    /// `statement` is empty, and its statement as HTML. Checked as a TOML file is.
+    pub fn from_built(text: &str) -> Result<(Exercise, String), ExerciseError> {
+        #[derive(Deserialize)]
+        #[serde(deny_unknown_fields)]
+        struct Built {
+            #[allow(dead_code)]
+            plc_exercise: u32,
+            statement_html: String,
+            exercise: Exercise,
+        }
+        let built: Built = serde_json::from_str(text).map_err(|e| ExerciseError {
+            message: format!("the built exercise cannot be read: {e}"),
+        })?;
+        Ok((built.exercise.checked()?, built.statement_html))
+    }
+
+    /// Reads an exercise file, TOML or the built form.
+    pub fn from_text(text: &str) -> Result<Exercise, ExerciseError> {
+        if super::built_form::is_built(text) {
+            Ok(Exercise::from_built(text)?.0)
+        } else {
+            Exercise::from_toml(text)
+        }
+    }
+
+    /// The exercise, if everything it says can be used.
+    fn checked(self) -> Result<Exercise, ExerciseError> {
+        let exercise = self;
         if !(1..=5).contains(&exercise.level) {
             return Err(ExerciseError { message: "level is 1 (beginner) to 5 (advanced)".into() });
+        }
+        if let Some(code) = exercise
+            .languages
+            .iter()
+            .find(|code| !LANGUAGE_CODES.iter().any(|c| c.eq_ignore_ascii_case(code.trim())))
+        {
+            return Err(ExerciseError {
+                message: format!("languages: “{code}” is not one of st, ld, petri, sfc"),
+            });
+        }
+        if let Some(name) = exercise.program.as_deref() {
+            if !crate::syntax::is_identifier(name) {
+                return Err(ExerciseError {
+                    message: format!("program: “{name}” is not a PROGRAM name"),
+                });
+            }
         }
         for s in &exercise.scenarios {
             s.check()?;
@@ -396,6 +482,16 @@ impl Exercise {
     /// place of any POU of the plant's name, named as the plant in the settings, and its
     /// scene. The student's own PROGRAM stays the one that runs.
     pub fn with_plant(&self, project: &crate::project::Project) -> crate::project::Project {
+        self.with_plant_by(project, &crate::build::Lowerings::ALL)
+    }
+
+    /// [`Exercise::with_plant`], building the project with the given passes for its
+    /// diagram POUs (to find the PROGRAM that runs).
+    pub fn with_plant_by(
+        &self,
+        project: &crate::project::Project,
+        lowerings: &crate::build::Lowerings,
+    ) -> crate::project::Project {
         let mut project = project.clone();
         let Some(plant) = &self.plant else { return project };
         let (file, _) = crate::syntax::parse(&project.source);
@@ -419,7 +515,7 @@ impl Exercise {
         }
         if project.settings.program.is_none() {
             // The PROGRAM that ran before the plant joined (the first one) keeps running.
-            let names = crate::build::build_project(&project).program_names();
+            let names = crate::build::build_project_by(&project, lowerings).program_names();
             project.settings.program = names.into_iter().next();
         }
         let source = project.source.trim_end();

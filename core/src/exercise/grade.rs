@@ -8,7 +8,7 @@ use std::collections::VecDeque;
 
 use serde::{Deserialize, Serialize};
 
-use crate::build::{build_project, Site};
+use crate::build::{build_project_by, Lowerings, Site};
 use crate::export::value_text;
 use crate::program::Slot;
 use crate::project::Project;
@@ -88,6 +88,13 @@ impl ScenarioReport {
 /// A submission's grade.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Report {
+    /// The PROGRAM graded (`Latch`), when the submission has one.
+    #[serde(default)]
+    pub program: Option<String>,
+    /// The language it is written in, as a report names it (`ST`, `ladder`, `Petri net`,
+    /// `SFC`, `IL`, `network`).
+    #[serde(default)]
+    pub language: Option<String>,
     /// Why nothing could run (the project does not build, has no PROGRAM …), located.
     pub error: Option<String>,
     /// Per scenario.
@@ -98,6 +105,40 @@ pub struct Report {
     pub total: u32,
 }
 
+impl Report {
+    /// What was graded, the report's first line: `Checked PROGRAM Latch (ladder)`.
+    pub fn checked_line(&self) -> Option<String> {
+        let program = self.program.as_deref()?;
+        Some(match self.language.as_deref() {
+            Some(language) => format!("Checked PROGRAM {program} ({language})"),
+            None => format!("Checked PROGRAM {program}"),
+        })
+    }
+
+    /// The score, with the scenarios' weights when they explain it: `Score 1 of 3
+    /// (scenario weights: 2 + 1)` when the weights differ, `Score 2 of 4 (4 scenarios, 1
+    /// point each)` when they do not; just `Score 3 of 3` with every scenario passed or
+    /// a single scenario.
+    pub fn score_line(&self) -> String {
+        let score = format!("Score {} of {}", self.score, self.total);
+        let weights: Vec<u32> = self.scenarios.iter().map(|s| s.weight).collect();
+        if self.score == self.total || weights.len() < 2 {
+            return score;
+        }
+        if weights.iter().all(|w| *w == weights[0]) {
+            let each = if weights[0] == 1 {
+                "1 point".to_string()
+            } else {
+                format!("{} points", weights[0])
+            };
+            format!("{score} ({} scenarios, {each} each)", weights.len())
+        } else {
+            let list: Vec<String> = weights.iter().map(u32::to_string).collect();
+            format!("{score} (scenario weights: {})", list.join(" + "))
+        }
+    }
+}
+
 /// Where a site is, for a report.
 fn place(site: &Site) -> String {
     match site {
@@ -106,15 +147,33 @@ fn place(site: &Site) -> String {
     }
 }
 
+/// The direction a variable of the running PROGRAM has on a PLC: VAR_INPUT and VAR_OUTPUT
+/// (RETAIN or not) by their section, and a local variable (VAR) by its location — at
+/// `%I…` an input, at `%Q…` an output, as OpenPLC Editor and Beremiz declare a program's
+/// I/O. Anything else is neither.
+fn direction_of(var: &crate::semantic::ir::Var) -> Option<Direction> {
+    use crate::syntax::AddressArea;
+    match var.section {
+        VarSection::Input => Some(Direction::Input),
+        VarSection::Output => Some(Direction::Output),
+        VarSection::Var => match var.location.as_ref().map(|l| l.area) {
+            Some(AddressArea::Input) => Some(Direction::Input),
+            Some(AddressArea::Output) => Some(Direction::Output),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
 /// Why the program's declarations do not match the exercise's interface: every interface
-/// variable must be declared by the running PROGRAM in its section (VAR_INPUT or
-/// VAR_OUTPUT) with its type.
+/// variable must be declared by the running PROGRAM with its direction (VAR_INPUT or a
+/// VAR at `%I…` for an input, VAR_OUTPUT or a VAR at `%Q…` for an output) and its type.
 fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<String> {
     let exe = sim.executable();
     exercise.interface.iter().find_map(|v| {
-        let (section, keyword) = match v.direction {
-            Direction::Input => (VarSection::Input, "VAR_INPUT"),
-            Direction::Output => (VarSection::Output, "VAR_OUTPUT"),
+        let (keyword, area) = match v.direction {
+            Direction::Input => ("VAR_INPUT", "%I"),
+            Direction::Output => ("VAR_OUTPUT", "%Q"),
         };
         let asked = format!("{keyword} {} : {}", v.name, v.ty);
         let Some(entry) =
@@ -122,10 +181,10 @@ fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<String> {
         else {
             return Some(format!("the program does not declare {} ({asked})", v.name));
         };
-        if entry.var.section != section {
+        if direction_of(&entry.var) != Some(v.direction) {
             return Some(format!(
-                "the program declares {} in another section than the exercise asks ({asked})",
-                v.name
+                "the program declares {} in another section than the exercise asks ({asked}, or VAR {} AT {area}… : {})",
+                v.name, v.name, v.ty
             ));
         }
         let ty = exe.type_table().display(entry.var.ty).to_string();
@@ -146,14 +205,39 @@ pub fn grade_with(
     project: &Project,
     options: GradeOptions,
 ) -> Result<Report, ExerciseError> {
+    grade_by(exercise, project, options, &Lowerings::ALL)
+}
+
+/// [`grade_with`], building the project with the given passes for its diagram POUs (the
+/// exercise worker of the web app loads those a submission needs: see [`Lowerings`]).
+pub fn grade_by(
+    exercise: &Exercise,
+    project: &Project,
+    options: GradeOptions,
+    lowerings: &Lowerings,
+) -> Result<Report, ExerciseError> {
     let total = exercise.scenarios.iter().map(|s| s.weight).sum();
+    // The PROGRAM the student chose (the project's settings), else the exercise's.
+    let graded = exercise.graded_program(project);
+    let mut project = project.clone();
+    if let Some(g) = &graded {
+        project.settings.program = Some(g.name.clone());
+    }
     // The exercise's plant, never the submission's copy; without one, the scenarios
     // alone drive the inputs (a plant the submission names is not run).
-    let project = &exercise.with_plant(project);
+    let project = &exercise.with_plant_by(&project, lowerings);
     let plant = exercise.plant.as_ref().map(|p| p.name.as_str());
-    let build = build_project(project);
-    let not_run =
-        |message: String| Report { error: Some(message), scenarios: Vec::new(), score: 0, total };
+    let build = build_project_by(project, lowerings);
+    let program = graded.as_ref().map(|g| g.name.clone());
+    let language = graded.as_ref().map(|g| g.language.label().to_string());
+    let not_run = |message: String| Report {
+        program: program.clone(),
+        language: language.clone(),
+        error: Some(message),
+        scenarios: Vec::new(),
+        score: 0,
+        total,
+    };
     if let Some(d) = build.diagnostics.iter().find(|d| d.is_error()) {
         return Ok(not_run(format!(
             "the program does not build: {}: {} [{}]",
@@ -182,7 +266,7 @@ pub fn grade_with(
         });
     }
     let score = scenarios.iter().filter(|s| s.passed()).map(|s| s.weight).sum();
-    Ok(Report { error: None, scenarios, score, total })
+    Ok(Report { program, language, error: None, scenarios, score, total })
 }
 
 use super::random::Event;

@@ -154,7 +154,7 @@ fn broken_missing_and_faulting_programs_are_reported_with_their_place() {
     let local = GOOD.replace("VAR_OUTPUT Motor : BOOL; END_VAR", "VAR Motor : BOOL; END_VAR");
     assert_eq!(
         grade(&e, &project(&local)).unwrap().error.as_deref(),
-        Some("the program declares Motor in another section than the exercise asks (VAR_OUTPUT Motor : BOOL)")
+        Some("the program declares Motor in another section than the exercise asks (VAR_OUTPUT Motor : BOOL, or VAR Motor AT %Q… : BOOL)")
     );
     let int = GOOD
         .replace("VAR_INPUT Start, Stop : BOOL;", "VAR_INPUT Start : BOOL; Stop : INT;")
@@ -177,6 +177,47 @@ END_PROGRAM
         "{}",
         f.actual
     );
+}
+
+/// On a PLC a variable at `%I…` is an input and one at `%Q…` an output: a PROGRAM that
+/// declares its I/O as located locals (as OpenPLC Editor and Beremiz write them) has the
+/// exercise's interface; a local in memory (`%M…`) or unlocated has not, and an input
+/// located at `%Q…` is not an input.
+#[test]
+fn located_locals_are_inputs_and_outputs_by_their_area() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let located = "PROGRAM program0
+VAR
+    Start AT %IX0.0 : BOOL;
+    Stop AT %IX0.1 : BOOL;
+    Motor AT %QX0.0 : BOOL;
+END_VAR
+Motor := (Start OR Motor) AND NOT Stop;
+END_PROGRAM
+";
+    let r = grade(&e, &project(located)).unwrap();
+    assert_eq!((r.error.as_deref(), r.score, r.total), (None, 3, 3), "{r:#?}");
+    // RETAIN outputs and a mix of sections are outputs and inputs too.
+    let mixed = "PROGRAM Main
+VAR_INPUT Start : BOOL; END_VAR
+VAR Stop AT %IX0.1 : BOOL; END_VAR
+VAR_OUTPUT RETAIN Motor : BOOL; END_VAR
+Motor := (Start OR Motor) AND NOT Stop;
+END_PROGRAM
+";
+    let r = grade(&e, &project(mixed)).unwrap();
+    assert_eq!((r.error.as_deref(), r.score), (None, 3), "{r:#?}");
+    let error = |text: &str| grade(&e, &project(text)).unwrap().error.unwrap_or_default();
+    assert_eq!(
+        error(&located.replace("%QX0.0", "%MX0.0")),
+        "the program declares Motor in another section than the exercise asks (VAR_OUTPUT Motor : BOOL, or VAR Motor AT %Q… : BOOL)"
+    );
+    assert_eq!(
+        error(&located.replace("%IX0.0", "%QX0.1")),
+        "the program declares Start in another section than the exercise asks (VAR_INPUT Start : BOOL, or VAR Start AT %I… : BOOL)"
+    );
+    assert!(error(&located.replace("Stop AT %IX0.1", "Stop"))
+        .contains("declares Stop in another section"));
 }
 
 #[test]
@@ -310,4 +351,162 @@ END_PROGRAM
     let bad = toml.replace(r#"{ at = "300ms", restart = "warm" }"#, r#"{ at = "300ms" }"#);
     let err = Exercise::from_toml(&bad).unwrap_err().message;
     assert!(err.contains("neither sets inputs"), "{err}");
+}
+
+fn with_languages(languages: &str) -> Exercise {
+    let text = LATCH.replace(
+        "languages = [\"st\", \"ld\"]",
+        &format!("languages = [{languages}]\nprogram = \"Latch\""),
+    );
+    Exercise::from_toml(&text).unwrap()
+}
+
+/// Every generated starter declares the interface, builds, names its PROGRAM in the
+/// settings, is graded as that PROGRAM in its language, and fails.
+#[test]
+fn a_starter_is_made_in_every_language_with_the_interface_declared() {
+    let e = with_languages(r#""ld", "st", "petri", "sfc""#);
+    let starters = e.starters(|f| Err(format!("no file {f}"))).unwrap();
+    let languages: Vec<Language> = starters.iter().map(|(l, _)| *l).collect();
+    assert_eq!(languages, [Language::Ld, Language::St, Language::Petri, Language::Sfc]);
+    let labels = ["ladder", "ST", "Petri net", "SFC"];
+    for ((language, p), label) in starters.iter().zip(labels) {
+        assert_eq!(p.settings.program.as_deref(), Some("Latch"), "{language:?}");
+        let build = crate::build::build_project(p);
+        assert!(!build.has_errors(), "{language:?}: {:?}", build.diagnostics);
+        assert_eq!(build.program_names(), ["Latch"], "{language:?}");
+        let r = grade(&e, p).unwrap();
+        assert_eq!(r.error, None, "{language:?}");
+        assert!(r.score < r.total, "{language:?}");
+        assert_eq!(r.checked_line().unwrap(), format!("Checked PROGRAM Latch ({label})"));
+    }
+    let ld = &starters[0].1.ladder[0];
+    assert_eq!(ld.rungs.len(), 1);
+    assert!(ld.declarations.starts_with(
+        "VAR_INPUT\n    Start : BOOL; (* start button (NO) *)\n    Stop : BOOL; (* stop button (NO here) *)\nEND_VAR\nVAR_OUTPUT\n    Motor : BOOL; (* motor contactor *)\nEND_VAR\n"
+    ), "{}", ld.declarations);
+    let net = &starters[2].1.petri[0];
+    // The net holds its initial place only (an empty net does not build).
+    assert_eq!((net.net.places.len(), net.net.places[0].tokens), (1, 1));
+    assert!(net.net.transitions.is_empty() && net.net.arcs.is_empty());
+    assert!(net.declarations.contains("Motor : BOOL; (* motor contactor *)"));
+    let sfc = &starters[3].1.source;
+    assert!(sfc.contains("INITIAL_STEP Idle :\nEND_STEP"), "{sfc}");
+    assert!(starters[1].1.source.starts_with("PROGRAM Latch\nVAR_INPUT\n"));
+}
+
+/// A starter the exercise gives is used for its language and names the PROGRAM the
+/// generated ones get; a starter that does not open is refused with its name.
+#[test]
+fn given_starters_name_the_program_of_the_generated_ones() {
+    let mut e = with_languages(r#""st", "ld""#);
+    e.program = None;
+    e.starter = Some("starter.st".into());
+    let starters = e
+        .starters(|f| {
+            assert_eq!(f, "starter.st");
+            Ok(project("PROGRAM Motor1\nVAR_INPUT Start, Stop : BOOL; END_VAR\nVAR_OUTPUT Motor : BOOL; END_VAR\nEND_PROGRAM\n"))
+        })
+        .unwrap();
+    assert_eq!(starters[0].1.settings.program.as_deref(), Some("Motor1"));
+    assert_eq!(starters[1].1.ladder[0].name, "Motor1");
+    e.starter_ld = Some("ld.plcproj.json".into());
+    let err =
+        e.starters(|f| if f == "starter.st" { Ok(project(GOOD)) } else { Err("broken".into()) });
+    assert_eq!(err.unwrap_err().message, "the starter ld.plcproj.json cannot be opened: broken");
+    assert_eq!(e.starter_files(), ["starter.st", "ld.plcproj.json"]);
+    let bad = LATCH.replace("languages = [\"st\", \"ld\"]", "languages = [\"st\", \"fbd\"]");
+    assert_eq!(
+        Exercise::from_toml(&bad).unwrap_err().message,
+        "languages: “fbd” is not one of st, ld, petri, sfc"
+    );
+}
+
+/// The grader grades the PROGRAM the project's settings choose (the student's), else the
+/// one the exercise names, else the first; the report names it and its language.
+#[test]
+fn the_grader_grades_the_program_the_student_chose() {
+    let e = with_languages(r#""st", "ld""#);
+    let two = format!(
+        "{}\n{}",
+        GOOD.replace("PROGRAM Main", "PROGRAM Other").replace("(Start OR Motor)", "Start"),
+        GOOD.replace("PROGRAM Main", "PROGRAM Latch")
+    );
+    // Nothing chosen: the exercise's `program = "Latch"`, though it comes second.
+    let mut p = project(&two);
+    let r = grade(&e, &p).unwrap();
+    assert_eq!((r.score, r.checked_line().unwrap().as_str()), (3, "Checked PROGRAM Latch (ST)"));
+    // The student chose Other.
+    p.settings.program = Some("Other".into());
+    let r = grade(&e, &p).unwrap();
+    assert_eq!((r.score, r.program.as_deref()), (1, Some("Other")));
+    // A ladder latch drawn in a POU of its own and chosen.
+    let mut p = e.starters(|_| Err(String::new())).unwrap()[1].1.clone();
+    p.add_ladder_pou("Drawn", crate::ladder::LadderPouKind::Program).unwrap();
+    p.ladder[1].declarations = p.ladder[0].declarations.clone();
+    p.ladder[1].rungs = serde_json::from_str(LATCH_RUNG).unwrap();
+    p.settings.program = Some("Drawn".into());
+    let r = grade(&e, &p).unwrap();
+    assert_eq!((r.score, r.total), (3, 3), "{r:?}");
+    assert_eq!(r.checked_line().unwrap(), "Checked PROGRAM Drawn (ladder)");
+    // A choice that names no PROGRAM falls back to the exercise's.
+    p.settings.program = Some("Gone".into());
+    assert_eq!(grade(&e, &p).unwrap().program.as_deref(), Some("Latch"));
+}
+
+/// `Start OR Motor` in parallel, then NC `Stop`, then the `Motor` coil.
+const LATCH_RUNG: &str = r#"[{ "comment": "", "cells": [
+  [ { "element": { "type": "Contact", "kind": "NormallyOpen", "operand": "Start" } },
+    { "element": { "type": "Contact", "kind": "NormallyClosed", "operand": "Stop" }, "link_down": true },
+    { "element": { "type": "Coil", "kind": "Normal", "operand": "Motor" } } ],
+  [ { "element": { "type": "Contact", "kind": "NormallyOpen", "operand": "Motor" } },
+    { "element": { "type": "Empty" } }, { "element": { "type": "Empty" } } ] ] }]"#;
+
+#[test]
+fn the_score_line_explains_the_weights_when_they_matter() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let r = grade(&e, &project(&GOOD.replace("(Start OR Motor)", "Start"))).unwrap();
+    assert_eq!(r.score_line(), "Score 1 of 3 (scenario weights: 2 + 1)");
+    assert_eq!(grade(&e, &project(GOOD)).unwrap().score_line(), "Score 3 of 3");
+    let mut even = e.clone();
+    even.scenarios[0].weight = 1;
+    even.scenarios.push(even.scenarios[1].clone());
+    let r = grade(&even, &project(&GOOD.replace("(Start OR Motor)", "Start"))).unwrap();
+    assert_eq!(r.score_line(), "Score 2 of 3 (3 scenarios, 1 point each)");
+    let mut one = e.clone();
+    one.scenarios.truncate(1);
+    let r = grade(&one, &project(&GOOD.replace("(Start OR Motor)", "Start"))).unwrap();
+    assert_eq!(r.score_line(), "Score 0 of 2");
+    let broken = grade(&e, &project(&GOOD.replace("NOT Stop", "NOT Stopp"))).unwrap();
+    assert_eq!(broken.checked_line().unwrap(), "Checked PROGRAM Main (ST)");
+    assert_eq!(broken.score_line(), "Score 0 of 3");
+}
+
+/// The built form (what the web app ships) reads as the TOML file does, with the statement
+/// already rendered, and is checked as a file is.
+#[test]
+fn the_built_form_reads_as_the_toml_file() {
+    let render = |m: &str| statement_html(m, None);
+    let built = built_form(LATCH, render).unwrap();
+    assert!(is_built(&built) && !is_built(LATCH), "{built}");
+    let (read, html) = Exercise::from_built(&built).unwrap();
+    let toml = Exercise::from_toml(LATCH).unwrap();
+    assert_eq!(read, Exercise { statement: String::new(), ..toml.clone() });
+    assert_eq!(ExerciseView::with_statement(&read, html), ExerciseView::of(&toml, None));
+    assert_eq!(Exercise::from_text(&built).unwrap(), read);
+    assert_eq!(Exercise::from_text(LATCH).unwrap(), toml);
+    // A link carries either form.
+    let link = ExerciseLink { exercise: built.clone(), starter: None, starters: Vec::new() };
+    let (back, exercise) = ExerciseLink::decode(&link.encode().unwrap()).unwrap();
+    assert_eq!((back, exercise), (link, read));
+
+    let bad = built_form(&LATCH.replace("level = 1", "level = 9"), render).unwrap();
+    assert_eq!(
+        Exercise::from_built(&bad).unwrap_err().message,
+        "level is 1 (beginner) to 5 (advanced)"
+    );
+    let damaged = format!("{BUILT_PREFIX}\"statement_html\":3}}");
+    assert!(Exercise::from_built(&damaged).unwrap_err().message.starts_with("the built exercise"));
+    assert!(built_form("id = 1979-05-27", render).unwrap_err().contains("date"));
+    assert!(built_form("id = ", render).is_err());
 }

@@ -1,11 +1,10 @@
 //! What a page shows of an exercise: its title, level, languages, the statement as HTML,
 //! the interface and the scenarios' names and weights — never the scenarios' steps and
-//! expectations, which the grader keeps — and the program a student starts from when the
-//! exercise names no starter file.
+//! expectations, which the grader keeps.
 
 use serde::{Deserialize, Serialize};
 
-use super::format::{Direction, Exercise, InterfaceVar};
+use super::format::{Exercise, InterfaceVar};
 use super::statement::statement_html;
 
 /// An exercise as the page shows it.
@@ -25,8 +24,12 @@ pub struct ExerciseView {
     pub interface: Vec<InterfaceVar>,
     /// Each scenario's name and weight, in order.
     pub scenarios: Vec<ScenarioView>,
-    /// The starter file the exercise names, if any.
-    pub starter: Option<String>,
+    /// The PROGRAM the exercise names as the one it grades, if it names one.
+    #[serde(default)]
+    pub program: Option<String>,
+    /// The name of the exercise's plant PROGRAM, if it has one (never the one graded).
+    #[serde(default)]
+    pub plant: Option<String>,
 }
 
 /// A scenario as the page lists it.
@@ -44,12 +47,17 @@ impl ExerciseView {
     /// The view of `exercise`; relative links in its statement are resolved against
     /// `base`, the exercise file's address.
     pub fn of(exercise: &Exercise, base: Option<&str>) -> ExerciseView {
+        ExerciseView::with_statement(exercise, statement_html(&exercise.statement, base))
+    }
+
+    /// The view of `exercise` with its statement already rendered (the built form).
+    pub fn with_statement(exercise: &Exercise, statement_html: String) -> ExerciseView {
         ExerciseView {
             id: exercise.id.clone(),
             title: exercise.title.clone(),
             level: exercise.level,
             languages: exercise.languages.clone(),
-            statement_html: statement_html(&exercise.statement, base),
+            statement_html,
             interface: exercise.interface.clone(),
             scenarios: exercise
                 .scenarios
@@ -60,38 +68,17 @@ impl ExerciseView {
                     random: s.random.is_some(),
                 })
                 .collect(),
-            starter: exercise.starter.clone(),
+            program: exercise.program.clone(),
+            plant: exercise.plant.as_ref().map(|p| p.name.clone()),
         }
     }
 }
 
 impl Exercise {
-    /// A program that declares the interface and does nothing else: what a student starts
-    /// from when the exercise names no starter.
+    /// A program that declares the interface and does nothing else: the Structured Text
+    /// starter when the exercise names none.
     pub fn blank_program(&self) -> String {
-        let mut text = String::from("PROGRAM Main\n");
-        for (direction, keyword) in
-            [(Direction::Input, "VAR_INPUT"), (Direction::Output, "VAR_OUTPUT")]
-        {
-            let vars: Vec<&InterfaceVar> =
-                self.interface.iter().filter(|v| v.direction == direction).collect();
-            if vars.is_empty() {
-                continue;
-            }
-            text.push_str(keyword);
-            text.push('\n');
-            for v in vars {
-                let meaning = v.meaning.replace("*)", "* )");
-                if meaning.is_empty() {
-                    text.push_str(&format!("    {} : {};\n", v.name, v.ty));
-                } else {
-                    text.push_str(&format!("    {} : {}; (* {meaning} *)\n", v.name, v.ty));
-                }
-            }
-            text.push_str("END_VAR\n");
-        }
-        text.push_str("\n(* your program *)\n\nEND_PROGRAM\n");
-        text
+        self.generated_starter(super::Language::St, &self.program_name(None)).source
     }
 }
 

@@ -1,6 +1,7 @@
 //! Values as text for the UI and files for download: the IEC literal of a value, the
 //! children of an aggregate (for an expandable variables table), a CSV snapshot of every
-//! variable, and a trace as CSV or as an IEEE 1364 VCD file (for GTKWave).
+//! variable, a trace as CSV or as an IEEE 1364 VCD file (for GTKWave), and ZIP archives
+//! (an exercise's SCORM package).
 //!
 //! Everything here is pure: it reads a [`Simulator`](crate::sim::Simulator) or a
 //! [`Trace`](crate::sim::Trace) and returns text, so it is tested natively.
@@ -10,10 +11,12 @@ mod csv;
 #[cfg(test)]
 mod tests;
 mod vcd;
+mod zip;
 
 pub use browse::{children, is_expandable, snapshot, Child, SnapshotRow, MAX_CHILDREN};
 pub use csv::{csv_field, trace_csv, variables_csv};
 pub use vcd::trace_vcd;
+pub use zip::{crc32, zip, ZipError};
 
 use std::fmt::Write;
 

@@ -10,7 +10,8 @@
 use crate::syntax::Cmp;
 use serde::{Deserialize, Serialize};
 
-/// Default grid limits (seed 002's PLCSim: 8 rows × 10 columns), configurable per project.
+/// Default grid limits (the PLCSim thesis's simulator of GE Fanuc PLCs: 8 rows × 10
+/// columns), configurable per project.
 pub const DEFAULT_ROWS: u32 = 8;
 /// Default number of columns of a rung.
 pub const DEFAULT_COLUMNS: u32 = 10;

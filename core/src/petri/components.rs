@@ -4,7 +4,7 @@
 //! induces a state machine: every transition touching S has exactly one input place and
 //! one output place in S, by arcs of weight 1. Its places then always hold together the
 //! tokens they start with; with exactly one, the marked place is the value of one INT step
-//! variable — a sequential process of the seed's CASE OF method.
+//! variable — a sequential process of Franczok's CASE OF method (PAR 2014).
 //!
 //! The processes come from the net's declared [`Process`](super::Process) list when there
 //! is one (each is checked to be such a component), else from a greedy cover: repeatedly

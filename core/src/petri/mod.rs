@@ -1,5 +1,6 @@
 //! Interpreted Petri nets: the model (part of the project file), the analysis of the
-//! underlying place/transition net, CASE OF code generation (seed 000) and PNML.
+//! underlying place/transition net, CASE OF code generation (after Franczok, PAR 2014) and
+//! PNML.
 //!
 //! A Petri net POU becomes an ST PROGRAM that goes the ST way (checker, compiler, VM), so a
 //! net runs on the one VM and its token game is read back from the step variables through

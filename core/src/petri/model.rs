@@ -5,7 +5,8 @@
 //! and a priority; arcs join a place and a transition. Elements are named by stable ids
 //! (`P1`, `T3`) so that the editor can rename them without breaking the arcs.
 //!
-//! A [`MacroPlace`] is a place that stands for a sub-net (seed 000's P30): it is a named
+//! A [`MacroPlace`] is a place that stands for a sub-net (P30 of the weighing process,
+//! `docs/weighing.md`): it is a named
 //! group of ordinary places, drawn as one box. The arcs, the analysis and the generated code
 //! all use the places inside it (the refined, flat net); the macro-place is marked whenever
 //! one of its places is marked, which is how the place map shows it. It has no CASE label of
@@ -190,13 +191,14 @@ pub struct GenerationOptions {
     pub sync: SyncStyle,
 }
 
-/// How forks and joins are coded (both as the seed allows; the firing rule is the same).
+/// How forks and joins are coded (both as Franczok's method allows; the firing rule is the
+/// same).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub enum SyncStyle {
     /// The deciding process reads and writes the other processes' step variables.
     #[default]
     StepVariables,
-    /// The seed's `Pn_Start` / `Pn_End` flags: a process raises `_End` while it waits at a
+    /// The paper's `Pn_Start` / `Pn_End` flags: a process raises `_End` while it waits at a
     /// shared transition, and the deciding process raises `_Start` to move it on.
     Flags,
 }

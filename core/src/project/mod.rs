@@ -8,12 +8,14 @@
 mod codec;
 mod history;
 mod pous;
+mod programs;
 mod scene;
 mod store;
 
 pub use codec::{decode_share, encode_share, pack, unpack, ShareError, SHARE_PREFIX};
 pub use history::{History, DEFAULT_HISTORY_LIMIT};
 pub use pous::PouError;
+pub use programs::{PouLanguage, ProgramPou};
 pub use scene::{Scene, Widget, WidgetKind};
 pub use store::{
     MemoryBackend, Opened, ProjectStore, ProjectSummary, StorageBackend, StoreError, STORE_LAYOUT,

@@ -452,8 +452,8 @@ impl<'a> Checker<'a> {
     }
 
     /// Where a value of enumeration `expected` is wanted and `id` names both a variable of
-    /// another type and a value of that enumeration (OpenPLC files have an input `HOA_Hand`
-    /// next to the value `HOA_HAND`, and names are case-insensitive): the value, as matiec
+    /// another type and a value of that enumeration (OpenPLC files have an input `Mode_Local`
+    /// next to the value `MODE_LOCAL`, and names are case-insensitive): the value, as matiec
     /// and CODESYS resolve it by the expected type, with warning W0030.
     fn enum_value_over_variable(
         &mut self,

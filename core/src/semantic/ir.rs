@@ -423,7 +423,7 @@ pub enum StmtKind {
         /// The ELSE body (empty when absent).
         else_body: Vec<Stmt>,
     },
-    /// FOR (see SEMANTICS.md: end and step evaluated once).
+    /// FOR (see docs/semantics.md: end and step evaluated once).
     For {
         /// The control variable.
         var: Place,

@@ -1,5 +1,5 @@
 //! The standard function blocks (IEC 61131-3 §2.5.2.3), written in ST and compiled with the
-//! user's program so they run on the one VM. Their behaviour follows SEMANTICS.md; timers
+//! user's program so they run on the one VM. Their behaviour follows docs/semantics.md; timers
 //! read the virtual clock through the system variable `SYS_CLOCK`.
 //!
 //! Documented surprises: `F_TRIG` called first with `CLK = FALSE` gives `Q = TRUE` (the

@@ -7,12 +7,16 @@
 //! The simulator never reads a wall clock: the caller decides how many scans to run and
 //! when, so runs are reproducible natively and in the browser.
 
+mod record;
 mod tasks;
 mod trace;
 
+pub(crate) use record::same_value;
+pub use record::{Readout, RecordError, Recording, ScanView, TracedScan};
 pub use trace::{Trace, TraceSample};
 
 use std::fmt;
+use std::sync::Arc;
 
 pub use crate::compile::CompileError;
 use crate::compile::{self, ConditionId, Executable, Slot};
@@ -20,7 +24,8 @@ use crate::diagnostics::{Diagnostic, Span};
 use crate::limits;
 use crate::semantic::{self, InitValue, PouId, Program, Type};
 use crate::syntax::VarSection;
-use crate::vm::{self, Fault, Machine, RuntimeError, SysState, Value};
+use crate::vm::trace::{Hook, NoHook};
+use crate::vm::{self, Cause, Fault, Machine, RuntimeError, SysState, Value};
 
 pub use crate::limits::DEFAULT_WATCHDOG;
 
@@ -118,9 +123,9 @@ impl fmt::Display for SimError {
 impl std::error::Error for SimError {}
 
 /// A variable held at (or forced to) a value.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 struct Pinned {
-    path: String,
+    path: Arc<str>,
     slot: Slot,
     value: Value,
 }
@@ -134,10 +139,15 @@ struct Breakpoint {
 }
 
 /// A simulated PLC running one PROGRAM.
+///
+/// With recording on ([`Simulator::set_recording`]) it keeps the recent history of the run,
+/// so any recorded scan can be shown again ([`Simulator::view_at`]), replayed with every
+/// write logged ([`Simulator::trace_scan`], behind `crate::why`) or made the present again
+/// ([`Simulator::rewind_to`]); `record.rs` says how.
 #[derive(Debug, Clone)]
 pub struct Simulator {
-    program: Program,
-    exe: Executable,
+    program: Arc<Program>,
+    exe: Arc<Executable>,
     machine: Machine,
     cycle_ns: i64,
     time_ns: i64,
@@ -154,11 +164,22 @@ pub struct Simulator {
     plant: Option<Plant>,
     /// The configuration's tasks, when the main program is a CONFIGURATION.
     schedule: Option<tasks::Schedule>,
+    /// The cells of the program's own image (the state of a scan); breakpoint and watch
+    /// conditions compiled later add scratch cells after them.
+    state_cells: usize,
+    /// The recent history, when recording is on.
+    recorder: Option<Box<record::Recorder>>,
 }
 
 /// Copies each `(from, to)` pair of linked variables (one elementary type): the cell
-/// itself, or through its value for a bit of a located variable.
-fn copy_links(mem: &mut crate::program::memory::Memory, exe: &Executable, links: &[(Slot, Slot)]) {
+/// itself, or through its value for a bit of a located variable. `hook` is told of each
+/// cell written.
+fn copy_links<H: Hook>(
+    mem: &mut crate::program::memory::Memory,
+    exe: &Executable,
+    links: &[(Slot, Slot)],
+    hook: &mut H,
+) {
     for (from, to) in links {
         let cells = (from.addr as usize, to.addr as usize);
         match (from.bit, to.bit, mem.cells.get(cells.0).copied()) {
@@ -166,6 +187,11 @@ fn copy_links(mem: &mut crate::program::memory::Memory, exe: &Executable, links:
             _ => {
                 let v = vm::read(mem, exe, from);
                 let _ = vm::write(mem, exe, to, &v);
+            }
+        }
+        if H::ON {
+            if let Some(&bits) = mem.cells.get(cells.1) {
+                hook.external(to.addr, bits, Cause::Link { from: from.addr });
             }
         }
     }
@@ -265,9 +291,10 @@ impl Simulator {
     }
 
     fn new_compiled(program: Program, exe: Executable, machine: Machine) -> Self {
+        let state_cells = exe.out.init.len();
         Simulator {
-            program,
-            exe,
+            program: Arc::new(program),
+            exe: Arc::new(exe),
             machine,
             cycle_ns: 10_000_000,
             time_ns: 0,
@@ -283,6 +310,8 @@ impl Simulator {
             watches: Vec::new(),
             plant: None,
             schedule: None,
+            state_cells,
+            recorder: None,
         }
     }
 
@@ -299,12 +328,12 @@ impl Simulator {
     }
 
     /// Runs the plant after the controller: its inputs copied in, then its outputs out.
-    fn run_plant(&mut self, sys: SysState) -> Result<(), RuntimeError> {
+    fn run_plant<H: Hook>(&mut self, sys: SysState, hook: &mut H) -> Result<(), RuntimeError> {
         let Some(plant) = &self.plant else { return Ok(()) };
-        copy_links(self.machine.memory_mut(), &self.exe, &plant.inputs);
+        copy_links(self.machine.memory_mut(), &self.exe, &plant.inputs, hook);
         let k = self.exe.instances.len().saturating_sub(1);
-        self.machine.run_instance(&self.exe, k, sys, self.watchdog)?;
-        copy_links(self.machine.memory_mut(), &self.exe, &plant.outputs);
+        self.machine.run_instance_hooked(&self.exe, k, sys, self.watchdog, hook)?;
+        copy_links(self.machine.memory_mut(), &self.exe, &plant.outputs, hook);
         Ok(())
     }
 
@@ -345,12 +374,17 @@ impl Simulator {
 
     /// Sets the cycle time (at least 1 ns).
     pub fn set_cycle_ns(&mut self, ns: i64) {
-        self.cycle_ns = ns.max(1);
+        self.control(record::Control::Cycle(ns.max(1)));
     }
 
     /// Sets the watchdog: the most instructions one scan may run (at least 1).
     pub fn set_watchdog(&mut self, budget: u64) {
-        self.watchdog = budget.max(1);
+        self.control(record::Control::Watchdog(budget.max(1)));
+    }
+
+    /// The watchdog budget.
+    pub fn watchdog(&self) -> u64 {
+        self.watchdog
     }
 
     /// Runs one scan.
@@ -361,28 +395,40 @@ impl Simulator {
     }
 
     fn scan_once(&mut self) -> ScanOutcome {
+        if let Err(info) = self.scan_hooked(&mut NoHook) {
+            return ScanOutcome::Fault(info);
+        }
+        if self.recorder.as_ref().is_some_and(|r| r.due(self.scans)) {
+            self.take_snapshot();
+        }
+        self.record_trace();
+        self.check_breakpoints()
+    }
+
+    /// The scan itself, with `hook` told of every write: held and forced values, the
+    /// program (and the tasks' instances, and the plant), forced values again.
+    fn scan_hooked<H: Hook>(&mut self, hook: &mut H) -> Result<(), FaultInfo> {
         if let SimState::Faulted(info) = &self.state {
-            return ScanOutcome::Fault(info.clone());
+            return Err(info.clone());
         }
         self.state = SimState::Ready;
-        self.apply_pinned();
+        self.apply_pinned(hook);
         let sys = SysState { first_scan: self.first_scan, time_ns: self.time_ns };
         if let Err(RuntimeError { fault, span, pou }) = self
             .machine
-            .run_scan(&self.exe, sys, self.watchdog)
-            .and_then(|()| self.run_tasks(sys))
-            .and_then(|()| self.run_plant(sys))
+            .run_scan_hooked(&self.exe, sys, self.watchdog, hook)
+            .and_then(|()| self.run_tasks(sys, hook))
+            .and_then(|()| self.run_plant(sys, hook))
         {
             let info = FaultInfo { fault, span, pou, scan: self.scans + 1, time_ns: self.time_ns };
             self.state = SimState::Faulted(info.clone());
-            return ScanOutcome::Fault(info);
+            return Err(info);
         }
-        self.apply_forced();
+        self.apply_forced(hook);
         self.scans += 1;
         self.first_scan = false;
         self.time_ns = self.time_ns.saturating_add(self.cycle_ns);
-        self.record_trace();
-        self.check_breakpoints()
+        Ok(())
     }
 
     /// Runs up to `n` scans, stopping early at a breakpoint or fault.
@@ -453,8 +499,9 @@ impl Simulator {
         }
         let expr = semantic::check_watch(&self.program, self.main_pou(), source)
             .map_err(SimError::BadCondition)?;
-        let condition =
-            self.exe.compile_condition(&self.program, &expr).map_err(SimError::Compile)?;
+        let condition = Arc::make_mut(&mut self.exe)
+            .compile_condition(&self.program, &expr)
+            .map_err(SimError::Compile)?;
         self.watches.push(Watch {
             source: source.to_string(),
             condition,
@@ -508,6 +555,10 @@ impl Simulator {
         }
         self.trace.clear();
         self.refresh_watches();
+        // A restart begins a new history.
+        if self.recorder.is_some() {
+            self.start_recording();
+        }
     }
 
     fn slot(&self, path: &str) -> Result<Slot, SimError> {
@@ -546,7 +597,9 @@ impl Simulator {
     /// Writes a value now (the program may overwrite it on the next scan).
     pub fn write(&mut self, path: &str, text: &str) -> Result<(), SimError> {
         let (slot, value) = self.parse_value(path, text)?;
-        self.write_slot(path, &slot, &value)
+        self.write_slot(path, &slot, &value)?;
+        self.record(record::Control::Write(Box::new((slot, value))));
+        Ok(())
     }
 
     fn write_slot(&mut self, path: &str, slot: &Slot, value: &Value) -> Result<(), SimError> {
@@ -558,8 +611,7 @@ impl Simulator {
     pub fn hold(&mut self, path: &str, text: &str) -> Result<(), SimError> {
         let (slot, value) = self.parse_value(path, text)?;
         self.write_slot(path, &slot, &value)?;
-        self.held.retain(|p| !p.path.eq_ignore_ascii_case(path));
-        self.held.push(Pinned { path: path.to_string(), slot, value });
+        self.control(record::Control::Hold(Box::new(Pinned { path: path.into(), slot, value })));
         Ok(())
     }
 
@@ -568,16 +620,40 @@ impl Simulator {
     pub fn hold_value(&mut self, path: &str, value: Value) -> Result<(), SimError> {
         let slot = self.slot(path)?;
         self.write_slot(path, &slot, &value)?;
-        match self.held.iter_mut().find(|p| p.path.eq_ignore_ascii_case(path)) {
-            Some(p) => p.value = value,
-            None => self.held.push(Pinned { path: path.to_string(), slot, value }),
+        let held = self.held.iter().position(|p| p.path.eq_ignore_ascii_case(path));
+        match held {
+            // The same value held again changes nothing (and is not recorded).
+            Some(k) if self.held[k].value == value => Ok(()),
+            Some(k) if self.held[k].slot == slot => {
+                // The common change, recorded small: a plant model holds a new value on
+                // every scan.
+                if self.recorder.is_some() {
+                    let control = match record::scalar_bits(&slot, &value, &self.exe) {
+                        Some(bits) => record::Control::Held { k: k as u32, bits },
+                        None => {
+                            let path = Arc::clone(&self.held[k].path);
+                            let pin = Pinned { path, slot, value: value.clone() };
+                            record::Control::HoldInPlace(Box::new(pin))
+                        }
+                    };
+                    self.record(control);
+                }
+                self.held[k].value = value;
+                Ok(())
+            }
+            _ => {
+                let pin = Pinned { path: path.into(), slot, value };
+                self.control(record::Control::HoldInPlace(Box::new(pin)));
+                Ok(())
+            }
         }
-        Ok(())
     }
 
     /// Stops holding an input (it keeps its last value).
     pub fn release(&mut self, path: &str) {
-        self.held.retain(|p| !p.path.eq_ignore_ascii_case(path));
+        if self.held.iter().any(|p| p.path.eq_ignore_ascii_case(path)) {
+            self.control(record::Control::Release(Box::new(path.into())));
+        }
     }
 
     /// Forces a variable: its value is written before and after every scan, whatever the
@@ -585,34 +661,51 @@ impl Simulator {
     pub fn force(&mut self, path: &str, text: &str) -> Result<(), SimError> {
         let (slot, value) = self.parse_value(path, text)?;
         self.write_slot(path, &slot, &value)?;
-        self.forced.retain(|p| !p.path.eq_ignore_ascii_case(path));
-        self.forced.push(Pinned { path: path.to_string(), slot, value });
+        self.control(record::Control::Force(Box::new(Pinned { path: path.into(), slot, value })));
         Ok(())
     }
 
     /// Removes forcing from a variable.
     pub fn unforce(&mut self, path: &str) {
-        self.forced.retain(|p| !p.path.eq_ignore_ascii_case(path));
+        if self.forced.iter().any(|p| p.path.eq_ignore_ascii_case(path)) {
+            self.control(record::Control::Unforce(Box::new(path.into())));
+        }
     }
 
     /// The forced variables and their values.
     pub fn forced(&self) -> impl Iterator<Item = (&str, &Value)> {
-        self.forced.iter().map(|p| (p.path.as_str(), &p.value))
+        self.forced.iter().map(|p| (&*p.path, &p.value))
     }
 
-    fn apply_pinned(&mut self) {
-        let pins: Vec<Pinned> = self.held.iter().chain(&self.forced).cloned().collect();
-        for p in pins {
+    /// The held inputs and their values.
+    pub fn held(&self) -> impl Iterator<Item = (&str, &Value)> {
+        self.held.iter().map(|p| (&*p.path, &p.value))
+    }
+
+    fn apply_pinned<H: Hook>(&mut self, hook: &mut H) {
+        let mem = self.machine.memory_mut();
+        for (p, cause) in self
+            .held
+            .iter()
+            .map(|p| (p, Cause::Held))
+            .chain(self.forced.iter().map(|p| (p, Cause::Forced)))
+        {
             // A pinned slot was checked when pinned; a failure here cannot happen for the
             // same executable, and is ignored rather than stopping the PLC.
-            let _ = vm::write(self.machine.memory_mut(), &self.exe, &p.slot, &p.value);
+            let _ = vm::write(mem, &self.exe, &p.slot, &p.value);
+            if H::ON {
+                record::log_slot(hook, mem, &self.exe, &p.slot, cause);
+            }
         }
     }
 
-    fn apply_forced(&mut self) {
-        for i in 0..self.forced.len() {
-            let p = self.forced[i].clone();
-            let _ = vm::write(self.machine.memory_mut(), &self.exe, &p.slot, &p.value);
+    fn apply_forced<H: Hook>(&mut self, hook: &mut H) {
+        let mem = self.machine.memory_mut();
+        for p in &self.forced {
+            let _ = vm::write(mem, &self.exe, &p.slot, &p.value);
+            if H::ON {
+                record::log_slot(hook, mem, &self.exe, &p.slot, Cause::Forced);
+            }
         }
     }
 
@@ -620,6 +713,13 @@ impl Simulator {
     /// without looking its name up each time.
     pub fn locate(&self, path: &str) -> Result<Slot, SimError> {
         self.slot(path)
+    }
+
+    /// The program's own memory now (without the scratch cells of breakpoint and watch
+    /// conditions), as [`ScanView::state_memory`] gives it for a recorded scan.
+    pub fn state_memory(&self) -> &[u64] {
+        let cells = &self.machine.memory().cells;
+        &cells[..self.state_cells.min(cells.len())]
     }
 
     /// Reads the variable at a slot from [`Simulator::locate`].
@@ -636,42 +736,23 @@ impl Simulator {
     /// Every variable of the main program (and the globals) as JSON, by declared name:
     /// the `vars` object of `plc run --json`.
     pub fn vars_json(&self) -> serde_json::Map<String, serde_json::Value> {
-        let mut out = serde_json::Map::new();
-        for entry in self.exe.main_vars() {
-            if out.contains_key(&entry.var.name) {
-                continue;
-            }
-            let value = vm::read(self.machine.memory(), &self.exe, &entry.slot);
-            out.insert(entry.var.name.clone(), vm::to_json(&value));
-        }
-        out
+        vars_json_of(self.machine.memory(), &self.exe)
     }
 
     /// The first statement of the branch each CASE took on its last execution (CASEs whose
     /// selector matched no label and that have no ELSE are left out). The editor marks
     /// these lines while the program runs.
     pub fn active_case_branches(&self) -> Vec<Span> {
-        let mut out: Vec<Span> = self
-            .machine
-            .case_hits()
-            .filter_map(|(case_pc, target)| {
-                let (case_span, _) = self.exe.statement_at(case_pc)?;
-                let (arm, _) = self.exe.statement_at(target)?;
-                let inside =
-                    arm.start >= case_span.start && arm.end <= case_span.end && arm != case_span;
-                inside.then_some(arm)
-            })
-            .collect();
-        crate::order::sort_by_key(&mut out, |s| s.start);
-        out.dedup();
-        out
+        case_branches(&self.machine, &self.exe)
     }
 
     /// Adds a breakpoint on an ST boolean condition over the program's variables.
     pub fn add_breakpoint(&mut self, condition: &str) -> Result<BreakpointId, SimError> {
         let expr = semantic::check_condition(&self.program, self.main_pou(), condition)
             .map_err(SimError::BadCondition)?;
-        let id = self.exe.compile_condition(&self.program, &expr).map_err(SimError::Compile)?;
+        let id = Arc::make_mut(&mut self.exe)
+            .compile_condition(&self.program, &expr)
+            .map_err(SimError::Compile)?;
         let bp = BreakpointId(self.next_breakpoint);
         self.next_breakpoint += 1;
         self.breakpoints.push(Breakpoint {
@@ -689,7 +770,9 @@ impl Simulator {
     pub fn add_probe(&mut self, condition: &str) -> Result<ProbeId, SimError> {
         let expr = semantic::check_condition(&self.program, self.main_pou(), condition)
             .map_err(SimError::BadCondition)?;
-        let id = self.exe.compile_condition(&self.program, &expr).map_err(SimError::Compile)?;
+        let id = Arc::make_mut(&mut self.exe)
+            .compile_condition(&self.program, &expr)
+            .map_err(SimError::Compile)?;
         Ok(ProbeId(id))
     }
 
@@ -778,6 +861,39 @@ impl Simulator {
             self.trace.push(TraceSample { scan: self.scans, time_ns: self.time_ns, values });
         }
     }
+}
+
+/// Every variable of the main program (and the globals) in `mem` as JSON, by name.
+fn vars_json_of(
+    mem: &crate::program::memory::Memory,
+    exe: &Executable,
+) -> serde_json::Map<String, serde_json::Value> {
+    let mut out = serde_json::Map::new();
+    for entry in exe.main_vars() {
+        if out.contains_key(&entry.var.name) {
+            continue;
+        }
+        let value = vm::read(mem, exe, &entry.slot);
+        out.insert(entry.var.name.clone(), vm::to_json(&value));
+    }
+    out
+}
+
+/// The first statement of the branch each CASE took on its last execution.
+fn case_branches(machine: &Machine, exe: &Executable) -> Vec<Span> {
+    let mut out: Vec<Span> = machine
+        .case_hits()
+        .filter_map(|(case_pc, target)| {
+            let (case_span, _) = exe.statement_at(case_pc)?;
+            let (arm, _) = exe.statement_at(target)?;
+            let inside =
+                arm.start >= case_span.start && arm.end <= case_span.end && arm != case_span;
+            inside.then_some(arm)
+        })
+        .collect();
+    crate::order::sort_by_key(&mut out, |s| s.start);
+    out.dedup();
+    out
 }
 
 #[cfg(test)]

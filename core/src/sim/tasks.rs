@@ -23,6 +23,7 @@ use super::{copy_links, Simulator};
 use crate::compile::{Executable, Slot};
 use crate::semantic::Program;
 use crate::syntax::VarSection;
+use crate::vm::trace::Hook;
 use crate::vm::{self, Machine, RuntimeError, SysState};
 
 /// The configuration's tasks and instances, ready to run.
@@ -158,33 +159,38 @@ impl Schedule {
 
 impl Simulator {
     /// Runs the configuration's due tasks, then its instances without a task.
-    pub(super) fn run_tasks(&mut self, sys: SysState) -> Result<(), RuntimeError> {
+    pub(super) fn run_tasks<H: Hook>(
+        &mut self,
+        sys: SysState,
+        hook: &mut H,
+    ) -> Result<(), RuntimeError> {
         let Some(mut schedule) = self.schedule.take() else { return Ok(()) };
-        copy_links(self.machine.memory_mut(), &self.exe, &schedule.inputs);
+        copy_links(self.machine.memory_mut(), &self.exe, &schedule.inputs, hook);
         let due = schedule.due(&self.machine, &self.exe, sys.time_ns);
         let result = due
             .iter()
             .map(|&k| Some(k))
             .chain(std::iter::once(None))
-            .try_for_each(|task| self.run_task_instances(&schedule, task, sys));
-        copy_links(self.machine.memory_mut(), &self.exe, &schedule.outputs);
+            .try_for_each(|task| self.run_task_instances(&schedule, task, sys, hook));
+        copy_links(self.machine.memory_mut(), &self.exe, &schedule.outputs, hook);
         self.schedule = Some(schedule);
         result
     }
 
-    fn run_task_instances(
+    fn run_task_instances<H: Hook>(
         &mut self,
         schedule: &Schedule,
         task: Option<usize>,
         sys: SysState,
+        hook: &mut H,
     ) -> Result<(), RuntimeError> {
         for (k, inst) in schedule.instances.iter().enumerate() {
             if inst.task != task {
                 continue;
             }
-            copy_links(self.machine.memory_mut(), &self.exe, &inst.inputs);
-            self.machine.run_instance(&self.exe, k, sys, self.watchdog)?;
-            copy_links(self.machine.memory_mut(), &self.exe, &inst.outputs);
+            copy_links(self.machine.memory_mut(), &self.exe, &inst.inputs, hook);
+            self.machine.run_instance_hooked(&self.exe, k, sys, self.watchdog, hook)?;
+            copy_links(self.machine.memory_mut(), &self.exe, &inst.outputs, hook);
         }
         Ok(())
     }

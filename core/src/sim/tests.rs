@@ -473,6 +473,126 @@ fn a_var_external_of_the_main_program_reads_and_writes_its_global() {
     assert_eq!(int(&s, "Total"), 11);
 }
 
+/// The program's own memory now (without the scratch cells of conditions).
+fn state(s: &Simulator) -> Vec<u64> {
+    s.machine.memory().cells[..s.state_cells].to_vec()
+}
+
+#[test]
+fn a_recorded_scan_is_rebuilt_cell_for_cell() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    let mut live = vec![state(&s)];
+    for k in 1..=100u64 {
+        if k % 7 == 0 {
+            s.hold("Start", if k % 2 == 0 { "TRUE" } else { "FALSE" }).unwrap();
+        }
+        if k % 11 == 0 {
+            s.write("n", "5").unwrap();
+        }
+        if k == 50 {
+            s.force("Stop", "TRUE").unwrap();
+        }
+        if k == 60 {
+            s.unforce("Stop");
+            s.set_cycle_ns(3_000_000);
+        }
+        s.scan();
+        live.push(state(&s));
+    }
+    assert_eq!(s.recorded_range(), Some((0, 100)));
+    for (k, cells) in live.iter().enumerate() {
+        let v = s.view_at(k as u64).unwrap();
+        assert_eq!(&v.memory().cells[..s.state_cells], &cells[..], "scan {k}");
+        assert_eq!(v.scan(), k as u64);
+    }
+    let v = s.view_at(61).unwrap();
+    assert_eq!(v.time_ns() - s.view_at(60).unwrap().time_ns(), 3_000_000);
+    assert!(matches!(
+        s.view_at(101),
+        Err(RecordError::OutOfRange { scan: 101, first: 0, last: 100 })
+    ));
+}
+
+#[test]
+fn rewinding_starts_a_new_future_from_a_recorded_scan() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    s.set_trace(&["Motor", "n"], 1000).unwrap();
+    s.run_scans(10);
+    s.hold("Start", "TRUE").unwrap();
+    s.run_scans(10);
+    s.hold("Start", "FALSE").unwrap();
+    s.run_scans(10);
+    let at_15 = s.view_at(15).unwrap();
+    s.rewind_to(15).unwrap();
+    assert_eq!(s.scan_count(), 15);
+    assert_eq!(state(&s), at_15.memory().cells[..s.state_cells].to_vec());
+    assert_eq!(s.recorded_range(), Some((0, 15)));
+    assert_eq!(s.trace().len(), 15);
+    assert!(boolean(&s, "Start"), "the input as it was held at scan 15");
+    // A new future: Stop pressed instead.
+    s.hold("Stop", "TRUE").unwrap();
+    s.run_scans(5);
+    assert!(!boolean(&s, "Motor"));
+    assert_eq!(s.recorded_range(), Some((0, 20)));
+    assert_eq!(s.view_at(15).unwrap().read("Motor").unwrap(), Value::Bool(true));
+    assert_eq!(s.view_at(17).unwrap().read("Motor").unwrap(), Value::Bool(false));
+}
+
+#[test]
+fn a_large_image_keeps_a_shorter_history_within_the_budget() {
+    // 200,000 cells: a snapshot is 1.6 MB, so the budget affords fewer than the hour.
+    let mut s = sim("PROGRAM Big
+VAR a : ARRAY[1..200000] OF LINT; i : DINT; END_VAR
+i := i MOD 200000 + 1;
+a[i] := a[i] + 1;
+END_PROGRAM");
+    s.set_recording(true).unwrap();
+    let r = s.recording().unwrap();
+    assert_eq!(r.interval, limits::RECORD_MAX_INTERVAL);
+    assert!(r.capacity < limits::RECORD_SCANS && r.capacity >= 10 * r.interval, "{r:?}");
+    s.run_scans(r.capacity + 3 * r.interval);
+    let r = s.recording().unwrap();
+    assert!(r.bytes <= limits::RECORD_BUDGET_BYTES + 2 * 1024 * 1024, "{r:?}");
+    assert!(r.first > 0, "the oldest history was dropped: {r:?}");
+    assert!(r.last - r.first >= r.capacity, "at least the capacity is kept: {r:?}");
+    // The oldest scan kept is still rebuilt exactly.
+    let first = s.view_at(r.first).unwrap();
+    assert_eq!(
+        first.read("i").unwrap(),
+        Value::Int(i128::from(r.first as i64 % 200_000), crate::semantic::Elem::DInt)
+    );
+    assert!(matches!(s.view_at(r.first - 1), Err(RecordError::OutOfRange { .. })));
+}
+
+#[test]
+fn a_small_image_keeps_the_hour() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    let r = s.recording().unwrap();
+    assert_eq!((r.interval, r.capacity), (limits::RECORD_MIN_INTERVAL, limits::RECORD_SCANS));
+}
+
+#[test]
+fn recording_off_drops_the_history() {
+    let mut s = sim(LATCH);
+    s.set_recording(true).unwrap();
+    s.run_scans(20);
+    s.set_recording(false).unwrap();
+    assert_eq!(s.recorded_range(), None);
+    assert!(matches!(s.view_at(3), Err(RecordError::NotRecording)));
+    s.set_recording(true).unwrap();
+    assert_eq!(s.recorded_range(), Some((20, 20)), "a new history starts at the present");
+    s.cold_restart();
+    assert_eq!(s.recorded_range(), Some((0, 0)), "a restart starts a new history");
+}
+
+#[test]
+fn a_change_from_outside_is_recorded_in_24_bytes() {
+    assert_eq!(std::mem::size_of::<(u64, record::Control)>(), 24);
+}
+
 #[test]
 fn reference_initial_values_come_back_on_a_restart_as_other_initial_values() {
     // Scan 1 adds 1 and 10 to `a` through r and k, then points both at `b`.

@@ -71,6 +71,13 @@ impl Trace {
         self.samples.push_back(sample);
     }
 
+    /// Drops the samples of scans after `scan` (a rewind).
+    pub(crate) fn truncate_after(&mut self, scan: u64) {
+        while self.samples.back().is_some_and(|s| s.scan > scan) {
+            self.samples.pop_back();
+        }
+    }
+
     pub(crate) fn clear(&mut self) {
         self.samples.clear();
     }

@@ -80,7 +80,7 @@ pub fn to_f64(elem: Elem, bits: u64) -> f64 {
     }
 }
 
-/// Rounds half to even, the rule of `REAL_TO_INT` (SEMANTICS.md).
+/// Rounds half to even, the rule of `REAL_TO_INT` (docs/semantics.md).
 pub fn round_half_even(f: f64) -> f64 {
     f.round_ties_even()
 }

@@ -11,6 +11,7 @@
 //! instructions of one pass of the loop on its straight path), so straight code costs
 //! nothing here and an endless loop still exhausts any budget.
 
+use super::trace::Hook;
 use crate::program::op::{outer_loop_ops, Branch, DimInfo, ElemSite, Op, R3};
 use crate::semantic::types::Elem;
 use crate::values::arith;
@@ -46,13 +47,17 @@ pub(super) enum Exit {
 /// bounds-checked: the caller guarantees that `*pc` is inside a region [`crate::program::verify::verify`] accepted,
 /// for a frame at `base` that lies inside `cells` (computed addresses — pointers, elements
 /// — are still checked, they depend on data).
+///
+/// `hook` sees every instruction before and after it runs (the traced scans of "why");
+/// with [`super::trace::NoHook`] those calls are compiled out.
 #[inline(never)]
-pub(super) fn run<const TRUSTED: bool>(
+pub(super) fn run<const TRUSTED: bool, H: Hook>(
     t: Tables<'_>,
     cells: &mut [u64],
     base: u32,
     pc: &mut usize,
     fuel: &mut u64,
+    hook: &mut H,
 ) -> Exit {
     let Tables { code, sites, dims } = t;
     // The program counter and the fuel live in locals (registers) while the loop runs and
@@ -156,6 +161,9 @@ pub(super) fn run<const TRUSTED: bool>(
             op
         };
         p += 1;
+        if H::ON {
+            hook.before(op, p - 1, base, cells);
+        }
         match *op {
             Op::Const { dst, bits } => w!(dst, bits),
             Op::Move { dst, a } => w!(dst, r!(a)),
@@ -264,6 +272,9 @@ pub(super) fn run<const TRUSTED: bool>(
                 p -= 1;
                 break Exit::Slow;
             }
+        }
+        if H::ON {
+            hook.after(cells);
         }
     };
     *pc = p;

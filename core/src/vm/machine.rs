@@ -13,6 +13,7 @@
 use super::builtins;
 use super::fast;
 use super::strings::Scratch;
+use super::trace::{Hook, NoHook};
 use crate::diagnostics::Span;
 use crate::limits::{WATCHDOG_BYTES_PER_UNIT, WATCHDOG_CELLS_PER_UNIT};
 use crate::program::memory::{copy_cells, copy_str, str_header, Memory};
@@ -91,6 +92,21 @@ impl Machine {
         self.case_hits.iter().filter(|h| h.0 != u32::MAX).map(|&(c, t)| (c as usize, t as usize))
     }
 
+    /// Per CASE table: (instruction of the CASE, branch target) of its last execution,
+    /// `u32::MAX` when it has not run: what a recording keeps of the machine besides memory.
+    pub(crate) fn case_state(&self) -> &[(u32, u32)] {
+        &self.case_hits
+    }
+
+    /// Puts back a state kept by a recording: the first cells of memory and the CASE
+    /// branches taken.
+    pub(crate) fn restore(&mut self, cells: &[u64], case_hits: &[(u32, u32)]) {
+        let n = cells.len().min(self.mem.cells.len());
+        self.mem.cells[..n].copy_from_slice(&cells[..n]);
+        let k = case_hits.len().min(self.case_hits.len());
+        self.case_hits[..k].copy_from_slice(&case_hits[..k]);
+    }
+
     /// The memory.
     pub fn memory(&self) -> &Memory {
         &self.mem
@@ -127,10 +143,21 @@ impl Machine {
         sys: SysState,
         budget: u64,
     ) -> Result<(), RuntimeError> {
+        self.run_scan_hooked(exe, sys, budget, &mut NoHook)
+    }
+
+    /// [`Machine::run_scan`] with `hook` seeing every instruction.
+    pub(crate) fn run_scan_hooked<H: Hook>(
+        &mut self,
+        exe: &Executable,
+        sys: SysState,
+        budget: u64,
+        hook: &mut H,
+    ) -> Result<(), RuntimeError> {
         let main = exe.pous.get(exe.main as usize);
         let entry = main.map_or(u32::MAX, |p| p.entry);
         let trusted = main.is_some_and(|p| p.trusted);
-        self.run(exe, (entry, trusted), exe.main_base, sys, budget).map(|_| ())
+        self.run(exe, (entry, trusted), exe.main_base, sys, budget, hook).map(|_| ())
     }
 
     /// Runs the body of further PROGRAM instance `k` of the executable (a plant, after the
@@ -142,11 +169,23 @@ impl Machine {
         sys: SysState,
         budget: u64,
     ) -> Result<(), RuntimeError> {
+        self.run_instance_hooked(exe, k, sys, budget, &mut NoHook)
+    }
+
+    /// [`Machine::run_instance`] with `hook` seeing every instruction.
+    pub(crate) fn run_instance_hooked<H: Hook>(
+        &mut self,
+        exe: &Executable,
+        k: usize,
+        sys: SysState,
+        budget: u64,
+        hook: &mut H,
+    ) -> Result<(), RuntimeError> {
         let Some(&(pou, base)) = exe.instances.get(k) else { return Ok(()) };
         let code = exe.pous.get(pou as usize);
         let entry = code.map_or(u32::MAX, |p| p.entry);
         let trusted = code.is_some_and(|p| p.trusted);
-        self.run(exe, (entry, trusted), base, sys, budget).map(|_| ())
+        self.run(exe, (entry, trusted), base, sys, budget, hook).map(|_| ())
     }
 
     /// Evaluates a breakpoint condition (in the main program's scope) with at most
@@ -172,16 +211,17 @@ impl Machine {
     ) -> Result<u64, RuntimeError> {
         let entry = exe.conditions.get(id.0 as usize).copied().unwrap_or(u32::MAX);
         let trusted = exe.condition_trusted.get(id.0 as usize).copied().unwrap_or(false);
-        self.run(exe, (entry, trusted), exe.main_base, sys, budget)
+        self.run(exe, (entry, trusted), exe.main_base, sys, budget, &mut NoHook)
     }
 
-    fn run(
+    fn run<H: Hook>(
         &mut self,
         exe: &Executable,
         (entry, trusted): (u32, bool),
         base: u32,
         sys: SysState,
         budget: u64,
+        hook: &mut H,
     ) -> Result<u64, RuntimeError> {
         // Conditions compiled after this machine was made may have grown the image.
         if self.mem.cells.len() < exe.out.init.len() {
@@ -190,7 +230,7 @@ impl Machine {
         }
         self.stack.clear();
         let mut pc = entry as usize;
-        match self.exec(exe, &mut pc, (base, trusted), sys, budget) {
+        match self.exec(exe, &mut pc, (base, trusted), sys, budget, hook) {
             Ok(v) => Ok(v),
             Err(fault) => Err(self.locate_fault(exe, fault, pc)),
         }
@@ -212,13 +252,14 @@ impl Machine {
         RuntimeError { fault, span, pou }
     }
 
-    fn exec(
+    fn exec<H: Hook>(
         &mut self,
         exe: &Executable,
         pc: &mut usize,
         (mut base, mut trusted): (u32, bool),
         sys: SysState,
         budget: u64,
+        hook: &mut H,
     ) -> Result<u64, Fault> {
         let code = &exe.out.code[..];
         let cells: &mut [u64] = &mut self.mem.cells;
@@ -239,9 +280,9 @@ impl Machine {
         let tables = fast::Tables { code, sites: &exe.out.sites, dims: &exe.out.dims };
         loop {
             let exit = if trusted {
-                fast::run::<true>(tables, cells, base, pc, &mut fuel)
+                fast::run::<true, H>(tables, cells, base, pc, &mut fuel, hook)
             } else {
-                fast::run::<false>(tables, cells, base, pc, &mut fuel)
+                fast::run::<false, H>(tables, cells, base, pc, &mut fuel, hook)
             };
             if exit == fast::Exit::Fault {
                 let op = code.get(*pc).ok_or(BAD)?;
@@ -254,6 +295,9 @@ impl Machine {
                 return Err(Fault::Watchdog { budget });
             }
             fuel -= 1;
+            if H::ON {
+                hook.before(op, *pc - 1, base, cells);
+            }
             match *op {
                 Op::Bin { op, elem, dst, a, b } => w!(dst, arith::binary(op, elem, r!(a), r!(b))?),
                 Op::Cmp { op, elem, dst, a, b } => {
@@ -391,6 +435,9 @@ impl Machine {
                 }
                 // The inner loop's instructions never get here.
                 _ => return Err(Fault::Internal("instruction left by the inner loop")),
+            }
+            if H::ON {
+                hook.after(cells);
             }
         }
     }

@@ -21,6 +21,7 @@ mod strings;
 #[cfg(test)]
 mod tests;
 mod text;
+pub(crate) mod trace;
 mod value;
 
 pub use crate::program::Memory;
@@ -31,4 +32,5 @@ pub use text::{
     civil_from_days, days_from_civil, format_date, format_dt, format_real, format_time, format_tod,
     parse_text, parse_time,
 };
+pub use trace::{Cause, TraceEvent};
 pub use value::{read, write, write_init, Value, WriteError};

@@ -1,7 +1,7 @@
 //! The string functions: LEN, LEFT, RIGHT, MID, CONCAT, INSERT, DELETE, REPLACE, FIND.
 //! Positions are 1-based and count characters (bytes for STRING, 2-byte units for
 //! WSTRING). A length or position outside the string is `Fault::StringPosition`
-//! (SEMANTICS.md: reading past the end is a runtime fault). Work happens in the machine's
+//! (docs/semantics.md: reading past the end is a runtime fault). Work happens in the machine's
 //! scratch buffers, so no allocation once they have grown.
 
 use crate::program::memory::{read_str_into, write_str};

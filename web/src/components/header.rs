@@ -52,7 +52,12 @@ async fn import_file(state: AppState, file: web_sys::File) {
 }
 
 /// Copies the share link to the clipboard (when allowed) and shows it.
-async fn share(state: AppState, link: String) {
+async fn share(state: AppState, shown: RwSignal<Option<String>>) {
+    let link = match state.share_link().await {
+        Ok(link) => link,
+        Err(e) => return state.error(format!("Could not make the share link: {e}")),
+    };
+    shown.set(Some(link.clone()));
     if copy_to_clipboard(&link).await {
         state.info(format!("Share link copied to the clipboard: {link}"));
     } else {
@@ -140,11 +145,7 @@ pub fn Header() -> impl IntoView {
             leptos::task::spawn_local(import_file(state, file));
         }
     };
-    let on_share = move |_| {
-        let link = state.share_link();
-        share_link.set(Some(link.clone()));
-        leptos::task::spawn_local(share(state, link));
-    };
+    let on_share = move |_| leptos::task::spawn_local(share(state, share_link));
     let on_select = move |ev: ev::Event| {
         let id = event_target_value(&ev);
         if !id.is_empty() && Some(&id) != state.project_id.get_untracked().as_ref() {
@@ -236,7 +237,7 @@ pub fn Header() -> impl IntoView {
                 <button on:click=move |_| { if let Some(i) = file_input.get_untracked() { i.click(); } }
                     title="Open a project file, PLCopen XML, PNML or ST file as a new project">"Import"</button>
                 <input type="file" class="visually-hidden" tabindex="-1" node_ref=file_input
-                    accept=".json,.plcproj.json,.xml,.pnml,.st,application/json,text/xml" aria-label="Import project file"
+                    accept=".json,.plcproj.json,.plcsub,.xml,.pnml,.st,application/json,text/xml" aria-label="Import project file"
                     on:change=on_file/>
                 <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
             </nav>

@@ -8,9 +8,8 @@ use leptos::prelude::*;
 use plc_core::ladder::LadderPouKind;
 
 use crate::components::editor::Editor;
-use crate::components::ladder::LadderView;
-use crate::components::petri::PetriView;
 use crate::components::problems::Problems;
+use crate::lazy::{self, lazy_view};
 use crate::state::{AppState, PouView};
 
 /// One entry of the navigator.
@@ -130,7 +129,14 @@ fn NewPou(petri: bool) -> impl IntoView {
     let name = RwSignal::new(String::new());
     let kind = RwSignal::new(LadderPouKind::Program);
     let problem = RwSignal::new(None::<String>);
-    let create = move || {
+    // The editor and the pass that builds the new POU come while the user names it; Create
+    // waits for them, so the new POU is built (and its PROGRAM runs) before it is shown.
+    let preload = move || {
+        leptos::task::spawn_local(async move {
+            let _ = crate::lazy::preload_editor(petri).await;
+        });
+    };
+    let create_now = move || {
         let text = name.get_untracked().trim().to_string();
         let mut project = state.project.get_untracked();
         let program = petri || kind.get_untracked() == LadderPouKind::Program;
@@ -158,8 +164,20 @@ fn NewPou(petri: bool) -> impl IntoView {
             Err(e) => problem.set(Some(e.to_string())),
         }
     };
+    let create = move || {
+        leptos::task::spawn_local(async move {
+            let _ = crate::lazy::preload_editor(petri).await;
+            create_now();
+        });
+    };
     view! {
-        <button class="pou-tab pou-new" on:click=move |_| { open.update(|o| *o = !*o); problem.set(None); }
+        <button class="pou-tab pou-new" on:click=move |_| {
+                open.update(|o| *o = !*o);
+                problem.set(None);
+                if open.get_untracked() {
+                    preload();
+                }
+            }
             aria-expanded=move || if open.get() { "true" } else { "false" }>{title}</button>
         {move || open.get().then(|| view! {
             <div class="pou-dialog" role="dialog" aria-label=title>
@@ -204,10 +222,17 @@ pub fn PouPane() -> impl IntoView {
         </div>
         {move || match view.get() {
             PouView::St => ().into_any(),
-            PouView::Ladder(name) => view! { <LadderView name=name/> }.into_any(),
-            PouView::Petri(name) => view! { <PetriView name=name/> }.into_any(),
-            PouView::Sfc(name) => view! { <crate::components::sfc::SfcView name=name/> }.into_any(),
-            PouView::Network(name) => view! { <crate::components::network::NetworkView name=name/> }.into_any(),
+            // Each view comes from its own chunk, fetched the first time it is shown.
+            PouView::Ladder(name) => {
+                lazy_view("the ladder editor", move || lazy::ladder_view(name.clone()))
+            }
+            PouView::Petri(name) => {
+                lazy_view("the Petri net editor", move || lazy::petri_view(name.clone()))
+            }
+            PouView::Sfc(name) => lazy_view("the SFC chart", move || lazy::sfc_view(name.clone())),
+            PouView::Network(name) => {
+                lazy_view("the network view", move || lazy::network_view(name.clone()))
+            }
         }}
         <Problems/>
     }

@@ -5,7 +5,7 @@ use std::collections::HashSet;
 
 use leptos::prelude::*;
 use plc_core::build::is_hidden_variable;
-use plc_core::export::{children, is_expandable, snapshot, value_text, variables_csv};
+use plc_core::export::{children, is_expandable, value_text};
 use plc_core::program::Executable;
 use plc_core::semantic::Type;
 use plc_core::syntax::VarSection;
@@ -109,14 +109,23 @@ pub fn Variables() -> impl IntoView {
         state.with_sim(|s| rows(s.executable(), &open)).unwrap_or_default()
     });
     let export = move |_| {
-        let Some(csv) = state.sim.with_value(|s| s.as_ref().map(|s| variables_csv(&snapshot(s))))
-        else {
-            state.error("No program to export: fix the errors first.");
-            return;
-        };
-        if let Err(e) = download("variables.csv", "text/csv", &csv) {
-            state.error(e);
-        }
+        // The writer is a chunk of the app, fetched on the first export.
+        leptos::task::spawn_local(async move {
+            let csv = match crate::lazy::variables_file(state).await {
+                Ok(Some(csv)) => csv,
+                Ok(None) => {
+                    state.error("No program to export: fix the errors first.");
+                    return;
+                }
+                Err(e) => {
+                    state.error(format!("Could not export: {e}"));
+                    return;
+                }
+            };
+            if let Err(e) = download("variables.csv", "text/csv", &csv) {
+                state.error(e);
+            }
+        });
     };
     provide_context(open);
     view! {

@@ -7,6 +7,9 @@ use leptos::prelude::*;
 use super::{catalogue, language_name, Exercises, Screen};
 use crate::state::AppState;
 
+/// The line that tells a student what an exercise is.
+const INTRO: &str = "Pick an exercise: it opens beside the editor with its task. Choose the language you start in, write your program, and press Check: the report shows what works and where to look next. Level 1 is the place to begin.";
+
 /// A level's name for the filter.
 fn level_name(level: u8) -> String {
     match level {
@@ -65,6 +68,7 @@ pub fn Catalogue() -> impl IntoView {
                 <span class="catalogue-count" aria-live="polite">{count}</span>
                 <button on:click=move |_| ex.screen.set(Screen::Workspace)>"Back to the project"</button>
             </div>
+            <p class="catalogue-intro">{INTRO}</p>
             <ul class="catalogue-list" aria-label="Exercise list">
                 {move || {
                     let passed = ex.passed.get();
@@ -83,11 +87,6 @@ pub fn Catalogue() -> impl IntoView {
                     }).collect_view()
                 }}
             </ul>
-            <p class="catalogue-note">
-                "Instructors: any exercise file opens with "<code>"?exercise=URL"</code>" (from a host that allows it), and "
-                <code>"plc exercise link FILE"</code>" or an exercise's "<em>"Share exercise"</em>" makes a link that carries the whole exercise. "
-                "See docs/exercises.md for the format and "<code>"plc grade"</code>" for grading a class."
-            </p>
         </main>
     }
 }

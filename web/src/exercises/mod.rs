@@ -1,24 +1,27 @@
 //! Exercises in the page: the catalogue of shipped exercises, opening one (shipped, from an
 //! address `?exercise=URL`, or from a `#x=…` link) with the attempt the student saved or
 //! the starter, checking an attempt, and the report. The exercise worker
-//! (`src/bin/plc-exercise.rs`) reads the files and grades; the page keeps what it shows.
+//! (`src/workers/exercise.rs`) reads the files and grades; the page keeps what it shows.
 
 mod catalogue;
+mod handin;
 mod panel;
 pub mod protocol;
 mod report;
+pub(crate) mod scorm;
 mod store;
 
 use std::collections::BTreeSet;
 
 use leptos::prelude::*;
-use plc_core::exercise::{next_to, ExerciseLink, LinkedFile, Report};
+use plc_core::exercise::{graded_program, next_to, ExerciseLink, Language, LinkedFile, Report};
 use plc_core::project::Project;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 
 use crate::state::{clear_fragment, AppState};
 pub use catalogue::Catalogue;
+use handin::HandInActions;
 pub use panel::ExercisePanel;
 use protocol::{Opened, Reply, Request};
 
@@ -26,8 +29,8 @@ mod list {
     include!(concat!(env!("OUT_DIR"), "/exercises.rs"));
 }
 
-/// The worker's loader script, next to `index.html`.
-const WORKER_SCRIPT: &str = "./plc-exercise_loader.js";
+/// The exercise worker's name (`src/workers/mod.rs`).
+const WORKER: &str = "exercise";
 
 /// What the page's main area shows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -116,7 +119,16 @@ impl Exercises {
                 ex.open_with(state, Request::Link(fragment), None).await;
             });
         } else if let Some(url) = query_param(&search, "exercise") {
-            leptos::task::spawn_local(async move { ex.open_url(state, &url).await });
+            // Launched by an LMS (a SCORM package): report to it (the SCORM runtime is a
+            // chunk of its own, fetched only then).
+            let scorm = query_param(&search, "scorm").as_deref() == Some("1");
+            leptos::task::spawn_local(async move {
+                let lms = scorm && crate::lazy::scorm_launch(ex, state).await.unwrap_or(false);
+                ex.open_url(state, &url).await;
+                if lms {
+                    let _ = crate::lazy::scorm_resume(ex, state).await;
+                }
+            });
         }
         // The open project decides which exercise the panel shows.
         Effect::new(move |_| {
@@ -155,7 +167,7 @@ impl Exercises {
                 return;
             }
         };
-        let link = ExerciseLink { exercise: text, starter: None };
+        let link = ExerciseLink { exercise: text, starter: None, starters: Vec::new() };
         self.open_with(state, Request::File { link, base: Some(url.to_string()) }, Some(url)).await;
     }
 
@@ -170,22 +182,22 @@ impl Exercises {
             }
             Ok(_) => return,
         };
-        if let (None, Some(name), Some(base)) = (&opened.starter, opened.view.starter.clone(), base)
-        {
-            let url = next_to(base, &name);
-            let text = match fetch_text(&url).await {
-                Ok(t) => t,
-                Err(e) => {
-                    state.error(format!(
-                        "Could not load the exercise's starter {url}: {e}. Nothing was changed."
-                    ));
-                    return;
+        if let (false, Some(base)) = (opened.missing.is_empty(), base) {
+            let mut files = Vec::new();
+            for name in opened.missing.clone() {
+                let url = next_to(base, &name);
+                match fetch_text(&url).await {
+                    Ok(text) => files.push(LinkedFile { name, text }),
+                    Err(e) => {
+                        state.error(format!(
+                            "Could not load the exercise's starter {url}: {e}. Nothing was changed."
+                        ));
+                        return;
+                    }
                 }
-            };
-            let link = ExerciseLink {
-                exercise: opened.link.exercise.clone(),
-                starter: Some(LinkedFile { name, text }),
-            };
+            }
+            let mut link = opened.link.clone();
+            link.starters.extend(files);
             opened = match ask(&Request::File { link, base: Some(base.to_string()) }).await {
                 Ok(Reply::Opened(o)) => *o,
                 Ok(Reply::Error(e)) | Err(e) => {
@@ -226,7 +238,7 @@ impl Exercises {
                 state.info(format!("Exercise “{title}”: your saved attempt is open."));
             }
             None => {
-                let Some(project) = starter_project(&opened) else {
+                let Some(project) = starter_project(&opened, None) else {
                     state.error("The exercise's starter cannot be opened.");
                     return;
                 };
@@ -275,6 +287,7 @@ impl Exercises {
                     if report.error.is_none() && report.score == report.total {
                         self.passed.set(store::mark_passed(&open.opened.view.id));
                     }
+                    scorm::report(state, &open.opened.view.id, &report);
                     self.report.set(Some(report));
                 }
                 Ok(Reply::Error(e)) | Err(e) => state.error(format!("Could not check: {e}")),
@@ -283,19 +296,19 @@ impl Exercises {
         });
     }
 
-    /// Replaces the attempt by the starter (after asking).
+    /// Replaces the attempt by the starter in the language it is written in (after
+    /// asking).
     pub fn reset_to_starter(self, state: AppState) {
         let Some(open) = self.open.get_untracked() else { return };
         let question = format!(
             "Discard your work on “{}” and start again from the starter? This cannot be undone.",
             open.opened.view.title
         );
-        let ok =
-            web_sys::window().and_then(|w| w.confirm_with_message(&question).ok()).unwrap_or(false);
-        if !ok {
+        if !confirm(&question) {
             return;
         }
-        match starter_project(&open.opened) {
+        let language = self.attempt_language(state);
+        match starter_project(&open.opened, language.as_deref()) {
             Some(project) => {
                 state.replace_contents(project);
                 self.report.set(None);
@@ -303,6 +316,59 @@ impl Exercises {
             }
             None => state.error("The exercise's starter cannot be opened."),
         }
+    }
+
+    /// The language the attempt is written in: that of the PROGRAM it checks, when the
+    /// exercise offers a starter in it.
+    pub fn attempt_language(self, state: AppState) -> Option<String> {
+        self.open.with(|open| {
+            let opened = &open.as_ref()?.opened;
+            let (preferred, plant) = (opened.view.program.as_deref(), opened.view.plant.as_deref());
+            let program = state.project.with(|p| graded_program(p, preferred, plant))?;
+            let code = Language::of_program(program.language)?.code();
+            opened.starters.iter().any(|s| s.language == code).then(|| code.to_string())
+        })
+    }
+
+    /// Starts the attempt again in another language (`Start in`): its starter replaces
+    /// the attempt, at once when the attempt is still a starter, else after asking. False
+    /// when the student kept their work.
+    pub fn start_in(self, state: AppState, code: &str) -> bool {
+        let Some(open) = self.open.get_untracked() else { return false };
+        let Some(project) = starter_project(&open.opened, Some(code)) else {
+            state.error("The exercise's starter cannot be opened.");
+            return false;
+        };
+        let name =
+            Language::from_code(code).map_or_else(|| code.to_string(), |l| l.name().to_string());
+        // The work in a project: its POUs, whatever its name and settings.
+        let work = |p: &Project| {
+            let mut p = p.clone();
+            p.name.clear();
+            p.settings = Default::default();
+            p.source = p.source.trim().to_string();
+            p.to_file()
+        };
+        let current = state.project.with_untracked(work);
+        let untouched = open
+            .opened
+            .starters
+            .iter()
+            .filter_map(|s| Project::from_file(&s.project).ok())
+            .any(|s| work(&s) == current);
+        if !untouched {
+            let question = format!(
+                "Start “{}” again in {name}? Your work on it is replaced by the {name} starter. This cannot be undone.",
+                open.opened.view.title
+            );
+            if !confirm(&question) {
+                return false;
+            }
+        }
+        state.replace_contents(project);
+        self.report.set(None);
+        state.info(format!("The attempt starts in {name} now."));
+        true
     }
 
     /// The link that carries the open exercise.
@@ -318,18 +384,31 @@ impl Exercises {
     }
 }
 
-/// The starter of an opened exercise as a new project named after it.
-fn starter_project(opened: &Opened) -> Option<Project> {
-    let mut project = Project::from_file(opened.starter.as_deref()?).ok()?;
+/// The starter of an opened exercise in `language` (its first language by default) as a
+/// new project named after it.
+fn starter_project(opened: &Opened, language: Option<&str>) -> Option<Project> {
+    let starter = match language {
+        Some(code) => opened.starters.iter().find(|s| s.language == code)?,
+        None => opened.starters.first()?,
+    };
+    let mut project = Project::from_file(&starter.project).ok()?;
     project.name = format!("Exercise: {}", opened.view.title);
     Some(project)
+}
+
+/// Asks the student (a browser dialog); false when they decline or it cannot be shown.
+fn confirm(question: &str) -> bool {
+    web_sys::window().and_then(|w| w.confirm_with_message(question).ok()).unwrap_or(false)
 }
 
 /// Sends one request to a fresh exercise worker.
 async fn ask(request: &Request) -> Result<Reply, String> {
     let text = serde_json::to_string(request).map_err(|e| e.to_string())?;
-    let answer = crate::import::ask_worker_at(WORKER_SCRIPT, &JsValue::from_str(&text)).await?;
-    serde_json::from_str(&answer).map_err(|_| "the exercise worker gave no answer".to_string())
+    let answer = crate::import::ask_worker_at(WORKER, &JsValue::from_str(&text)).await?;
+    crate::lazy::read_exercise_reply(answer)
+        .await
+        .map_err(|e| e.to_string())?
+        .ok_or_else(|| "the exercise worker gave no answer".to_string())
 }
 
 /// The text at `url` (a CORS fetch).
@@ -378,5 +457,8 @@ mod tests {
         let all = catalogue();
         assert!(all.iter().any(|e| e.id == "latch"));
         assert!(all.windows(2).all(|w| w[0].level <= w[1].level));
+        // Level 1 in the order it teaches (`order` in each file), not by title.
+        let first: Vec<&str> = all.iter().take(5).map(|e| e.id).collect();
+        assert_eq!(first, ["lamp", "two-switches", "nc-stop", "latch", "ton-delay"]);
     }
 }

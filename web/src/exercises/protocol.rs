@@ -1,4 +1,4 @@
-//! The messages between the page and the exercise worker (`src/bin/plc-exercise.rs`),
+//! The messages between the page and the exercise worker (`src/workers/exercise.rs`),
 //! which reads exercise files, renders their statements and grades attempts off the
 //! page's own module (the TOML reader, the Markdown renderer and the grader are not in the
 //! first load). Both sides send one JSON text per message.
@@ -28,6 +28,15 @@ pub enum Request {
         /// The project file of the attempt.
         project: String,
     },
+    /// Pack the exercise (its file and starter) with the site's files into a SCORM 1.2
+    /// package; the worker answers with the ZIP's bytes (a `Uint8Array`) or an `Error`.
+    Scorm {
+        /// The exercise and its starter.
+        link: ExerciseLink,
+        /// The site's root URL (the page's folder, ending in `/`): its `site-files.txt`
+        /// lists the files to pack.
+        site: String,
+    },
 }
 
 /// What the worker answers.
@@ -53,8 +62,20 @@ pub struct Opened {
     pub base: Option<String>,
     /// The fragment of a link that carries it (`x=…`, without `#`).
     pub fragment: String,
-    /// The starter as a project file: the starter file opened, or a program declaring the
-    /// interface when the exercise names none. `None` when the exercise names a starter
-    /// that was not given (the page fetches it next to the file and asks again).
-    pub starter: Option<String>,
+    /// The starter in each language the student may start in, in the exercise's order:
+    /// the file it names opened, or one made from the interface. Empty while `missing`
+    /// is not.
+    pub starters: Vec<StarterFile>,
+    /// The starter files the exercise names that were not given (the page fetches them
+    /// next to the file and asks again).
+    pub missing: Vec<String>,
+}
+
+/// The starter in one language.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StarterFile {
+    /// The language's code (`st`, `ld`, `petri`, `sfc`).
+    pub language: String,
+    /// The starter as a project file; its settings name the PROGRAM graded.
+    pub project: String,
 }

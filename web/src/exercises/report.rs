@@ -28,10 +28,11 @@ pub fn ReportView() -> impl IntoView {
             let summary = match &r.error {
                 Some(e) => format!("Not graded: {e}"),
                 None if all => format!("Score {} of {}: every scenario passes. Well done!", r.score, r.total),
-                None => format!("Score {} of {}", r.score, r.total),
+                None => r.score_line(),
             };
             view! {
                 <section class="exercise-report" aria-label="Report" aria-live="polite">
+                    {r.checked_line().map(|line| view! { <p class="report-program">{line}</p> })}
                     <p class="report-score" class:report-pass=all class:report-fail=!all>{summary}</p>
                     <ul class="report-scenarios">
                         {r.scenarios.into_iter().map(|s| {

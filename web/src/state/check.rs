@@ -3,7 +3,7 @@
 //! mapping the running program's active CASE branches back to ST lines and Petri net code.
 
 use leptos::prelude::*;
-use plc_core::build::{build_project, ProjectBuild, ProjectDiagnostic, Site};
+use plc_core::build::{build_project_by, ProjectBuild, ProjectDiagnostic, Site};
 use plc_core::diagnostics::Severity;
 use plc_core::sim::Simulator;
 
@@ -54,6 +54,11 @@ impl DiagView {
     }
 }
 
+thread_local! {
+    /// `show_main_view` waits for the build that loads the project's passes.
+    static MAIN_VIEW_PENDING: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
 /// The 1-based line of byte `offset` in `text`.
 fn line_of(text: &str, offset: usize) -> u32 {
     let end = offset.min(text.len());
@@ -72,9 +77,30 @@ impl AppState {
     /// Builds the project; when it is clean, powers a fresh simulator on for the chosen
     /// PROGRAM (held inputs are re-applied; a running PLC keeps running with the new
     /// program). With errors the previous program keeps running.
+    ///
+    /// A project with diagram POUs is built only once the passes for them are loaded (a
+    /// chunk each, fetched the first time: `crate::lazy::load_lowerings`); until then the
+    /// panels keep what they show.
     pub fn check_now(&self) {
         let project = self.project.get_untracked();
-        let build = build_project(&project);
+        let lowerings = crate::lazy::lowerings();
+        let lacks = lowerings.lacks(&project);
+        if !lacks.is_empty() {
+            let state = *self;
+            leptos::task::spawn_local(async move {
+                match crate::lazy::load_lowerings(&lacks).await {
+                    Ok(()) => {
+                        state.check_now();
+                        if MAIN_VIEW_PENDING.with(|p| p.replace(false)) {
+                            state.show_main_view();
+                        }
+                    }
+                    Err(e) => state.error(format!("Could not check the project: {e}")),
+                }
+            });
+            return;
+        }
+        let build = build_project_by(&project, &lowerings);
         self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
         let charts: Vec<String> =
             plc_core::sfc::outline::outlines(&project.source).into_iter().map(|o| o.pou).collect();
@@ -144,6 +170,11 @@ impl AppState {
     /// Shows the running PROGRAM's POU (or the first ladder or Petri net POU of a project
     /// without ST text), else the ST editor.
     pub fn show_main_view(&self) {
+        // Which PROGRAM runs is known once the project is built (see `check_now`).
+        if !self.project.with_untracked(|p| crate::lazy::lowerings().lacks(p).is_empty()) {
+            MAIN_VIEW_PENDING.with(|p| p.set(true));
+            return;
+        }
         let running = self.running.get_untracked();
         let view = self.project.with_untracked(|p| {
             let is = |name: &str| running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(name));

@@ -13,7 +13,7 @@
 //!   stopped while opening one does not open it again on reload.
 
 use leptos::prelude::*;
-use plc_core::project::{decode_share, encode_share, Project, ProjectStore, StoreError};
+use plc_core::project::{decode_share, Project, ProjectStore, StoreError};
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::JsCast;
 
@@ -436,14 +436,14 @@ impl AppState {
         self.save();
     }
 
-    /// The share link of the open project.
-    pub fn share_link(&self) -> String {
-        let fragment = encode_share(&self.project.get_untracked());
+    /// The share link of the open project (its writer is a chunk, `lazy::share_fragment`).
+    pub async fn share_link(&self) -> Result<String, crate::lazy::LoadFailed> {
+        let fragment = crate::lazy::share_fragment(self.project.get_untracked()).await?;
         let base = web_sys::window()
             .and_then(|w| w.location().href().ok())
             .map(|h| h.split('#').next().unwrap_or_default().to_string())
             .unwrap_or_default();
-        format!("{base}#{fragment}")
+        Ok(format!("{base}#{fragment}"))
     }
 }
 

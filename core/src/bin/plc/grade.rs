@@ -1,12 +1,14 @@
 //! `plc grade EXERCISE SUBMISSION...`: grades submissions (project files, ST files, PLCopen
-//! XML, or folders of them) against an exercise, in parallel, one row per submission; a
-//! submission that cannot be read gets its own row and never stops the batch.
+//! XML, hand-ins, or folders of them) against an exercise, in parallel, one row per
+//! submission; a submission that cannot be read, or a hand-in of another exercise, gets
+//! its own row with the reason and never stops the batch.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use plc_core::exercise::{
-    grade, scenarios_from_toml, time_text, Exercise, ExerciseLink, LinkedFile, Report,
+    grade, scenarios_from_toml, scorm_package, time_text, Exercise, ExerciseLink, HandIn,
+    LinkedFile, Report, ScormVersion, HAND_IN_EXTENSION,
 };
 
 /// How the grades are printed.
@@ -18,12 +20,62 @@ pub enum Format {
     Json,
     /// A CSV table with a header row.
     Csv,
+    /// A class report: one self-contained HTML page (rows, pass rates, a histogram of
+    /// scores, the most common first failures).
+    Html,
 }
 
-/// One submission's outcome: its report, or why it could not be read.
-struct Row {
-    name: String,
-    result: Result<Report, String>,
+/// One submission's outcome: its report, or why it could not be graded.
+pub(crate) struct Row {
+    /// The file, as given.
+    pub name: String,
+    /// The student's name, for a hand-in.
+    pub student: Option<String>,
+    /// When it was handed in, for a hand-in.
+    pub handed_in: Option<String>,
+    /// The report, or why there is none.
+    pub result: Result<Report, String>,
+}
+
+/// Grades one file: a hand-in (checked to be of this exercise), or any file `plc` opens.
+fn grade_file(ex: &Exercise, file: &Path) -> Row {
+    let name = file.display().to_string();
+    let graded = |project: Result<plc_core::project::Project, String>| {
+        project.and_then(|p| grade(ex, &p).map_err(|e| format!("plc: the exercise: {e}")))
+    };
+    let text = super::read_source(file);
+    let is_hand_in = file.extension().is_some_and(|e| e == HAND_IN_EXTENSION)
+        || text.as_deref().is_ok_and(HandIn::is_hand_in);
+    let Ok(text) = text.as_deref().map(|t| t.trim_start_matches('\u{feff}')) else {
+        return Row {
+            name,
+            student: None,
+            handed_in: None,
+            result: graded(super::load_project(file)),
+        };
+    };
+    if !is_hand_in {
+        return Row {
+            name,
+            student: None,
+            handed_in: None,
+            result: graded(super::load_project(file)),
+        };
+    }
+    match HandIn::from_file(text) {
+        Err(e) => Row { name, student: None, handed_in: None, result: Err(e.to_string()) },
+        Ok(h) => {
+            let result = if h.exercise == ex.id {
+                graded(Ok(h.project))
+            } else {
+                Err(format!(
+                    "this is a hand-in of exercise “{}”, not of “{}”: grade it with its own exercise",
+                    h.exercise, ex.id
+                ))
+            };
+            Row { name, student: Some(h.name), handed_in: Some(h.handed_in), result }
+        }
+    }
 }
 
 /// The files to grade: each path, or the files of each folder (sorted by name).
@@ -90,10 +142,7 @@ pub fn run(
             scope.spawn(move || loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                 let Some(file) = files.get(i) else { break };
-                let result = super::load_project(file).and_then(|project| {
-                    grade(ex, &project).map_err(|e| format!("plc: the exercise: {e}"))
-                });
-                let row = Row { name: file.display().to_string(), result };
+                let row = grade_file(ex, file);
                 if let Some(slot) = rows.lock().ok().as_mut().and_then(|r| r.get_mut(i)) {
                     *slot = Some(row);
                 }
@@ -106,16 +155,36 @@ pub fn run(
         Format::Text => print_text(&rows),
         Format::Json => println!("{}", json(&rows)),
         Format::Csv => print!("{}", csv(&rows)),
+        Format::Html => print!("{}", super::class_report::html(&ex, &rows)),
     }
     ExitCode::SUCCESS
+}
+
+impl Row {
+    /// The file, and the student's name when it is a hand-in: `a.plcsub (Ada Lovelace)`.
+    fn label(&self) -> String {
+        match &self.student {
+            Some(student) => format!("{} ({student})", self.name),
+            None => self.name.clone(),
+        }
+    }
 }
 
 fn print_text(rows: &[Row]) {
     for row in rows {
         match &row.result {
-            Err(e) => println!("{}: cannot be graded: {e}", row.name),
+            Err(e) => println!("{}: cannot be graded: {e}", row.label()),
             Ok(r) => {
-                println!("{}: {}/{}", row.name, r.score, r.total);
+                match r.checked_line() {
+                    Some(line) => println!(
+                        "{}: {}/{} — {}",
+                        row.label(),
+                        r.score,
+                        r.total,
+                        line.replacen("Checked", "checked", 1)
+                    ),
+                    None => println!("{}: {}/{}", row.label(), r.score, r.total),
+                }
                 if let Some(e) = &r.error {
                     println!("  {e}");
                 }
@@ -136,9 +205,18 @@ fn json(rows: &[Row]) -> serde_json::Value {
     let rows: Vec<serde_json::Value> = rows
         .iter()
         .map(|row| match &row.result {
-            Err(e) => serde_json::json!({ "submission": row.name, "error": e }),
+            Err(e) => serde_json::json!({
+                "submission": row.name,
+                "name": row.student,
+                "handed_in": row.handed_in,
+                "error": e,
+            }),
             Ok(r) => serde_json::json!({
                 "submission": row.name,
+                "name": row.student,
+                "handed_in": row.handed_in,
+                "program": r.program,
+                "language": r.language,
                 "score": r.score,
                 "total": r.total,
                 "error": r.error,
@@ -168,10 +246,12 @@ fn field(text: &str) -> String {
 }
 
 fn csv(rows: &[Row]) -> String {
-    let mut out = String::from("submission,score,total,passed,failed,error,first_failure\n");
+    let mut out = String::from(
+        "submission,score,total,passed,failed,error,first_failure,program,name,handed_in\n",
+    );
     for row in rows {
         let line = match &row.result {
-            Err(e) => format!("{},,,,,{},", field(&row.name), field(e)),
+            Err(e) => format!("{},,,,,{},,", field(&row.name), field(e)),
             Ok(r) => {
                 let passed = r.scenarios.iter().filter(|s| s.passed()).count();
                 let failed = r.scenarios.len() - passed;
@@ -181,16 +261,21 @@ fn csv(rows: &[Row]) -> String {
                     .find_map(|s| s.failure.as_ref().map(|f| format!("{}: {}", s.name, f.actual)))
                     .unwrap_or_default();
                 format!(
-                    "{},{},{},{passed},{failed},{},{}",
+                    "{},{},{},{passed},{failed},{},{},{}",
                     field(&row.name),
                     r.score,
                     r.total,
                     field(r.error.as_deref().unwrap_or_default()),
-                    field(&first)
+                    field(&first),
+                    field(r.program.as_deref().unwrap_or_default())
                 )
             }
         };
         out.push_str(&line);
+        for extra in [&row.student, &row.handed_in] {
+            out.push(',');
+            out.push_str(&field(extra.as_deref().unwrap_or_default()));
+        }
         out.push('\n');
     }
     out
@@ -224,6 +309,24 @@ pub enum ExerciseCommand {
         #[arg(long, value_name = "URL", default_value = "")]
         base: String,
     },
+    /// Write a SCORM package an LMS (Moodle, Canvas, Blackboard, ILIAS) imports as an
+    /// activity: the built site, the exercise and its starter (never the hidden scenarios
+    /// nor the reference) and imsmanifest.xml; the page reports each Check's score to the
+    /// LMS's gradebook.
+    Scorm {
+        /// The exercise file (TOML).
+        exercise: PathBuf,
+        /// The package to write (default: ID-scorm.zip).
+        #[arg(long, value_name = "FILE.zip")]
+        out: Option<PathBuf>,
+        /// The built site (`bash scripts/build-web.sh` writes it to dist/).
+        #[arg(long, value_name = "DIR", default_value = "dist")]
+        site: PathBuf,
+        /// The SCORM edition the manifest declares: 1.2, or 2004 (4th edition).
+        #[arg(long = "scorm", value_name = "VERSION", default_value = "1.2",
+              value_parser = ["1.2", "2004"])]
+        version: String,
+    },
 }
 
 /// Runs `plc exercise …`.
@@ -234,6 +337,73 @@ pub fn exercise(command: ExerciseCommand) -> ExitCode {
         }
         ExerciseCommand::New { id } => new(&id),
         ExerciseCommand::Link { exercise, base } => link(&exercise, &base),
+        ExerciseCommand::Scorm { exercise, out, site, version } => {
+            let version =
+                if version == "2004" { ScormVersion::Scorm2004 } else { ScormVersion::Scorm12 };
+            scorm(&exercise, out.as_deref(), &site, version)
+        }
+    }
+}
+
+/// The files under `dir` as `(path with /, contents)`, sorted by path.
+fn site_files(dir: &Path) -> Result<Vec<(String, Vec<u8>)>, String> {
+    let mut files = Vec::new();
+    let mut folders = vec![dir.to_path_buf()];
+    while let Some(folder) = folders.pop() {
+        let entries =
+            std::fs::read_dir(&folder).map_err(|e| format!("plc: {}: {e}", folder.display()))?;
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                folders.push(path);
+                continue;
+            }
+            let rel = path.strip_prefix(dir).unwrap_or(&path);
+            let name: Vec<String> =
+                rel.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+            let bytes =
+                std::fs::read(&path).map_err(|e| format!("plc: {}: {e}", path.display()))?;
+            files.push((name.join("/"), bytes));
+        }
+    }
+    files.sort_by(|a, b| a.0.cmp(&b.0));
+    Ok(files)
+}
+
+/// `plc exercise scorm`: the exercise's SCORM package.
+fn scorm(path: &Path, out: Option<&Path>, site: &Path, version: ScormVersion) -> ExitCode {
+    let made = (|| -> Result<(PathBuf, usize), String> {
+        let text = read(path)?;
+        let exercise =
+            Exercise::from_toml(&text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
+        let mut starters = Vec::new();
+        for name in exercise.starter_files() {
+            let file = path.parent().unwrap_or(Path::new(".")).join(name);
+            starters.push(LinkedFile { name: name.to_string(), text: read(&file)? });
+        }
+        if !site.join("index.html").is_file() {
+            return Err(format!(
+                "plc: {}: no built site there (build it with `bash scripts/build-web.sh`, or give --site DIR)",
+                site.display()
+            ));
+        }
+        let files = site_files(site)?;
+        let zip = scorm_package(&text, &starters, files, version)
+            .map_err(|e| format!("plc: {}: {e}", path.display()))?;
+        let out = out
+            .map_or_else(|| PathBuf::from(format!("{}-scorm.zip", exercise.id)), Path::to_path_buf);
+        std::fs::write(&out, &zip).map_err(|e| format!("plc: {}: {e}", out.display()))?;
+        Ok((out, zip.len()))
+    })();
+    match made {
+        Ok((out, size)) => {
+            println!("wrote {} ({} KB)", out.display(), size.div_ceil(1024));
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::from(2)
+        }
     }
 }
 
@@ -243,14 +413,13 @@ fn link(path: &Path, base: &str) -> ExitCode {
         let text = read(path)?;
         let exercise =
             Exercise::from_toml(&text).map_err(|e| format!("plc: {}: {e}", path.display()))?;
-        let starter = match &exercise.starter {
-            Some(name) => {
-                let file = path.parent().unwrap_or(Path::new(".")).join(name);
-                Some(LinkedFile { name: name.clone(), text: read(&file)? })
-            }
-            None => None,
-        };
-        let fragment = ExerciseLink { exercise: text, starter }
+        let dir = path.parent().unwrap_or(Path::new("."));
+        let mut files = Vec::new();
+        for name in exercise.starter_files() {
+            files.push(LinkedFile { name: name.to_string(), text: read(&dir.join(name))? });
+        }
+        let fragment = ExerciseLink { exercise: text, starter: None, starters: files }
+            .arranged(&exercise)
             .encode()
             .map_err(|e| format!("plc: {}: {e}", path.display()))?;
         Ok(format!("{base}#{fragment}"))
@@ -307,30 +476,44 @@ fn validate(path: &Path, hidden: Option<&Path>) -> ExitCode {
             }
         }
     };
-    match &ex.reference {
-        None => {
-            println!("reference: missing (give `reference = \"FILE\"`)");
-            problems.set(problems.get() + 1);
-        }
-        Some(file) => {
-            if let Some(r) = graded("reference", &dir.join(file)) {
-                match first_failure(&r) {
-                    None => println!("reference: passes all {} scenarios", r.scenarios.len()),
-                    Some(f) => {
-                        println!("reference: FAILS {f}");
-                        problems.set(problems.get() + 1);
-                    }
+    if ex.reference.is_none() {
+        println!("reference: missing (give `reference = \"FILE\"`)");
+        problems.set(problems.get() + 1);
+    }
+    for (key, file) in ex.reference_files() {
+        if let Some(r) = graded(key, &dir.join(file)) {
+            let program = r
+                .checked_line()
+                .map(|l| format!(" — {}", l.replacen("Checked", "checked", 1)))
+                .unwrap_or_default();
+            match first_failure(&r) {
+                None => println!("{key}: passes all {} scenarios{program}", r.scenarios.len()),
+                Some(f) => {
+                    println!("{key}: FAILS {f}");
+                    problems.set(problems.get() + 1);
                 }
             }
         }
     }
-    if let Some(file) = &ex.starter {
-        if let Some(r) = graded("starter", &dir.join(file)) {
-            match first_failure(&r) {
-                Some(f) => println!("starter: fails, as it should: {f}"),
-                None => {
-                    println!("starter: PASSES every scenario (it should leave work to do)");
-                    problems.set(problems.get() + 1);
+    // The starter in every language the student may start in, given or made.
+    match ex.starters(|file| super::load_project(&dir.join(file))) {
+        Err(e) => {
+            println!("starter: cannot be opened: {e}");
+            problems.set(problems.get() + 1);
+        }
+        Ok(starters) => {
+            for (language, project) in starters {
+                let label = format!("starter ({})", language.name());
+                match grade(&ex, &project).map(|r| first_failure(&r)) {
+                    Ok(Some(f)) => println!("{label}: fails, as it should: {f}"),
+                    Ok(None) => {
+                        println!("{label}: PASSES every scenario (it should leave work to do)");
+                        problems.set(problems.get() + 1);
+                    }
+                    Err(e) => {
+                        println!("{label}: cannot be graded: {e}");
+                        problems.set(problems.get() + 1);
+                    }
                 }
             }
         }

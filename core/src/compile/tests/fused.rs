@@ -1,6 +1,6 @@
 //! The fused instructions (element access, compare-and-branch): each program is checked to
 //! compile to the instruction under test, then run for its values and its faults. Expected
-//! values follow from SEMANTICS.md by hand (wrapping in the index type, the destination's
+//! values follow from docs/semantics.md by hand (wrapping in the index type, the destination's
 //! bounds checked before anything on the right-hand side runs).
 
 use crate::compile::{compile, Executable};

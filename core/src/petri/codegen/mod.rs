@@ -1,6 +1,8 @@
-//! CASE OF code generation (seed 000): one INT step variable per process, one CASE branch
-//! per place with its actions and one `IF guard THEN …` per transition leaving it, in
-//! priority order (an ELSIF chain, so a process takes at most one transition per scan).
+//! CASE OF code generation (K. Franczok, "A method for modelling sequential and concurrent
+//! processes in the PLC environment", PAR 2014): one INT step variable per process, one
+//! CASE branch per place with its actions and one `IF guard THEN …` per transition leaving
+//! it, in priority order (an ELSIF chain, so a process takes at most one transition per
+//! scan).
 //!
 //! The per-scan firing rule the code implements exactly (`docs/petri.md` explains it):
 //! 1. the prologue runs;
@@ -16,7 +18,7 @@
 //!
 //! In the step-variable style the deciding process reads and writes the others' step
 //! variables; a process that another one can move selects its branch on `PnScan_<var>`,
-//! the copy of its step variable taken at step 3. In the flag style (the seed's
+//! the copy of its step variable taken at step 3. In the flag style (the paper's
 //! `Pn_Start`/`Pn_End`) each process moves only itself: while it waits at a shared
 //! transition it holds `<Process>_End`, and the deciding process raises `<Process>_Start`,
 //! which it handles later in the same scan.

@@ -313,33 +313,39 @@ fn simple(
     }
 }
 
-/// The marks of a cell: a problem, the fault, the cell a clicked problem points at.
+/// The marks of a cell: a problem, the fault, the cell a clicked problem points at. They
+/// follow the problems as a check finds them, without drawing the rung again (a rung whose
+/// cells were replaced under the pointer would lose what the user was about to drag).
 fn marks(ctx: RungCtx, geo: &RungGeometry, pou: &str) -> impl IntoView {
-    let cell_rect = |row: usize, col: usize| {
-        let (x0, x1) = geo.col_span(col);
-        let top = geo.row_h * row as f64;
-        (x0 + 2.0, top + 2.0, x1 - x0 - 4.0, geo.row_h - 4.0)
-    };
-    let diags = ctx.state.diagnostics.with_untracked(|ds| {
-        ds.iter()
-            .filter_map(|d| match &d.site {
-                Site::Ladder { pou: p, cell: Some((r, row, col)) }
-                    if p.eq_ignore_ascii_case(pou) && *r == ctx.rung =>
-                {
-                    Some((*row, *col, d.error, format!("{} {}", d.code, d.message)))
-                }
-                _ => None,
+    let geo_diag = geo.clone();
+    let pou_diag = pou.to_string();
+    let diag_views = move || {
+        let cell_rect = |row: usize, col: usize| {
+            let (x0, x1) = geo_diag.col_span(col);
+            let top = geo_diag.row_h * row as f64;
+            (x0 + 2.0, top + 2.0, x1 - x0 - 4.0, geo_diag.row_h - 4.0)
+        };
+        let diags = ctx.state.diagnostics.with(|ds| {
+            ds.iter()
+                .filter_map(|d| match &d.site {
+                    Site::Ladder { pou: p, cell: Some((r, row, col)) }
+                        if p.eq_ignore_ascii_case(&pou_diag) && *r == ctx.rung =>
+                    {
+                        Some((*row, *col, d.error, format!("{} {}", d.code, d.message)))
+                    }
+                    _ => None,
+                })
+                .collect::<Vec<_>>()
+        });
+        diags
+            .into_iter()
+            .map(|(row, col, error, text)| {
+                let (x, y, w, h) = cell_rect(row, col);
+                let class = if error { "ld-diag err" } else { "ld-diag warn" };
+                view! { <rect class=class x=x y=y width=w height=h rx="4"><title>{text}</title></rect> }
             })
-            .collect::<Vec<_>>()
-    });
-    let diag_views = diags
-        .into_iter()
-        .map(|(row, col, error, text)| {
-            let (x, y, w, h) = cell_rect(row, col);
-            let class = if error { "ld-diag err" } else { "ld-diag warn" };
-            view! { <rect class=class x=x y=y width=w height=h rx="4"><title>{text}</title></rect> }
-        })
-        .collect_view();
+            .collect_view()
+    };
     let pou_name = pou.to_string();
     let mark = move |site: Option<Site>, class: &'static str| {
         let cell = match site {

@@ -151,12 +151,16 @@ pub struct Drag {
 /// How far (CSS pixels) the pointer moves before a press becomes a drag.
 const DRAG_THRESHOLD: f64 = 5.0;
 
-/// The cell a grid cell element stands for (`data-at="rung-row-col"`).
+/// The cell a grid cell element stands for (`data-at="rung-row-col"`), or the cell of the
+/// drawn element on top of it (an input's contact takes clicks to toggle the input while
+/// its PROGRAM runs: `data-cell`, the same form).
 fn cell_at_point(x: f64, y: f64) -> Option<CellRef> {
     let document = web_sys::window()?.document()?;
     let el = document.element_from_point(x as f32, y as f32)?;
-    let cell = el.closest("[role=gridcell][data-at]").ok()??;
-    let at = cell.get_attribute("data-at")?;
+    let at = match el.closest("[role=gridcell][data-at]").ok()? {
+        Some(cell) => cell.get_attribute("data-at")?,
+        None => el.closest("[data-cell]").ok()??.get_attribute("data-cell")?,
+    };
     let mut parts = at.split('-').map(|p| p.parse::<usize>().ok());
     Some(CellRef::new(parts.next()??, parts.next()??, parts.next()??))
 }

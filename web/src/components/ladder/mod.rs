@@ -477,21 +477,12 @@ pub fn LadderView(name: String) -> impl IntoView {
             }
             .into_any();
         }
-        // Each rung is drawn again only when it, or the problems marked on it, changed: an
-        // edit in a POU of a hundred rungs redraws one.
+        // Each rung is drawn again only when it changed: an edit in a POU of a hundred rungs
+        // redraws one, and a check that marks or clears a problem redraws none (the marks
+        // follow the problems by themselves, `draw::marks`).
         let pou_name = name_for_rungs.clone();
         let keyed = move || {
             let Some(p) = pou.get() else { return Vec::new() };
-            let marks = state.diagnostics.with(|ds| {
-                ds.iter()
-                    .filter_map(|d| match &d.site {
-                        Site::Ladder { pou, cell } if pou.eq_ignore_ascii_case(&p.name) => {
-                            Some((cell.map(|c| c.0), format!("{}{}{}", d.code, d.message, d.error)))
-                        }
-                        _ => None,
-                    })
-                    .collect::<Vec<_>>()
-            });
             p.rungs
                 .into_iter()
                 .enumerate()
@@ -500,11 +491,6 @@ pub fn LadderView(name: String) -> impl IntoView {
                     let mut h = std::collections::hash_map::DefaultHasher::new();
                     // (its JSON: the writer is in the page already, a Debug format would add code)
                     serde_json::to_string(&rung).unwrap_or_default().hash(&mut h);
-                    for (r, m) in &marks {
-                        if r.is_none_or(|r| r == index) {
-                            m.hash(&mut h);
-                        }
-                    }
                     (index, h.finish(), rung)
                 })
                 .collect::<Vec<_>>()

@@ -7,7 +7,7 @@ mod chart;
 use crate::download::download;
 
 use leptos::prelude::*;
-use plc_core::export::{trace_csv, trace_vcd, value_text};
+use plc_core::export::value_text;
 use plc_core::semantic::Type;
 use wasm_bindgen::JsCast;
 
@@ -132,30 +132,31 @@ pub fn Timeline() -> impl IntoView {
         path_text.set(String::new());
     };
     let export = move |kind: &'static str| {
-        let text = match kind {
-            "svg" => svg_text(),
-            _ => state.sim.with_value(|s| {
-                s.as_ref().map(|s| {
-                    if kind == "csv" {
-                        trace_csv(s.trace())
-                    } else {
-                        trace_vcd(s.trace())
+        leptos::task::spawn_local(async move {
+            let text = match kind {
+                "svg" => svg_text(),
+                // The writers are a chunk of the app, fetched on the first export.
+                _ => match crate::lazy::timeline_file(state, kind == "csv").await {
+                    Ok(text) => text,
+                    Err(e) => {
+                        state.error(format!("Could not export: {e}"));
+                        return;
                     }
-                })
-            }),
-        };
-        let Some(text) = text else {
-            state.error("Nothing to export yet.");
-            return;
-        };
-        let (name, mime) = match kind {
-            "csv" => ("timeline.csv", "text/csv"),
-            "vcd" => ("timeline.vcd", "text/plain"),
-            _ => ("timeline.svg", "image/svg+xml"),
-        };
-        if let Err(e) = download(name, mime, &text) {
-            state.error(e);
-        }
+                },
+            };
+            let Some(text) = text else {
+                state.error("Nothing to export yet.");
+                return;
+            };
+            let (name, mime) = match kind {
+                "csv" => ("timeline.csv", "text/csv"),
+                "vcd" => ("timeline.vcd", "text/plain"),
+                _ => ("timeline.svg", "image/svg+xml"),
+            };
+            if let Err(e) = download(name, mime, &text) {
+                state.error(e);
+            }
+        });
     };
 
     view! {

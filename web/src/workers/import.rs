@@ -1,17 +1,14 @@
-//! The import worker: opens PLCopen XML and PNML files off the page's own module.
-//!
-//! The XML importers are about a tenth of the engine; the page loads this worker (its own
-//! small wasm module, built by Trunk as `plc-import_loader.js`) only when a user imports
-//! such a file, so the first page load stays within its size budget. It says `"ready"`
-//! once loaded, then answers each message `[file stem, text]` with a JSON string
+//! The import worker's work: opening PLCopen XML and PNML files and writing PLCopen XML and
+//! PNML, in a chunk of the app (`split_import_worker.wasm`) that only the import worker
+//! loads (it runs the page's module, so the engine is not downloaded twice). It answers
+//! each message `[file stem, text]` with a JSON string
 //! `{"project": <project file>, "kind": "PLCopen XML" | "PNML" | …, "warnings": [...]}` or
 //! `{"error": "..."}`; the exports `["export-plcopen", "", project file]` and
 //! `["export-pnml", POU name, project file]` are answered with `{"xml": ...}`.
 
 use plc_core::open::open_text;
 use plc_core::project::Project;
-use wasm_bindgen::closure::Closure;
-use wasm_bindgen::{JsCast, JsValue};
+use wasm_bindgen::JsValue;
 
 /// The reply to one request.
 fn reply(stem: &str, text: &str) -> String {
@@ -47,27 +44,17 @@ fn export_reply(what: &str, pou: &str, project_file: &str) -> String {
     value.to_string()
 }
 
-fn main() {
-    console_error_panic_hook::set_once();
-    let scope: web_sys::DedicatedWorkerGlobalScope = js_sys::global().unchecked_into();
-    let answer = scope.clone();
-    let on_message =
-        Closure::<dyn Fn(web_sys::MessageEvent)>::new(move |ev: web_sys::MessageEvent| {
-            let request = js_sys::Array::from(&ev.data());
-            let first = request.get(0).as_string().unwrap_or_default();
-            let second = request.get(1).as_string().unwrap_or_default();
-            let export = matches!(first.as_str(), "export-plcopen" | "export-pnml");
-            let answer_text = if request.length() == 3 && export {
-                export_reply(&first, &second, &request.get(2).as_string().unwrap_or_default())
-            } else {
-                reply(&first, &second)
-            };
-            let _ = answer.post_message(&JsValue::from_str(&answer_text));
-        });
-    scope.set_onmessage(Some(on_message.as_ref().unchecked_ref()));
-    on_message.forget();
-    // Ready: the page sends the file only now.
-    let _ = scope.post_message(&JsValue::from_str("ready"));
+/// The answer to one message of the page.
+pub fn answer(request: &JsValue) -> String {
+    let request = js_sys::Array::from(request);
+    let first = request.get(0).as_string().unwrap_or_default();
+    let second = request.get(1).as_string().unwrap_or_default();
+    let export = matches!(first.as_str(), "export-plcopen" | "export-pnml");
+    if request.length() == 3 && export {
+        export_reply(&first, &second, &request.get(2).as_string().unwrap_or_default())
+    } else {
+        reply(&first, &second)
+    }
 }
 
 #[cfg(test)]

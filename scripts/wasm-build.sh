@@ -1,0 +1,45 @@
+# Sourced by scripts/build-web.sh and scripts/bench-browser.sh, so that the benchmark
+# module is built exactly as the site is: the same cargo profile and flags, and the same
+# wasm-opt pass over the result.
+
+# The flags of every wasm32 build (.cargo/config.toml) plus the relocations wasm-split reads
+# (they change nothing in the code; the benchmark builds with them too, so both builds share
+# the compiled plc-core).
+# Source paths are written into the module (panic locations), so the size of the site would
+# depend on where the clone and the cargo home are: a CI clone under a longer path was 4 KB
+# over the budget a shorter one met. Mapping them to short fixed prefixes makes the build the
+# same bytes wherever it runs.
+wasm_path_remaps="--remap-path-prefix=$PWD=. --remap-path-prefix=${CARGO_HOME:-$HOME/.cargo}=~cargo"
+for src in "${CARGO_HOME:-$HOME/.cargo}"/registry/src/*/; do
+  [ -d "$src" ] && wasm_path_remaps+=" --remap-path-prefix=${src%/}=~"
+done
+for rust_src in "$(rustc --print sysroot)"/lib/rustlib/src/rust; do
+  [ -d "$rust_src" ] && wasm_path_remaps+=" --remap-path-prefix=$rust_src=~rust"
+done
+export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components -C link-args=--emit-relocs $wasm_path_remaps"
+# The site's cargo profile (Cargo.toml: size for the UI, speed for the engine).
+WASM_PROFILE=wasm-release
+# To measure the engine at another opt-level (BENCHMARKS.md, "The engine at speed"), set
+# WASM_CORE_OPT_LEVEL (z, s, 1, 2 or 3): plc-core is then built at that level, the rest as
+# the profile says. Pass "${wasm_cargo_flags[@]}" to cargo.
+wasm_cargo_flags=()
+if [ -n "${WASM_CORE_OPT_LEVEL:-}" ]; then
+  case "$WASM_CORE_OPT_LEVEL" in
+    z | s) level="\"$WASM_CORE_OPT_LEVEL\"" ;;
+    [0-3]) level=$WASM_CORE_OPT_LEVEL ;;
+    *) echo "WASM_CORE_OPT_LEVEL is z, s, 0, 1, 2 or 3, not '$WASM_CORE_OPT_LEVEL'" >&2; exit 1 ;;
+  esac
+  wasm_cargo_flags=(--config "profile.$WASM_PROFILE.package.plc-core.opt-level=$level")
+fi
+
+# wasm-opt as the site uses it: IN OUT. (wasm-split writes a name subsection wasm-opt
+# does not know and warns about; the names are dropped anyway.)
+# --low-memory-unused: the module never uses the lowest 1 KB of memory (Rust lays the
+# 1 MB stack out first, growing down towards 0, and the data after it, at 1 MB: that KB is
+# reached only by a stack 1023 KB deep), so wasm-opt may fold small constant offsets into
+# loads and stores; 3 KB less to download (gzip).
+wasm_opt() {
+  wasm-opt -Oz --low-memory-unused --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+    --enable-mutable-globals --enable-reference-types --enable-multivalue "$1" -o "$2" \
+    2> >(grep -v 'unknown name subsection' >&2)
+}

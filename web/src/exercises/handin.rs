@@ -1,0 +1,159 @@
+//! The exercise page's `Hand in` and `Export SCORM package`.
+//!
+//! - `Hand in` asks once for `Your name` (kept in this browser) and downloads
+//!   `EXERCISE-ID--NAME.plcsub`: the attempt's project file carrying the exercise's id,
+//!   the name and the time (`plc_core::exercise::HandIn`), which `plc grade` grades.
+//! - `Export SCORM package` has the exercise worker pack the site (the files
+//!   `scripts/build-web.sh` listed in `site-files.txt`), the exercise and its starter into
+//!   a package an LMS imports; the page only downloads it. Hidden inside an LMS.
+
+use leptos::ev;
+use leptos::prelude::*;
+use plc_core::exercise::HandIn;
+use plc_core::project::{Project, StorageBackend};
+use wasm_bindgen::{JsCast, JsValue};
+
+use super::protocol::{Reply, Request};
+use super::Exercises;
+use crate::download::{download, download_parts};
+use crate::state::AppState;
+use crate::storage::LocalStorage;
+
+/// Where the browser keeps the student's name.
+const NAME_KEY: &str = "plc-student-name";
+
+/// What the user reads, in one place (the dialog is static markup: one element for the
+/// page to build instead of nine).
+mod words {
+    pub const HAND_IN: &str = "Hand in";
+    pub const HAND_IN_TITLE: &str = "Download your attempt as a file for your instructor";
+    pub const CHANGE_NAME: &str = "Change name";
+    pub const EXPORT_SCORM: &str = "Export SCORM package";
+    pub const EXPORT_TITLE: &str =
+        "Download this exercise as a SCORM package for a course's LMS (Moodle, Canvas, Blackboard, ILIAS)";
+    pub const PACKING: &str = "Packing the SCORM package…";
+    /// The name dialog: `Your name`, required and not only spaces; Cancel closes it.
+    pub const DIALOG: &str = r#"<dialog id="handin-dialog" class="handin-dialog" aria-labelledby="handin-title">
+<form method="dialog"><h3 id="handin-title">Hand in</h3>
+<label>Your name <input id="handin-name" type="text" autocomplete="name" maxlength="80" required pattern=".*\S.*" autofocus aria-describedby="handin-help"></label>
+<p id="handin-help" class="handin-help">Your instructor sees this name with your attempt. This browser remembers it.</p>
+<div class="handin-buttons"><button type="submit" class="primary">Download hand-in</button><button type="submit" value="cancel" formnovalidate>Cancel</button></div>
+</form></dialog>"#;
+}
+
+/// An element of the page by its id.
+fn by_id<T: JsCast>(id: &str) -> Option<T> {
+    web_sys::window()?.document()?.get_element_by_id(id)?.dyn_into().ok()
+}
+
+fn stored_name() -> Option<String> {
+    LocalStorage::open().get(NAME_KEY).ok().flatten().filter(|n| !n.trim().is_empty())
+}
+
+/// Downloads the hand-in of the open attempt as `name`.
+fn hand_in(ex: Exercises, state: AppState, name: &str) {
+    let Some(open) = ex.open.get_untracked() else { return };
+    let id = open.opened.view.id;
+    let when = String::from(js_sys::Date::new_0().to_iso_string());
+    let project = state.project.with_untracked(Project::to_file);
+    let text = HandIn::file_text(&project, &id, name, &when);
+    let file = HandIn::file_name(&id, name);
+    match download(&file, "application/json", &text) {
+        Ok(()) => state.info(format!(
+            "Downloaded {file}: your attempt at “{}”, handed in as “{}”. Give this file to your instructor.",
+            open.opened.view.title,
+            name.trim()
+        )),
+        Err(e) => state.error(e),
+    }
+}
+
+/// Has the exercise worker pack the open exercise, then downloads the package.
+async fn export_scorm(ex: Exercises, state: AppState) {
+    let Some(open) = ex.open.get_untracked() else { return };
+    let id = open.opened.view.id.clone();
+    // The site's root: the page's folder (the app's own files are one level down).
+    let site = web_sys::window()
+        .and_then(|w| w.location().href().ok())
+        .and_then(|href| web_sys::Url::new_with_base("./", &href).ok())
+        .map(|url| url.href())
+        .unwrap_or_default();
+    let request = match serde_json::to_string(&Request::Scorm { link: open.opened.link, site }) {
+        Ok(r) => r,
+        Err(e) => return state.error(e.to_string()),
+    };
+    let answer = crate::import::ask_worker_raw(super::WORKER, &JsValue::from_str(&request)).await;
+    let bytes = match answer {
+        Ok(v) if v.is_instance_of::<js_sys::Uint8Array>() => v,
+        Ok(v) => {
+            let e = match serde_json::from_str::<Reply>(&v.as_string().unwrap_or_default()) {
+                Ok(Reply::Error(e)) => e,
+                _ => "the exercise worker gave no package".to_string(),
+            };
+            return state.error(format!("Could not make the SCORM package: {e}"));
+        }
+        Err(e) => return state.error(format!("Could not make the SCORM package: {e}")),
+    };
+    let file = format!("{id}-scorm.zip");
+    match download_parts(&file, "application/zip", &bytes) {
+        Ok(()) => state.info(format!(
+            "Downloaded {file} (SCORM 1.2): add it to your course as a SCORM activity; each Check sends the score to the gradebook."
+        )),
+        Err(e) => state.error(e),
+    }
+}
+
+/// `Hand in` and `Export SCORM package`, with the name dialog (a modal `<dialog>`: the
+/// browser keeps the focus in it, Escape closes it, an empty name is not accepted).
+#[component]
+pub fn HandInActions() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let ex = expect_context::<Exercises>();
+    let packing = RwSignal::new(false);
+    let name = RwSignal::new(stored_name());
+    let ask = || {
+        if let Some(d) = by_id::<web_sys::HtmlDialogElement>("handin-dialog") {
+            let _ = d.show_modal();
+        }
+    };
+    let start = move |_| match name.get_untracked() {
+        Some(n) => hand_in(ex, state, &n),
+        None => ask(),
+    };
+    // `method="dialog"`: the submit closes the dialog (Cancel too, without the name).
+    let submit = move |e: ev::SubmitEvent| {
+        if e.submitter().is_some_and(|b| b.get_attribute("value").as_deref() == Some("cancel")) {
+            return;
+        }
+        let typed = by_id::<web_sys::HtmlInputElement>("handin-name").map(|i| i.value());
+        let typed = typed.unwrap_or_default().trim().to_string();
+        if typed.is_empty() {
+            return;
+        }
+        let _ = LocalStorage::open().set(NAME_KEY, &typed);
+        name.set(Some(typed.clone()));
+        hand_in(ex, state, &typed);
+    };
+    let forget = move |_| {
+        let _ = LocalStorage::open().remove(NAME_KEY);
+        name.set(None);
+        ask();
+    };
+    let export = move |_| {
+        if packing.get_untracked() {
+            return;
+        }
+        packing.set(true);
+        state.info(words::PACKING);
+        leptos::task::spawn_local(async move {
+            export_scorm(ex, state).await;
+            packing.set(false);
+        });
+    };
+    view! {
+        <button on:click=start title=words::HAND_IN_TITLE>{words::HAND_IN}</button>
+        <button class="link handin-name" hidden=move || name.with(Option::is_none) on:click=forget>{words::CHANGE_NAME}</button>
+        <button class="lms-hidden" on:click=export title=words::EXPORT_TITLE disabled=move || packing.get()>{words::EXPORT_SCORM}</button>
+        <div class="handin" on:submit=submit inner_html=words::DIALOG></div>
+    }
+}

@@ -1,0 +1,232 @@
+//! Views and code that load on first use, each from its own chunk of the app's wasm module
+//! (see docs/loading.md).
+//!
+//! A function marked `#[wasm_split(NAME, …)]` is a split point: `scripts/build-web.sh`
+//! (wasm-split after cargo) moves it, and everything only it reaches, into the chunk
+//! `split_NAME.wasm`; code that several chunks share goes into a `chunk_N.wasm` they both
+//! load, and code the first screen reaches stays in the main module. Calling the function
+//! fetches its chunk the first time (hence `async`); natively it is an ordinary call. Every
+//! split function here is `fallible`: a chunk that cannot be fetched (offline before the
+//! service worker cached it) gives [`LoadFailed`] instead of stopping the page.
+//!
+//! To make a view lazy: write a split function that returns it as an `AnyView` and show it
+//! with [`lazy_view`], which says `Loading …` (role=status) while the chunk comes.
+
+use std::cell::Cell;
+use std::future::Future;
+
+use leptos::__reexports::send_wrapper::SendWrapper;
+use leptos::prelude::*;
+use leptos::wasm_split::wasm_split;
+use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
+
+/// A chunk of the app could not be fetched.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LoadFailed;
+
+impl From<leptos::wasm_split::SplitLoaderError> for LoadFailed {
+    fn from(_: leptos::wasm_split::SplitLoaderError) -> Self {
+        LoadFailed
+    }
+}
+
+impl std::fmt::Display for LoadFailed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a part of the app could not be loaded (is the network off?)")
+    }
+}
+
+/// Shows the view that `load` gives, with `Loading {what}…` (role=status) until its chunk
+/// has come, and a `Retry` button if it could not be fetched.
+pub fn lazy_view<F, Fut>(what: &'static str, load: F) -> AnyView
+where
+    F: Fn() -> Fut + Send + Sync + 'static,
+    Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
+{
+    let attempt = RwSignal::new(0u32);
+    let loading = move || {
+        view! { <p class="lazy-loading" role="status">{format!("Loading {what}…")}</p> }
+    };
+    view! {
+        <Suspense fallback=loading>
+            {move || {
+                attempt.track();
+                let load = load();
+                // The page is single-threaded: the future never leaves it.
+                Suspend::new(SendWrapper::new(async move {
+                    match load.await {
+                        Ok(view) => view,
+                        Err(_) => view! {
+                            <p class="lazy-failed" role="alert">
+                                {format!("Could not load {what} (is the network off?). ")}
+                                <button class="link" on:click=move |_| attempt.update(|n| *n += 1)>"Retry"</button>
+                            </p>
+                        }
+                        .into_any(),
+                    }
+                }))
+            }}
+        </Suspense>
+    }
+    .into_any()
+}
+
+/// The ladder editor (`LadderView`) of the ladder POU `name`.
+#[wasm_split(ladder, wasm_split_path = ::leptos::wasm_split, fallible, preload(preload_ladder))]
+pub fn ladder_view(name: String) -> Result<AnyView, LoadFailed> {
+    use crate::components::ladder::LadderView;
+    Ok(view! { <LadderView name=name/> }.into_any())
+}
+
+/// The Petri net editor (`PetriView`) of the net POU `name`.
+#[wasm_split(petri, wasm_split_path = ::leptos::wasm_split, fallible, preload(preload_petri))]
+pub fn petri_view(name: String) -> Result<AnyView, LoadFailed> {
+    use crate::components::petri::PetriView;
+    Ok(view! { <PetriView name=name/> }.into_any())
+}
+
+/// The chart of the textual SFC POU `name`.
+#[wasm_split(sfc, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn sfc_view(name: String) -> Result<AnyView, LoadFailed> {
+    use crate::components::sfc::SfcView;
+    Ok(view! { <SfcView name=name/> }.into_any())
+}
+
+/// The view of the network POU `name` (LD or FBD as an imported file drew it).
+#[wasm_split(network, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn network_view(name: String) -> Result<AnyView, LoadFailed> {
+    use crate::components::network::NetworkView;
+    Ok(view! { <NetworkView name=name/> }.into_any())
+}
+
+/// The exercise catalogue, in place of the workspace.
+#[wasm_split(exercise_ui, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn catalogue_view() -> Result<AnyView, LoadFailed> {
+    use crate::exercises::Catalogue;
+    Ok(view! { <Catalogue/> }.into_any())
+}
+
+/// The open exercise beside the editors (statement, interface, Check, report).
+#[wasm_split(exercise_ui, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn exercise_panel_view() -> Result<AnyView, LoadFailed> {
+    use crate::exercises::ExercisePanel;
+    Ok(view! { <ExercisePanel/> }.into_any())
+}
+
+/// Reads an answer of the exercise worker (its decoder is a good part of the exercise
+/// code, so it comes with the exercise views).
+#[wasm_split(exercise_ui, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn read_exercise_reply(
+    text: String,
+) -> Result<Option<crate::exercises::protocol::Reply>, LoadFailed> {
+    Ok(serde_json::from_str(&text).ok())
+}
+
+/// Starts the SCORM session when the page was launched by an LMS (false without one).
+#[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scorm_launch(
+    ex: crate::exercises::Exercises,
+    state: crate::state::AppState,
+) -> Result<bool, LoadFailed> {
+    Ok(crate::exercises::scorm::launch(ex, state))
+}
+
+/// Opens the attempt the LMS kept, once the launched exercise is open.
+#[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scorm_resume(
+    ex: crate::exercises::Exercises,
+    state: crate::state::AppState,
+) -> Result<(), LoadFailed> {
+    crate::exercises::scorm::resume(ex, state);
+    Ok(())
+}
+
+/// The timeline as a file, CSV (`csv`) or VCD for GTKWave; `None` before a program runs.
+#[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn timeline_file(
+    state: crate::state::AppState,
+    csv: bool,
+) -> Result<Option<String>, LoadFailed> {
+    use plc_core::export::{trace_csv, trace_vcd};
+    Ok(state.sim.with_value(|s| {
+        s.as_ref().map(|s| if csv { trace_csv(s.trace()) } else { trace_vcd(s.trace()) })
+    }))
+}
+
+/// The variable table as CSV; `None` without a program.
+#[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn variables_file(state: crate::state::AppState) -> Result<Option<String>, LoadFailed> {
+    use plc_core::export::{snapshot, variables_csv};
+    Ok(state.sim.with_value(|s| s.as_ref().map(|s| variables_csv(&snapshot(s)))))
+}
+
+/// The share fragment of `project` (`p=…`): its DEFLATE writer is only needed when the
+/// user shares, so it comes with the exports (opening a share link needs only the reader).
+#[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn share_fragment(project: plc_core::project::Project) -> Result<String, LoadFailed> {
+    Ok(plc_core::project::encode_share(&project))
+}
+
+/// The plant's scene (its widgets drawn and its buttons and switches).
+#[wasm_split(scene, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scene_view() -> Result<AnyView, LoadFailed> {
+    use crate::components::scene::ScenePanel;
+    Ok(view! { <ScenePanel/> }.into_any())
+}
+
+thread_local! {
+    /// The passes for diagram POUs loaded so far (`plc_core::build::Lowerings`).
+    static PASSES: Cell<Lowerings> = const { Cell::new(Lowerings::NONE) };
+}
+
+/// The passes for diagram POUs the page has loaded: a project is built with these
+/// (`plc_core::build::build_project_by`).
+pub fn lowerings() -> Lowerings {
+    PASSES.with(Cell::get)
+}
+
+/// Fetches the editor of a new ladder (`petri` false) or Petri net POU and the pass that
+/// builds it, while the user names the POU.
+pub async fn preload_editor(petri: bool) -> Result<(), LoadFailed> {
+    if petri {
+        load_lowerings(&["petri"]).await?;
+        preload_petri().await?;
+    } else {
+        load_lowerings(&["ladder"]).await?;
+        preload_ladder().await?;
+    }
+    Ok(())
+}
+
+/// Fetches the passes named by `kinds` (as `Lowerings::lacks` names them).
+pub async fn load_lowerings(kinds: &[&str]) -> Result<(), LoadFailed> {
+    for kind in kinds {
+        let mut passes = lowerings();
+        match *kind {
+            "ladder" => passes.ladder = Some(ladder_pass().await?),
+            "network" => passes.network = Some(network_pass().await?),
+            "petri" => passes.petri = Some(petri_pass().await?),
+            _ => {}
+        }
+        PASSES.with(|p| p.set(passes));
+    }
+    Ok(())
+}
+
+/// The ladder POUs' validation and lowering to ST.
+#[wasm_split(ladder_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn ladder_pass() -> Result<LadderLowering, LoadFailed> {
+    Ok(LadderLowering { validate: plc_core::ladder::validate_with, lower: plc_core::ladder::lower })
+}
+
+/// The network POUs' ST (power flow, execution order, SFC charts).
+#[wasm_split(network_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn network_pass() -> Result<NetworkPass, LoadFailed> {
+    Ok(plc_core::network::NetworkPou::to_st)
+}
+
+/// The Petri net POUs' generated code and analysis.
+#[wasm_split(petri_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn petri_pass() -> Result<PetriPass, LoadFailed> {
+    Ok(plc_core::petri::compile)
+}
