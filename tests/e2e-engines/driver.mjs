@@ -16,6 +16,8 @@ import { PAGE_SRC } from './page.mjs';
 /** How long a condition may take to hold (the test machine is shared and often loaded). */
 export const TIMEOUT = Number(process.env.E2E_TIMEOUT_MS ?? 60000);
 const POLL_MS = 50;
+/** How long a browser may take to start. */
+const LAUNCH_MS = 30000;
 
 const delay = (ms) => new Promise((r) => setTimeout(r, ms));
 
@@ -547,18 +549,31 @@ async function launchWebKit() {
     version: '',
     /** Every session is its own WebKitWebDriver and MiniBrowser: an ephemeral profile. */
     async newSession({ width = 1280, height = 800 } = {}) {
-      const service = new remote.DriverService.Builder(driverPath).setHostname('127.0.0.1').build();
-      const url = await service.start(TIMEOUT);
-      const caps = new wd.Capabilities();
-      caps.setBrowserName('MiniBrowser');
-      caps.set('webkitgtk:browserOptions', { binary, args: ['--automation'] });
-      caps.set('timeouts', { script: TIMEOUT, pageLoad: 2 * TIMEOUT, implicit: 0 });
+      // Now and then (about one launch in twenty on a loaded machine) MiniBrowser never
+      // answers its WebKitWebDriver and the new session waits forever: that launch is
+      // given up after a while and made again, at most twice.
       let driver;
-      try {
-        driver = await new wd.Builder().usingServer(url).withCapabilities(caps).build();
-      } catch (e) {
-        await service.kill();
-        throw e;
+      let service;
+      for (let attempt = 1; !driver; attempt++) {
+        service = new remote.DriverService.Builder(driverPath).setHostname('127.0.0.1').build();
+        const url = await service.start(TIMEOUT);
+        const caps = new wd.Capabilities();
+        caps.setBrowserName('MiniBrowser');
+        caps.set('webkitgtk:browserOptions', { binary, args: ['--automation'] });
+        caps.set('timeouts', { script: TIMEOUT, pageLoad: 2 * TIMEOUT, implicit: 0 });
+        let timer;
+        const hung = new Promise((_, reject) => {
+          timer = setTimeout(() => reject(new Error(`MiniBrowser did not start within ${LAUNCH_MS} ms`)), LAUNCH_MS);
+        });
+        try {
+          driver = await Promise.race([new wd.Builder().usingServer(url).withCapabilities(caps).build(), hung]);
+        } catch (e) {
+          await service.kill();
+          if (attempt >= 3) throw e;
+          console.log(`# webkit: launch ${attempt} failed (${e.message}); launching again`);
+        } finally {
+          clearTimeout(timer);
+        }
       }
       if (!engine.version) {
         engine.version = (await driver.getCapabilities()).getBrowserVersion();
