@@ -492,7 +492,10 @@ class WebKitBackend {
 
   async newTab() {
     await (await this.use()).getWindowHandle();
-    await this.raw.switchTo().newWindow('tab');
+    // A window rather than a tab: MiniBrowser shows one tab at a time and switching to a
+    // tab over WebDriver does not bring it forward, and a click on a hidden tab never
+    // arrives (the session waits forever). Two windows of one session share the profile.
+    await this.raw.switchTo().newWindow('window');
     const handle = await this.raw.getWindowHandle();
     this.shared.current = handle;
     return new WebKitBackend(this.raw, null, this.wd, handle, this.shared);

@@ -31,6 +31,7 @@ test('after one visit the trainer opens, runs an example and checks an exercise 
     });
     assert.equal(sw.state, 'activated');
     assert.ok(sw.caches.length >= 1, 'the build is cached');
+    console.log(`# ${env.engine.label} has service workers: the offline copy is tested`);
 
     env.server.setOffline(true);
     try {
