@@ -20,6 +20,7 @@ pub fn App() -> impl IntoView {
     let exercises = Exercises::new(state);
     provide_context(exercises);
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
+    let asking = Memo::new(move |_| state.why.with(Option::is_some));
     let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));
     view! {
         <Header/>
@@ -37,6 +38,7 @@ pub fn App() -> impl IntoView {
             </section>
             <section class="sim-pane" aria-label="Simulation">
                 <Controls/>
+                {move || asking.get().then(|| lazy_view("the explanation", lazy::explanation_view))}
                 {move || has_scene.get().then(|| lazy_view("the plant scene", lazy::scene_view))}
                 <IoPanel/>
                 <Variables/>

@@ -6,7 +6,7 @@ use leptos::prelude::*;
 use plc_core::sim::SimState;
 use plc_core::vm::format_time;
 
-use crate::state::{AppState, RunMode, Speed};
+use crate::state::{past_words, AppState, RunMode, Speed};
 
 /// The control bar of the simulation pane.
 #[component]
@@ -33,8 +33,8 @@ pub fn Controls() -> impl IntoView {
             }
         }
     };
-    let scans = move || state.with_sim(|s| s.scan_count()).unwrap_or(0).to_string();
-    let time = move || state.with_sim(|s| format_time(s.time_ns())).unwrap_or_default();
+    let scans = move || state.with_readout(|s| s.scan_count()).unwrap_or(0).to_string();
+    let time = move || state.with_readout(|s| format_time(s.time_ns())).unwrap_or_default();
     let cycle = move || state.project.with(|p| p.settings.cycle_ms).to_string();
     let speed_value = move || match state.speed.get() {
         Speed::RealTime => "1",
@@ -49,6 +49,9 @@ pub fn Controls() -> impl IntoView {
                 <button class="primary" disabled=move || !can_scan() || running()
                     on:click=move |_| state.run()>"Run"</button>
                 <button disabled=move || !running() on:click=move |_| state.pause()>"Pause"</button>
+                <button disabled=move || running() || !state.can_step_back()
+                    title="Show the scan before (the recording keeps the recent history)"
+                    on:click=move |_| state.step_back()>"Step back"</button>
                 <button disabled=move || !can_scan() on:click=move |_| state.step(1)>"Step"</button>
                 <button disabled=move || !has_sim() on:click=move |_| state.reset()>"Reset"</button>
                 <button disabled=move || !has_sim() on:click=move |_| state.warm_restart()>
@@ -113,6 +116,7 @@ pub fn Controls() -> impl IntoView {
                     </select>
                 </label>
             </div>
+            <Recorded/>
             <div class="readouts">
                 <span class=move || status().1 role="status" aria-label=move || format!("PLC state: {}", status().0)>
                     {move || status().0}
@@ -121,5 +125,45 @@ pub fn Controls() -> impl IntoView {
                 <span class="readout">"Time " <output aria-label="Virtual time">{time}</output></span>
             </div>
         </section>
+    }
+}
+
+/// The recording: a `Recorded scan` slider over the scans kept, and the banner that says
+/// the page shows a past scan, with `Return to now`.
+#[component]
+fn Recorded() -> impl IntoView {
+    let state = expect_context::<AppState>();
+    let range = Memo::new(move |_| state.recorded_range());
+    let shown = move || state.displayed_scan();
+    let first = move || range.get().map_or(0, |r| r.0);
+    let last = move || range.get().map_or(0, |r| r.1);
+    let has_history = Memo::new(move |_| range.get().is_some_and(|(f, l)| l > f));
+    view! {
+        <Show when=move || has_history.get()>
+            <div class="control-row recorded">
+                <label class="field grow">
+                    <span>"Recorded scan"</span>
+                    <input type="range" aria-label="Recorded scan"
+                        prop:min=move || first().to_string() prop:max=move || last().to_string() step="1"
+                        prop:value=move || shown().to_string()
+                        on:input=move |ev| {
+                            if let Ok(n) = event_target_value(&ev).trim().parse::<u64>() {
+                                state.show_scan(n);
+                            }
+                        }/>
+                </label>
+                <output class="mono" aria-label="Recorded scans">{move || format!("{}–{}", first(), last())}</output>
+            </div>
+        </Show>
+        {move || state.shown.get().map(|n| {
+            let last = range.get().map_or(n, |r| r.1);
+            view! {
+                <div class="past-banner" role="status">
+                    <span>{past_words::showing(n, last)}</span>
+                    " — "
+                    <button class="link" on:click=move |_| state.return_to_now()>{past_words::RETURN_TO_NOW}</button>
+                </div>
+            }
+        })}
     }
 }

@@ -16,3 +16,4 @@ pub mod sfc;
 pub mod share_box;
 pub mod timeline;
 pub mod variables;
+pub mod why;
