@@ -121,8 +121,10 @@ test('ST latch: step back to the scan Motor turned on, ask why, follow it, jump 
   assert.match(await text(), /Start TRUE \(since scan 3\)/);
   assert.match(await text(), /Stop FALSE/);
   await page.screenshot({ path: path.join(root, 'docs/screenshots/why-st-latch.png') });
-  // Its link shows the line.
-  await why.getByRole('button', { name: 'Go to line 4' }).waitFor();
+  // Its link shows the line; the editor's status line then offers the line's own Why.
+  await why.getByRole('button', { name: 'Go to line 4' }).click();
+  await page.locator('.ed-status').getByRole('button', { name: 'Why is Motor TRUE?' }).waitFor();
+  assert.equal(await page.locator('.ed-status').getByText('Ln 4, Col 1').count(), 1);
 
   // A later scan: the explanation follows the scan shown; Motor holds itself (seal-in).
   await page.getByRole('button', { name: 'Step', exact: true }).click();
@@ -231,7 +233,7 @@ test('weighing with its plant: a place names the transition that fired, and the 
     const buttons = why.getByRole('button', { name: /^Why is p \d+\?$/ });
     let clicked = false;
     for (let b = 0; b < await buttons.count(); b += 1) {
-      const name = await buttons.nth(b).getAttribute('aria-label');
+      const name = (await buttons.nth(b).textContent()).trim();
       if (visited.has(name)) continue;
       visited.add(name);
       await buttons.nth(b).click();

@@ -184,6 +184,13 @@ pub fn scan_view(
     Ok(state.sim.with_value(|s| s.as_ref().map(|s| s.view_at(scan))))
 }
 
+/// The `Recorded scan` slider and the banner of a past scan.
+#[wasm_split(past, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn recorded_view() -> Result<AnyView, LoadFailed> {
+    use crate::components::recorded::Recorded;
+    Ok(view! { <Recorded/> }.into_any())
+}
+
 /// Makes recorded scan `scan` the present, dropping the later ones; `None` without a
 /// program.
 #[wasm_split(past, wasm_split_path = ::leptos::wasm_split, fallible)]

@@ -6,7 +6,8 @@ use leptos::prelude::*;
 use plc_core::sim::SimState;
 use plc_core::vm::format_time;
 
-use crate::state::{past_words, AppState, RunMode, Speed};
+use crate::lazy::{self, lazy_view};
+use crate::state::{AppState, RunMode, Speed};
 
 /// The control bar of the simulation pane.
 #[component]
@@ -19,6 +20,8 @@ pub fn Controls() -> impl IntoView {
     let can_scan = move || has_sim() && !faulted();
     let running = move || mode.get() == RunMode::Running;
     let scans_per_step = RwSignal::new(10u64);
+    let has_history =
+        Memo::new(move |_| state.recorded_range().is_some_and(|(first, last)| last > first));
 
     let status = move || {
         if !has_sim() {
@@ -116,7 +119,9 @@ pub fn Controls() -> impl IntoView {
                     </select>
                 </label>
             </div>
-            <Recorded/>
+            // The slider and the banner are a chunk of their own (`lazy::recorded_view`),
+            // fetched once the recording holds a scan to go back to.
+            {move || has_history.get().then(|| lazy_view("the recording", lazy::recorded_view))}
             <div class="readouts">
                 <span class=move || status().1 role="status" aria-label=move || format!("PLC state: {}", status().0)>
                     {move || status().0}
@@ -125,45 +130,5 @@ pub fn Controls() -> impl IntoView {
                 <span class="readout">"Time " <output aria-label="Virtual time">{time}</output></span>
             </div>
         </section>
-    }
-}
-
-/// The recording: a `Recorded scan` slider over the scans kept, and the banner that says
-/// the page shows a past scan, with `Return to now`.
-#[component]
-fn Recorded() -> impl IntoView {
-    let state = expect_context::<AppState>();
-    let range = Memo::new(move |_| state.recorded_range());
-    let shown = move || state.displayed_scan();
-    let first = move || range.get().map_or(0, |r| r.0);
-    let last = move || range.get().map_or(0, |r| r.1);
-    let has_history = Memo::new(move |_| range.get().is_some_and(|(f, l)| l > f));
-    view! {
-        <Show when=move || has_history.get()>
-            <div class="control-row recorded">
-                <label class="field grow">
-                    <span>"Recorded scan"</span>
-                    <input type="range" aria-label="Recorded scan"
-                        prop:min=move || first().to_string() prop:max=move || last().to_string() step="1"
-                        prop:value=move || shown().to_string()
-                        on:input=move |ev| {
-                            if let Ok(n) = event_target_value(&ev).trim().parse::<u64>() {
-                                state.show_scan(n);
-                            }
-                        }/>
-                </label>
-                <output class="mono" aria-label="Recorded scans">{move || format!("{}–{}", first(), last())}</output>
-            </div>
-        </Show>
-        {move || state.shown.get().map(|n| {
-            let last = range.get().map_or(n, |r| r.1);
-            view! {
-                <div class="past-banner" role="status">
-                    <span>{past_words::showing(n, last)}</span>
-                    " — "
-                    <button class="link" on:click=move |_| state.return_to_now()>{past_words::RETURN_TO_NOW}</button>
-                </div>
-            }
-        })}
     }
 }

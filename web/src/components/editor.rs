@@ -408,10 +408,13 @@ pub fn Editor() -> impl IntoView {
         let name = assigned.get()?;
         let value = state.read(&name)?;
         let label = plc_core::why::why_label(&name, &value);
-        Some(view! {
-            <button class="small" aria-label=label.clone() title=label
-                on:click=move |_| state.ask_why(&name)>"Why?"</button>
-        })
+        Some(
+            view! {
+                <button class="small" aria-label=label.clone() title=label
+                    on:click=move |_| state.ask_why(&name)>"Why?"</button>
+            }
+            .into_any(),
+        )
     };
 
     view! {

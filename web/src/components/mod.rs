@@ -11,6 +11,7 @@ pub mod petri;
 pub mod pou_actions;
 pub mod pou_pane;
 pub mod problems;
+pub mod recorded;
 pub mod scene;
 pub mod sfc;
 pub mod share_box;

@@ -281,7 +281,7 @@ fn VarRow(row: Row) -> impl IntoView {
                     <button class="small why" aria-label=why_name
                         title="Explain this value at the scan shown"
                         on:click=move |_| path.with_value(|p| state.ask_why(p))>"Why?"</button>
-                })}
+                }.into_any())}
                 {scalar.then(|| view! {
                     <button class="small" aria-label=format!("Edit {path_text}") title="Edit (or double-click the value)"
                         on:click=move |_| start_edit()>"✎"</button>

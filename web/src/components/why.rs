@@ -101,7 +101,13 @@ fn operand_links(sim: &Simulator, ex: &Explanation) -> Vec<OperandLink> {
         .iter()
         .map(|o| {
             let at = o.since_scan.max(first);
-            let value = sim.view_at(at).ok().and_then(|v| v.read(&o.name).ok());
+            // The question is asked only where the operand has the value the writer read
+            // (an initial value overwritten on the first scan has no scan to ask at).
+            let value = sim
+                .view_at(at)
+                .ok()
+                .and_then(|v| v.read(&o.name).ok())
+                .filter(|v| plc_core::export::value_text(v) == o.text);
             OperandLink {
                 name: o.name.clone(),
                 text: o.text.clone(),
@@ -140,7 +146,11 @@ fn writer_link(ex: &Explanation) -> Option<(Site, String)> {
         Site::Ladder { pou, cell: Some((r, ..)) } => format!("Show rung {} of {pou}", r + 1),
         Site::Ladder { pou, .. } | Site::Declarations { pou, .. } => format!("Show {pou}"),
         Site::Network { pou, .. } => format!("Show the element in {pou}"),
-        Site::Petri { pou, .. } => match w.element.as_deref() {
+        Site::Petri { pou, .. } => match w
+            .element
+            .as_deref()
+            .or_else(|| w.then.as_ref().and_then(|t| t.element.as_deref()))
+        {
             Some(e) => format!("Show {e} in {pou}"),
             None => format!("Show {pou}"),
         },

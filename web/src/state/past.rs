@@ -179,6 +179,11 @@ impl AppState {
     /// is shown, that scan first becomes the present (the scans after it are dropped, and
     /// the banner says so).
     pub fn leave_past_then(&self, then: impl FnOnce() + 'static) {
+        // One copy of the code for every caller.
+        self.leave_past_boxed(Box::new(then));
+    }
+
+    fn leave_past_boxed(&self, then: Box<dyn FnOnce()>) {
         let Some(scan) = self.target_scan() else {
             then();
             return;
