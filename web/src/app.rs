@@ -29,6 +29,7 @@ pub fn App() -> impl IntoView {
     provide_context(tour);
     tour.watch(state, exercises);
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
+    let asking = Memo::new(move |_| state.why.with(Option::is_some));
     let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));
     view! {
         <a class="skip-link" href="#simulation" on:click=skip_to_simulation>"Skip to simulation"</a>
@@ -50,6 +51,7 @@ pub fn App() -> impl IntoView {
             </section>
             <section class="sim-pane" id="simulation" tabindex="-1" aria-label="Simulation">
                 <Controls/>
+                {move || asking.get().then(|| lazy_view("the explanation", lazy::explanation_view))}
                 {move || has_scene.get().then(|| lazy_view("the plant scene", lazy::scene_view))}
                 <IoPanel/>
                 <Variables/>

@@ -441,6 +441,25 @@ pub fn Editor() -> impl IntoView {
             .collect_view()
     };
 
+    // `Why is NAME TRUE?` for the assignment on the caret's line (issue 36), while the
+    // program runs and the variable can be read.
+    let assigned = Memo::new(move |_| {
+        let line = ed.cursor.get().0;
+        state.project.with(|p| assigned_on(&p.source, line))
+    });
+    let line_why = move || {
+        let name = assigned.get()?;
+        let value = state.read(&name)?;
+        let label = plc_core::why::why_label(&name, &value);
+        Some(
+            view! {
+                <button class="small" aria-label=label.clone() title=label
+                    on:click=move |_| state.ask_why(&name)>"Why?"</button>
+            }
+            .into_any(),
+        )
+    };
+
     view! {
         <div class="panel editor">
             <div class="ed-toolbar">
@@ -482,8 +501,19 @@ pub fn Editor() -> impl IntoView {
             </div>
             <div class="ed-status">
                 <span>{move || { let (l, c) = ed.cursor.get(); format!("Ln {l}, Col {c}") }}</span>
+                {line_why}
                 <span id="ed-tab-hint" class="ed-tab-hint" aria-live="polite">{move || tab_hint(ed.tab_indents.get())}</span>
             </div>
         </div>
     }
+}
+
+/// The variable assigned on 1-based `line` of `source` (`Motor := …;` gives `Motor`).
+fn assigned_on(source: &str, line: usize) -> Option<String> {
+    let text = source.split('\n').nth(line.checked_sub(1)?)?;
+    let (target, _) = text.split_once(":=")?;
+    let target = target.trim();
+    let ok = target.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && target.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | '[' | ']'));
+    ok.then(|| target.to_string())
 }
