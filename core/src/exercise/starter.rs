@@ -13,7 +13,7 @@ use crate::ladder::{LadderPou, LadderPouKind, Rung, DEFAULT_COLUMNS, DEFAULT_ROW
 use crate::petri::{GenerationOptions, Net, PetriPou, Place, Position};
 use crate::project::{PouLanguage, ProgramPou, Project};
 
-use super::format::{Direction, Exercise, ExerciseError, InterfaceVar};
+use super::format::{Exercise, ExerciseError};
 
 /// A language an exercise may be solved in.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -150,28 +150,7 @@ impl Exercise {
     /// The interface as declaration blocks (`VAR_INPUT … END_VAR`, `VAR_OUTPUT … END_VAR`),
     /// each variable with its meaning as a comment.
     pub fn interface_declarations(&self) -> String {
-        let mut text = String::new();
-        for (direction, keyword) in
-            [(Direction::Input, "VAR_INPUT"), (Direction::Output, "VAR_OUTPUT")]
-        {
-            let vars: Vec<&InterfaceVar> =
-                self.interface.iter().filter(|v| v.direction == direction).collect();
-            if vars.is_empty() {
-                continue;
-            }
-            text.push_str(keyword);
-            text.push('\n');
-            for v in vars {
-                let meaning = v.meaning.replace("*)", "* )");
-                if meaning.is_empty() {
-                    text.push_str(&format!("    {} : {};\n", v.name, v.ty));
-                } else {
-                    text.push_str(&format!("    {} : {}; (* {meaning} *)\n", v.name, v.ty));
-                }
-            }
-            text.push_str("END_VAR\n");
-        }
-        text
+        super::interface_declarations(&self.interface)
     }
 
     /// A starter in `language` made from the interface, its PROGRAM named `program`.

@@ -5,7 +5,7 @@
 
 use super::catalog::{Catalog, TypeKey, Variable};
 use super::{Element, LadderPou};
-use crate::syntax::ast::{AddressArea, AddressSize, VarSection};
+use crate::syntax::ast::{AddressArea, AddressSize};
 
 /// How many choices the box lists at most.
 pub const MAX_CHOICES: usize = 40;
@@ -39,20 +39,8 @@ fn wanted(element: &Element) -> Option<Wanted> {
     })
 }
 
-fn section_name(section: VarSection) -> &'static str {
-    match section {
-        VarSection::Var => "VAR",
-        VarSection::Input => "VAR_INPUT",
-        VarSection::Output => "VAR_OUTPUT",
-        VarSection::InOut => "VAR_IN_OUT",
-        VarSection::Global => "VAR_GLOBAL",
-        VarSection::External => "VAR_EXTERNAL",
-        VarSection::Temp => "VAR_TEMP",
-    }
-}
-
 fn detail(v: &Variable) -> String {
-    let mut text = format!("{}, {}", v.ty, section_name(v.section));
+    let mut text = format!("{}, {}", v.ty, v.section.keyword());
     if v.constant {
         text.push_str(" CONSTANT");
     }

@@ -61,19 +61,6 @@ fn implied_section(source: &str, pou: &Pou, name: &str) -> VarSection {
     }
 }
 
-/// The keyword that opens a block of `section`.
-fn keyword(section: VarSection) -> &'static str {
-    match section {
-        VarSection::Var => "VAR",
-        VarSection::Input => "VAR_INPUT",
-        VarSection::Output => "VAR_OUTPUT",
-        VarSection::InOut => "VAR_IN_OUT",
-        VarSection::Global => "VAR_GLOBAL",
-        VarSection::External => "VAR_EXTERNAL",
-        VarSection::Temp => "VAR_TEMP",
-    }
-}
-
 /// The byte offset where line `offset` is on starts.
 fn line_start(source: &str, offset: usize) -> usize {
     source[..offset].rfind('\n').map_or(0, |i| i + 1)
@@ -160,11 +147,12 @@ pub fn declare_variable(source: &str, at: Span, name: &str, ty: &str) -> Option<
     let mut out = source.to_string();
     if at_line > at.start as usize {
         // Written on one line with the use (`PROGRAM P VAR … END_VAR x := 1; …`).
-        out.insert_str(after, &format!(" {} {line} END_VAR", keyword(section)));
+        out.insert_str(after, &format!(" {} {line} END_VAR", section.keyword()));
         return Some(out);
     }
     let indent = indentation(source, pou.span.start as usize);
-    let block_text = format!("{indent}{}\n{indent}    {line}\n{indent}END_VAR\n", keyword(section));
+    let block_text =
+        format!("{indent}{}\n{indent}    {line}\n{indent}END_VAR\n", section.keyword());
     out.insert_str(at_line, &block_text);
     Some(out)
 }

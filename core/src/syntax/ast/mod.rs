@@ -102,6 +102,21 @@ pub enum VarSection {
     Temp,
 }
 
+impl VarSection {
+    /// The keyword that opens a block of this section (`VAR_INPUT`).
+    pub fn keyword(self) -> &'static str {
+        match self {
+            VarSection::Var => "VAR",
+            VarSection::Input => "VAR_INPUT",
+            VarSection::Output => "VAR_OUTPUT",
+            VarSection::InOut => "VAR_IN_OUT",
+            VarSection::Global => "VAR_GLOBAL",
+            VarSection::External => "VAR_EXTERNAL",
+            VarSection::Temp => "VAR_TEMP",
+        }
+    }
+}
+
 /// One `VAR… [RETAIN|NON_RETAIN] [CONSTANT] … END_VAR` block.
 #[derive(Debug, Clone, PartialEq)]
 pub struct VarBlock {
