@@ -25,8 +25,13 @@ pub fn Controls() -> impl IntoView {
     let version = move || version_text(state.stale.get(), mode.get()).unwrap_or_default();
     let running = move || mode.get() == RunMode::Running;
     let scans_per_step = RwSignal::new(10u64);
-    let has_history =
-        Memo::new(move |_| state.recorded_range().is_some_and(|(first, last)| last > first));
+    // Once shown, the slider's row stays while there is a program (a rebuild starts a new
+    // recording at scan 0): the panels below never jump while the student types or clicks.
+    let has_history = Memo::new(move |was: Option<&bool>| {
+        let range = state.recorded_range();
+        range.is_some_and(|(first, last)| last > first)
+            || (was.copied().unwrap_or(false) && range.is_some())
+    });
 
     let status = move || {
         if !has_sim() {

@@ -21,6 +21,7 @@ pub fn Recorded() -> impl IntoView {
                     <span>"Recorded scan"</span>
                     <input type="range" aria-label="Recorded scan"
                         prop:min=move || first().to_string() prop:max=move || last().to_string() step="1"
+                        prop:disabled=move || first() == last()
                         prop:value=move || shown().to_string()
                         on:input=move |ev| {
                             if let Ok(n) = event_target_value(&ev).trim().parse::<u64>() {
