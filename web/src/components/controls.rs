@@ -131,7 +131,11 @@ pub fn Controls() -> impl IntoView {
             </div>
             // The slider and the banner are a chunk of their own (`lazy::recorded_view`),
             // fetched once the recording holds a scan to go back to.
-            {move || has_history.get().then(|| lazy_view("the recording", lazy::recorded_view))}
+            // Its room is kept while there is a program, so pressing Run (which starts the
+            // recording) never moves the inputs below under the pointer.
+            <div class="recorded-slot" class:reserved=has_sim>
+                {move || has_history.get().then(|| lazy_view("the recording", lazy::recorded_view))}
+            </div>
             <div class="readouts">
                 <span class=move || status().1 role="status" aria-label=move || format!("PLC state: {}", status().0)>
                     {move || status().0}
