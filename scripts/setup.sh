@@ -49,12 +49,19 @@ apt_install() {
 }
 command -v node >/dev/null 2>&1 || { log "installing Node.js"; apt_install nodejs npm; }
 command -v npm >/dev/null 2>&1 || { log "installing npm"; apt_install npm; }
-# Debian's Chromium for the browser tests (never a downloaded browser).
+# Debian's browsers for the browser tests (never a downloaded browser): Chromium; Firefox
+# ESR and WebKitGTK (WebKitWebDriver with its MiniBrowser) for the cross-engine suite, and
+# xvfb-run for MiniBrowser, which has no headless mode. (About 4 minutes for the last three.)
 command -v chromium >/dev/null 2>&1 || { log "installing Chromium"; apt_install chromium chromium-driver; }
+command -v firefox-esr >/dev/null 2>&1 || { log "installing Firefox ESR"; apt_install firefox-esr; }
+command -v WebKitWebDriver >/dev/null 2>&1 || { log "installing WebKitGTK's WebDriver and MiniBrowser"; apt_install webkit2gtk-driver; }
+command -v xvfb-run >/dev/null 2>&1 || { log "installing xvfb"; apt_install xvfb xauth; }
 
-# playwright-core (drives Chromium), binaryen's wasm-opt 132 (used by trunk) and terser
-# (minifies the app's JS glue in scripts/build-web.sh).
-if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/terser ]; then
+# playwright-core (drives Chromium), puppeteer-core (drives Firefox over WebDriver BiDi),
+# selenium-webdriver (drives WebKitWebDriver), binaryen's wasm-opt 132 (used by trunk) and
+# terser (minifies the app's JS glue in scripts/build-web.sh). None downloads a browser.
+if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/terser ] \
+  || [ ! -d node_modules/puppeteer-core ] || [ ! -d node_modules/selenium-webdriver ]; then
   log "installing npm packages"
   npm ci --no-audit --no-fund
 fi

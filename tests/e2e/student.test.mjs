@@ -65,7 +65,16 @@ test('a start/stop latch runs: Start turns the motor on, Stop turns it off', asy
   for (const name of ['Start', 'Stop', 'Motor']) {
     await page.getByRole('checkbox', { name: `Chart ${name}` }).check();
   }
-  await page.getByRole('button', { name: 'Run', exact: true }).click();
+  // Pressing Run starts the recording; its row's room is kept, so the inputs stay where
+  // the pointer is (a click right after Run must not land beside Start).
+  const inputsTop = () => page.getByRole('region', { name: 'Inputs and outputs' }).evaluate((e) => e.getBoundingClientRect().top);
+  // A person sees Run before pressing it (a click scrolls it into view first).
+  const run = page.getByRole('button', { name: 'Run', exact: true });
+  await run.scrollIntoViewIfNeeded();
+  const before = await inputsTop();
+  await run.click();
+  await page.getByRole('slider', { name: 'Recorded scan' }).waitFor();
+  assert.equal(await inputsTop(), before, 'the inputs do not move when Run is pressed');
   await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
   await page.getByRole('img', { name: 'Motor: ON' }).waitFor({ timeout: 5000 });
   await page.getByRole('checkbox', { name: 'Start', exact: true }).uncheck();

@@ -29,8 +29,10 @@ pub fn App() -> impl IntoView {
     provide_context(tour);
     tour.watch(state, exercises);
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
+    let asking = Memo::new(move |_| state.why.with(Option::is_some));
     let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));
     view! {
+        <a class="skip-link" href="#simulation" on:click=skip_to_simulation>"Skip to simulation"</a>
         <Header/>
         <Banner/>
         <Show when=catalogue>
@@ -47,14 +49,28 @@ pub fn App() -> impl IntoView {
                 })}
                 <PouPane/>
             </section>
-            <section class="sim-pane" aria-label="Simulation">
+            <section class="sim-pane" id="simulation" tabindex="-1" aria-label="Simulation">
                 <Controls/>
+                {move || asking.get().then(|| lazy_view("the explanation", lazy::explanation_view))}
                 {move || has_scene.get().then(|| lazy_view("the plant scene", lazy::scene_view))}
                 <IoPanel/>
                 <Variables/>
                 <Timeline/>
             </section>
         </main>
+    }
+}
+
+/// The skip link's click: focus moves to the simulation column (Run, the inputs) without
+/// a fragment in the address, which is the share link's place.
+fn skip_to_simulation(ev: leptos::ev::MouseEvent) {
+    ev.prevent_default();
+    let pane = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.get_element_by_id("simulation"))
+        .and_then(|e| wasm_bindgen::JsCast::dyn_into::<web_sys::HtmlElement>(e).ok());
+    if let Some(pane) = pane {
+        let _ = pane.focus();
     }
 }
 

@@ -177,6 +177,40 @@ pub fn read_share(
     Ok(plc_core::project::decode_share(&fragment))
 }
 
+/// The `Explanation` region (`Why?` buttons open it) and the core's why engine.
+#[wasm_split(why, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn explanation_view() -> Result<AnyView, LoadFailed> {
+    use crate::components::why::Explanation;
+    Ok(view! { <Explanation/> }.into_any())
+}
+
+/// Recorded scan `scan` rebuilt by replaying from the nearest snapshot (issue 36); `None`
+/// without a program. The replay comes with the first step back.
+#[wasm_split(past, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scan_view(
+    state: crate::state::AppState,
+    scan: u64,
+) -> Result<Option<Result<plc_core::sim::ScanView, plc_core::sim::RecordError>>, LoadFailed> {
+    Ok(state.sim.with_value(|s| s.as_ref().map(|s| s.view_at(scan))))
+}
+
+/// The `Recorded scan` slider and the banner of a past scan.
+#[wasm_split(past, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn recorded_view() -> Result<AnyView, LoadFailed> {
+    use crate::components::recorded::Recorded;
+    Ok(view! { <Recorded/> }.into_any())
+}
+
+/// Makes recorded scan `scan` the present, dropping the later ones; `None` without a
+/// program.
+#[wasm_split(past, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn rewind(
+    state: crate::state::AppState,
+    scan: u64,
+) -> Result<Option<Result<(), plc_core::sim::RecordError>>, LoadFailed> {
+    Ok(state.sim.try_update_value(|s| s.as_mut().map(|s| s.rewind_to(scan))).flatten())
+}
+
 /// The plant's scene (its widgets drawn and its buttons and switches).
 #[wasm_split(scene, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn scene_view() -> Result<AnyView, LoadFailed> {

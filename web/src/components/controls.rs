@@ -7,6 +7,7 @@ use leptos::prelude::*;
 use plc_core::sim::SimState;
 use plc_core::vm::format_time;
 
+use crate::lazy::{self, lazy_view};
 use crate::state::{version_text, AppState, RunMode, Speed};
 
 /// The control bar of the simulation pane.
@@ -24,6 +25,13 @@ pub fn Controls() -> impl IntoView {
     let version = move || version_text(state.stale.get(), mode.get()).unwrap_or_default();
     let running = move || mode.get() == RunMode::Running;
     let scans_per_step = RwSignal::new(10u64);
+    // Once shown, the slider's row stays while there is a program (a rebuild starts a new
+    // recording at scan 0): the panels below never jump while the student types or clicks.
+    let has_history = Memo::new(move |was: Option<&bool>| {
+        let range = state.recorded_range();
+        range.is_some_and(|(first, last)| last > first)
+            || (was.copied().unwrap_or(false) && range.is_some())
+    });
 
     let status = move || {
         if !has_sim() {
@@ -38,8 +46,8 @@ pub fn Controls() -> impl IntoView {
             }
         }
     };
-    let scans = move || state.with_sim(|s| s.scan_count()).unwrap_or(0).to_string();
-    let time = move || state.with_sim(|s| format_time(s.time_ns())).unwrap_or_default();
+    let scans = move || state.with_readout(|s| s.scan_count()).unwrap_or(0).to_string();
+    let time = move || state.with_readout(|s| format_time(s.time_ns())).unwrap_or_default();
     let cycle = move || state.project.with(|p| p.settings.cycle_ms).to_string();
     let speed_value = move || match state.speed.get() {
         Speed::RealTime => "1",
@@ -54,6 +62,9 @@ pub fn Controls() -> impl IntoView {
                 <button class="primary" disabled=move || !can_scan() || running()
                     on:click=move |_| state.run()>"Run"</button>
                 <button disabled=move || !running() on:click=move |_| state.pause()>"Pause"</button>
+                <button disabled=move || running() || !state.can_step_back()
+                    title="Show the scan before (the recording keeps the recent history)"
+                    on:click=move |_| state.step_back()>"Step back"</button>
                 <button data-tour="step" disabled=move || !can_scan() on:click=move |_| state.step(1)>"Step"</button>
                 <button disabled=move || !has_sim() on:click=move |_| state.reset()>"Reset"</button>
                 <button disabled=move || !has_sim() on:click=move |_| state.warm_restart()>
@@ -117,6 +128,13 @@ pub fn Controls() -> impl IntoView {
                         <option value="max" selected=move || speed_value() == "max">"As fast as possible"</option>
                     </select>
                 </label>
+            </div>
+            // The slider and the banner are a chunk of their own (`lazy::recorded_view`),
+            // fetched once the recording holds a scan to go back to.
+            // Its room is kept while there is a program, so pressing Run (which starts the
+            // recording) never moves the inputs below under the pointer.
+            <div class="recorded-slot" class:reserved=has_sim>
+                {move || has_history.get().then(|| lazy_view("the recording", lazy::recorded_view))}
             </div>
             <div class="readouts">
                 <span class=move || status().1 role="status" aria-label=move || format!("PLC state: {}", status().0)>

@@ -17,6 +17,7 @@ use std::time::Duration;
 use leptos::ev;
 use leptos::html;
 use leptos::prelude::*;
+use plc_core::project::StorageBackend;
 use web_sys::HtmlTextAreaElement;
 
 use crate::state::{AppState, PouView};
@@ -68,6 +69,21 @@ struct Ed {
     pending: StoredValue<bool>,
     /// Escape was pressed: the next Tab moves focus instead of indenting.
     tab_leaves: StoredValue<bool>,
+    /// Tab indents (turned on and off with Ctrl+M, kept in local storage); off, Tab moves
+    /// focus as everywhere else on the page, so the editor is never a keyboard trap.
+    tab_indents: RwSignal<bool>,
+}
+
+/// The local storage key noting that Tab indents in the ST editor.
+const TAB_INDENTS_KEY: &str = "plc-trainer/v1/tab-indents";
+
+/// The editor's hint about Tab, shown under the text (`Ctrl+M` switches).
+fn tab_hint(indents: bool) -> &'static str {
+    if indents {
+        "Tab indents (Ctrl+M: Tab moves focus; Escape, then Tab leaves)"
+    } else {
+        "Tab moves focus (Ctrl+M: Tab indents)"
+    }
 }
 
 impl Ed {
@@ -222,7 +238,18 @@ impl Ed {
         let tab_leaves = self.tab_leaves.get_value();
         self.tab_leaves.set_value(key == "Escape");
         match key.as_str() {
-            "Tab" if !ctrl && !ev.alt_key() && !tab_leaves => {
+            k if ctrl && !ev.alt_key() && !ev.shift_key() && k.eq_ignore_ascii_case("m") => {
+                ev.prevent_default();
+                let on = !self.tab_indents.get_untracked();
+                self.tab_indents.set(on);
+                let mut store = crate::storage::LocalStorage::open();
+                let _ = if on {
+                    store.set(TAB_INDENTS_KEY, "on")
+                } else {
+                    store.remove(TAB_INDENTS_KEY)
+                };
+            }
+            "Tab" if !ctrl && !ev.alt_key() && !tab_leaves && self.tab_indents.get_untracked() => {
                 ev.prevent_default();
                 if let Some((text, s, e)) = self.selection_bytes() {
                     let edit = if ev.shift_key() {
@@ -321,6 +348,9 @@ pub fn Editor() -> impl IntoView {
         generation: StoredValue::new(0),
         pending: StoredValue::new(false),
         tab_leaves: StoredValue::new(false),
+        tab_indents: RwSignal::new(
+            crate::storage::LocalStorage::open().get(TAB_INDENTS_KEY).ok().flatten().is_some(),
+        ),
     };
 
     // The project's source → the text area (on open, import, or any change made elsewhere).
@@ -411,6 +441,25 @@ pub fn Editor() -> impl IntoView {
             .collect_view()
     };
 
+    // `Why is NAME TRUE?` for the assignment on the caret's line (issue 36), while the
+    // program runs and the variable can be read.
+    let assigned = Memo::new(move |_| {
+        let line = ed.cursor.get().0;
+        state.project.with(|p| assigned_on(&p.source, line))
+    });
+    let line_why = move || {
+        let name = assigned.get()?;
+        let value = state.read(&name)?;
+        let label = plc_core::why::why_label(&name, &value);
+        Some(
+            view! {
+                <button class="small" aria-label=label.clone() title=label
+                    on:click=move |_| state.ask_why(&name)>"Why?"</button>
+            }
+            .into_any(),
+        )
+    };
+
     view! {
         <div class="panel editor">
             <div class="ed-toolbar">
@@ -433,6 +482,8 @@ pub fn Editor() -> impl IntoView {
                         class="ed-input"
                         node_ref=ed.ta
                         aria-label="ST source"
+                        aria-describedby="ed-tab-hint"
+                        aria-keyshortcuts="Control+M"
                         spellcheck="false"
                         autocapitalize="off"
                         autocomplete="off"
@@ -450,7 +501,19 @@ pub fn Editor() -> impl IntoView {
             </div>
             <div class="ed-status">
                 <span>{move || { let (l, c) = ed.cursor.get(); format!("Ln {l}, Col {c}") }}</span>
+                {line_why}
+                <span id="ed-tab-hint" class="ed-tab-hint" aria-live="polite">{move || tab_hint(ed.tab_indents.get())}</span>
             </div>
         </div>
     }
+}
+
+/// The variable assigned on 1-based `line` of `source` (`Motor := …;` gives `Motor`).
+fn assigned_on(source: &str, line: usize) -> Option<String> {
+    let text = source.split('\n').nth(line.checked_sub(1)?)?;
+    let (target, _) = text.split_once(":=")?;
+    let target = target.trim();
+    let ok = target.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && target.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | '[' | ']'));
+    ok.then(|| target.to_string())
 }

@@ -15,9 +15,10 @@ const SHORTCUTS: &[(&str, &[(&str, &str)])] = &[
         &[
             ("Ctrl+Z", "Undo"),
             ("Ctrl+Shift+Z or Ctrl+Y", "Redo"),
-            ("Tab / Shift+Tab", "Indent / outdent the selected lines"),
+            ("Tab / Shift+Tab", "Move to the next / previous control, or with Tab indenting on, indent / outdent the selected lines"),
+            ("Ctrl+M", "Turn Tab indenting on or off (the line under the editor says which)"),
             ("Enter", "New line, keeping the indentation"),
-            ("Escape, then Tab", "Leave the editor (Tab indents otherwise)"),
+            ("Escape, then Tab", "Leave the editor while Tab indents"),
         ],
     ),
     (

@@ -75,11 +75,11 @@ fn io_vars(state: AppState) -> (Vec<IoVar>, Vec<IoVar>) {
 }
 
 fn read_number(state: AppState, name: &str) -> f64 {
-    state.with_sim(|s| s.read(name).ok().as_ref().and_then(value_number)).flatten().unwrap_or(0.0)
+    state.read(name).as_ref().and_then(value_number).unwrap_or(0.0)
 }
 
 fn read_bool(state: AppState, name: &str) -> bool {
-    state.with_sim(|s| matches!(s.read(name), Ok(Value::Bool(true)))).unwrap_or(false)
+    matches!(state.read(name), Some(Value::Bool(true)))
 }
 
 fn number_text(x: f64, kind: Kind) -> String {

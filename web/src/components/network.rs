@@ -450,6 +450,19 @@ pub fn NetworkView(name: String) -> impl IntoView {
         };
         net.with(|n| {
             let Some(n) = n.as_ref() else { return Values::new() };
+            // A recorded scan shown: its values and watches, else the present.
+            let past = state.with_shown_view(|s| {
+                output_values(n, &|path: &str| {
+                    if prefix.is_empty() {
+                        s.read(path).ok().or_else(|| s.watch(path).cloned())
+                    } else {
+                        s.read(&format!("{prefix}{path}")).ok()
+                    }
+                })
+            });
+            if let Some(past) = past {
+                return past;
+            }
             state
                 .with_sim(|s| {
                     output_values(n, &|path: &str| {

@@ -21,9 +21,9 @@ fn number(v: &Value) -> Option<f64> {
     }
 }
 
-/// The value of `path` in the running simulator.
+/// The value of `path` at the scan the page shows.
 fn read(state: AppState, path: &str) -> Option<Value> {
-    state.with_sim(|s| s.read(path).ok()).flatten()
+    state.read(path)
 }
 
 /// A readout: the value divided by the widget's `scale`, with its unit.

@@ -175,7 +175,7 @@ pub fn SfcView(name: String) -> impl IntoView {
         chart.with(|c| {
             let Some(c) = c.as_ref() else { return Vec::new() };
             state
-                .with_sim(|s| {
+                .with_readout(|s| {
                     c.steps
                         .iter()
                         .map(|st| {

@@ -177,12 +177,8 @@ fn VarRow(row: Row) -> impl IntoView {
             }
         });
     };
-    let value = move || {
-        path.with_value(|p| {
-            state.with_sim(|s| s.read(p).map(|v| value_text(&v)).unwrap_or_default())
-        })
-        .unwrap_or_default()
-    };
+    let value =
+        move || path.with_value(|p| state.read(p).map(|v| value_text(&v)).unwrap_or_default());
     let forced = move || {
         path.with_value(|p| state.with_sim(|s| s.forced().any(|(f, _)| f.eq_ignore_ascii_case(p))))
             .unwrap_or(false)
@@ -198,31 +194,37 @@ fn VarRow(row: Row) -> impl IntoView {
     };
     let commit = move || {
         let text = draft.get_untracked();
-        let result = path.with_value(|p| {
-            state.with_sim_mut(|s| {
-                if s.forced().any(|(f, _)| f.eq_ignore_ascii_case(p)) {
-                    s.force(p, &text)
-                } else {
-                    s.write(p, &text)
-                }
-            })
+        // In the past, the value is written to that scan, which becomes the present.
+        state.leave_past_then(move || {
+            let result = path.with_value(|p| {
+                state.with_sim_mut(|s| {
+                    if s.forced().any(|(f, _)| f.eq_ignore_ascii_case(p)) {
+                        s.force(p, &text)
+                    } else {
+                        s.write(p, &text)
+                    }
+                })
+            });
+            match result {
+                Some(Err(e)) => state.error(e.to_string()),
+                _ => editing.set(false),
+            }
         });
-        match result {
-            Some(Err(e)) => state.error(e.to_string()),
-            _ => editing.set(false),
-        }
     };
     let force = move |_| {
-        if forced() {
-            path.with_value(|p| state.with_sim_mut(|s| s.unforce(p)));
-        } else {
-            let text = if editing.get_untracked() { draft.get_untracked() } else { value() };
-            if let Some(Err(e)) = path.with_value(|p| state.with_sim_mut(|s| s.force(p, &text))) {
+        let text = if editing.get_untracked() { draft.get_untracked() } else { value() };
+        let unforce = forced();
+        state.leave_past_then(move || {
+            if unforce {
+                path.with_value(|p| state.with_sim_mut(|s| s.unforce(p)));
+            } else if let Some(Err(e)) =
+                path.with_value(|p| state.with_sim_mut(|s| s.force(p, &text)))
+            {
                 state.error(e.to_string());
             } else {
                 editing.set(false);
             }
-        }
+        });
     };
     let name_cell = {
         let label = row.label.clone();
@@ -246,6 +248,14 @@ fn VarRow(row: Row) -> impl IntoView {
     };
     let path_text = row.path.clone();
     let child = row.depth > 0;
+    // `Why is NAME TRUE?` on every BOOL (issue 36): the name says the value it explains.
+    let is_bool = row.ty.eq_ignore_ascii_case("BOOL");
+    let why_name = move || {
+        path.with_value(|p| {
+            let v = state.read(p).unwrap_or(plc_core::vm::Value::Bool(false));
+            plc_core::why::why_label(p, &v)
+        })
+    };
     view! {
         <tr class:forced=forced class:child=child>
             <td class="mono">{row.address.clone()}</td>
@@ -267,6 +277,11 @@ fn VarRow(row: Row) -> impl IntoView {
                 </Show>
             </td>
             <td class="actions">
+                {is_bool.then(|| view! {
+                    <button class="small why" aria-label=why_name
+                        title="Explain this value at the scan shown"
+                        on:click=move |_| path.with_value(|p| state.ask_why(p))>"Why?"</button>
+                }.into_any())}
                 {scalar.then(|| view! {
                     <button class="small" aria-label=format!("Edit {path_text}") title="Edit (or double-click the value)"
                         on:click=move |_| start_edit()>"✎"</button>

@@ -145,6 +145,9 @@ impl AppState {
                     let _ = sim.hold(&name, &value);
                 }
                 self.restore_sim_settings(&mut sim);
+                // The history the page can go back through (issue 36); a program too
+                // large for the recording's budget runs without it.
+                let _ = sim.set_recording(true);
                 // A network PROGRAM's function outputs have no variables: the simulator
                 // watches their expressions so the network view can show them.
                 if let Some(net) =
@@ -159,6 +162,7 @@ impl AppState {
                 });
                 self.running_places.set_value(places.map(|seg| seg.generated.place_map.clone()));
                 self.marking_before_last.set_value(None);
+                self.forget_past();
                 self.sim.set_value(Some(sim));
                 self.sim_build.set_value(Some(build));
                 self.running.set(Some(chosen));
@@ -248,10 +252,14 @@ impl AppState {
     /// taken on the last scan: ST lines for the editor, generated lines for Petri nets.
     pub fn bump(&self) {
         self.sim_version.update(|v| *v += 1);
-        let spans = self
-            .sim
-            .with_value(|s| s.as_ref().map(Simulator::active_case_branches))
-            .unwrap_or_default();
+        let spans =
+            match self.shown_view.with_value(|v| v.as_ref().map(|v| v.active_case_branches())) {
+                Some(spans) => spans,
+                None => self
+                    .sim
+                    .with_value(|s| s.as_ref().map(Simulator::active_case_branches))
+                    .unwrap_or_default(),
+            };
         let mut st_lines = Vec::new();
         let mut generated = Vec::new();
         if !spans.is_empty() {

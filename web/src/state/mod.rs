@@ -4,6 +4,7 @@
 
 mod check;
 mod gate;
+mod past;
 mod projects;
 mod run;
 
@@ -13,10 +14,11 @@ use leptos::prelude::*;
 use plc_core::build::{ProjectBuild, Site};
 use plc_core::petri::PlaceMap;
 use plc_core::project::{Project, ProjectSummary};
-use plc_core::sim::{BreakpointId, Simulator};
+use plc_core::sim::{BreakpointId, ScanView, Simulator};
 
 pub use check::DiagView;
 pub use gate::version_text;
+pub use past::{words as past_words, WhyQuery, WhyTarget};
 pub use projects::{clear_fragment, note_panic, project_file_name};
 pub use run::marking_of;
 
@@ -199,6 +201,14 @@ pub struct AppState {
     batch: StoredValue<u64>,
     /// Generation of the pending debounced check (see [`AppState::check_soon`]).
     check_generation: StoredValue<u64>,
+    /// The recorded scan the page shows (`None`: the present).
+    pub shown: RwSignal<Option<u64>>,
+    /// That scan, rebuilt from the recording.
+    shown_view: StoredValue<Option<ScanView>>,
+    /// The recorded scan asked for and still being rebuilt.
+    going_to: StoredValue<Option<u64>>,
+    /// What the `Explanation` region explains (`None`: closed).
+    pub why: RwSignal<Option<WhyQuery>>,
 }
 
 impl AppState {
@@ -242,6 +252,10 @@ impl AppState {
             pending_ns: StoredValue::new(0.0),
             batch: StoredValue::new(1),
             check_generation: StoredValue::new(0),
+            shown: RwSignal::new(None),
+            shown_view: StoredValue::new(None),
+            going_to: StoredValue::new(None),
+            why: RwSignal::new(None),
         };
         state.open_initial_project();
         state.watch_other_tabs();
@@ -295,6 +309,8 @@ impl AppState {
         self.stale.set(false);
         self.run_old.set(false);
         self.sim_build.set_value(None);
+        self.forget_past();
+        self.why.set(None);
         self.running_places.set_value(None);
         self.running.set(None);
         self.programs.set(Vec::new());
@@ -402,9 +418,12 @@ impl AppState {
         self.held.update(|h| {
             h.insert(name.to_string(), literal.to_string());
         });
-        if let Some(Err(e)) = self.with_sim_mut(|s| s.hold(name, literal)) {
-            self.error(e.to_string());
-        }
+        let (state, name, literal) = (*self, name.to_string(), literal.to_string());
+        self.leave_past_then(move || {
+            if let Some(Err(e)) = state.with_sim_mut(|s| s.hold(&name, &literal)) {
+                state.error(e.to_string());
+            }
+        });
     }
 
     /// Sets the cycle time in milliseconds (kept in the project).

@@ -9,7 +9,7 @@
 use leptos::prelude::*;
 use plc_core::export::value_number;
 use plc_core::petri::PlaceMap;
-use plc_core::sim::{ScanOutcome, SimState, Simulator};
+use plc_core::sim::{Readout, ScanOutcome, SimState, Simulator};
 
 use super::{AppState, Notice, RunMode, Speed};
 
@@ -24,7 +24,7 @@ fn perf_now() -> f64 {
 }
 
 /// The marking of a net read from the simulator's step variables.
-pub fn marking_of(sim: &Simulator, places: &PlaceMap) -> Vec<u32> {
+pub fn marking_of(sim: &dyn Readout, places: &PlaceMap) -> Vec<u32> {
     places.marking(|var| sim.read(var).ok().as_ref().and_then(value_number).map(|x| x as i64))
 }
 
@@ -99,6 +99,11 @@ impl AppState {
 
     /// Runs `n` scans now (Step, Step N).
     pub fn step(&self, n: u64) {
+        // In the past, Step moves through the recording.
+        if self.in_past() {
+            self.step_forward(n);
+            return;
+        }
         if !self.may_scan() {
             return;
         }
@@ -131,10 +136,12 @@ impl AppState {
         if self.run_mode.get_untracked() == RunMode::Running {
             return;
         }
-        self.run_mode.set(RunMode::Running);
         let state = *self;
-        let start = perf_now();
-        request_animation_frame(move || state.frame(start));
+        self.leave_past_then(move || {
+            state.run_mode.set(RunMode::Running);
+            let start = perf_now();
+            request_animation_frame(move || state.frame(start));
+        });
     }
 
     /// Stops scanning (the state is kept).
@@ -145,6 +152,7 @@ impl AppState {
     }
 
     fn after_restart(&self) {
+        self.forget_past();
         self.marked_line.set(None);
         self.fault_site.set(None);
         self.marking_before_last.set_value(None);

@@ -8,7 +8,7 @@ use std::collections::{HashMap, HashSet};
 use plc_core::export::value_text;
 use plc_core::ladder::{power_map, Element, LadderPou, Rung};
 use plc_core::semantic::Type;
-use plc_core::sim::Simulator;
+use plc_core::sim::Readout;
 use plc_core::vm::Value;
 
 use super::geometry::instance_values;
@@ -89,7 +89,7 @@ pub struct LadderLive {
 
 /// The first instance of function block `fb` among the running program's variables (and
 /// the globals), by its path (`F1`); `None` when it has none.
-pub fn first_instance(sim: &Simulator, fb: &str) -> Option<String> {
+pub fn first_instance(sim: &dyn Readout, fb: &str) -> Option<String> {
     let exe = sim.executable();
     let types = exe.type_table();
     exe.main_vars().iter().find_map(|e| match e.var.ty {
@@ -106,7 +106,7 @@ impl LadderLive {
     /// Reads the probes from the simulator: of the running PROGRAM itself (`instance`
     /// `None`), or of one instance of a function block (`Some("F1")`), whose operands are
     /// read inside it (`F1.Start`) or, for globals, as they are.
-    pub fn read(sim: &Simulator, probes: &Probes, instance: Option<&str>) -> Self {
+    pub fn read(sim: &dyn Readout, probes: &Probes, instance: Option<&str>) -> Self {
         let inside = |path: &str| match instance {
             Some(i) => sim.read(&format!("{i}.{path}")).or_else(|_| sim.read(path)),
             None => sim.read(path),

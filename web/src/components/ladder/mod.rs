@@ -57,6 +57,31 @@ fn live_status(state: AppState, pou: &LadderPou, instance: Option<String>) -> Op
 
 /// The grid of a rung's cells over its drawing: one `gridcell` per cell, named by its
 /// place and content, selected by click, focus or arrow keys, taking keys and double-clicks.
+/// `Why is NAME TRUE?` on a contact or coil while its POU runs (issue 36): opens the
+/// explanation of its operand at the scan shown.
+fn why_button(live: Memo<Option<LadderLive>>, element: &Element) -> Option<impl IntoView> {
+    let (Element::Contact { operand, .. } | Element::Coil { operand, .. }) = element else {
+        return None;
+    };
+    let state = expect_context::<AppState>();
+    let op = StoredValue::new(operand.trim().to_string());
+    Some(move || {
+        let value = live.with(|l| op.with_value(|o| l.as_ref()?.bool_of(o)))?;
+        let label =
+            op.with_value(|o| plc_core::why::why_label(o, &plc_core::vm::Value::Bool(value)));
+        Some(view! {
+            <button class="ld-why" aria-label=label title="Why?"
+                on:pointerdown=move |ev: leptos::ev::PointerEvent| ev.stop_propagation()
+                on:dblclick=move |ev: leptos::ev::MouseEvent| ev.stop_propagation()
+                on:keydown=move |ev: leptos::ev::KeyboardEvent| ev.stop_propagation()
+                on:click=move |ev: leptos::ev::MouseEvent| {
+                    ev.stop_propagation();
+                    op.with_value(|o| state.ask_why(o));
+                }>"?"</button>
+        })
+    })
+}
+
 fn rung_grid(
     editor: LadderEditor,
     rung: &plc_core::ladder::Rung,
@@ -106,6 +131,7 @@ fn rung_grid(
                         col + 1,
                         describe_cell(cell)
                     );
+                    let why = why_button(live, &cell.element);
                     let is_selected = selection.clone();
                     let selected = move || is_selected.selected(&Some(at));
                     let first = selection.clone();
@@ -144,7 +170,7 @@ fn rung_grid(
                                 if !ev.alt_key() && editor.key(at, &ev.key(), ctrl, ev.shift_key()) {
                                     ev.prevent_default();
                                 }
-                            }></div>
+                            }>{why}</div>
                     }
                 })
                 .collect_view();
@@ -351,7 +377,7 @@ pub fn LadderView(name: String) -> impl IntoView {
     // program may have been rebuilt; a memo, so an unchanged answer wakes nothing).
     let instance = Memo::new(move |_| {
         let fb = fb_name.get()?;
-        state.with_sim(|s| live::first_instance(s, &fb)).flatten()
+        state.with_readout(|s| live::first_instance(s, &fb)).flatten()
     });
     // What to read from the simulator: worked out only while this POU runs (it lowers the
     // whole POU, too slow to redo on every edit of a large one that is not running).
@@ -370,7 +396,8 @@ pub fn LadderView(name: String) -> impl IntoView {
             return None;
         }
         probes.with(|pr| {
-            pr.as_ref().and_then(|pr| state.with_sim(|s| LadderLive::read(s, pr, inst.as_deref())))
+            pr.as_ref()
+                .and_then(|pr| state.with_readout(|s| LadderLive::read(s, pr, inst.as_deref())))
         })
     });
     let show_st = RwSignal::new(false);

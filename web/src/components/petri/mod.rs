@@ -17,6 +17,7 @@ mod props;
 
 use leptos::prelude::*;
 use plc_core::build::Site;
+use plc_core::export::value_number;
 use plc_core::petri::{build, compile, Compiled, NetElement, PetriPou, PtNet};
 
 use crate::components::ladder::{geometry::clip, scroll_to};
@@ -185,6 +186,7 @@ fn place_view(
     );
     let (pid, kid, sid) = (id.clone(), id.clone(), id.clone());
     let place_id = id.clone();
+    let why_id = place.id.clone();
     let label_name = shown.clone();
     view! {
         <g class="pn-place" class:marked=move || { tokens() > 0 }
@@ -209,8 +211,36 @@ fn place_view(
             <text class="pn-name" x=c.x y=c.y - PLACE_R - 6.0>{clip(&shown, 16)}</text>
             <text class="pn-case" x=c.x y=c.y + PLACE_R + 14.0>{case}</text>
         </g>
+        {move || ctx.runs.get().then(|| why_place(ctx.state, &why_id, c))}
     }
     .into_any()
+}
+
+/// `Why does P3 hold a token?` beside a place of the running net (issue 36).
+fn why_place(state: AppState, id: &str, c: Point) -> impl IntoView {
+    let label = plc_core::why::why_place_label(id);
+    let id = StoredValue::new(id.to_string());
+    let ask = move || id.with_value(|p| state.ask_why_place(p));
+    let (x, y) = (c.x + PLACE_R + 4.0, c.y - PLACE_R - 4.0);
+    view! {
+        <g class="pn-why" role="button" tabindex="0" aria-label=label
+            on:pointerdown=move |ev: leptos::ev::PointerEvent| ev.stop_propagation()
+            on:click=move |ev: leptos::ev::MouseEvent| {
+                ev.stop_propagation();
+                ask();
+            }
+            on:keydown=move |ev: leptos::ev::KeyboardEvent| {
+                ev.stop_propagation();
+                if ev.key() == "Enter" || ev.key() == " " {
+                    ev.prevent_default();
+                    ask();
+                }
+            }>
+            <title>"Why?"</title>
+            <circle cx=x cy=y r="7"/>
+            <text x=x y=y + 4.0 text-anchor="middle">"?"</text>
+        </g>
+    }
 }
 
 fn transition_view(
@@ -462,7 +492,7 @@ pub fn PetriView(name: String) -> impl IntoView {
         }
         compiled.with(|c| {
             let map = &c.as_ref()?.generated.place_map;
-            state.with_sim(|s| marking_of(s, map))
+            state.with_readout(|s| marking_of(s, map))
         })
     });
     let play: RwSignal<Option<Play>> = RwSignal::new(None);
@@ -499,6 +529,22 @@ pub fn PetriView(name: String) -> impl IntoView {
             return (0..n).map(|t| Some(t) == last).collect();
         }
         let Some(now) = live_marking.get() else { return Vec::new() };
+        // A recorded scan shows the firings of that scan: the marking at the end of the
+        // scan before, against its own.
+        let past = state
+            .with_shown_view(|v| {
+                compiled.with(|c| {
+                    let c = c.as_ref()?;
+                    let before = c.generated.place_map.marking(|var| {
+                        v.read_previous(var).as_ref().and_then(value_number).map(|x| x as i64)
+                    });
+                    Some(live::fired(&c.net.pre, &c.net.post, &before, &now))
+                })
+            })
+            .flatten();
+        if let Some(past) = past {
+            return past;
+        }
         let scans = state.with_sim(|s| s.scan_count()).unwrap_or(0);
         let before = state.marking_before_last.get_value();
         let last = compiled.with(|c| match (c, before) {

@@ -304,6 +304,11 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
                 }
             }).collect_view())}
             <line x1=LEFT x2=WIDTH y1=move || height() - AXIS_H y2=move || height() - AXIS_H stroke="#5b6b7c"/>
+            // The recorded scan the page shows (issue 36).
+            {move || state.with_shown_view(|v| v.time_ns()).map(|t| {
+                let x = chart::x_of(t, chart.with(|c| c.window));
+                view! { <line class="scan-cursor" x1=x x2=x y1="0" y2=height() - AXIS_H stroke="#b45309" stroke-width="2"/> }
+            })}
             {move || view.cursor.get().map(|t| {
                 let x = chart::x_of(t, chart.with(|c| c.window));
                 view! { <line class="cursor" x1=x x2=x y1="0" y2=height() - AXIS_H stroke="#333" stroke-dasharray="3 3"/> }
@@ -325,7 +330,7 @@ fn short(x: f64) -> String {
 fn Legend(chart: Memo<Chart>, view: View) -> impl IntoView {
     let state = expect_context::<AppState>();
     let rows = move || {
-        let at = view.cursor.get();
+        let at = view.cursor.get().or_else(|| state.with_shown_view(|v| v.time_ns()));
         let t = at.unwrap_or(i64::MAX);
         state
             .with_sim(|s| {
@@ -345,7 +350,7 @@ fn Legend(chart: Memo<Chart>, view: View) -> impl IntoView {
     let _ = chart;
     view! {
         <div class="legend" aria-live="off">
-            <span class="legend-time">{move || match view.cursor.get() {
+            <span class="legend-time">{move || match view.cursor.get().or_else(|| state.with_shown_view(|v| v.time_ns())) {
                 Some(t) => format!("at {}", chart::time_label(t, 1)),
                 None => "latest".to_string(),
             }}</span>
