@@ -35,6 +35,7 @@ pub(crate) mod compile;
 pub mod diagnostics;
 pub mod exercise;
 pub mod export;
+pub mod i18n;
 pub mod il;
 pub mod ladder;
 pub mod limits;

@@ -136,6 +136,23 @@ fn explain_describes_a_code() {
     assert!(stdout(&out).starts_with("E0150: "));
 }
 
+#[test]
+fn explain_speaks_polish_and_czech_and_keeps_the_program_text() {
+    let en = stdout(&plc(&["explain", "E0150"]));
+    for lang in ["pl", "cs"] {
+        let out = plc(&["explain", "E0150", "--lang", lang]);
+        assert!(out.status.success());
+        let text = stdout(&out);
+        assert!(text.starts_with("E0150: "));
+        assert_ne!(text, en, "--lang {lang} prints a translation");
+        let example = en.lines().find(|l| l.contains("PROGRAM")).unwrap_or_default();
+        assert!(text.contains(example), "--lang {lang} keeps the ST example as it is");
+    }
+    let out = plc(&["explain", "E0150", "--lang", "de"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unknown language `de`"));
+}
+
 fn example(name: &str) -> String {
     format!("{}/../examples/{name}", env!("CARGO_MANIFEST_DIR"))
 }

@@ -107,14 +107,22 @@ enum Command {
     /// right example.
     Explain {
         /// The code.
-        #[arg(required_unless_present_any = ["markdown", "html"])]
+        #[arg(required_unless_present_any = ["markdown", "html", "json"])]
         code: Option<String>,
         /// Print every code as the Markdown page docs/problems.md.
-        #[arg(long, conflicts_with_all = ["code", "html"])]
+        #[arg(long, conflicts_with_all = ["code", "html", "json"])]
         markdown: bool,
-        /// Print every code as the HTML page problems.html of the site.
-        #[arg(long, conflicts_with_all = ["code", "markdown"])]
+        /// Print every code as the HTML page problems.html of the site (with `--lang`,
+        /// problems.pl.html or problems.cs.html).
+        #[arg(long, conflicts_with_all = ["code", "markdown", "json"])]
         html: bool,
+        /// Print every code's title and explanation as the JSON a translation file has
+        /// (core/i18n/problems.en.json is this in English).
+        #[arg(long, conflicts_with_all = ["code", "markdown", "html"])]
+        json: bool,
+        /// The language: en (the default), pl or cs.
+        #[arg(long, default_value = "en", conflicts_with = "markdown")]
+        lang: plc_core::i18n::Lang,
     },
     /// Print the readable ST view of a ladder POU of a project, or the ST a network POU
     /// (an LD or FBD body kept as drawn in an imported file) runs as.
@@ -569,10 +577,10 @@ fn run(path: &Path, mut options: RunOptions, output: Output) -> ExitCode {
     }
 }
 
-fn explain(code: &str) -> ExitCode {
+fn explain(code: &str, lang: plc_core::i18n::Lang) -> ExitCode {
     match Code::all().iter().find(|c| c.as_str().eq_ignore_ascii_case(code)) {
         Some(c) => {
-            print!("{}", plc_core::diagnostics::explain_text(*c));
+            print!("{}", plc_core::diagnostics::explain_text_in(*c, lang));
             ExitCode::SUCCESS
         }
         None => {
@@ -617,11 +625,15 @@ fn main() -> ExitCode {
             print!("{}", plc_core::diagnostics::problems_markdown());
             ExitCode::SUCCESS
         }
-        Command::Explain { html: true, .. } => {
-            print!("{}", plc_core::diagnostics::problems_html());
+        Command::Explain { html: true, lang, .. } => {
+            print!("{}", plc_core::diagnostics::problems_html_in(lang));
             ExitCode::SUCCESS
         }
-        Command::Explain { code, .. } => explain(code.as_deref().unwrap_or_default()),
+        Command::Explain { json: true, lang, .. } => {
+            print!("{}", plc_core::diagnostics::ProblemTexts::of(lang).to_json());
+            ExitCode::SUCCESS
+        }
+        Command::Explain { code, lang, .. } => explain(code.as_deref().unwrap_or_default(), lang),
         Command::StView { project, pou } => st_view(&project, &pou),
         Command::Why { file, var, at, program, cycles, cycle_ms, set, set_at, json } => {
             let (pairs, set_at) = match settings(&set, &set_at) {

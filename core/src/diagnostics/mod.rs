@@ -2,18 +2,25 @@
 //!
 //! Every stage reports problems as [`Diagnostic`] values carrying a stable [`Code`]; nothing
 //! here prints or panics. The codes live in one table (`codes.rs`), their explanations and examples in
-//! another (`explain.rs`), from which `docs/problems.md` is generated.
+//! another (`explain.rs`), their Polish and Czech texts in `core/i18n/` (`translations.rs`),
+//! and `pages.rs` makes `plc explain`'s text and the problems pages (`docs/problems.md`,
+//! `problems.html`, `problems.pl.html`, `problems.cs.html`) from them.
 
 mod codes;
 mod explain;
+mod pages;
 mod span;
 pub mod suggest;
+mod translations;
 
 pub use codes::Code;
-pub use explain::{
-    explain_text, problems_html, problems_markdown, Example, Explanation, EXPLANATIONS,
+pub use explain::{Example, Explanation, EXPLANATIONS};
+pub use pages::{
+    explain_text, explain_text_in, problems_html, problems_html_in, problems_markdown,
+    problems_page_name,
 };
 pub use span::{LineIndex, Location, Span};
+pub use translations::{parse_translation, CodeTexts, PageWords, ProblemTexts, TRANSLATIONS};
 
 use serde::Serialize;
 
