@@ -51,6 +51,8 @@ done
 wait "$main_opt"
 cp "$work/split/__wasm_split.js" web/boot.js web/worker.js "$work/app/"
 cp -r "$out_dir/exercises" "$work/app/exercises"
+# The translations of the page's words (i18n/pl.json, i18n/cs.json), fetched when chosen.
+cp -r "$out_dir/i18n" "$work/app/i18n"
 node scripts/minify-js.mjs "$work/app"
 node scripts/site.mjs assemble dist "$work"
 node scripts/csp.mjs dist/index.html

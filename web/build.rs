@@ -12,6 +12,14 @@
 //! `scripts/build-web.sh` puts these files next to the app; the worker fetches the one it
 //! opens (natively, in tests, `$OUT_DIR/exercise_files.rs` includes them). The reference
 //! solutions and mutants are never shipped.
+//!
+//! Reads the page's words (`i18n/en.json`, `pl.json`, `cs.json`, one file per language a
+//! translator edits): `$OUT_DIR/i18n.rs` holds one key per English text (`K`) and the
+//! English texts, so a key the code names but the catalogue lacks does not compile; each
+//! translation is checked against English (every key, nothing more, not empty, the same
+//! `{placeholders}`), and the build stops with the list of what is wrong. `$OUT_DIR/i18n/LANG.json`
+//! is the translation as an array in key order, which the page fetches when the language is
+//! chosen (`scripts/build-web.sh` puts it next to the app).
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -150,9 +158,106 @@ fn exercises(out: &Path) {
     }
 }
 
+/// The `{placeholders}` of a text, sorted.
+fn placeholders(text: &str) -> Vec<&str> {
+    let mut found: Vec<&str> = text
+        .split('{')
+        .skip(1)
+        .filter_map(|part| part.split_once('}').map(|(name, _)| name))
+        .collect();
+    found.sort_unstable();
+    found
+}
+
+/// Reads a catalogue file: a JSON object of key → text.
+fn catalogue(path: &Path) -> Result<Vec<(String, String)>, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let map: serde_json::Map<String, serde_json::Value> =
+        serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    map.into_iter()
+        .map(|(k, v)| match v {
+            serde_json::Value::String(s) => Ok((k, s)),
+            _ => Err(format!("{}: `{k}` is not a text", path.display())),
+        })
+        .collect()
+}
+
+/// The page's words: the key enum and English texts, the translations checked and written
+/// as arrays in key order.
+fn i18n(out_dir: &Path) {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("i18n");
+    println!("cargo:rerun-if-changed={}", dir.display());
+    let en = catalogue(&dir.join("en.json")).unwrap_or_else(|e| panic!("{e}"));
+    let mut problems = Vec::new();
+    for (key, text) in &en {
+        if !key.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '.')
+            || !key.starts_with(|c: char| c.is_ascii_lowercase())
+        {
+            problems.push(format!("en.json: the key `{key}` is not lowercase words joined by `_` and `.`"));
+        }
+        if text.trim().is_empty() {
+            problems.push(format!("en.json: `{key}` is empty"));
+        }
+    }
+    let _ = std::fs::create_dir_all(out_dir.join("i18n"));
+    for lang in ["pl", "cs"] {
+        let file = format!("{lang}.json");
+        println!("cargo:rerun-if-changed={}", dir.join(&file).display());
+        let tr = match catalogue(&dir.join(&file)) {
+            Ok(tr) => tr,
+            Err(e) => {
+                problems.push(e);
+                continue;
+            }
+        };
+        let lookup: std::collections::BTreeMap<&str, &str> =
+            tr.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
+        for (key, _) in &tr {
+            if !en.iter().any(|(k, _)| k == key) {
+                problems.push(format!("{file}: `{key}` is not in en.json"));
+            }
+        }
+        let mut array = Vec::new();
+        for (key, text) in &en {
+            match lookup.get(key.as_str()) {
+                None => problems.push(format!("{file}: `{key}` is missing")),
+                Some(t) if t.trim().is_empty() => problems.push(format!("{file}: `{key}` is empty")),
+                Some(t) if placeholders(t) != placeholders(text) => problems.push(format!(
+                    "{file}: `{key}` has the placeholders {:?}, English {:?}",
+                    placeholders(t),
+                    placeholders(text)
+                )),
+                Some(t) => array.push(serde_json::Value::String(t.to_string())),
+            }
+        }
+        let json = serde_json::to_string(&array).unwrap_or_default();
+        let _ = std::fs::write(out_dir.join("i18n").join(&file), json);
+    }
+    if !problems.is_empty() {
+        panic!("the page's words (web/i18n/) are not complete:\n{}", problems.join("\n"));
+    }
+    let variant = |key: &str| key.replace('.', "_");
+    let mut out = String::from(
+        "/// A text of the page: one per entry of `web/i18n/en.json` (dots become `_`).\n\
+         #[allow(non_camel_case_types)]\n#[derive(Debug, Clone, Copy, PartialEq, Eq)]\npub enum K {\n",
+    );
+    for (key, text) in &en {
+        let _ = writeln!(out, "    /// {}\n    {},", text.replace('\n', " "), variant(key));
+    }
+    out.push_str("}\n\n/// How many texts the page has (a translation file holds as many).\npub const COUNT: usize = ");
+    let _ = writeln!(out, "{};\n", en.len());
+    out.push_str("impl K {\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        match self {\n");
+    for (key, text) in &en {
+        let _ = writeln!(out, "            K::{} => {:?},", variant(key), text);
+    }
+    out.push_str("        }\n    }\n}\n");
+    let _ = std::fs::write(out_dir.join("i18n.rs"), out);
+}
+
 fn main() {
     let out_dir = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
     exercises(Path::new(&out_dir));
+    i18n(Path::new(&out_dir));
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
     println!("cargo:rerun-if-changed={}", dir.display());
     let files: Vec<String> = std::fs::read_dir(&dir)

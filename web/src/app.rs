@@ -14,6 +14,7 @@ use crate::components::{
     variables::Variables,
 };
 use crate::exercises::{Exercises, Screen};
+use crate::i18n::{t, K};
 use crate::lazy::{self, lazy_view};
 use crate::state::AppState;
 use plc_core::build::Site;
@@ -21,6 +22,7 @@ use plc_core::build::Site;
 /// The whole app.
 #[component]
 pub fn App() -> impl IntoView {
+    provide_context(crate::i18n::I18n::start());
     let state = AppState::new();
     provide_context(state);
     let exercises = Exercises::new(state);
@@ -32,7 +34,7 @@ pub fn App() -> impl IntoView {
     let asking = Memo::new(move |_| state.why.with(Option::is_some));
     let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));
     view! {
-        <a class="skip-link" href="#simulation" on:click=skip_to_simulation>"Skip to simulation"</a>
+        <a class="skip-link" href="#simulation" on:click=skip_to_simulation>{t(K::app_skip_to_simulation)}</a>
         <Header/>
         <Banner/>
         <Show when=catalogue>

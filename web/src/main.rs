@@ -5,6 +5,7 @@ mod components;
 mod download;
 mod examples;
 mod exercises;
+mod i18n;
 mod import;
 mod lazy;
 mod state;

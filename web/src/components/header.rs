@@ -13,7 +13,9 @@ use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
 use crate::import::import_text;
+use crate::i18n::{t, trf, I18n, K};
 use crate::state::AppState;
+use plc_core::i18n::Lang;
 
 /// The first free "Untitled N" name.
 fn untitled_name(existing: &[String]) -> String {
@@ -66,6 +68,31 @@ async fn share(state: AppState, shown: RwSignal<Option<String>>) {
     }
 }
 
+/// The `Language` select: English, Polski, Čeština, each in its own language; the choice
+/// applies at once and is kept. Its accessible name keeps the English word beside the
+/// translation, so a student lost in a foreign language still finds it.
+#[component]
+fn LanguageSelect() -> impl IntoView {
+    let i18n = expect_context::<I18n>();
+    let name = move || {
+        let word = crate::i18n::tr(K::header_language);
+        if i18n.lang.get() == Lang::En { word } else { format!("{word} (Language)") }
+    };
+    view! {
+        <select class="language-select" aria-label=name title=name
+            prop:value=move || i18n.lang.get().tag()
+            on:change=move |ev: ev::Event| {
+                if let Some(lang) = Lang::from_tag(&event_target_value(&ev)) {
+                    i18n.choose(lang);
+                }
+            }>
+            {Lang::ALL.into_iter().map(|l| view! {
+                <option value=l.tag() lang=l.tag() selected=move || i18n.lang.get() == l>{l.native_name()}</option>
+            }).collect_view()}
+        </select>
+    }
+}
+
 /// The header with the project menu.
 #[component]
 pub fn Header() -> impl IntoView {
@@ -111,15 +138,13 @@ pub fn Header() -> impl IntoView {
         let name = state.project.with_untracked(|p| p.name.clone());
         let ok = web_sys::window()
             .and_then(|w| {
-                w.confirm_with_message(&format!(
-                    "Delete the project “{name}”? This cannot be undone."
-                ))
+                w.confirm_with_message(&trf(K::header_delete_confirm, &[("name", &name)]))
                 .ok()
             })
             .unwrap_or(false);
         if ok {
             state.delete_current();
-            state.info(format!("Deleted “{name}”."));
+            state.info(trf(K::header_deleted, &[("name", &name)]));
         }
     };
     let export = move |_| state.export_project();
@@ -134,7 +159,7 @@ pub fn Header() -> impl IntoView {
                         state.error(e);
                     }
                 }
-                Err(e) => state.error(format!("Could not export PLCopen XML: {e}")),
+                Err(e) => state.error(trf(K::header_export_xml_failed, &[("error", &e.to_string())])),
             }
         });
     };
@@ -156,11 +181,11 @@ pub fn Header() -> impl IntoView {
 
     view! {
         <header class="app-header">
-            <h1 class="app-title">"PLC trainer"</h1>
+            <h1 class="app-title">{t(K::app_title)}</h1>
             <div class="project-title">
                 {move || if renaming.get() {
                     view! {
-                        <input class="rename-input" type="text" node_ref=rename_input aria-label="Project name"
+                        <input class="rename-input" type="text" node_ref=rename_input aria-label=t(K::header_project_name)
                             prop:value=name
                             on:keydown=move |ev: ev::KeyboardEvent| match ev.key().as_str() {
                                 "Enter" => { ev.prevent_default(); confirm_rename(); }
@@ -170,28 +195,29 @@ pub fn Header() -> impl IntoView {
                             on:blur=move |_| confirm_rename()/>
                     }.into_any()
                 } else {
-                    view! { <span class="project-name" title="The open project">{name}</span> }.into_any()
+                    view! { <span class="project-name" title=t(K::header_open_project_title)>{name}</span> }.into_any()
                 }}
             </div>
             <button class="exercises-button" aria-pressed=move || (exercises.screen.get() == Screen::Catalogue).to_string()
                 on:click=move |_| exercises.screen.update(|s| *s = if *s == Screen::Catalogue { Screen::Workspace } else { Screen::Catalogue })
-                title="Exercises that grade themselves">"Exercises"</button>
+                title=t(K::header_exercises_title)>{t(K::header_exercises)}</button>
             {help_menu()}
-            <nav class="project-menu" aria-label="Project">
+            <LanguageSelect/>
+            <nav class="project-menu" aria-label=t(K::header_project_menu)>
                 <label class="project-select">
-                    <span class="visually-hidden">"Open project"</span>
-                    <select aria-label="Open project" on:change=on_select
+                    <span class="visually-hidden">{t(K::header_open_project)}</span>
+                    <select aria-label=t(K::header_open_project) on:change=on_select
                         prop:value=move || state.project_id.get().unwrap_or_default()>
                         {move || {
                             let current = state.project_id.get();
                             let damaged = state.damaged.get();
                             let unsaved = current.is_none().then(|| view! {
-                                <option value="" selected=true>{format!("{} (not saved)", name())}</option>
+                                <option value="" selected=true>{trf(K::header_not_saved, &[("name", &name())])}</option>
                             });
                             let stored = state.projects.get().into_iter().map(|p| {
                                 let selected = current.as_deref() == Some(p.id.as_str());
                                 let label = if damaged.contains_key(&p.id) {
-                                    format!("{} (damaged)", p.name)
+                                    trf(K::header_damaged, &[("name", &p.name)])
                                 } else {
                                     p.name.clone()
                                 };
@@ -201,11 +227,11 @@ pub fn Header() -> impl IntoView {
                         }}
                     </select>
                 </label>
-                <button on:click=new_project>"New project"</button>
-                <button on:click=move |_| renaming.set(true) disabled=move || renaming.get()>"Rename"</button>
+                <button on:click=new_project>{t(K::header_new_project)}</button>
+                <button on:click=move |_| renaming.set(true) disabled=move || renaming.get()>{t(K::header_rename)}</button>
                 <label class="project-select">
-                    <span class="visually-hidden">"Open example"</span>
-                    <select aria-label="Open example" title="Open a shipped example as a new project"
+                    <span class="visually-hidden">{t(K::header_open_example)}</span>
+                    <select aria-label=t(K::header_open_example) title=t(K::header_open_example_title)
                         on:change=move |ev: ev::Event| {
                             let file = event_target_value(&ev);
                             if let Some(sel) = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlSelectElement>().ok()) {
@@ -219,32 +245,32 @@ pub fn Header() -> impl IntoView {
                                     Ok(p) => {
                                         let title = p.name.clone();
                                         if state.add_and_open(p) {
-                                            state.info(format!("Opened the example “{title}” as a new project."));
+                                            state.info(trf(K::header_opened_example, &[("title", &title)]));
                                         }
                                     }
-                                    Err(e) => state.error(format!("Could not open the example: {e}")),
+                                    Err(e) => state.error(trf(K::header_example_failed, &[("error", &e.to_string())])),
                                 }
                             });
                         }>
-                        <option value="" selected=true>"Open example…"</option>
+                        <option value="" selected=true>{t(K::header_open_example_choose)}</option>
                         {examples::examples().into_iter().map(|e| view! {
                             <option value=e.file>{e.title}</option>
                         }).collect_view()}
                     </select>
                 </label>
-                <button on:click=move |_| state.duplicate()>"Duplicate"</button>
-                <button on:click=delete>"Delete"</button>
-                <button on:click=export title="Download the project file">"Export"</button>
-                <button on:click=export_xml title="Download the project as PLCopen XML (OpenPLC Editor, Beremiz, CODESYS)">"Export PLCopen XML"</button>
+                <button on:click=move |_| state.duplicate()>{t(K::header_duplicate)}</button>
+                <button on:click=delete>{t(K::header_delete)}</button>
+                <button on:click=export title=t(K::header_export_title)>{t(K::header_export)}</button>
+                <button on:click=export_xml title=t(K::header_export_xml_title)>{t(K::header_export_xml)}</button>
                 <button on:click=move |_| { if let Some(i) = file_input.get_untracked() { i.click(); } }
-                    title="Open a project file, PLCopen XML, PNML or ST file as a new project">"Import"</button>
+                    title=t(K::header_import_title)>{t(K::header_import)}</button>
                 <input type="file" class="visually-hidden" tabindex="-1" node_ref=file_input
-                    accept=".json,.plcproj.json,.plcsub,.xml,.pnml,.st,application/json,text/xml" aria-label="Import project file"
+                    accept=".json,.plcproj.json,.plcsub,.xml,.pnml,.st,application/json,text/xml" aria-label=t(K::header_import_file)
                     on:change=on_file/>
-                <button on:click=on_share title="Copy a link that opens this project">"Share"</button>
+                <button on:click=on_share title=t(K::header_share_title)>{t(K::header_share)}</button>
             </nav>
             {move || share_link.get().map(|link| view! {
-                <ShareBox link=link label="Share link" close_label="Close share link"
+                <ShareBox link=link label=t(K::header_share_link) close_label=t(K::header_close_share_link)
                     on_close=move || share_link.set(None)/>
             })}
         </header>

@@ -19,8 +19,8 @@ pub async fn copy_to_clipboard(text: &str) -> bool {
 #[component]
 pub fn ShareBox(
     link: String,
-    label: &'static str,
-    close_label: &'static str,
+    #[prop(into)] label: Signal<String>,
+    #[prop(into)] close_label: Signal<String>,
     on_close: impl Fn() + 'static,
 ) -> impl IntoView {
     view! {

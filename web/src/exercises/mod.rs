@@ -412,7 +412,7 @@ async fn ask(request: &Request) -> Result<Reply, String> {
 }
 
 /// The text at `url` (a CORS fetch).
-async fn fetch_text(url: &str) -> Result<String, String> {
+pub(crate) async fn fetch_text(url: &str) -> Result<String, String> {
     let window = web_sys::window().ok_or("no window")?;
     let failed =
         |_| "the address cannot be reached (or does not allow other sites to read it)".to_string();
@@ -429,7 +429,7 @@ async fn fetch_text(url: &str) -> Result<String, String> {
 }
 
 /// A query parameter's decoded value (`?exercise=https%3A%2F%2F…`).
-fn query_param(search: &str, name: &str) -> Option<String> {
+pub(crate) fn query_param(search: &str, name: &str) -> Option<String> {
     let query = search.strip_prefix('?').unwrap_or(search);
     query.split('&').find_map(|pair| {
         let (key, value) = pair.split_once('=')?;
