@@ -58,11 +58,11 @@ test('System follows the colour scheme; Dark and Light apply at once and are kep
   const theme = page.getByRole('combobox', { name: 'Theme' });
   assert.deepEqual(await theme.locator('option').allTextContents(), ['System', 'Light', 'Dark']);
   assert.equal(await theme.inputValue(), 'system', 'System is the default');
-  assert.ok(luminance(await colour(page, 'body', 'backgroundColor')) < 0.1, 'a dark system gets the dark page');
+  assert.ok(luminance(await colour(page, 'html', 'backgroundColor')) < 0.1, 'a dark system gets the dark page');
 
   await openExample(page, 'Ladder latch');
-  const wire = '.ld-wire';
-  await page.locator(wire).first().waitFor();
+  const wire = 'svg[aria-label="Rung 1"] .ld-wire:not(.powered)';
+  await page.locator(wire).first().waitFor({ state: 'attached' });
   assert.ok(luminance(await colour(page, wire, 'stroke')) > 0.2, 'the rung wires are light on the dark canvas');
 
   // Light on a dark system: at once, with no reload (the page keeps its state).
@@ -70,7 +70,7 @@ test('System follows the colour scheme; Dark and Light apply at once and are kep
   page.on('framenavigated', () => { reloaded = true; });
   await theme.selectOption({ label: 'Light' });
   await page.waitForFunction(() => document.documentElement.dataset.theme === 'light');
-  assert.ok(luminance(await colour(page, 'body', 'backgroundColor')) > 0.8, 'Light wins over the dark system');
+  assert.ok(luminance(await colour(page, 'html', 'backgroundColor')) > 0.8, 'Light wins over the dark system');
   assert.ok(luminance(await colour(page, wire, 'stroke')) < 0.2, 'the wires are dark on the light canvas');
   assert.equal(reloaded, false, 'no reload');
   assert.equal(await page.evaluate(() => localStorage.getItem('plc-trainer/v1/theme')), 'light');
@@ -84,7 +84,7 @@ test('System follows the colour scheme; Dark and Light apply at once and are kep
   await page.getByRole('combobox', { name: 'Theme' }).selectOption({ label: 'System' });
   await page.waitForFunction(() => !document.documentElement.hasAttribute('data-theme'));
   assert.equal(await page.evaluate(() => localStorage.getItem('plc-trainer/v1/theme')), null);
-  assert.ok(luminance(await colour(page, 'body', 'backgroundColor')) < 0.1);
+  assert.ok(luminance(await colour(page, 'html', 'backgroundColor')) < 0.1);
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -94,7 +94,7 @@ test('Dark on a light system colours the editors, the diagrams and the timeline'
   const { page, errors } = await openApp(context);
   await page.getByRole('combobox', { name: 'Theme' }).selectOption({ label: 'Dark' });
   await page.waitForFunction(() => document.documentElement.dataset.theme === 'dark');
-  assert.ok(luminance(await colour(page, 'body', 'backgroundColor')) < 0.1);
+  assert.ok(luminance(await colour(page, 'html', 'backgroundColor')) < 0.1);
   assert.ok(luminance(await colour(page, '.ed-frame', 'backgroundColor')) < 0.1, 'the ST editor is dark');
   assert.ok(luminance(await colour(page, 'body', 'color')) > 0.6, 'the text is light');
   await page.getByRole('button', { name: 'Run', exact: true }).click();
@@ -109,6 +109,8 @@ test('Dark on a light system colours the editors, the diagrams and the timeline'
 });
 
 const SIZES = { 1280: { width: 1280, height: 800 }, 390: { width: 390, height: 844 } };
+// Each view: how to reach it, and what the screenshot shows (scrolled to, as a person would).
+const SHOWN = { st: '.app-header', ladder: '.ld-rung', petri: '.pn-net' };
 const VIEWS = {
   st: async () => {},
   ladder: async (page) => {
@@ -135,6 +137,7 @@ for (const [width, viewport] of Object.entries(SIZES)) {
         const context = await browser.newContext({ viewport, colorScheme: scheme, hasTouch: width === '390', isMobile: width === '390' });
         const { page, errors } = await openApp(context);
         await open(page);
+        await page.locator(SHOWN[name]).first().evaluate((el) => el.scrollIntoView({ block: 'start' }));
         await page.waitForTimeout(500);
         await page.screenshot({ path: path.join(shots, `theme-${name}-${width}-${scheme}.png`) });
         assert.deepEqual(errors, []);
