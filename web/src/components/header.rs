@@ -1,5 +1,6 @@
 //! The page header: the app title, the open project's name, the project menu (open,
-//! new, open an example, rename, duplicate, delete, export, import, share) and `Help`.
+//! new, open an example, rename, duplicate, delete, export, import, share), `Help` and the
+//! `Theme` switch.
 
 use leptos::ev;
 use leptos::html;
@@ -10,6 +11,7 @@ use wasm_bindgen_futures::JsFuture;
 
 use crate::components::help::help_menu;
 use crate::components::share_box::{copy_to_clipboard, ShareBox};
+use crate::components::theme::ThemeSwitch;
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
 use crate::import::import_text;
@@ -177,6 +179,7 @@ pub fn Header() -> impl IntoView {
                 on:click=move |_| exercises.screen.update(|s| *s = if *s == Screen::Catalogue { Screen::Workspace } else { Screen::Catalogue })
                 title="Exercises that grade themselves">"Exercises"</button>
             {help_menu()}
+            <ThemeSwitch/>
             <nav class="project-menu" aria-label="Project">
                 <label class="project-select">
                     <span class="visually-hidden">"Open project"</span>

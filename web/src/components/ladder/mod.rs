@@ -500,12 +500,12 @@ pub fn LadderView(name: String) -> impl IntoView {
             let (il, _) = plc_core::ladder::il_view(&p);
             let il_html = highlight_html(&il, &[]);
             return view! {
-                <pre class="code-view" aria-label=format!("{} as Structured Text", p.name)>
+                <pre class="code-view" tabindex="0" aria-label=format!("{} as Structured Text", p.name)>
                     <code inner_html=html></code>
                 </pre>
                 <section class="ld-il-view" role="region" aria-label="IL view">
                     <h3>"Instruction List"</h3>
-                    <pre class="code-view" aria-label=format!("{} as Instruction List", p.name)>
+                    <pre class="code-view" tabindex="0" aria-label=format!("{} as Instruction List", p.name)>
                         <code inner_html=il_html></code>
                     </pre>
                 </section>
@@ -818,7 +818,8 @@ fn BesideLines(editor: LadderEditor, lines: Memo<Vec<(String, Option<usize>)>>) 
         })
     };
     view! {
-        <pre class="code-view">
+        // Focusable: keyboard users scroll its long lines.
+        <pre class="code-view" tabindex="0">
             <For each=keyed key=|line| line.clone() children=move |(_, text, rung)| {
                 let html = highlight_html(&text, &[]);
                 let lit = move || rung.is_some() && selected_rung.get() == rung;
