@@ -155,15 +155,19 @@ const VIEWS = {
     await page.waitForFunction(() => !document.querySelector('.exercise-actions button.primary')?.disabled);
     return { page, errors };
   },
-  'problems page': async (context) => {
-    const page = await context.newPage();
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(e.message));
-    await page.goto(new URL('problems.html#E0403', server.url).href);
-    await page.getByRole('heading').first().waitFor();
-    return { page, errors };
-  },
+  'problems page': (context) => problemsPage(context, 'problems.html#E0403'),
+  'problems page in Polish': (context) => problemsPage(context, 'problems.pl.html#E0403'),
+  'problems page in Czech': (context) => problemsPage(context, 'problems.cs.html#E0403'),
 };
+
+async function problemsPage(context, address) {
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(new URL(address, server.url).href);
+  await page.getByRole('heading').first().waitFor();
+  return { page, errors };
+}
 
 for (const [size, viewport] of Object.entries(SIZES)) {
   for (const colorScheme of ['light', 'dark']) {
