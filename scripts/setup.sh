@@ -58,10 +58,12 @@ command -v WebKitWebDriver >/dev/null 2>&1 || { log "installing WebKitGTK's WebD
 command -v xvfb-run >/dev/null 2>&1 || { log "installing xvfb"; apt_install xvfb xauth; }
 
 # playwright-core (drives Chromium), puppeteer-core (drives Firefox over WebDriver BiDi),
-# selenium-webdriver (drives WebKitWebDriver), binaryen's wasm-opt 132 (used by trunk) and
-# terser (minifies the app's JS glue in scripts/build-web.sh). None downloads a browser.
+# selenium-webdriver (drives WebKitWebDriver), binaryen's wasm-opt 132 (used by trunk),
+# terser (minifies the app's JS glue in scripts/build-web.sh) and axe-core (the
+# accessibility check of tests/e2e/axe.test.mjs). None downloads a browser.
 if [ ! -x node_modules/.bin/wasm-opt ] || [ ! -d node_modules/playwright-core ] || [ ! -d node_modules/terser ] \
-  || [ ! -d node_modules/puppeteer-core ] || [ ! -d node_modules/selenium-webdriver ]; then
+  || [ ! -d node_modules/puppeteer-core ] || [ ! -d node_modules/selenium-webdriver ] \
+  || [ ! -f node_modules/axe-core/axe.min.js ]; then
   log "installing npm packages"
   npm ci --no-audit --no-fund
 fi

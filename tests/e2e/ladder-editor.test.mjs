@@ -50,8 +50,11 @@ async function newLadderProgram(page, name, declarations) {
 const cell = (view, rung, row, col) =>
   view.getByRole('gridcell', { name: new RegExp(`^Rung ${rung}, row ${row}, column ${col}: `) });
 
-/** Drags with the mouse (pointer events) from the middle of one element to another's. */
+/** Drags with the mouse (pointer events) from the middle of one element to another's,
+ * once the target is in view (the rung grid is drawn at a readable size, issue 34, so a
+ * lower row can be below the window's edge: a person scrolls to it first). */
 async function drag(page, from, to) {
+  await to.scrollIntoViewIfNeeded();
   const a = await from.boundingBox();
   const b = await to.boundingBox();
   await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);

@@ -22,5 +22,7 @@ fn main() {
         state::note_panic();
         console_error_panic_hook::hook(info);
     }));
+    // The chosen theme before the first paint of the app, so it never flashes light.
+    components::theme::apply(components::theme::stored());
     leptos::mount::mount_to_body(app::App);
 }

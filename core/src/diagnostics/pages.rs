@@ -138,7 +138,8 @@ pub fn problems_page_name(lang: Lang) -> String {
 
 /// `problems.html` of the site (copied into `dist/` by trunk): the same page as HTML, one
 /// section per code with the code as its id, so the problem list links to
-/// `problems.html#E0150`. Static, so it costs nothing until opened.
+/// `problems.html#E0150`. Static, so it costs nothing until opened; dark when the system is
+/// (it has no script to read the app's Theme switch).
 pub fn problems_html() -> String {
     problems_html_in(Lang::En)
 }
@@ -153,9 +154,11 @@ pub fn problems_html_in(lang: Lang) -> String {
          <title>{} · PLC trainer</title>\n\
          <style>body{{font:16px/1.5 system-ui,sans-serif;max-width:50rem;margin:2rem auto;padding:0 1rem;color:#1b1f24}}\
          h2{{font-size:1.1rem;margin-top:2rem;border-top:1px solid #d0d7de;padding-top:1rem}}\
-         pre{{background:#f6f8fa;padding:.6rem .8rem;overflow-x:auto;white-space:pre-wrap}}\
+         pre{{background:#f6f8fa;padding:.6rem .8rem;overflow-x:auto;white-space:pre-wrap;overflow-wrap:anywhere}}\
          code{{background:#f6f8fa;padding:0 .2rem}}:target{{outline:3px solid #f0b400;outline-offset:.4rem}}\
-         nav a{{margin-right:1rem}}</style>\n\
+         nav a{{margin-right:1rem}}\
+         :root{{color-scheme:light dark}}@media (prefers-color-scheme:dark){{body{{background:#0f1419;color:#e2e8ef}}\
+         h2{{border-color:#3a4654}}pre,code{{background:#222c37}}}}</style>\n\
          </head>\n<body>\n",
         lang.tag(),
         html_escape(&texts.page.title)

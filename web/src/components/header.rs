@@ -1,5 +1,6 @@
 //! The page header: the app title, the open project's name, the project menu (open,
-//! new, open an example, rename, duplicate, delete, export, import, share) and `Help`.
+//! new, open an example, rename, duplicate, delete, export, import, share), `Help` and the
+//! `Theme` switch.
 
 use leptos::ev;
 use leptos::html;
@@ -10,6 +11,7 @@ use wasm_bindgen_futures::JsFuture;
 
 use crate::components::help::help_menu;
 use crate::components::share_box::{copy_to_clipboard, ShareBox};
+use crate::components::theme::ThemeSwitch;
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
 use crate::import::import_text;
@@ -203,6 +205,7 @@ pub fn Header() -> impl IntoView {
                 title=t(K::header_exercises_title)>{t(K::header_exercises)}</button>
             {help_menu()}
             <LanguageSelect/>
+            <ThemeSwitch/>
             <nav class="project-menu" aria-label=t(K::header_project_menu)>
                 <label class="project-select">
                     <span class="visually-hidden">{t(K::header_open_project)}</span>

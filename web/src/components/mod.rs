@@ -17,6 +17,7 @@ pub mod recorded;
 pub mod scene;
 pub mod sfc;
 pub mod share_box;
+pub mod theme;
 pub mod timeline;
 pub mod tour;
 pub mod variables;

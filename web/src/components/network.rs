@@ -544,7 +544,7 @@ pub fn NetworkView(name: String) -> impl IntoView {
             {move || focused.get().map(|id| view! {
                 <p class="view-note" role="status">{format!("Element localId {id} is marked in red.")}</p>
             })}
-            <div class="nw-wrap">
+            <div class="nw-wrap" tabindex="0">
                 {move || match net.get() {
                     Some(n) => {
                         let mut marked = faulty.get();

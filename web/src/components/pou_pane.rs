@@ -19,7 +19,7 @@ struct NavItem {
     badge: &'static str,
     /// What the entry is called.
     name: String,
-    /// Its accessible name ("Ladder diagram Latch").
+    /// What it is ("Ladder diagram Latch"), the end of its accessible name.
     label: String,
     /// Errors reported in it.
     errors: usize,
@@ -80,6 +80,17 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
     })
 }
 
+/// A tab's accessible name: its visible text first (badge, name, error count; voice control
+/// users say what they see), then what it is.
+fn tab_name(item: &NavItem) -> String {
+    let errors = match item.errors {
+        0 => String::new(),
+        1 => " 1 error".to_string(),
+        n => format!(" {n} errors"),
+    };
+    format!("{} {}{errors}, {}", item.badge, item.name, item.label)
+}
+
 /// The POU navigator.
 #[component]
 fn Navigator() -> impl IntoView {
@@ -100,14 +111,15 @@ fn Navigator() -> impl IntoView {
                     && item.view != PouView::St;
                 let title = if runs { "This PROGRAM runs in the simulator" } else { "" };
                 view! {
-                    <button class="pou-tab" aria-label=item.label.clone() title=title
+                    <button class="pou-tab" aria-label=tab_name(&item) title=title
                         aria-pressed=move || if selected() { "true" } else { "false" }
                         on:click=move |_| state.view.set(target.clone())>
                         <span class=format!("pou-badge pou-badge-{}", item.badge.to_ascii_lowercase())>{item.badge}</span>
+                        " "
                         <span>{item.name.clone()}</span>
-                        {runs.then(|| view! { <span class="pou-running" aria-hidden="true">"▶"</span> })}
+                        {runs.then(|| view! { " " <span class="pou-running" aria-hidden="true">"▶"</span> })}
                         {(item.errors > 0).then(|| view! {
-                            <span class="pou-errors" aria-hidden="true">{item.errors}</span>
+                            " " <span class="pou-errors" aria-hidden="true">{item.errors}</span>
                         })}
                     </button>
                 }
@@ -170,5 +182,26 @@ pub fn PouPane() -> impl IntoView {
             }
         }}
         <Problems/>
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tab_is_named_by_its_visible_text_first() {
+        let mut item = NavItem {
+            view: PouView::St,
+            badge: "LD",
+            name: "Latch".into(),
+            label: "Ladder diagram Latch".into(),
+            errors: 0,
+        };
+        assert_eq!(tab_name(&item), "LD Latch, Ladder diagram Latch");
+        item.errors = 1;
+        assert_eq!(tab_name(&item), "LD Latch 1 error, Ladder diagram Latch");
+        item.errors = 3;
+        assert_eq!(tab_name(&item), "LD Latch 3 errors, Ladder diagram Latch");
     }
 }

@@ -208,7 +208,7 @@ pub fn SfcView(name: String) -> impl IntoView {
                     on:click=move |_| state.view.set(PouView::St)>"Edit as text"</button>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
-            <div class="sfc-wrap">
+            <div class="sfc-wrap" tabindex="0">
                 {move || match chart.get() {
                     Some(c) => chart_svg(&c, active).into_any(),
                     None => view! { <p class="muted">"This POU is no longer a chart in the ST source."</p> }.into_any(),

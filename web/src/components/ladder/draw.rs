@@ -415,7 +415,7 @@ pub fn rung_svg(ctx: RungCtx, rung: &Rung, pou: &str) -> impl IntoView {
     let live = move || ctx.is_live();
     view! {
         <svg class="ld-rung-svg" viewBox=format!("0 0 {} {}", geo.width, geo.height)
-            width=geo.width height=geo.height role="group"
+            width=geo.width height=geo.height style=format!("--ld-w:{}", geo.width) role="group"
             aria-label=format!("Rung {}", ctx.rung + 1)>
             <line class="ld-rail" class:powered=live x1=RAIL_X y1="2" x2=RAIL_X y2=geo.height - 2.0/>
             <line class="ld-rail" x1=geo.right_rail_x y1="2" x2=geo.right_rail_x y2=geo.height - 2.0/>

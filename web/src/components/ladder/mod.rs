@@ -9,6 +9,7 @@ pub(crate) use draw::coil_letter;
 mod editor;
 pub mod geometry;
 mod live;
+mod zoom;
 
 use leptos::prelude::*;
 use plc_core::build::Site;
@@ -24,6 +25,7 @@ use draw::{rung_svg, RungCtx};
 use editor::{DragSource, LadderEditor, RungAction, Tool, STANDARD_BLOCKS};
 use geometry::{rung_geometry, NodePower};
 use live::{LadderLive, Probes};
+use zoom::{SideToggle, ViewPrefs, ZoomControls};
 
 /// Scrolls the element with `id` into view.
 pub(crate) fn scroll_to(id: &str) {
@@ -54,6 +56,9 @@ fn live_status(state: AppState, pou: &LadderPou, instance: Option<String>) -> Op
         None => Some("Not running: the project has errors or no PROGRAM.".into()),
     }
 }
+
+/// The room (drawing units) the operand box needs beside a cell.
+const OPERAND_ROOM: f64 = 130.0;
 
 /// The grid of a rung's cells over its drawing: one `gridcell` per cell, named by its
 /// place and content, selected by click, focus or arrow keys, taking keys and double-clicks.
@@ -198,12 +203,14 @@ fn rung_grid(
     let operand_box = move || {
         let (at, _) = editor.operand_at.get().filter(|(c, _)| c.rung == index)?;
         let (x0, x1) = geo.col_span(at.col);
-        let style = format!(
-            "left:{:.3}%;top:{:.3}%;width:{:.3}%",
-            pct(x0, geo.width),
-            pct(at.row as f64 * geo.row_h, geo.height),
-            pct((x1 - x0).max(120.0), geo.width)
-        );
+        // Beside the element just placed, never over it: right of its cell, or left of it
+        // when the box would not fit before the right rail.
+        let top = pct(at.row as f64 * geo.row_h, geo.height);
+        let style = if x1 + OPERAND_ROOM <= geo.width {
+            format!("left:calc({:.3}% + 4px);top:{top:.3}%", pct(x1, geo.width))
+        } else {
+            format!("right:calc({:.3}% + 4px);top:{top:.3}%", 100.0 - pct(x0, geo.width))
+        };
         // Focused as soon as it is in the page, before the next key arrives.
         let input = NodeRef::<leptos::html::Input>::new();
         input.on_load(|el| {
@@ -401,6 +408,9 @@ pub fn LadderView(name: String) -> impl IntoView {
         })
     });
     let show_st = RwSignal::new(false);
+    let prefs = ViewPrefs::load();
+    let view_id = format!("ld-view-{name}");
+    let zoom_for = view_id.clone();
     let editor = LadderEditor::new(state, &name);
     // The declarations start open in a POU without elements yet (there is nothing else
     // to read), closed otherwise.
@@ -462,10 +472,24 @@ pub fn LadderView(name: String) -> impl IntoView {
                 editor.pou().and_then(|p| p.cell(*at).map(describe_cell)).unwrap_or_default()
             }
         };
-        Some(view! {
-            <div class="ld-ghost" aria-hidden="true"
-                style=format!("left:{}px;top:{}px", d.at.0 + 10.0, d.at.1 + 10.0)>{label}</div>
-        })
+        // Clear of the cell it would drop on: above it (below it at the top of the window),
+        // or beside the pointer when it is over no cell.
+        let target = d.target.and_then(|(at, _)| {
+            let document = web_sys::window()?.document()?;
+            Some(document.get_element_by_id(&editor.cell_id(at))?.get_bounding_client_rect())
+        });
+        let style = match target {
+            Some(r) if r.top() >= 40.0 => {
+                format!("left:{}px;top:{}px;transform:translateY(-100%)", r.left(), r.top() - 6.0)
+            }
+            Some(r) => format!(
+                "left:{}px;top:{}px",
+                r.left(),
+                r.bottom() + (d.footprint.max(1) - 1) as f64 * r.height() + 6.0
+            ),
+            None => format!("left:{}px;top:{}px", d.at.0 + 16.0, d.at.1 + 16.0),
+        };
+        Some(view! { <div class="ld-ghost" aria-hidden="true" style=style>{label}</div> })
     };
 
     // A clicked problem or a fault: scroll its rung into view.
@@ -500,12 +524,12 @@ pub fn LadderView(name: String) -> impl IntoView {
             let (il, _) = plc_core::ladder::il_view(&p);
             let il_html = highlight_html(&il, &[]);
             return view! {
-                <pre class="code-view" aria-label=format!("{} as Structured Text", p.name)>
+                <pre class="code-view" tabindex="0" aria-label=format!("{} as Structured Text", p.name)>
                     <code inner_html=html></code>
                 </pre>
                 <section class="ld-il-view" role="region" aria-label="IL view">
                     <h3>"Instruction List"</h3>
-                    <pre class="code-view" aria-label=format!("{} as Instruction List", p.name)>
+                    <pre class="code-view" tabindex="0" aria-label=format!("{} as Instruction List", p.name)>
                         <code inner_html=il_html></code>
                     </pre>
                 </section>
@@ -541,7 +565,7 @@ pub fn LadderView(name: String) -> impl IntoView {
     let status =
         move || pou.with(|p| p.as_ref().and_then(|p| live_status(state, p, instance.get())));
     view! {
-        <section class="panel ladder-view" aria-label=format!("Ladder diagram {name}")>
+        <section class="panel ladder-view" id=view_id aria-label=format!("Ladder diagram {name}")>
             <div class="ed-toolbar">
                 <h2>"Ladder"</h2>
                 <span class="pou-title">{name.clone()}</span>
@@ -550,27 +574,31 @@ pub fn LadderView(name: String) -> impl IntoView {
                     _ => "PROGRAM",
                 })}</span>
                 <span class="ed-spacer"></span>
+                <SideToggle prefs=prefs/>
                 <button aria-pressed=move || if show_st.get() { "true" } else { "false" }
                     title="Show the POU as readable Structured Text and Instruction List"
                     on:click=move |_| show_st.update(|s| *s = !*s)>"ST view"</button>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             <DeclarationsEditor editor=editor pou=pou open=decls_open/>
-            <Toolbar editor=editor name=name.clone()/>
+            <Toolbar editor=editor name=name.clone()>
+                <ZoomControls prefs=prefs pou=pou view_id=zoom_for.clone()/>
+            </Toolbar>
             {ghost}
             <PinBoxes editor=editor pou=pou/>
-            <div class="ld-body">
+            <div class="ld-body" class:ld-side-hidden=move || !prefs.side.get()
+                style=move || format!("--ld-zoom:{}", prefs.zoom.get())>
                 <div class="ld-rungs">{body}</div>
-                <StBeside editor=editor pou=pou/>
+                {move || prefs.side.get().then(|| view! { <StBeside editor=editor pou=pou/> })}
             </div>
         </section>
     }
 }
 
 /// The ladder toolbar: undo/redo, the rung and grid actions, the POU's rename and delete,
-/// the palette and the block picker (`b` on a cell).
+/// `children` (the zoom), the palette and the block picker (`b` on a cell).
 #[component]
-fn Toolbar(editor: LadderEditor, name: String) -> impl IntoView {
+fn Toolbar(editor: LadderEditor, name: String, children: Children) -> impl IntoView {
     let state = expect_context::<AppState>();
     let all_blocks = Memo::new(move |_| {
         let mut list: Vec<String> = STANDARD_BLOCKS.iter().map(|b| b.to_string()).collect();
@@ -596,6 +624,7 @@ fn Toolbar(editor: LadderEditor, name: String) -> impl IntoView {
                 <button on:click=move |_| editor.rung_action(action)>{label}</button>
             }).collect_view()}
             <PouActions kind=DiagramKind::Ladder name=name.clone()/>
+            {children()}
         </div>
         {move || editor.picker_open.get().then(|| {
             let picker = NodeRef::<leptos::html::Select>::new();
@@ -760,10 +789,10 @@ fn lines_with_rungs(body: &str, map: &[(u32, usize)]) -> Vec<(String, Option<usi
         .collect()
 }
 
-/// The POU as readable ST beside the rungs, and as Instruction List below it where its
-/// rungs have one (on screens at least 1,100 px wide; below that the ST view button shows
-/// them instead of the rungs): the selected rung's lines are lit, and clicking a line
-/// selects its rung.
+/// The POU as readable ST beside the rungs (below them when the view is narrow), and as
+/// Instruction List below it where its rungs have one (on screens at least 1,100 px wide;
+/// below that the ST view button shows them instead of the rungs; `ST and IL views`
+/// collapses them): the selected rung's lines are lit, and clicking a line selects its rung.
 #[component]
 fn StBeside(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView {
     let view = Memo::new(move |_| {
@@ -818,7 +847,8 @@ fn BesideLines(editor: LadderEditor, lines: Memo<Vec<(String, Option<usize>)>>) 
         })
     };
     view! {
-        <pre class="code-view">
+        // Focusable: keyboard users scroll its long lines.
+        <pre class="code-view" tabindex="0">
             <For each=keyed key=|line| line.clone() children=move |(_, text, rung)| {
                 let html = highlight_html(&text, &[]);
                 let lit = move || rung.is_some() && selected_rung.get() == rung;

@@ -141,7 +141,7 @@ pub fn CodePanel(
         }
     };
     view! {
-        <div class="code-frame" node_ref=frame>
+        <div class="code-frame" node_ref=frame tabindex="0">
             <div class="ed-gutter code-gutter" aria-hidden="true" inner_html=move || gutter.get()></div>
             <pre class="code-view code-lines" aria-label="Generated CASE OF code" on:click=click>
                 {selected_bands}

@@ -64,7 +64,7 @@ pub fn ElementDetails(pou: Memo<Option<PetriPou>>, name: StoredValue<String>) ->
                     <h3>{title}</h3>
                     <button class="close" aria-label="Close the details" on:click=move |_| state.focus.set(None)>"×"</button>
                 </div>
-                <pre class="code-view"><code inner_html=highlight_html(&shown, &marks)></code></pre>
+                <pre class="code-view" tabindex="0"><code inner_html=highlight_html(&shown, &marks)></code></pre>
                 {(!problems.is_empty()).then(|| view! {
                     <ul class="pn-details-problems">
                         {problems.into_iter().map(|m| view! { <li>{m}</li> }).collect_view()}

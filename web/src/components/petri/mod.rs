@@ -148,7 +148,7 @@ fn token_dots(n: u32, c: Point) -> AnyView {
         2 => &[(-5.5, 0.0), (5.5, 0.0)],
         3 => &[(-5.5, 4.0), (5.5, 4.0), (0.0, -5.5)],
         4 => &[(-5.0, -5.0), (5.0, -5.0), (-5.0, 5.0), (5.0, 5.0)],
-        _ => return view! { <text class="pn-token-count" x=c.x y=c.y + 5.0>{n}</text> }.into_any(),
+        _ => &[], // written as a number beside the place (`place_labels`)
     };
     let r = if n == 1 { 6.0 } else { 4.0 };
     offsets
@@ -209,6 +209,11 @@ fn place_view(
             <circle class="pn-circle" cx=c.x cy=c.y r=PLACE_R/>
             {move || token_dots(tokens(), c)}
             <text class="pn-name" x=c.x y=c.y - PLACE_R - 6.0>{clip(&shown, 16)}</text>
+        </g>
+        // Outside the place's button, whose visible text must be its name alone (the
+        // accessible name holds the count; the CASE label is in the tooltip).
+        <g class="pn-labels" aria-hidden="true">
+            {move || (tokens() > 4).then(|| view! { <text class="pn-token-count" x=c.x y=c.y + 5.0>{tokens()}</text> })}
             <text class="pn-case" x=c.x y=c.y + PLACE_R + 14.0>{case}</text>
         </g>
         {move || ctx.runs.get().then(|| why_place(ctx.state, &why_id, c))}
@@ -294,6 +299,10 @@ fn transition_view(
             <rect class="pn-hit" x=c.x - hw - 4.0 y=c.y - hh - 4.0 width=2.0 * hw + 8.0 height=2.0 * hh + 8.0/>
             <rect class="pn-bar" x=c.x - hw y=c.y - hh width=2.0 * hw height=2.0 * hh rx="1.5"/>
             <text class="pn-tname" x=label_x y=c.y - 2.0 text-anchor=anchor>{clip(&shown, 18)}</text>
+        </g>
+        // Outside the transition's button, whose visible text must be its name alone (the
+        // guard is in the tooltip and the details).
+        <g class="pn-labels" aria-hidden="true">
             <text class="pn-guard" x=label_x y=c.y + 11.0 text-anchor=anchor>{clip(&guard, GUARD_CHARS)}</text>
         </g>
     }

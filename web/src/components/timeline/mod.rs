@@ -14,7 +14,8 @@ use wasm_bindgen::JsCast;
 use crate::state::AppState;
 use chart::{build, t_of, value_at, Chart, AXIS_H, LEFT, WIDTH};
 
-/// Lane colours (also used in the exported SVG, so not in CSS).
+/// Lane colours (also used in the exported SVG, so not in CSS; the page's dark theme
+/// brightens them through the `tl-series` class).
 const COLORS: [&str; 8] =
     ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"];
 
@@ -281,29 +282,29 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
             on:pointercancel=move |_| drag.set_value(None)
             on:pointerleave=move |_| { drag.set_value(None); view.cursor.set(None); }
             on:wheel=on_wheel>
-            <rect x="0" y="0" width=WIDTH height=height fill="#ffffff"/>
+            <rect class="tl-bg" x="0" y="0" width=WIDTH height=height fill="#ffffff"/>
             {move || chart.with(|c| c.ticks.iter().map(|(x, label)| {
                 let h = c.height - AXIS_H;
                 view! {
-                    <line x1=*x x2=*x y1="0" y2=h stroke="#e3e8ee" stroke-width="1"/>
-                    <text x=*x y=h + 14.0 text-anchor="middle" fill="#5b6b7c">{label.clone()}</text>
+                    <line class="tl-grid" x1=*x x2=*x y1="0" y2=h stroke="#e3e8ee" stroke-width="1"/>
+                    <text class="tl-tick" x=*x y=h + 14.0 text-anchor="middle" fill="#5b6b7c">{label.clone()}</text>
                 }
             }).collect_view())}
             {move || chart.with(|c| c.lanes.iter().enumerate().map(|(i, lane)| {
                 let color = COLORS[i % COLORS.len()];
                 view! {
                     <g>
-                        <rect x=LEFT y=lane.top width=WIDTH - LEFT height=lane.height fill="#f7f9fb"/>
-                        <text x="4" y=lane.top + 14.0 fill=color font-weight="bold">{lane.path.clone()}</text>
+                        <rect class="tl-lane-bg" x=LEFT y=lane.top width=WIDTH - LEFT height=lane.height fill="#f7f9fb"/>
+                        <text class="tl-series" x="4" y=lane.top + 14.0 fill=color font-weight="bold">{lane.path.clone()}</text>
                         {(!lane.digital).then(|| view! {
-                            <text x="4" y=lane.top + 28.0 fill="#5b6b7c">{format!("max {}", short(lane.range.1))}</text>
-                            <text x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{format!("min {}", short(lane.range.0))}</text>
+                            <text class="tl-tick" x="4" y=lane.top + 28.0 fill="#5b6b7c">{format!("max {}", short(lane.range.1))}</text>
+                            <text class="tl-tick" x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{format!("min {}", short(lane.range.0))}</text>
                         })}
-                        <polyline points=lane.points.clone() fill="none" stroke=color stroke-width="1.5"/>
+                        <polyline class="tl-series" points=lane.points.clone() fill="none" stroke=color stroke-width="1.5"/>
                     </g>
                 }
             }).collect_view())}
-            <line x1=LEFT x2=WIDTH y1=move || height() - AXIS_H y2=move || height() - AXIS_H stroke="#5b6b7c"/>
+            <line class="tl-axis-line" x1=LEFT x2=WIDTH y1=move || height() - AXIS_H y2=move || height() - AXIS_H stroke="#5b6b7c"/>
             // The recorded scan the page shows (issue 36).
             {move || state.with_shown_view(|v| v.time_ns()).map(|t| {
                 let x = chart::x_of(t, chart.with(|c| c.window));
@@ -356,7 +357,7 @@ fn Legend(chart: Memo<Chart>, view: View) -> impl IntoView {
             }}</span>
             {move || rows().into_iter().enumerate().map(|(i, (p, v))| view! {
                 <span class="legend-item">
-                    <span class="swatch" style=format!("background: {}", COLORS[i % COLORS.len()])></span>
+                    <span class="swatch tl-series" style=format!("background: {}", COLORS[i % COLORS.len()])></span>
                     <span>{p}</span>
                     ": "
                     <output class="mono">{v}</output>
