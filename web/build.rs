@@ -190,10 +190,14 @@ fn i18n(out_dir: &Path) {
     let en = catalogue(&dir.join("en.json")).unwrap_or_else(|e| panic!("{e}"));
     let mut problems = Vec::new();
     for (key, text) in &en {
-        if !key.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '.')
+        if !key
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '.')
             || !key.starts_with(|c: char| c.is_ascii_lowercase())
         {
-            problems.push(format!("en.json: the key `{key}` is not lowercase words joined by `_` and `.`"));
+            problems.push(format!(
+                "en.json: the key `{key}` is not lowercase words joined by `_` and `.`"
+            ));
         }
         if text.trim().is_empty() {
             problems.push(format!("en.json: `{key}` is empty"));
@@ -221,7 +225,9 @@ fn i18n(out_dir: &Path) {
         for (key, text) in &en {
             match lookup.get(key.as_str()) {
                 None => problems.push(format!("{file}: `{key}` is missing")),
-                Some(t) if t.trim().is_empty() => problems.push(format!("{file}: `{key}` is empty")),
+                Some(t) if t.trim().is_empty() => {
+                    problems.push(format!("{file}: `{key}` is empty"))
+                }
                 Some(t) if placeholders(t) != placeholders(text) => problems.push(format!(
                     "{file}: `{key}` has the placeholders {:?}, English {:?}",
                     placeholders(t),

@@ -84,13 +84,18 @@ async fn ask_worker(request: &js_sys::Array) -> Result<String, String> {
     ask_worker_at(WORKER, request).await
 }
 
+/// The folder of the app's files (`globalThis.plcAppBase`, set by `boot.js`), ending in `/`.
+pub(crate) fn app_base() -> String {
+    js_sys::Reflect::get(&js_sys::global(), &JsValue::from_str("plcAppBase"))
+        .ok()
+        .and_then(|b| b.as_string())
+        .unwrap_or_else(|| "./".to_string())
+}
+
 /// Starts the app's worker `name` (`import`, `exercise`): `worker.js` in the folder of the
 /// app's files (`globalThis.plcAppBase`, set by `boot.js`), as a module worker.
 fn start_worker(name: &str) -> Result<web_sys::Worker, JsValue> {
-    let base = js_sys::Reflect::get(&js_sys::global(), &JsValue::from_str("plcAppBase"))
-        .ok()
-        .and_then(|b| b.as_string())
-        .unwrap_or_else(|| "./".to_string());
+    let base = app_base();
     let options = web_sys::WorkerOptions::new();
     options.set_type(web_sys::WorkerType::Module);
     options.set_name(name);

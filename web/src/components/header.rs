@@ -14,8 +14,8 @@ use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::components::theme::ThemeSwitch;
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
-use crate::import::import_text;
 use crate::i18n::{t, trf, I18n, K};
+use crate::import::import_text;
 use crate::state::AppState;
 use plc_core::i18n::Lang;
 
@@ -78,7 +78,11 @@ fn LanguageSelect() -> impl IntoView {
     let i18n = expect_context::<I18n>();
     let name = move || {
         let word = crate::i18n::tr(K::header_language);
-        if i18n.lang.get() == Lang::En { word } else { format!("{word} (Language)") }
+        if i18n.lang.get() == Lang::En {
+            word
+        } else {
+            format!("{word} (Language)")
+        }
     };
     view! {
         <select class="language-select" aria-label=name title=name
@@ -140,8 +144,7 @@ pub fn Header() -> impl IntoView {
         let name = state.project.with_untracked(|p| p.name.clone());
         let ok = web_sys::window()
             .and_then(|w| {
-                w.confirm_with_message(&trf(K::header_delete_confirm, &[("name", &name)]))
-                .ok()
+                w.confirm_with_message(&trf(K::header_delete_confirm, &[("name", &name)])).ok()
             })
             .unwrap_or(false);
         if ok {
@@ -161,7 +164,9 @@ pub fn Header() -> impl IntoView {
                         state.error(e);
                     }
                 }
-                Err(e) => state.error(trf(K::header_export_xml_failed, &[("error", &e.to_string())])),
+                Err(e) => {
+                    state.error(trf(K::header_export_xml_failed, &[("error", &e.to_string())]))
+                }
             }
         });
     };
