@@ -1,54 +1,16 @@
 // The ladder editor (issue 13): a student builds rungs in a new project with the palette,
 // keys and the operand box, runs them, undoes and redoes, and finds them after a reload.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { fileURLToPath } from 'node:url';
 import path from 'node:path';
 import { readFile, writeFile, mkdtemp } from 'node:fs/promises';
 import { existsSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import os from 'node:os';
-import { startServer } from './server.mjs';
-import { launch } from './browser.mjs';
+import { root, useApp, openPage, newLadderProgram, cell } from './setup.mjs';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-let server;
-let browser;
-
-before(async () => {
-  server = await startServer(path.join(root, 'dist'));
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-async function openApp(context) {
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(server.url);
-  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
-  return { page, errors };
-}
-
-/** Adds a ladder PROGRAM named `name` with `declarations` and shows it. */
-async function newLadderProgram(page, name, declarations) {
-  await page.getByRole('button', { name: 'New ladder POU' }).click();
-  await page.getByRole('textbox', { name: 'POU name' }).fill(name);
-  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
-  await page.getByRole('button', { name: 'Create' }).click();
-  const view = page.getByRole('region', { name: `Ladder diagram ${name}` });
-  await view.waitFor();
-  const decls = view.getByRole('textbox', { name: 'Declarations' });
-  await decls.fill(declarations);
-  await decls.press('Tab');
-  return view;
-}
-
-const cell = (view, rung, row, col) =>
-  view.getByRole('gridcell', { name: new RegExp(`^Rung ${rung}, row ${row}, column ${col}: `) });
+const app = useApp();
+const openApp = (context) => openPage(context, app.server.url);
 
 /** Drags with the mouse (pointer events) from the middle of one element to another's,
  * once the target is in view (the rung grid is drawn at a readable size, issue 34, so a
@@ -83,7 +45,7 @@ END_VAR
 `;
 
 test('a start/stop latch dragged from the palette in a new project runs, undoes, redoes and survives a reload', async () => {
-  const context = await browser.newContext();
+  const context = await app.browser.newContext();
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Latch', LATCH_DECLS);
   await place(page, view, [1, 1, 1], 'NO contact', 'Start');
@@ -169,7 +131,7 @@ test('a start/stop latch dragged from the palette in a new project runs, undoes,
   const names = await page.getByRole('gridcell').evaluateAll((cells) => cells.map((c) => c.getAttribute('aria-label')));
   await page.getByRole('button', { name: 'Share' }).click();
   const link = await page.getByRole('textbox', { name: 'Share link' }).inputValue();
-  const other = await browser.newContext();
+  const other = await app.browser.newContext();
   const shared = await other.newPage();
   await shared.goto(link);
   await shared.getByRole('button', { name: 'Ladder diagram Latch' }).click();
@@ -197,7 +159,7 @@ test('a start/stop latch dragged from the palette in a new project runs, undoes,
 test('a check that marks or clears a problem leaves the rung in place (a drag can still find its cells)', async () => {
   // The check runs after the edit, later on a busy machine: a rung drawn again then
   // replaced the cell a drag had just found (its bounding box null in loaded full runs).
-  const context = await browser.newContext();
+  const context = await app.browser.newContext();
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Kept', 'VAR\n    a : BOOL;\nEND_VAR\n');
   await place(page, view, [1, 1, 1], 'NO contact', 'b');
@@ -225,7 +187,7 @@ test('a check that marks or clears a problem leaves the rung in place (a drag ca
 });
 
 test('keys alone build a rung Start, TON and Lamp, Escape takes a placement back, and the timer delays the lamp', async () => {
-  const context = await browser.newContext();
+  const context = await app.browser.newContext();
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Delay', 'VAR_INPUT\n    Start : BOOL;\nEND_VAR\nVAR_OUTPUT\n    Lamp : BOOL;\nEND_VAR\n');
   // Into the grid as Tab brings a keyboard user there (the selected cell holds the focus).
@@ -299,7 +261,7 @@ test('keys alone build a rung Start, TON and Lamp, Escape takes a placement back
 });
 
 test('twenty mixed edits undo one by one to the exact earlier grids and redo to the last', async () => {
-  const context = await browser.newContext();
+  const context = await app.browser.newContext();
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Mixed', 'VAR\n    a, b, c, q : BOOL;\nEND_VAR\n');
   const grid = () => view.getByRole('gridcell').evaluateAll((cells) => cells.map((c) => c.getAttribute('aria-label')).join('|'));
@@ -350,7 +312,7 @@ test('twenty mixed edits undo one by one to the exact earlier grids and redo to 
 });
 
 test('an undeclared operand is declared from its problem with the type its use implies', async () => {
-  const context = await browser.newContext();
+  const context = await app.browser.newContext();
   const { page, errors } = await openApp(context);
   await page.getByRole('button', { name: 'New ladder POU' }).click();
   await page.getByRole('textbox', { name: 'POU name' }).fill('Fresh');
@@ -379,7 +341,7 @@ test('an undeclared operand is declared from its problem with the type its use i
 });
 
 test('the operand box offers the variables of the right type, and the declarations editor marks and reveals its problems', async () => {
-  const context = await browser.newContext();
+  const context = await app.browser.newContext();
   const { page, errors } = await openApp(context);
   const decls = 'VAR_INPUT\n    Start : BOOL;\n    Level : INT;\nEND_VAR\nVAR_OUTPUT\n    Motor : BOOL;\nEND_VAR\nVAR\n    T1 : TON;\nEND_VAR\n';
   const view = await newLadderProgram(page, 'Pick', decls);
@@ -438,7 +400,7 @@ test('the operand box offers the variables of the right type, and the declaratio
 });
 
 test('touch and pen drag from the palette as the mouse does, and Ctrl or Alt drag copies an element', async () => {
-  const context = await browser.newContext({ hasTouch: true });
+  const context = await app.browser.newContext({ hasTouch: true });
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Hands', 'VAR\n    a, b : BOOL;\nEND_VAR\n');
   const cdp = await context.newCDPSession(page);
@@ -504,7 +466,7 @@ test('touch and pen drag from the palette as the mouse does, and Ctrl or Alt dra
 });
 
 test('a function block ladder POU shows the live values of its first instance', async () => {
-  const context = await browser.newContext();
+  const context = await app.browser.newContext();
   const { page, errors } = await openApp(context);
   await page.getByRole('button', { name: 'New ladder POU' }).click();
   await page.getByRole('textbox', { name: 'POU name' }).fill('Seal');

@@ -2,51 +2,13 @@
 // the cells and operand names are big enough to read and hit, zoom and Fit change them, and
 // while dragging the target is outlined, the drag label stays clear of it and the Operand
 // box opens beside the element just placed.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { fileURLToPath } from 'node:url';
 import path from 'node:path';
-import { startServer } from './server.mjs';
-import { launch } from './browser.mjs';
+import { root, useApp, openPage, newLadderProgram, cell } from './setup.mjs';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-let server;
-let browser;
-
-before(async () => {
-  server = await startServer(path.join(root, 'dist'));
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-async function openApp(context) {
-  const page = await context.newPage();
-  const errors = [];
-  page.on('pageerror', (e) => errors.push(e.message));
-  await page.goto(server.url);
-  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
-  return { page, errors };
-}
-
-/** Adds a ladder PROGRAM named `name` with `declarations` and shows it. */
-async function newLadderProgram(page, name, declarations) {
-  await page.getByRole('button', { name: 'New ladder POU' }).click();
-  await page.getByRole('textbox', { name: 'POU name' }).fill(name);
-  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
-  await page.getByRole('button', { name: 'Create' }).click();
-  const view = page.getByRole('region', { name: `Ladder diagram ${name}` });
-  await view.waitFor();
-  const decls = view.getByRole('textbox', { name: 'Declarations' });
-  await decls.fill(declarations);
-  await decls.press('Tab');
-  return view;
-}
-
-const cell = (view, rung, row, col) =>
-  view.getByRole('gridcell', { name: new RegExp(`^Rung ${rung}, row ${row}, column ${col}: `) });
+const app = useApp();
+const openApp = (context) => openPage(context, app.server.url);
 
 const centre = async (loc) => {
   const b = await loc.boundingBox();
@@ -95,7 +57,7 @@ END_VAR
 
 test('the lost drop: Link down dragged onto the NC contact Stop after a touch drag lands, ten times in a row', async () => {
   for (let attempt = 1; attempt <= 10; attempt++) {
-    const context = await browser.newContext({ viewport: { width: 1400, height: 900 }, hasTouch: true });
+    const context = await app.browser.newContext({ viewport: { width: 1400, height: 900 }, hasTouch: true });
     const { page, errors } = await openApp(context);
     const cdp = await context.newCDPSession(page);
     const view = await newLadderProgram(page, 'Latch', LATCH_DECLS);
@@ -130,7 +92,7 @@ const measure = (view) => view.evaluate((v) => {
 });
 
 test('the rung grid is readable at 1280 × 800: cells at least 44 × 32 px, operands at least 12 px; zoom and Fit change them and are kept', async () => {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await app.browser.newContext({ viewport: { width: 1280, height: 800 } });
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Latch', LATCH_DECLS);
   await cell(view, 1, 1, 1).click();
@@ -144,6 +106,12 @@ test('the rung grid is readable at 1280 × 800: cells at least 44 × 32 px, oper
   // No page-wide horizontal scroll: the rung scrolls in its own box.
   assert.equal(await page.evaluate(() => document.documentElement.scrollWidth <= innerWidth), true, 'the page scrolls sideways');
   await page.screenshot({ path: path.join(root, 'docs/screenshots/ladder-1280.png') });
+  // The ST and IL views beside the rungs show one line per line, no blank line after each.
+  const lines = await view.locator('.ld-st-line').evaluateAll((ls) => ls.map((l) => [l.textContent, l.getBoundingClientRect().height, parseFloat(getComputedStyle(l).lineHeight)]));
+  assert.ok(lines.length > 0, 'the ST and IL views show lines');
+  for (const [text, height, lineHeight] of lines) {
+    assert.ok(height <= lineHeight + 1, `the line ${JSON.stringify(text)} is ${height} px tall, a line is ${lineHeight} px`);
+  }
 
   // Zoom in twice: 150 %, cells and text grow by half.
   const zoomIn = view.getByRole('button', { name: 'Zoom in', exact: true });
@@ -192,7 +160,7 @@ test('the rung grid is readable at 1280 × 800: cells at least 44 × 32 px, oper
 });
 
 test('while dragging the target is outlined and the label clear of it; the Operand box opens beside the element placed', async () => {
-  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const context = await app.browser.newContext({ viewport: { width: 1280, height: 800 } });
   const { page, errors } = await openApp(context);
   const view = await newLadderProgram(page, 'Latch', LATCH_DECLS);
   const from = await centre(view.getByRole('button', { name: 'NC contact', exact: true }));
