@@ -13,8 +13,9 @@
 //! opens (natively, in tests, `$OUT_DIR/exercise_files.rs` includes them). The reference
 //! solutions and mutants are never shipped.
 //!
-//! Reads the page's words (`i18n/en.json`, `pl.json`, `cs.json`, one file per language a
-//! translator edits): `$OUT_DIR/i18n.rs` holds one key per English text (`K`) and the
+//! Reads the page's words (`i18n/LANG/PART.json`: per language a folder, per part of the page a
+//! file a translator edits, keys starting with the part's name): `$OUT_DIR/i18n.rs` holds one
+//! key per English text (`K`) and the
 //! English texts, so a key the code names but the catalogue lacks does not compile; each
 //! translation is checked against English (every key, nothing more, not empty, the same
 //! `{placeholders}`), and the build stops with the list of what is wrong. `$OUT_DIR/i18n/LANG.json`
@@ -182,54 +183,84 @@ fn catalogue(path: &Path) -> Result<Vec<(String, String)>, String> {
         .collect()
 }
 
+/// The part files of one language's folder (`i18n/LANG/PART.json`), sorted by name.
+fn part_files(dir: &Path) -> Vec<String> {
+    let mut parts: Vec<String> = std::fs::read_dir(dir)
+        .into_iter()
+        .flatten()
+        .flatten()
+        .filter_map(|e| e.file_name().into_string().ok())
+        .filter_map(|n| n.strip_suffix(".json").map(str::to_string))
+        .collect();
+    parts.sort();
+    parts
+}
+
 /// The page's words: the key enum and English texts, the translations checked and written
 /// as arrays in key order.
 fn i18n(out_dir: &Path) {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("i18n");
     println!("cargo:rerun-if-changed={}", dir.display());
-    let en = catalogue(&dir.join("en.json")).unwrap_or_else(|e| panic!("{e}"));
     let mut problems = Vec::new();
-    for (key, text) in &en {
-        if !key
-            .chars()
-            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '.')
-            || !key.starts_with(|c: char| c.is_ascii_lowercase())
-        {
-            problems.push(format!(
-                "en.json: the key `{key}` is not lowercase words joined by `_` and `.`"
-            ));
-        }
-        if text.trim().is_empty() {
-            problems.push(format!("en.json: `{key}` is empty"));
+    // English, part by part: every key starts with its part's name and a dot.
+    let mut en: Vec<(String, String)> = Vec::new();
+    let en_dir = dir.join("en");
+    println!("cargo:rerun-if-changed={}", en_dir.display());
+    let parts = part_files(&en_dir);
+    for part in &parts {
+        let file = en_dir.join(format!("{part}.json"));
+        println!("cargo:rerun-if-changed={}", file.display());
+        let texts = catalogue(&file).unwrap_or_else(|e| panic!("{e}"));
+        for (key, text) in texts {
+            if !key
+                .chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_' || c == '.')
+                || !key.starts_with(&format!("{part}."))
+            {
+                problems.push(format!(
+                    "en/{part}.json: the key `{key}` is not `{part}.` and lowercase words joined by `_` and `.`"
+                ));
+            }
+            if text.trim().is_empty() {
+                problems.push(format!("en/{part}.json: `{key}` is empty"));
+            }
+            en.push((key, text));
         }
     }
     let _ = std::fs::create_dir_all(out_dir.join("i18n"));
     for lang in ["pl", "cs"] {
-        let file = format!("{lang}.json");
-        println!("cargo:rerun-if-changed={}", dir.join(&file).display());
-        let tr = match catalogue(&dir.join(&file)) {
-            Ok(tr) => tr,
-            Err(e) => {
-                problems.push(e);
-                continue;
+        let lang_dir = dir.join(lang);
+        println!("cargo:rerun-if-changed={}", lang_dir.display());
+        let mut tr: Vec<(String, String)> = Vec::new();
+        for part in part_files(&lang_dir) {
+            if !parts.contains(&part) {
+                problems.push(format!("{lang}/{part}.json: there is no en/{part}.json"));
             }
-        };
+        }
+        for part in &parts {
+            let file = lang_dir.join(format!("{part}.json"));
+            println!("cargo:rerun-if-changed={}", file.display());
+            match catalogue(&file) {
+                Ok(texts) => tr.extend(texts),
+                Err(e) => problems.push(e),
+            }
+        }
         let lookup: std::collections::BTreeMap<&str, &str> =
             tr.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
         for (key, _) in &tr {
             if !en.iter().any(|(k, _)| k == key) {
-                problems.push(format!("{file}: `{key}` is not in en.json"));
+                problems.push(format!("{lang}: `{key}` is not in English"));
             }
         }
         let mut array = Vec::new();
         for (key, text) in &en {
             match lookup.get(key.as_str()) {
-                None => problems.push(format!("{file}: `{key}` is missing")),
+                None => problems.push(format!("{lang}: `{key}` is missing")),
                 Some(t) if t.trim().is_empty() => {
-                    problems.push(format!("{file}: `{key}` is empty"))
+                    problems.push(format!("{lang}: `{key}` is empty"))
                 }
                 Some(t) if placeholders(t) != placeholders(text) => problems.push(format!(
-                    "{file}: `{key}` has the placeholders {:?}, English {:?}",
+                    "{lang}: `{key}` has the placeholders {:?}, English {:?}",
                     placeholders(t),
                     placeholders(text)
                 )),
@@ -237,14 +268,20 @@ fn i18n(out_dir: &Path) {
             }
         }
         let json = serde_json::to_string(&array).unwrap_or_default();
-        let _ = std::fs::write(out_dir.join("i18n").join(&file), json);
+        let _ = std::fs::write(out_dir.join("i18n").join(format!("{lang}.json")), json);
+    }
+    let mut seen = std::collections::BTreeSet::new();
+    for (key, _) in &en {
+        if !seen.insert(key.as_str()) {
+            problems.push(format!("`{key}` is in English twice"));
+        }
     }
     if !problems.is_empty() {
         panic!("the page's words (web/i18n/) are not complete:\n{}", problems.join("\n"));
     }
     let variant = |key: &str| key.replace('.', "_");
     let mut out = String::from(
-        "/// A text of the page: one per entry of `web/i18n/en.json` (dots become `_`).\n\
+        "/// A text of the page: one per entry of `web/i18n/en/*.json` (dots become `_`).\n\
          #[allow(non_camel_case_types)]\n#[derive(Debug, Clone, Copy, PartialEq, Eq)]\npub enum K {\n",
     );
     for (key, text) in &en {
@@ -252,11 +289,11 @@ fn i18n(out_dir: &Path) {
     }
     out.push_str("}\n\n/// How many texts the page has (a translation file holds as many).\npub const COUNT: usize = ");
     let _ = writeln!(out, "{};\n", en.len());
-    out.push_str("impl K {\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        match self {\n");
-    for (key, text) in &en {
-        let _ = writeln!(out, "            K::{} => {:?},", variant(key), text);
+    out.push_str("/// The English texts in key order.\nstatic EN: [&str; COUNT] = [\n");
+    for (_, text) in &en {
+        let _ = writeln!(out, "    {:?},", text);
     }
-    out.push_str("        }\n    }\n}\n");
+    out.push_str("];\n\nimpl K {\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        EN[self as usize]\n    }\n}\n");
     let _ = std::fs::write(out_dir.join("i18n.rs"), out);
 }
 

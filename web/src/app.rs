@@ -22,7 +22,6 @@ use plc_core::build::Site;
 /// The whole app.
 #[component]
 pub fn App() -> impl IntoView {
-    provide_context(crate::i18n::I18n::start());
     let state = AppState::new();
     provide_context(state);
     let exercises = Exercises::new(state);
@@ -30,6 +29,18 @@ pub fn App() -> impl IntoView {
     let tour = Tour::new();
     provide_context(tour);
     tour.watch(state, exercises);
+    let i18n = crate::i18n::I18n::start();
+    provide_context(i18n);
+    // Drawn again when the language shown changes: the views hold plain texts, the state
+    // stays where it is.
+    move || {
+        i18n.shown.track();
+        i18n.ready.get().then(|| untrack(move || layout(state, exercises)))
+    }
+}
+
+/// The page's views over the app's state.
+fn layout(state: AppState, exercises: Exercises) -> impl IntoView {
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
     let asking = Memo::new(move |_| state.why.with(Option::is_some));
     let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));

@@ -14,7 +14,7 @@ use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::components::theme::ThemeSwitch;
 use crate::examples;
 use crate::exercises::{Exercises, Screen};
-use crate::i18n::{t, trf, I18n, K};
+use crate::i18n::{t, tf, I18n, K};
 use crate::import::import_text;
 use crate::state::AppState;
 use plc_core::i18n::Lang;
@@ -76,16 +76,14 @@ async fn share(state: AppState, shown: RwSignal<Option<String>>) {
 #[component]
 fn LanguageSelect() -> impl IntoView {
     let i18n = expect_context::<I18n>();
-    let name = move || {
-        let word = crate::i18n::tr(K::header_language);
-        if i18n.lang.get() == Lang::En {
-            word
-        } else {
-            format!("{word} (Language)")
-        }
+    let word = t(K::header_language);
+    let name = if i18n.shown.get_untracked() == Lang::En {
+        word.to_string()
+    } else {
+        format!("{word} (Language)")
     };
     view! {
-        <select class="language-select" aria-label=name title=name
+        <select class="language-select" aria-label=name.clone() title=name
             prop:value=move || i18n.lang.get().tag()
             on:change=move |ev: ev::Event| {
                 if let Some(lang) = Lang::from_tag(&event_target_value(&ev)) {
@@ -144,12 +142,12 @@ pub fn Header() -> impl IntoView {
         let name = state.project.with_untracked(|p| p.name.clone());
         let ok = web_sys::window()
             .and_then(|w| {
-                w.confirm_with_message(&trf(K::header_delete_confirm, &[("name", &name)])).ok()
+                w.confirm_with_message(&tf(K::header_delete_confirm, &[("name", &name)])).ok()
             })
             .unwrap_or(false);
         if ok {
             state.delete_current();
-            state.info(trf(K::header_deleted, &[("name", &name)]));
+            state.info(tf(K::header_deleted, &[("name", &name)]));
         }
     };
     let export = move |_| state.export_project();
@@ -165,7 +163,7 @@ pub fn Header() -> impl IntoView {
                     }
                 }
                 Err(e) => {
-                    state.error(trf(K::header_export_xml_failed, &[("error", &e.to_string())]))
+                    state.error(tf(K::header_export_xml_failed, &[("error", &e.to_string())]))
                 }
             }
         });
@@ -220,12 +218,12 @@ pub fn Header() -> impl IntoView {
                             let current = state.project_id.get();
                             let damaged = state.damaged.get();
                             let unsaved = current.is_none().then(|| view! {
-                                <option value="" selected=true>{trf(K::header_not_saved, &[("name", &name())])}</option>
+                                <option value="" selected=true>{tf(K::header_not_saved, &[("name", &name())])}</option>
                             });
                             let stored = state.projects.get().into_iter().map(|p| {
                                 let selected = current.as_deref() == Some(p.id.as_str());
                                 let label = if damaged.contains_key(&p.id) {
-                                    trf(K::header_damaged, &[("name", &p.name)])
+                                    tf(K::header_damaged, &[("name", &p.name)])
                                 } else {
                                     p.name.clone()
                                 };
@@ -253,10 +251,10 @@ pub fn Header() -> impl IntoView {
                                     Ok(p) => {
                                         let title = p.name.clone();
                                         if state.add_and_open(p) {
-                                            state.info(trf(K::header_opened_example, &[("title", &title)]));
+                                            state.info(tf(K::header_opened_example, &[("title", &title)]));
                                         }
                                     }
-                                    Err(e) => state.error(trf(K::header_example_failed, &[("error", &e.to_string())])),
+                                    Err(e) => state.error(tf(K::header_example_failed, &[("error", &e.to_string())])),
                                 }
                             });
                         }>

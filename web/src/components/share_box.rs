@@ -19,8 +19,8 @@ pub async fn copy_to_clipboard(text: &str) -> bool {
 #[component]
 pub fn ShareBox(
     link: String,
-    #[prop(into)] label: Signal<String>,
-    #[prop(into)] close_label: Signal<String>,
+    label: &'static str,
+    close_label: &'static str,
     on_close: impl Fn() + 'static,
 ) -> impl IntoView {
     view! {
