@@ -13,14 +13,14 @@
 //! opens (natively, in tests, `$OUT_DIR/exercise_files.rs` includes them). The reference
 //! solutions and mutants are never shipped.
 //!
-//! Reads the page's words (`i18n/LANG/PART.json`: per language a folder, per part of the page a
-//! file a translator edits, keys starting with the part's name): `$OUT_DIR/i18n.rs` holds one
-//! key per English text (`K`) and the
-//! English texts, so a key the code names but the catalogue lacks does not compile; each
-//! translation is checked against English (every key, nothing more, not empty, the same
-//! `{placeholders}`), and the build stops with the list of what is wrong. `$OUT_DIR/i18n/LANG.json`
-//! is the translation as an array in key order, which the page fetches when the language is
-//! chosen (`scripts/build-web.sh` puts it next to the app).
+//! Reads the page's words (`i18n/LANG/PART.json`: per language a folder, per part of the
+//! page a file a translator edits, keys starting with the part's name): `$OUT_DIR/i18n.rs`
+//! holds one key per English text (`K`) and the English texts, so a key the code names but
+//! the catalogue lacks does not compile; each translation is checked against English
+//! (every key, nothing more, not empty, the same `{placeholders}`), and the build stops
+//! with the list of what is wrong. `$OUT_DIR/i18n/LANG.json` is the translation as an array
+//! in key order, which the page fetches when the language is chosen (`scripts/build-web.sh`
+//! puts it next to the app).
 
 use std::fmt::Write as _;
 use std::path::Path;
