@@ -1,0 +1,183 @@
+// The page in Polish and Czech (issue 33): a browser whose language is pl-PL or cs-CZ
+// opens the page in that language; the ST editor with a located error, the ladder editor,
+// the Petri net editor, an exercise with a failed Check and the problems page are walked
+// with no English word of the catalogue left visible (program text excepted); the
+// `Language` select switches back to English at once, with the unsaved edits intact.
+//
+// The test finds things by their names in the language shown, looked up in the catalogue
+// (web/i18n/LANG/*.json) from their English names, so it follows the translations.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import path from 'node:path';
+import { readdirSync, readFileSync } from 'node:fs';
+import { useApp, root } from './setup.mjs';
+
+const app = useApp();
+
+/** The catalogue of `lang`: key → text. */
+function catalogue(lang) {
+  const dir = path.join(root, 'web/i18n', lang);
+  const out = {};
+  for (const f of readdirSync(dir).filter((f) => f.endsWith('.json'))) {
+    Object.assign(out, JSON.parse(readFileSync(path.join(dir, f), 'utf8')));
+  }
+  return out;
+}
+const EN = catalogue('en');
+const TR = { pl: catalogue('pl'), cs: catalogue('cs') };
+
+/** The text `english` (a whole catalogue text) in `lang`. */
+function L(lang, english) {
+  if (lang === 'en') return english;
+  const key = Object.keys(EN).find((k) => EN[k] === english);
+  assert.ok(key, `the catalogue has the English text “${english}”`);
+  return TR[lang][key];
+}
+
+const escape = (s) => s.replace(/[.*+?^${}()|[\]\\]/g, '\\$&');
+/** A pattern of a catalogue text, its `{placeholders}` standing for anything. */
+const pattern = (text) =>
+  new RegExp(`^${text.split(/\{[a-z_]+\}/).map(escape).join('.+')}$`, 's');
+
+/**
+ * The English texts of the catalogue that the page shows in `lang` where a translation
+ * differs: visible text and the accessible names and tooltips of visible elements, outside
+ * program text (editors, code views) and outside `allowed` (the program's own names).
+ */
+async function englishLeft(page, lang, allowed) {
+  const shown = await page.evaluate(() => {
+    const skip = 'textarea, pre, code, .code, .ed-code, .ld-operand, .ld-st, .ld-il, .petri-code, [translate="no"], option';
+    const visible = (el) => {
+      if (!el || el.closest(skip)) return false;
+      const r = el.getBoundingClientRect();
+      const style = getComputedStyle(el);
+      return r.width > 0 && r.height > 0 && style.visibility !== 'hidden' && style.display !== 'none';
+    };
+    const out = new Set();
+    const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+    for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+      const text = n.textContent.trim();
+      if (text && visible(n.parentElement)) out.add(text);
+    }
+    for (const el of document.body.querySelectorAll('[aria-label], [title], [placeholder]')) {
+      if (!visible(el)) continue;
+      for (const a of ['aria-label', 'title', 'placeholder']) {
+        const v = el.getAttribute(a)?.trim();
+        if (v) out.add(v);
+      }
+    }
+    return [...out];
+  });
+  const left = [];
+  for (const [key, english] of Object.entries(EN)) {
+    if (TR[lang][key] === english || allowed.has(english)) continue;
+    const re = pattern(english);
+    const hit = shown.find((s) => re.test(s));
+    if (hit) left.push(`${key}: “${hit}”`);
+  }
+  return left;
+}
+
+const LATCH_ERROR = `PROGRAM Main
+VAR_INPUT
+    Start : BOOL;
+    Stop : BOOL;
+END_VAR
+VAR_OUTPUT
+    Motor : BOOL;
+END_VAR
+Motor := (Start OR Motor) AND NOT Stopp;
+END_PROGRAM
+`;
+/** The program's own names: never translated. */
+const PROGRAM_NAMES = new Set(['Main', 'Start', 'Stop', 'Motor', 'Stopp', 'Latch', 'Cycle', 'Busy', 'Go']);
+
+for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
+  test(`a ${locale} browser opens the page in ${lang}; every view walked shows no English; back to English keeps the edits`, async () => {
+    const context = await app.browser.newContext({ locale, viewport: { width: 1400, height: 1000 } });
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    const shots = path.join(root, 'docs/screenshots');
+    await page.goto(app.server.url);
+    const editor = page.getByRole('textbox', { name: L(lang, 'ST source') });
+    await editor.waitFor();
+    assert.equal(await page.evaluate(() => document.documentElement.lang), lang);
+    const select = page.getByRole('combobox', { name: new RegExp(`^${escape(L(lang, 'Language'))}`) });
+    assert.equal(await select.inputValue(), lang);
+
+    // The ST editor with a located error.
+    await editor.fill(LATCH_ERROR);
+    await page.locator('.ed-problem').first().waitFor();
+    assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES), [], 'the ST editor and the panels');
+    await page.screenshot({ path: path.join(shots, `i18n-${lang}-st.png`) });
+
+    // The ladder editor.
+    await page.getByRole('button', { name: L(lang, 'New ladder POU') }).click();
+    await page.getByRole('textbox', { name: L(lang, 'POU name') }).fill('Latch');
+    await page.getByRole('button', { name: L(lang, 'Create') }).click();
+    const ladder = page.getByRole('region', { name: new RegExp(`Latch$`) }).first();
+    await ladder.waitFor();
+    await page.locator('.ld-palette, [role="toolbar"]').first().waitFor();
+    assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES), [], 'the ladder editor');
+    await page.screenshot({ path: path.join(shots, `i18n-${lang}-ladder.png`) });
+
+    // The Petri net editor.
+    await page.getByRole('button', { name: L(lang, 'New Petri net POU') }).click();
+    await page.getByRole('textbox', { name: L(lang, 'POU name') }).fill('Cycle');
+    await page.getByRole('button', { name: L(lang, 'Create') }).click();
+    await page.getByRole('group', { name: L(lang, 'Net canvas') }).waitFor();
+    assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES), [], 'the Petri net editor');
+    await page.screenshot({ path: path.join(shots, `i18n-${lang}-petri.png`) });
+
+    // Back to English: every view in English, the edits intact.
+    await select.selectOption('en');
+    await page.getByRole('button', { name: 'New ladder POU' }).waitFor();
+    assert.equal(await page.evaluate(() => document.documentElement.lang), 'en');
+    assert.ok(await page.getByRole('group', { name: 'Net canvas' }).isVisible(), 'the Petri net is still shown');
+    const pous = await page.locator('.pou-tab, [role="tab"]').allTextContents();
+    assert.ok(pous.join(' ').includes('Latch') && pous.join(' ').includes('Cycle'), `the new POUs are kept: ${pous}`);
+    await page.getByRole('tab', { name: /Main/ }).first().click();
+    assert.equal(await page.getByRole('textbox', { name: 'ST source' }).inputValue(), LATCH_ERROR, 'the unsaved ST edit is kept');
+
+    // And back to the language, kept across a reload.
+    await select.selectOption(lang);
+    await page.getByRole('button', { name: L(lang, 'New ladder POU') }).waitFor();
+    await page.reload();
+    await page.getByRole('button', { name: L(lang, 'New ladder POU') }).waitFor();
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test(`an exercise with a failed Check, in ${lang}`, async () => {
+    const context = await app.browser.newContext({ locale, viewport: { width: 1400, height: 1000 } });
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(app.server.url);
+    await page.getByRole('textbox', { name: L(lang, 'ST source') }).waitFor();
+    await page.getByRole('button', { name: L(lang, 'Exercises'), exact: true }).click();
+    await page.locator('.catalogue-item[data-exercise="latch"] button').first().click();
+    const panel = page.getByRole('region', { name: L(lang, 'Exercise') });
+    await panel.waitFor();
+    await page.getByRole('textbox', { name: L(lang, 'ST source') }).fill(LATCH_ERROR.replace('Stopp', 'Stop').replace('(Start OR Motor)', 'Start'));
+    await page.waitForTimeout(400);
+    await page.getByRole('button', { name: L(lang, 'Check'), exact: true }).click();
+    await page.locator('.report-scenario.failed').first().waitFor();
+    assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES), [], 'the exercise and its report');
+    await page.screenshot({ path: path.join(root, `docs/screenshots/i18n-${lang}-exercise.png`) });
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test(`the problems page in ${lang}`, async () => {
+    const context = await app.browser.newContext({ locale });
+    const page = await context.newPage();
+    await page.goto(`${app.server.url}problems.${lang}.html`);
+    assert.equal(await page.evaluate(() => document.documentElement.lang), lang);
+    const text = await page.locator('main, body').first().innerText();
+    assert.ok(!/\bthe parser expected something else here\b/.test(text), 'no English title left');
+    await page.screenshot({ path: path.join(root, `docs/screenshots/i18n-${lang}-problems.png`) });
+    await context.close();
+  });
+}
