@@ -55,7 +55,7 @@ fn explain_now(state: AppState, target: &WhyTarget, scan: u64) -> Result<Answer,
                     WhyTarget::Var(path) => why::explain(&ctx, sim, path, scan),
                     WhyTarget::Place(place) => why::explain_place(&ctx, sim, place, scan),
                 }
-                .map_err(|e| capitalised(&e.to_string()))?;
+                .map_err(|e| why_error(&e))?;
                 let operands = operand_links(sim, &ex);
                 let changes_of = match &ex.place {
                     Some(p) => p.step_variable.clone(),
@@ -65,6 +65,25 @@ fn explain_now(state: AppState, target: &WhyTarget, scan: u64) -> Result<Answer,
             })
         })
     })
+}
+
+/// Why the explanation cannot be given, as a sentence.
+fn why_error(e: &why::WhyError) -> String {
+    use plc_core::sim::RecordError;
+    let n = |x: u64| x.to_string();
+    match e {
+        why::WhyError::Unknown(name) => tf(K::why_unknown, &[("name", name)]),
+        why::WhyError::Record(RecordError::NotRecording) => t(K::why_not_recording).to_string(),
+        why::WhyError::Record(RecordError::OutOfRange { scan, first, last }) => tf(
+            K::why_not_recorded,
+            &[("scan", &n(*scan)), ("first", &n(*first)), ("last", &n(*last))],
+        ),
+        why::WhyError::Record(RecordError::TooLarge { bytes }) => {
+            tf(K::why_too_large, &[("kb", &(bytes / 1024).to_string())])
+        }
+        why::WhyError::Record(RecordError::Replay(m)) => tf(K::why_not_replayed, &[("reason", m)]),
+        other => capitalised(&other.to_string()),
+    }
 }
 
 fn capitalised(text: &str) -> String {

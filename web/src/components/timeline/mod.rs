@@ -298,8 +298,8 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
                         <rect class="tl-lane-bg" x=LEFT y=lane.top width=WIDTH - LEFT height=lane.height fill="#f7f9fb"/>
                         <text class="tl-series" x="4" y=lane.top + 14.0 fill=color font-weight="bold">{lane.path.clone()}</text>
                         {(!lane.digital).then(|| view! {
-                            <text class="tl-tick" x="4" y=lane.top + 28.0 fill="#5b6b7c">{format!("max {}", short(lane.range.1))}</text>
-                            <text class="tl-tick" x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{format!("min {}", short(lane.range.0))}</text>
+                            <text class="tl-tick" x="4" y=lane.top + 28.0 fill="#5b6b7c">{tf(K::sim_lane_max, &[("value", &short(lane.range.1))])}</text>
+                            <text class="tl-tick" x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{tf(K::sim_lane_min, &[("value", &short(lane.range.0))])}</text>
                         })}
                         <polyline class="tl-series" points=lane.points.clone() fill="none" stroke=color stroke-width="1.5"/>
                     </g>
