@@ -231,3 +231,25 @@ fn declarable_at(state: AppState, span: Span) -> bool {
         !(before.ends_with('.') || before.ends_with('#'))
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn counts_take_the_polish_form_and_keep_english() {
+        let forms = [K::editor_errors_one, K::editor_errors_few, K::editor_errors_many];
+        let form = |n| plural(n, forms[0], forms[1], forms[2]);
+        // Without the page's language (no context) Polish rules apply.
+        assert_eq!(form(1), K::editor_errors_one);
+        for n in [2, 3, 4, 22, 34, 102] {
+            assert_eq!(form(n), K::editor_errors_few, "{n}");
+        }
+        for n in [0, 5, 11, 12, 13, 14, 21, 25, 112] {
+            assert_eq!(form(n), K::editor_errors_many, "{n}");
+        }
+        assert_eq!(count(1, forms), "1 error");
+        assert_eq!(count(3, forms), "3 errors");
+        assert_eq!(count(0, forms), "0 errors");
+    }
+}
