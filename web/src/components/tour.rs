@@ -25,7 +25,6 @@ const ADVANCE_DELAY: std::time::Duration = std::time::Duration::from_millis(1200
 
 /// One step of the lesson (its markup is made by a chunk loaded on first use:
 /// `lazy::tour_text`).
-
 struct Step {
     title: K,
     text: K,
