@@ -28,11 +28,16 @@ pub use run::marking_of;
 /// both other forms' `one` for 1 only; Polish `few` for 2–4 except 12–14, Czech `few` for
 /// 2–4; else `many`. English `few` and `many` are the same text.
 pub fn plural(n: u64, one: K, few: K, many: K) -> K {
+    // Natively (tests) the page is English.
+    #[cfg(target_arch = "wasm32")]
     let lang = web_sys::window()
         .and_then(|w| w.document())
         .and_then(|d| d.document_element())
         .and_then(|e| e.get_attribute("lang"))
         .unwrap_or_default();
+    #[cfg(not(target_arch = "wasm32"))]
+    let lang = "en";
+
     match n {
         1 => one,
         2..=4 => few,
