@@ -69,6 +69,9 @@ async fn export_in_worker(what: &str, pou: &str, project: &Project) -> Result<St
     );
     let reply: Reply = serde_json::from_str(&ask_worker(&request).await?)
         .map_err(|_| t(K::state_exporter_no_answer).to_string())?;
+    if let Some(pou) = reply.no_pou {
+        return Err(tf(K::state_no_petri_pou, &[("pou", &pou)]));
+    }
     match reply.error {
         Some(e) => Err(e),
         None => Ok(reply.xml),
@@ -146,6 +149,9 @@ struct Reply {
     warnings: Vec<String>,
     #[serde(default)]
     xml: String,
+    /// The Petri net POU asked for is not in the project.
+    #[serde(default)]
+    no_pou: Option<String>,
 }
 
 /// Reads the worker's JSON answer.

@@ -86,7 +86,7 @@ async fn export_scorm(ex: Exercises, state: AppState) {
         Ok(v) if v.is_instance_of::<js_sys::Uint8Array>() => v,
         Ok(v) => {
             let e = match serde_json::from_str::<Reply>(&v.as_string().unwrap_or_default()) {
-                Ok(Reply::Error(e)) => e,
+                Ok(Reply::Error(f)) => f.text(),
                 _ => t(K::exercise_no_package).to_string(),
             };
             return state.error(tf(K::exercise_scorm_failed, &[("error", &e)]));

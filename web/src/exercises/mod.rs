@@ -186,7 +186,7 @@ impl Exercises {
     async fn open_with(self, state: AppState, request: Request, base: Option<&str>) {
         let mut opened = match ask(&request).await {
             Ok(Reply::Opened(o)) => *o,
-            Ok(Reply::Error(e)) | Err(e) => {
+            Err(e) => {
                 state.error(tf(K::exercise_open_failed, &[("error", &e)]));
                 return;
             }
@@ -211,7 +211,7 @@ impl Exercises {
             link.starters.extend(files);
             opened = match ask(&Request::File { link, base: Some(base.to_string()) }).await {
                 Ok(Reply::Opened(o)) => *o,
-                Ok(Reply::Error(e)) | Err(e) => {
+                Err(e) => {
                     state.error(tf(K::exercise_open_failed, &[("error", &e)]));
                     return;
                 }
@@ -301,9 +301,7 @@ impl Exercises {
                     scorm::report(state, &open.opened.view.id, &report);
                     self.report.set(Some(report));
                 }
-                Ok(Reply::Error(e)) | Err(e) => {
-                    state.error(tf(K::exercise_check_failed, &[("error", &e)]))
-                }
+                Err(e) => state.error(tf(K::exercise_check_failed, &[("error", &e)])),
                 Ok(_) => {}
             }
         });
@@ -414,14 +412,15 @@ fn confirm(question: &str) -> bool {
     web_sys::window().and_then(|w| w.confirm_with_message(question).ok()).unwrap_or(false)
 }
 
-/// Sends one request to a fresh exercise worker.
+/// Sends one request to a fresh exercise worker; its `Error` worded in the language shown.
 async fn ask(request: &Request) -> Result<Reply, String> {
     let text = serde_json::to_string(request).map_err(|e| e.to_string())?;
     let answer = crate::import::ask_worker_at(WORKER, &JsValue::from_str(&text)).await?;
-    crate::lazy::read_exercise_reply(answer)
-        .await
-        .map_err(|e| e.to_string())?
-        .ok_or_else(|| t(K::exercise_worker_no_answer).to_string())
+    match crate::lazy::read_exercise_reply(answer).await.map_err(|e| e.to_string())? {
+        Some(Reply::Error(failure)) => Err(failure.text()),
+        Some(reply) => Ok(reply),
+        None => Err(t(K::exercise_worker_no_answer).to_string()),
+    }
 }
 
 /// The text at `url` (a CORS fetch).
