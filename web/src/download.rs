@@ -2,6 +2,8 @@
 
 use wasm_bindgen::{JsCast, JsValue};
 
+use crate::i18n::{tf, K};
+
 /// Offers `text` as a file named `name` of type `mime`; returns an error text on failure.
 pub fn download(name: &str, mime: &str, text: &str) -> Result<(), String> {
     download_parts(name, mime, &JsValue::from_str(text))
@@ -9,7 +11,8 @@ pub fn download(name: &str, mime: &str, text: &str) -> Result<(), String> {
 
 /// Offers `part` (a string, or bytes as a `Uint8Array`) as a file named `name`.
 pub fn download_parts(name: &str, mime: &str, part: &JsValue) -> Result<(), String> {
-    let fail = |e: JsValue| format!("Could not download {name}: {e:?}");
+    let fail =
+        |e: JsValue| tf(K::state_download_failed, &[("name", name), ("error", &format!("{e:?}"))]);
     let window = web_sys::window().ok_or("no window")?;
     let document = window.document().ok_or("no document")?;
     let parts = js_sys::Array::of1(part);
@@ -21,7 +24,8 @@ pub fn download_parts(name: &str, mime: &str, part: &JsValue) -> Result<(), Stri
         .create_element("a")
         .map_err(fail)?
         .dyn_into::<web_sys::HtmlAnchorElement>()
-        .map_err(|_| format!("Could not download {name}"))?;
+        .map_err(|_| tf(K::state_download_failed_short, &[("name", name)]))?;
+
     a.set_href(&url);
     a.set_download(name);
     a.set_attribute("style", "display:none").map_err(fail)?;

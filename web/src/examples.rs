@@ -7,6 +7,8 @@ use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
+use crate::i18n::{tf, K};
+
 mod naming {
     #![allow(dead_code)]
     include!("examples/naming.rs");
@@ -34,7 +36,7 @@ pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
     let name = naming::humanise(naming::stem(file));
     let mut project = open_plain(&name, text)
         .map_err(|e| e.to_string())?
-        .ok_or_else(|| format!("{file} is not a project file or ST"))?
+        .ok_or_else(|| tf(K::state_example_not_project, &[("file", file)]))?
         .project;
     if project.name.trim().is_empty() {
         project.name = name;
@@ -45,9 +47,9 @@ pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
 /// Fetches the example `file` from the site and opens it as a new project.
 pub async fn open(file: &str) -> Result<Project, String> {
     if !list::EXAMPLES.iter().any(|(f, _, _)| *f == file) {
-        return Err(format!("there is no example {file}"));
+        return Err(tf(K::state_example_missing, &[("file", file)]));
     }
-    let fail = |_| format!("could not load the example {file} from the site");
+    let fail = |_| tf(K::state_example_unreachable, &[("file", file)]);
     let window = web_sys::window().ok_or("no window")?;
     let response: web_sys::Response =
         JsFuture::from(window.fetch_with_str(&format!("examples/{file}")))
@@ -56,7 +58,10 @@ pub async fn open(file: &str) -> Result<Project, String> {
             .dyn_into()
             .map_err(|_| fail(wasm_bindgen::JsValue::NULL))?;
     if !response.ok() {
-        return Err(format!("could not load the example {file} (HTTP {})", response.status()));
+        return Err(tf(
+            K::state_example_http,
+            &[("file", file), ("status", &response.status().to_string())],
+        ));
     }
     let text = JsFuture::from(response.text().map_err(fail)?).await.map_err(fail)?;
     project_of(file, &text.as_string().unwrap_or_default())

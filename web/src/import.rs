@@ -7,6 +7,8 @@ use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 
+use crate::i18n::{t, tf, K};
+
 /// The import worker's name (`src/workers/mod.rs`).
 const WORKER: &str = "import";
 
@@ -66,7 +68,10 @@ async fn export_in_worker(what: &str, pou: &str, project: &Project) -> Result<St
         &JsValue::from_str(&project.to_file()),
     );
     let reply: Reply = serde_json::from_str(&ask_worker(&request).await?)
-        .map_err(|_| "the exporter gave no answer".to_string())?;
+        .map_err(|_| t(K::state_exporter_no_answer).to_string())?;
+    if let Some(pou) = reply.no_pou {
+        return Err(tf(K::state_no_petri_pou, &[("pou", &pou)]));
+    }
     match reply.error {
         Some(e) => Err(e),
         None => Ok(reply.xml),
@@ -111,18 +116,19 @@ pub async fn ask_worker_at(name: &str, request: &JsValue) -> Result<String, Stri
 
 /// [`ask_worker_at`], the answer as the worker sent it (text, or bytes).
 pub async fn ask_worker_raw(name: &str, request: &JsValue) -> Result<JsValue, String> {
-    let worker = start_worker(name).map_err(|e| format!("the importer could not start ({e:?})"))?;
-    let stopped = |_| "the importer stopped (the file may be too large or damaged)".to_string();
+    let worker = start_worker(name)
+        .map_err(|e| tf(K::state_worker_cannot_start_why, &[("error", &format!("{e:?}"))]))?;
+    let stopped = |_| t(K::state_worker_stopped).to_string();
     let answer = async {
         let ready =
-            next_message(&worker).await.map_err(|_| "the importer could not start".to_string())?;
+            next_message(&worker).await.map_err(|_| t(K::state_worker_cannot_start).to_string())?;
         if ready.as_string().as_deref() != Some("ready") {
-            return Err("the importer could not start (is the network off?)".to_string());
+            return Err(t(K::state_worker_offline).to_string());
         }
         let reply = next_message(&worker);
         worker
             .post_message(request)
-            .map_err(|e| format!("the importer did not take the file ({e:?})"))?;
+            .map_err(|e| tf(K::state_worker_refused, &[("error", &format!("{e:?}"))]))?;
         reply.await.map_err(stopped)
     }
     .await;
@@ -143,12 +149,16 @@ struct Reply {
     warnings: Vec<String>,
     #[serde(default)]
     xml: String,
+    /// The Petri net POU asked for is not in the project.
+    #[serde(default)]
+    no_pou: Option<String>,
 }
 
 /// Reads the worker's JSON answer.
 fn read_reply(reply: &str) -> Result<Imported, String> {
     let reply: Reply =
-        serde_json::from_str(reply).map_err(|_| "the importer gave no answer".to_string())?;
+        serde_json::from_str(reply).map_err(|_| t(K::state_importer_no_answer).to_string())?;
+
     if let Some(error) = reply.error {
         return Err(error);
     }

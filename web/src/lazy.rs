@@ -21,6 +21,8 @@ use leptos::wasm_split::wasm_split;
 use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
 use plc_core::semantic::{IlPass, SfcPass};
 
+use crate::i18n::{t, tf, K};
+
 /// A chunk of the app could not be fetched.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct LoadFailed;
@@ -33,20 +35,118 @@ impl From<leptos::wasm_split::SplitLoaderError> for LoadFailed {
 
 impl std::fmt::Display for LoadFailed {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("a part of the app could not be loaded (is the network off?)")
+        f.write_str(t(K::lazy_load_failed))
+    }
+}
+
+/// What a lazy view loads: its `Loading …` and `Could not load …` sentences, each
+/// translated whole.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum What {
+    Recording,
+    NewPouDialog,
+    LadderEditor,
+    PetriEditor,
+    SfcChart,
+    NetworkView,
+    ExerciseCatalogue,
+    Exercise,
+    Explanation,
+    PlantScene,
+}
+
+impl What {
+    /// `Loading the ladder editor…`.
+    fn loading(self) -> K {
+        match self {
+            What::Recording => K::lazy_loading_recording,
+            What::NewPouDialog => K::lazy_loading_new_pou_dialog,
+            What::LadderEditor => K::lazy_loading_ladder_editor,
+            What::PetriEditor => K::lazy_loading_petri_editor,
+            What::SfcChart => K::lazy_loading_sfc_chart,
+            What::NetworkView => K::lazy_loading_network_view,
+            What::ExerciseCatalogue => K::lazy_loading_exercise_catalogue,
+            What::Exercise => K::lazy_loading_exercise,
+            What::Explanation => K::lazy_loading_explanation,
+            What::PlantScene => K::lazy_loading_plant_scene,
+        }
+    }
+
+    /// `Could not load the ladder editor (is the network off?).`
+    fn failed(self) -> K {
+        match self {
+            What::Recording => K::lazy_failed_recording,
+            What::NewPouDialog => K::lazy_failed_new_pou_dialog,
+            What::LadderEditor => K::lazy_failed_ladder_editor,
+            What::PetriEditor => K::lazy_failed_petri_editor,
+            What::SfcChart => K::lazy_failed_sfc_chart,
+            What::NetworkView => K::lazy_failed_network_view,
+            What::ExerciseCatalogue => K::lazy_failed_exercise_catalogue,
+            What::Exercise => K::lazy_failed_exercise,
+            What::Explanation => K::lazy_failed_explanation,
+            What::PlantScene => K::lazy_failed_plant_scene,
+        }
+    }
+
+    /// The view an English phrase (`the ladder editor`) names, for [`lazy_view`]'s callers
+    /// that still name it in English.
+    fn from_english(what: &str) -> Option<What> {
+        Some(match what {
+            "the recording" => What::Recording,
+            "the New POU dialog" => What::NewPouDialog,
+            "the ladder editor" => What::LadderEditor,
+            "the Petri net editor" => What::PetriEditor,
+            "the SFC chart" => What::SfcChart,
+            "the network view" => What::NetworkView,
+            "the exercise catalogue" => What::ExerciseCatalogue,
+            "the exercise" => What::Exercise,
+            "the explanation" => What::Explanation,
+            "the plant scene" => What::PlantScene,
+            _ => return None,
+        })
     }
 }
 
 /// Shows the view that `load` gives, with `Loading {what}…` (role=status) until its chunk
-/// has come, and a `Retry` button if it could not be fetched.
+/// has come, and a `Retry` button if it could not be fetched. `what` is one of the
+/// phrases [`What`] knows (translated whole); another is shown inside a general sentence.
 pub fn lazy_view<F, Fut>(what: &'static str, load: F) -> AnyView
 where
     F: Fn() -> Fut + Send + Sync + 'static,
     Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
 {
+    match What::from_english(what) {
+        Some(known) => lazy_view_of(known, load),
+        None => lazy_with(
+            move || tf(K::lazy_loading_other, &[("what", what)]),
+            move || tf(K::lazy_failed_other, &[("what", what)]),
+            load,
+        ),
+    }
+}
+
+/// Shows the view that `load` gives, with `Loading …` (role=status) naming `what` until
+/// its chunk has come, and a `Retry` button if it could not be fetched.
+pub fn lazy_view_of<F, Fut>(what: What, load: F) -> AnyView
+where
+    F: Fn() -> Fut + Send + Sync + 'static,
+    Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
+{
+    lazy_with(move || t(what.loading()), move || t(what.failed()), load)
+}
+
+/// [`lazy_view_of`] with its two sentences.
+fn lazy_with<F, Fut, L, E, S>(loading_text: L, failed_text: E, load: F) -> AnyView
+where
+    F: Fn() -> Fut + Send + Sync + 'static,
+    Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
+    L: Fn() -> S + Send + Sync + 'static,
+    E: Fn() -> S + Send + Sync + Copy + 'static,
+    S: IntoView + 'static,
+{
     let attempt = RwSignal::new(0u32);
     let loading = move || {
-        view! { <p class="lazy-loading" role="status">{format!("Loading {what}…")}</p> }
+        view! { <p class="lazy-loading" role="status">{loading_text()}</p> }
     };
     view! {
         <Suspense fallback=loading>
@@ -59,8 +159,8 @@ where
                         Ok(view) => view,
                         Err(_) => view! {
                             <p class="lazy-failed" role="alert">
-                                {format!("Could not load {what} (is the network off?). ")}
-                                <button class="link" on:click=move |_| attempt.update(|n| *n += 1)>"Retry"</button>
+                                {failed_text()}" "
+                                <button class="link" on:click=move |_| attempt.update(|n| *n += 1)>{t(K::lazy_retry)}</button>
                             </p>
                         }
                         .into_any(),

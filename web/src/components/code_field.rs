@@ -13,6 +13,8 @@ use leptos::prelude::*;
 use crate::components::editor::text::{
     byte_to_utf16, gutter_html, highlight_html, offset_of, LineInfo, Mark,
 };
+use crate::components::problems::plural;
+use crate::i18n::{t, tf, K};
 
 /// Pause after the last keystroke before the text is handed over.
 const COMMIT_DELAY: Duration = Duration::from_millis(300);
@@ -195,12 +197,12 @@ pub fn DeclarationsBox(
                     open.set(now);
                 }
             }>
-            <summary>"Declarations"
+            <summary>{t(K::editor_declarations)}
                 {move || (count() > 0).then(|| view! {
-                    <span class="ld-decl-count">{format!(" ({} problem{})", count(), if count() == 1 { "" } else { "s" })}</span>
+                    <span class="ld-decl-count">{tf(plural(count(), K::editor_problem_count_one, K::editor_problem_count_few, K::editor_problem_count_many), &[("n", &count().to_string())])}</span>
                 })}
             </summary>
-            <CodeField label="Declarations" text=text on_commit=on_commit on_leave=on_leave
+            <CodeField label=t(K::editor_declarations) text=text on_commit=on_commit on_leave=on_leave
                 problems=problems reveal=reveal/>
         </details>
     }

@@ -7,7 +7,8 @@ use leptos::prelude::*;
 use plc_core::sim::SimState;
 use plc_core::vm::format_time;
 
-use crate::lazy::{self, lazy_view};
+use crate::i18n::{t, tf, K};
+use crate::lazy::{self, lazy_view_of, What};
 use crate::state::{version_text, AppState, RunMode, Speed};
 
 /// The control bar of the simulation pane.
@@ -35,14 +36,14 @@ pub fn Controls() -> impl IntoView {
 
     let status = move || {
         if !has_sim() {
-            ("No program", "status status-stopped")
+            (t(K::sim_no_program), "status status-stopped")
         } else if faulted() {
-            ("FAULT", "status status-fault")
+            (t(K::sim_fault), "status status-fault")
         } else {
             match mode.get() {
-                RunMode::Running => ("Running", "status status-running"),
-                RunMode::Paused => ("Paused", "status status-paused"),
-                RunMode::Stopped => ("Stopped", "status status-stopped"),
+                RunMode::Running => (t(K::sim_running), "status status-running"),
+                RunMode::Paused => (t(K::sim_paused), "status status-paused"),
+                RunMode::Stopped => (t(K::sim_stopped), "status status-stopped"),
             }
         }
     };
@@ -56,19 +57,19 @@ pub fn Controls() -> impl IntoView {
     };
 
     view! {
-        <section class="panel controls" aria-label="Simulation controls">
-            <h2>"Simulation"</h2>
+        <section class="panel controls" aria-label=t(K::sim_controls)>
+            <h2>{t(K::sim_simulation)}</h2>
             <div class="control-row">
                 <button class="primary" disabled=move || !can_scan() || running()
-                    on:click=move |_| state.run()>"Run"</button>
-                <button disabled=move || !running() on:click=move |_| state.pause()>"Pause"</button>
+                    on:click=move |_| state.run()>{t(K::sim_run)}</button>
+                <button disabled=move || !running() on:click=move |_| state.pause()>{t(K::sim_pause)}</button>
                 <button disabled=move || running() || !state.can_step_back()
-                    title="Show the scan before (the recording keeps the recent history)"
-                    on:click=move |_| state.step_back()>"Step back"</button>
-                <button data-tour="step" disabled=move || !can_scan() on:click=move |_| state.step(1)>"Step"</button>
-                <button disabled=move || !has_sim() on:click=move |_| state.reset()>"Reset"</button>
+                    title=t(K::sim_step_back_title)
+                    on:click=move |_| state.step_back()>{t(K::sim_step_back)}</button>
+                <button data-tour="step" disabled=move || !can_scan() on:click=move |_| state.step(1)>{t(K::sim_step)}</button>
+                <button disabled=move || !has_sim() on:click=move |_| state.reset()>{t(K::sim_reset)}</button>
                 <button disabled=move || !has_sim() on:click=move |_| state.warm_restart()>
-                    "Warm restart"
+                    {t(K::sim_warm_restart)}
                 </button>
             </div>
             {move || {
@@ -78,8 +79,8 @@ pub fn Controls() -> impl IntoView {
                     view! {
                         <div class="control-row">
                             <label class="field">
-                                <span>"Program"</span>
-                                <select aria-label="Program to run" title="The PROGRAM the simulator runs (kept in the project)"
+                                <span>{t(K::sim_program)}</span>
+                                <select aria-label=t(K::sim_program_to_run) title=t(K::sim_program_title)
                                     on:change=move |ev| state.set_program(&event_target_value(&ev))>
                                     {names.into_iter().map(|n| {
                                         let selected = n.eq_ignore_ascii_case(&running);
@@ -93,7 +94,7 @@ pub fn Controls() -> impl IntoView {
             }}
             <div class="control-row">
                 <label class="field">
-                    <span>"Scans per step"</span>
+                    <span>{t(K::sim_scans_per_step)}</span>
                     <input type="number" min="1" max="1000000" class="num"
                         prop:value=move || scans_per_step.get().to_string()
                         on:change=move |ev| {
@@ -102,19 +103,19 @@ pub fn Controls() -> impl IntoView {
                         }/>
                 </label>
                 <button disabled=move || !can_scan()
-                    on:click=move |_| state.step(scans_per_step.get_untracked())>"Step N"</button>
+                    on:click=move |_| state.step(scans_per_step.get_untracked())>{t(K::sim_step_n)}</button>
                 <label class="field">
-                    <span>"Cycle time (ms)"</span>
+                    <span>{t(K::sim_cycle_time)}</span>
                     <input type="number" min="1" max="60000" class="num" prop:value=cycle
                         on:change=move |ev| {
                             match event_target_value(&ev).trim().parse::<u64>() {
                                 Ok(ms) => state.set_cycle_ms(ms),
-                                Err(_) => state.error("The cycle time is a whole number of milliseconds (1 to 60000)."),
+                                Err(_) => state.error(t(K::sim_cycle_time_invalid)),
                             }
                         }/>
                 </label>
                 <label class="field">
-                    <span>"Speed"</span>
+                    <span>{t(K::sim_speed)}</span>
                     <select prop:value=speed_value on:change=move |ev| {
                         let speed = match event_target_value(&ev).as_str() {
                             "10" => Speed::Times10,
@@ -123,9 +124,9 @@ pub fn Controls() -> impl IntoView {
                         };
                         state.speed.set(speed);
                     }>
-                        <option value="1" selected=move || speed_value() == "1">"Real time"</option>
+                        <option value="1" selected=move || speed_value() == "1">{t(K::sim_real_time)}</option>
                         <option value="10" selected=move || speed_value() == "10">"×10"</option>
-                        <option value="max" selected=move || speed_value() == "max">"As fast as possible"</option>
+                        <option value="max" selected=move || speed_value() == "max">{t(K::sim_as_fast_as_possible)}</option>
                     </select>
                 </label>
             </div>
@@ -134,14 +135,14 @@ pub fn Controls() -> impl IntoView {
             // Its room is kept while there is a program, so pressing Run (which starts the
             // recording) never moves the inputs below under the pointer.
             <div class="recorded-slot" class:reserved=has_sim>
-                {move || has_history.get().then(|| lazy_view("the recording", lazy::recorded_view))}
+                {move || has_history.get().then(|| lazy_view_of(What::Recording, lazy::recorded_view))}
             </div>
             <div class="readouts">
-                <span class=move || status().1 role="status" aria-label=move || format!("PLC state: {}", status().0)>
+                <span class=move || status().1 role="status" aria-label=move || tf(K::sim_plc_state, &[("state", status().0)])>
                     {move || status().0}
                 </span>
-                <span class="readout">"Scan " <output aria-label="Scan count">{scans}</output></span>
-                <span class="readout">"Time " <output aria-label="Virtual time">{time}</output></span>
+                <span class="readout">{t(K::sim_scan)} <output aria-label=t(K::sim_scan_count)>{scans}</output></span>
+                <span class="readout">{t(K::sim_time)} <output aria-label=t(K::sim_virtual_time)>{time}</output></span>
             </div>
             <p class="run-version" role="status" aria-live="polite">{version}</p>
         </section>

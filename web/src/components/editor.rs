@@ -20,6 +20,8 @@ use leptos::prelude::*;
 use plc_core::project::StorageBackend;
 use web_sys::HtmlTextAreaElement;
 
+use crate::components::variables::why_label;
+use crate::i18n::{t, tf, K};
 use crate::state::{AppState, PouView};
 use text::{byte_to_utf16, line_col, offset_of, utf16_to_byte, Edit, LineInfo, Mark};
 
@@ -79,11 +81,7 @@ const TAB_INDENTS_KEY: &str = "plc-trainer/v1/tab-indents";
 
 /// The editor's hint about Tab, shown under the text (`Ctrl+M` switches).
 fn tab_hint(indents: bool) -> &'static str {
-    if indents {
-        "Tab indents (Ctrl+M: Tab moves focus; Escape, then Tab leaves)"
-    } else {
-        "Tab moves focus (Ctrl+M: Tab indents)"
-    }
+    t(if indents { K::editor_tab_indents } else { K::editor_tab_moves_focus })
 }
 
 impl Ed {
@@ -450,11 +448,11 @@ pub fn Editor() -> impl IntoView {
     let line_why = move || {
         let name = assigned.get()?;
         let value = state.read(&name)?;
-        let label = plc_core::why::why_label(&name, &value);
+        let label = why_label(&name, &value);
         Some(
             view! {
                 <button class="small" aria-label=label.clone() title=label
-                    on:click=move |_| state.ask_why(&name)>"Why?"</button>
+                    on:click=move |_| state.ask_why(&name)>{t(K::why_title)}</button>
             }
             .into_any(),
         )
@@ -463,12 +461,12 @@ pub fn Editor() -> impl IntoView {
     view! {
         <div class="panel editor">
             <div class="ed-toolbar">
-                <h2>"Structured Text"</h2>
+                <h2>{t(K::editor_structured_text)}</h2>
                 <span class="ed-spacer"></span>
                 <button on:click=move |_| { ed.undo(); if let Some(t) = ed.textarea() { let _ = t.focus(); } }
-                    disabled=move || ed.history.with(|h| h.undo.is_empty()) title="Undo (Ctrl+Z)">"Undo"</button>
+                    disabled=move || ed.history.with(|h| h.undo.is_empty()) title=t(K::editor_undo_title)>{t(K::editor_undo)}</button>
                 <button on:click=move |_| { ed.redo(); if let Some(t) = ed.textarea() { let _ = t.focus(); } }
-                    disabled=move || ed.history.with(|h| h.redo.is_empty()) title="Redo (Ctrl+Shift+Z, Ctrl+Y)">"Redo"</button>
+                    disabled=move || ed.history.with(|h| h.redo.is_empty()) title=t(K::editor_redo_title)>{t(K::editor_redo)}</button>
             </div>
             <div class="ed-frame" class:ed-running=move || state.marked_line.get().is_some()>
                 <div class="ed-gutter" aria-hidden="true" node_ref=ed.gutter inner_html=move || gutter.get()></div>
@@ -481,7 +479,7 @@ pub fn Editor() -> impl IntoView {
                     <textarea
                         class="ed-input"
                         node_ref=ed.ta
-                        aria-label="ST source"
+                        aria-label=t(K::editor_st_source)
                         aria-describedby="ed-tab-hint"
                         aria-keyshortcuts="Control+M"
                         spellcheck="false"
@@ -500,7 +498,7 @@ pub fn Editor() -> impl IntoView {
                 </div>
             </div>
             <div class="ed-status">
-                <span>{move || { let (l, c) = ed.cursor.get(); format!("Ln {l}, Col {c}") }}</span>
+                <span>{move || { let (l, c) = ed.cursor.get(); tf(K::editor_cursor, &[("line", &l.to_string()), ("column", &c.to_string())]) }}</span>
                 {line_why}
                 <span id="ed-tab-hint" class="ed-tab-hint" aria-live="polite">{move || tab_hint(ed.tab_indents.get())}</span>
             </div>

@@ -6,77 +6,106 @@ use leptos::ev;
 use leptos::prelude::*;
 
 use crate::components::tour::Tour;
+use crate::i18n::{t, tf, K};
+
+/// A shortcut's keys: as the keyboard writes them, or with words (`Enter or F2`).
+#[derive(Clone, Copy)]
+enum Keys {
+    /// Key names only (`Ctrl+Z`).
+    Raw(&'static str),
+    /// Keys joined by words, translated.
+    Said(K),
+}
+
+impl Keys {
+    fn text(self) -> &'static str {
+        match self {
+            Keys::Raw(keys) => keys,
+            Keys::Said(key) => t(key),
+        }
+    }
+}
 
 /// The keys of the app, by where they work (read from the editors' key handlers; keep in
 /// step with them).
-const SHORTCUTS: &[(&str, &[(&str, &str)])] = &[
-    (
-        "ST editor",
-        &[
-            ("Ctrl+Z", "Undo"),
-            ("Ctrl+Shift+Z or Ctrl+Y", "Redo"),
-            ("Tab / Shift+Tab", "Move to the next / previous control, or with Tab indenting on, indent / outdent the selected lines"),
-            ("Ctrl+M", "Turn Tab indenting on or off (the line under the editor says which)"),
-            ("Enter", "New line, keeping the indentation"),
-            ("Escape, then Tab", "Leave the editor while Tab indents"),
-        ],
-    ),
-    (
-        "Ladder rungs (on a selected cell)",
-        &[
-            ("Arrow keys", "Select the next cell"),
-            ("c / n", "NO contact / NC contact"),
-            ("o / s / r", "Coil / set coil / reset coil"),
-            ("w / l", "Wire / link down"),
-            ("b", "Pick a block"),
-            ("Enter or F2", "Edit the operand (a block: its pins)"),
-            ("Delete or Backspace", "Clear the cell"),
-            ("Ctrl+C / Ctrl+V", "Copy the rung / paste it below"),
-            ("Ctrl+Z / Ctrl+Shift+Z or Ctrl+Y", "Undo / redo"),
-            ("Ctrl or Alt while dropping", "Copy the dragged element instead of moving it"),
-        ],
-    ),
-    (
-        "Ladder operand box",
-        &[
-            ("Arrow Down / Up", "Choose among the matching names"),
-            ("Tab", "Take the chosen name"),
-            ("Enter", "Commit the operand"),
-            ("Escape", "Take the placement back"),
-        ],
-    ),
-    (
-        "Petri net canvas",
-        &[
-            ("Arrow keys", "Move the selected place or transition by one grid step"),
-            ("Enter", "Open its properties"),
-            ("Delete or Backspace", "Delete the selection with its arcs"),
-            ("Escape", "Back to the Select tool"),
-            ("Ctrl+Z / Ctrl+Shift+Z or Ctrl+Y", "Undo / redo"),
-        ],
-    ),
-    (
-        "Simulation",
-        &[
-            ("Space or Enter", "Flip a switch (a push button: held while the key is down)"),
-            ("Enter / Escape", "Commit / cancel a value typed in the variable table"),
-        ],
-    ),
-];
+const SHORTCUTS: &[(K, &[(Keys, K)])] = {
+    use Keys::{Raw, Said};
+    &[
+        (
+            K::help_area_st,
+            &[
+                (Raw("Ctrl+Z"), K::help_undo),
+                (Said(K::help_key_redo), K::help_redo),
+                (Raw("Tab / Shift+Tab"), K::help_tab),
+                (Raw("Ctrl+M"), K::help_tab_mode),
+                (Raw("Enter"), K::help_new_line),
+                (Said(K::help_key_escape_tab), K::help_leave_editor),
+            ],
+        ),
+        (
+            K::help_area_ladder,
+            &[
+                (Said(K::help_key_arrows), K::help_next_cell),
+                (Raw("c / n"), K::help_contacts),
+                (Raw("o / s / r"), K::help_coils),
+                (Raw("w / l"), K::help_wires),
+                (Raw("b"), K::help_pick_block),
+                (Said(K::help_key_enter_f2), K::help_edit_operand),
+                (Said(K::help_key_delete), K::help_clear_cell),
+                (Raw("Ctrl+C / Ctrl+V"), K::help_copy_rung),
+                (Said(K::help_key_undo_redo), K::help_undo_redo),
+                (Said(K::help_key_drop_copy), K::help_drop_copy),
+            ],
+        ),
+        (
+            K::help_area_operand,
+            &[
+                (Said(K::help_key_down_up), K::help_choose_name),
+                (Raw("Tab"), K::help_take_name),
+                (Raw("Enter"), K::help_commit_operand),
+                (Raw("Escape"), K::help_take_back),
+            ],
+        ),
+        (
+            K::help_area_petri,
+            &[
+                (Said(K::help_key_arrows), K::help_move_node),
+                (Raw("Enter"), K::help_properties),
+                (Said(K::help_key_delete), K::help_delete_selection),
+                (Raw("Escape"), K::help_select_tool),
+                (Said(K::help_key_undo_redo), K::help_undo_redo),
+            ],
+        ),
+        (
+            K::help_area_sim,
+            &[
+                (Said(K::help_key_space_enter), K::help_flip_switch),
+                (Raw("Enter / Escape"), K::help_commit_value),
+            ],
+        ),
+    ]
+};
 
 /// The id of the shortcuts dialog.
 const DIALOG_ID: &str = "shortcuts-dialog";
 
 /// The button, the menu (closed; `data-help` names what each item does) and the dialog.
 fn menu_html() -> String {
-    let mut html = String::from(concat!(
-        r#"<button class="header-button" data-help="menu" aria-haspopup="menu" aria-expanded="false">Help</button>"#,
-        r#"<ul class="menu" role="menu" aria-label="Help" hidden>"#,
-        r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="tour">Start here</button></li>"#,
-        r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="keys">Keyboard shortcuts</button></li>"#,
-        r#"<li role="none"><a role="menuitem" tabindex="-1" data-help="page" href="problems.html" target="_blank" rel="noopener">Problems explained</a></li>"#,
-        r#"</ul>"#,
-    ));
+    let mut html = format!(
+        concat!(
+            r#"<button class="header-button" data-help="menu" aria-haspopup="menu" aria-expanded="false">{help}</button>"#,
+            r#"<ul class="menu" role="menu" aria-label="{help}" hidden>"#,
+            r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="tour">{tour}</button></li>"#,
+            r#"<li role="none"><button role="menuitem" tabindex="-1" data-help="keys">{keys}</button></li>"#,
+            r#"<li role="none"><a role="menuitem" tabindex="-1" data-help="page" href="{page}" target="_blank" rel="noopener">{problems}</a></li>"#,
+            r#"</ul>"#,
+        ),
+        help = t(K::help_help),
+        tour = t(K::help_start_here),
+        keys = t(K::help_keyboard_shortcuts),
+        page = t(K::help_problems_page),
+        problems = t(K::help_problems_explained),
+    );
     // Its content comes from a chunk the first time it opens (`lazy::shortcuts_text`).
     html.push_str(concat!(
         r#"<dialog id="shortcuts-dialog" class="app-dialog shortcuts""#,
@@ -88,19 +117,30 @@ fn menu_html() -> String {
 /// The shortcuts dialog's content: the title, the list (focused when it opens, so it
 /// opens at its top and the arrow keys scroll it) and `Close`.
 pub fn shortcuts_html() -> String {
-    let mut html = String::from(
-        r#"<h2 id="shortcuts-title">Keyboard shortcuts</h2><p class="muted">On a Mac, Cmd works where Ctrl is written.</p><div class="shortcut-list" tabindex="0" autofocus aria-label="Shortcuts">"#,
+    let mut html = format!(
+        r#"<h2 id="shortcuts-title">{}</h2><p class="muted">{}</p><div class="shortcut-list" tabindex="0" autofocus aria-label="{}">"#,
+        t(K::help_keyboard_shortcuts),
+        t(K::help_mac),
+        t(K::help_shortcuts),
     );
     for (area, keys) in SHORTCUTS {
-        html.push_str(&format!("<table class=\"shortcut-table\"><caption>{area}</caption><tbody>"));
+        html.push_str(&format!(
+            "<table class=\"shortcut-table\"><caption>{}</caption><tbody>",
+            t(*area)
+        ));
         for (k, what) in *keys {
             html.push_str(&format!(
-                "<tr><th scope=\"row\"><kbd>{k}</kbd></th><td>{what}</td></tr>"
+                "<tr><th scope=\"row\"><kbd>{}</kbd></th><td>{}</td></tr>",
+                k.text(),
+                t(*what)
             ));
         }
         html.push_str("</tbody></table>");
     }
-    html.push_str(r#"</div><form method="dialog" class="dialog-actions"><button class="primary">Close</button></form>"#);
+    html.push_str(&format!(
+        r#"</div><form method="dialog" class="dialog-actions"><button class="primary">{}</button></form>"#,
+        t(K::help_close)
+    ));
     html
 }
 
@@ -175,8 +215,10 @@ pub fn help_menu() -> impl IntoView {
                             match crate::lazy::shortcuts_text().await {
                                 Ok(html) => d.set_inner_html(&html),
                                 Err(e) => {
-                                    return state
-                                        .error(format!("Could not open the shortcuts: {e}."))
+                                    return state.error(tf(
+                                        K::help_shortcuts_failed,
+                                        &[("error", &e.to_string())],
+                                    ))
                                 }
                             }
                         }
@@ -251,7 +293,8 @@ mod tests {
         ));
         // Inserted as HTML: the texts must hold no markup of their own.
         for (area, keys) in SHORTCUTS {
-            let texts = std::iter::once(*area).chain(keys.iter().flat_map(|(k, w)| [*k, *w]));
+            let texts =
+                std::iter::once(t(*area)).chain(keys.iter().flat_map(|(k, w)| [k.text(), t(*w)]));
             for t in texts {
                 assert!(!t.contains(['<', '>', '&']), "{t}");
             }

@@ -6,13 +6,8 @@ use plc_core::export::value_number;
 use plc_core::semantic::{Elem, Type};
 use plc_core::vm::Value;
 
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
-
-/// The box beside a BOOL input that makes its switch a push button, and what it does (shown
-/// above the inputs, so it reads on touch screens too, not only as a tooltip).
-const HOLD: &str = "hold";
-const HOLD_TITLE: &str = "Push button: TRUE only while held";
-const HOLD_LEGEND: &str = "“hold”: a push button, TRUE only while held down.";
 
 /// What kind of control an I/O variable gets.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -117,21 +112,21 @@ pub fn IoPanel() -> impl IntoView {
     let state = expect_context::<AppState>();
     let vars = Memo::new(move |_| io_vars(state));
     view! {
-        <section class="panel io-panel" aria-label="Inputs and outputs">
-            <h2>"Inputs and outputs"</h2>
+        <section class="panel io-panel" aria-label=t(K::sim_inputs_and_outputs)>
+            <h2>{t(K::sim_inputs_and_outputs)}</h2>
             <div class="io-columns">
                 <div class="io-col">
-                    <h3>"Inputs"</h3>
+                    <h3>{t(K::sim_inputs)}</h3>
                     {move || {
                         let switches = vars.with(|v| {
                             v.0.iter().any(|i| i.kind == Kind::Bool && i.from_plant.is_none())
                         });
-                        switches.then(|| view! { <p class="io-legend muted small-text">{HOLD_LEGEND}</p> })
+                        switches.then(|| view! { <p class="io-legend muted small-text">{t(K::sim_hold_legend)}</p> })
                     }}
                     {move || {
                         let inputs = vars.with(|v| v.0.clone());
                         if inputs.is_empty() {
-                            view! { <p class="muted">"No BOOL or numeric inputs (VAR_INPUT or AT %I…)."</p> }.into_any()
+                            view! { <p class="muted">{t(K::sim_no_inputs)}</p> }.into_any()
                         } else {
                             inputs.into_iter().map(|v| match (v.kind, v.from_plant.is_some()) {
                                 (Kind::Bool, false) => view! { <BoolInput var=v/> }.into_any(),
@@ -143,11 +138,11 @@ pub fn IoPanel() -> impl IntoView {
                     }}
                 </div>
                 <div class="io-col">
-                    <h3>"Outputs"</h3>
+                    <h3>{t(K::sim_outputs)}</h3>
                     {move || {
                         let outputs = vars.with(|v| v.1.clone());
                         if outputs.is_empty() {
-                            view! { <p class="muted">"No BOOL or numeric outputs (VAR_OUTPUT or AT %Q…)."</p> }.into_any()
+                            view! { <p class="muted">{t(K::sim_no_outputs)}</p> }.into_any()
                         } else {
                             outputs.into_iter().map(|v| match v.kind {
                                 Kind::Bool => view! { <Lamp var=v/> }.into_any(),
@@ -213,8 +208,8 @@ fn BoolInput(var: IoVar) -> impl IntoView {
                     on:blur=move |_| release()/>
                 <span class="io-name">{var.name.clone()}</span>
             </label>
-            <label class="push-mode" title=HOLD_TITLE>
-                <input type="checkbox" aria-label=format!("{}: {HOLD} (push button)", var.name)
+            <label class="push-mode" title=t(K::sim_hold_title)>
+                <input type="checkbox" aria-label=tf(K::sim_hold_name, &[("name", &var.name)])
                     prop:checked=move || push.get()
                     on:change=move |ev| {
                         push.set(event_target_checked(&ev));
@@ -222,7 +217,7 @@ fn BoolInput(var: IoVar) -> impl IntoView {
                             set(false);
                         }
                     }/>
-                {HOLD}
+                {t(K::sim_hold)}
             </label>
         </div>
     }
@@ -244,7 +239,7 @@ fn NumberInput(var: IoVar) -> impl IntoView {
     let value = move || name.with_value(|n| read_number(state, n));
     let write = move |text: String| {
         let Ok(x) = text.trim().parse::<f64>() else {
-            state.error(format!("“{}” is not a number.", text.trim()));
+            state.error(tf(K::sim_not_a_number, &[("text", text.trim())]));
             return;
         };
         if let Some(lit) = literal(x, kind) {
@@ -270,16 +265,16 @@ fn NumberInput(var: IoVar) -> impl IntoView {
                 prop:step=step
                 prop:value=move || number_text(value(), kind)
                 on:input=move |ev| write(event_target_value(&ev))/>
-            <input type="number" class="num" aria-label=format!("{} value", var.name)
+            <input type="number" class="num" aria-label=tf(K::sim_value_of, &[("name", &var.name)])
                 prop:value=move || number_text(value(), kind)
                 on:change=move |ev| write(event_target_value(&ev))/>
             {(!fixed).then(|| view! {
                 <span class="limits">
-                    <input type="number" class="num small" aria-label=format!("{} minimum", var.name)
+                    <input type="number" class="num small" aria-label=tf(K::sim_minimum_of, &[("name", &var.name)])
                         prop:value=move || lo.get().to_string()
                         on:change=move |ev| set_limit(lo, event_target_value(&ev))/>
                     "…"
-                    <input type="number" class="num small" aria-label=format!("{} maximum", var.name)
+                    <input type="number" class="num small" aria-label=tf(K::sim_maximum_of, &[("name", &var.name)])
                         prop:value=move || hi.get().to_string()
                         on:change=move |ev| set_limit(hi, event_target_value(&ev))/>
                 </span>
@@ -291,7 +286,7 @@ fn NumberInput(var: IoVar) -> impl IntoView {
 /// For a sensor the plant writes: which plant, in place of a control.
 fn plant_note(var: &IoVar) -> Option<impl IntoView> {
     var.from_plant.as_ref().map(|plant| {
-        view! { <span class="io-from-plant small-text muted">{format!("from {plant}")}</span> }
+        view! { <span class="io-from-plant small-text muted">{tf(K::sim_from_plant, &[("plant", plant)])}</span> }
     })
 }
 
@@ -304,7 +299,7 @@ fn Lamp(var: IoVar) -> impl IntoView {
     view! {
         <div class="io-row" title=var.comment.clone().unwrap_or_default()>
             <span class="lamp" class:on=on role="img"
-                aria-label=move || format!("{}: {}", name.get_value(), if on() { "ON" } else { "OFF" })></span>
+                aria-label=move || format!("{}: {}", name.get_value(), t(if on() { K::sim_lamp_on } else { K::sim_lamp_off }))></span>
             <span class="io-name">{var.name.clone()}</span>
             {plant_note(&var)}
         </div>

@@ -16,41 +16,31 @@ use plc_core::build::Site;
 use plc_core::diagnostics::Span;
 use plc_core::ladder::{implied_declaration, replace_name, CellRef, LadderEdit};
 
+use plc_core::i18n::Lang;
+
+use crate::i18n::{t, tf, I18n, K};
 use crate::state::{AppState, DiagView, PouView};
 
-/// The words of the problem list (one place, for the translation catalogue to come).
-mod words {
-    pub const HEADING: &str = "Problems";
-    pub const REGION: &str = "Problems of the project";
-    pub const LIST: &str = "Problems";
-    pub const NONE: &str = "No problems found.";
-    pub const ERROR: &str = "Error";
-    pub const WARNING: &str = "Warning";
-    pub fn count(n: usize, word: &str) -> String {
-        if n == 1 {
-            format!("1 {word}")
-        } else {
-            format!("{n} {word}s")
-        }
+/// The key of a count's words in the form its number takes: `one`, `few` or `many`, as
+/// Polish (2–4 but not 12–14: few) and Czech (2–4: few) choose it; English has the same
+/// text for `few` and `many`.
+pub fn plural(n: usize, one: K, few: K, many: K) -> K {
+    let czech = use_context::<I18n>().is_some_and(|i| i.shown.get_untracked() == Lang::Cs);
+    let few_form = if czech {
+        (2..=4).contains(&n)
+    } else {
+        (2..=4).contains(&(n % 10)) && !(12..=14).contains(&(n % 100))
+    };
+    match n {
+        1 => one,
+        _ if few_form => few,
+        _ => many,
     }
-    pub fn declare(name: &str) -> String {
-        format!("Declare {name}")
-    }
-    pub fn declare_title(name: &str, ty: &str) -> String {
-        format!("Add `{name} : {ty};` to the declarations of the POU that uses it")
-    }
-    pub fn replace(with: &str) -> String {
-        format!("Replace with {with}")
-    }
-    pub fn replace_title(name: &str, with: &str) -> String {
-        format!("Write {with} in place of {name}")
-    }
-    pub fn explain(code: &str) -> String {
-        format!("Explain {code}")
-    }
-    pub fn not_declarable(name: &str) -> String {
-        format!("{name} cannot be declared from here: add it to the POU's VAR block.")
-    }
+}
+
+/// `n` things in words (`1 error`, `3 errors`).
+fn count(n: usize, [one, few, many]: [K; 3]) -> String {
+    tf(plural(n, one, few, many), &[("n", &n.to_string())])
 }
 
 /// A quick fix offered beside a problem.
@@ -69,18 +59,22 @@ enum Fix {
 impl Fix {
     fn label(&self) -> String {
         match self {
-            Fix::StReplace { with, .. } | Fix::Ladder { with, .. } => words::replace(with),
-            Fix::StDeclare { name, .. } | Fix::LadderDeclare { name, .. } => words::declare(name),
+            Fix::StReplace { with, .. } | Fix::Ladder { with, .. } => {
+                tf(K::editor_replace, &[("with", with)])
+            }
+            Fix::StDeclare { name, .. } | Fix::LadderDeclare { name, .. } => {
+                tf(K::editor_declare, &[("name", name)])
+            }
         }
     }
 
     fn title(&self) -> String {
         match self {
             Fix::StReplace { name, with, .. } | Fix::Ladder { name, with, .. } => {
-                words::replace_title(name, with)
+                tf(K::editor_replace_title, &[("with", with), ("name", name)])
             }
             Fix::StDeclare { name, ty, .. } | Fix::LadderDeclare { name, ty, .. } => {
-                words::declare_title(name, ty)
+                tf(K::editor_declare_title, &[("name", name), ("type", ty)])
             }
         }
     }
@@ -105,7 +99,7 @@ impl Fix {
                         state.view.set(PouView::St);
                         state.st_fix.set(Some((text, caret)));
                     }
-                    None => state.error(words::not_declarable(&name)),
+                    None => state.error(tf(K::editor_not_declarable, &[("name", &name)])),
                 }
             }
             Fix::Ladder { pou, edit, .. } => {
@@ -129,28 +123,31 @@ pub fn Problems() -> impl IntoView {
             let errors = ds.iter().filter(|d| d.error).count();
             format!(
                 "{}, {}",
-                words::count(errors, "error"),
-                words::count(ds.len() - errors, "warning")
+                count(errors, [K::editor_errors_one, K::editor_errors_few, K::editor_errors_many]),
+                count(
+                    ds.len() - errors,
+                    [K::editor_warnings_one, K::editor_warnings_few, K::editor_warnings_many]
+                )
             )
         })
     };
     let list = move || {
         let ds = state.diagnostics.get();
         if ds.is_empty() {
-            return view! { <p class="ed-ok">{words::NONE}</p> }.into_any();
+            return view! { <p class="ed-ok">{t(K::editor_no_problems)}</p> }.into_any();
         }
         view! {
-            <ul class="ed-problems" aria-label=words::LIST>
+            <ul class="ed-problems" aria-label=t(K::editor_problems)>
                 {ds.into_iter().map(|d| {
                     let class = if d.error { "ed-problem ed-problem-err" } else { "ed-problem ed-problem-warn" };
                     let label = format!("{}  {}  {}", d.place_label(), d.code, d.message);
                     let site = d.site.clone();
                     let fixes = fixes(state, &d);
                     let help = format!("problems.html#{}", d.code);
-                    let help_name = words::explain(&d.code);
+                    let help_name = tf(K::editor_explain, &[("code", &d.code)]);
                     view! {
                         <li>
-                            <button class=class title=if d.error { words::ERROR } else { words::WARNING }
+                            <button class=class title=t(if d.error { K::editor_error } else { K::editor_warning })
                                 on:click=move |_| state.reveal(&site)>
                                 {label}
                             </button>
@@ -171,9 +168,9 @@ pub fn Problems() -> impl IntoView {
         .into_any()
     };
     view! {
-        <section class="panel problems" aria-label=words::REGION>
+        <section class="panel problems" aria-label=t(K::editor_problems_region)>
             <div class="panel-head">
-                <h2>{words::HEADING}</h2>
+                <h2>{t(K::editor_problems)}</h2>
                 <span class="muted small-text">{summary}</span>
             </div>
             {list}
@@ -233,4 +230,26 @@ fn declarable_at(state: AppState, span: Span) -> bool {
         let before = p.source.get(..span.start as usize).unwrap_or_default().trim_end();
         !(before.ends_with('.') || before.ends_with('#'))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn counts_take_the_polish_form_and_keep_english() {
+        let forms = [K::editor_errors_one, K::editor_errors_few, K::editor_errors_many];
+        let form = |n| plural(n, forms[0], forms[1], forms[2]);
+        // Without the page's language (no context) Polish rules apply.
+        assert_eq!(form(1), K::editor_errors_one);
+        for n in [2, 3, 4, 22, 34, 102] {
+            assert_eq!(form(n), K::editor_errors_few, "{n}");
+        }
+        for n in [0, 5, 11, 12, 13, 14, 21, 25, 112] {
+            assert_eq!(form(n), K::editor_errors_many, "{n}");
+        }
+        assert_eq!(count(1, forms), "1 error");
+        assert_eq!(count(3, forms), "3 errors");
+        assert_eq!(count(0, forms), "0 errors");
+    }
 }

@@ -4,6 +4,7 @@
 
 use leptos::prelude::*;
 
+use crate::i18n::{t, K};
 use crate::state::{past_words, AppState};
 
 /// The recording: a `Recorded scan` slider over the scans kept, and the banner that says
@@ -18,8 +19,8 @@ pub fn Recorded() -> impl IntoView {
     view! {
             <div class="control-row recorded">
                 <label class="field grow">
-                    <span>"Recorded scan"</span>
-                    <input type="range" aria-label="Recorded scan"
+                    <span>{t(K::sim_recorded_scan)}</span>
+                    <input type="range" aria-label=t(K::sim_recorded_scan)
                         prop:min=move || first().to_string() prop:max=move || last().to_string() step="1"
                         prop:disabled=move || first() == last()
                         prop:value=move || shown().to_string()
@@ -29,7 +30,7 @@ pub fn Recorded() -> impl IntoView {
                             }
                         }/>
                 </label>
-                <output class="mono" aria-label="Recorded scans">{move || format!("{}–{}", first(), last())}</output>
+                <output class="mono" aria-label=t(K::sim_recorded_scans)>{move || format!("{}–{}", first(), last())}</output>
             </div>
         {move || state.shown.get().map(|n| {
             let last = range.get().map_or(n, |r| r.1);

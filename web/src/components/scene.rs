@@ -9,6 +9,7 @@ use plc_core::export::value_text;
 use plc_core::project::{Widget, WidgetKind};
 use plc_core::vm::Value;
 
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 
 /// A value as a number (BOOL as 0 or 1).
@@ -62,7 +63,7 @@ fn shown(state: AppState, w: &Widget) -> String {
     let mut lit_class = if on { " on" } else { "" };
     let max = w.max.unwrap_or(100.0).max(f64::MIN_POSITIVE);
     let share = v.as_ref().and_then(number).map(|x| (x / max).clamp(0.0, 1.0));
-    let words = |yes: &str, no: &str| format!("{label}: {}", if on { yes } else { no });
+    let words = |yes: K, no: K| tf(if on { yes } else { no }, &[("label", &label)]);
     let (name, class, body) = match w.kind {
         WidgetKind::Tank => {
             let pct = share.map(|s| (s * 100.0).round() as i64);
@@ -83,9 +84,12 @@ fn shown(state: AppState, w: &Widget) -> String {
             };
             (
                 if overflow {
-                    format!("{label}: overflow")
+                    tf(K::sim_scene_overflow, &[("label", &label)])
                 } else {
-                    pct.map_or(format!("{label}: no value"), |p| format!("{label}: {p} %"))
+                    pct.map_or_else(
+                        || tf(K::sim_scene_no_value, &[("label", &label)]),
+                        |p| format!("{label}: {p} %"),
+                    )
                 },
                 "",
                 format!(
@@ -95,7 +99,7 @@ fn shown(state: AppState, w: &Widget) -> String {
             )
         }
         WidgetKind::Valve => (
-            words("open", "closed"),
+            words(K::sim_scene_valve_open, K::sim_scene_valve_closed),
             "sc-valve",
             format!(
                 r#"<path d="M{x} {y} L{cx} {cy} L{x} {} Z M{} {y} L{cx} {cy} L{} {} Z"/>"#,
@@ -120,13 +124,13 @@ fn shown(state: AppState, w: &Widget) -> String {
                 )
             };
             (
-                words("running", "stopped"),
+                words(K::sim_scene_running, K::sim_scene_stopped),
                 "sc-motor",
                 format!(r#"<circle cx="{cx}" cy="{cy}" r="{r}"/>{mark}"#),
             )
         }
         WidgetKind::Lamp => (
-            words("on", "off"),
+            words(K::sim_scene_lamp_on, K::sim_scene_lamp_off),
             "sc-lamp",
             format!(r#"<circle cx="{cx}" cy="{cy}" r="{}"/>"#, wd.min(h) / 2.0),
         ),
@@ -141,13 +145,16 @@ fn shown(state: AppState, w: &Widget) -> String {
                         x + s * (wd - size),
                         y - size + 2.0
                     ),
-                    format!(", item at {} %", (s * 100.0).round() as i64),
+                    tf(
+                        K::sim_scene_item_at,
+                        &[("percent", &((s * 100.0).round() as i64).to_string())],
+                    ),
                 ),
                 None => (String::new(), String::new()),
             };
             let r = 5.0;
             (
-                format!("{}{at}", words("running", "stopped")),
+                format!("{}{at}", words(K::sim_scene_running, K::sim_scene_stopped)),
                 "sc-conveyor",
                 format!(
                     r#"{box_svg}<rect class="sc-belt" x="{x}" y="{}" width="{wd}" height="{}" rx="{r}"/><line class="sc-belt-run" x1="{}" y1="{}" x2="{}" y2="{}"/><circle class="sc-roller" cx="{}" cy="{}" r="{}"/><circle class="sc-roller" cx="{}" cy="{}" r="{}"/>"#,
@@ -167,7 +174,7 @@ fn shown(state: AppState, w: &Widget) -> String {
             )
         }
         WidgetKind::PhotoEye => (
-            words("blocked", "clear"),
+            words(K::sim_scene_eye_blocked, K::sim_scene_eye_clear),
             "sc-eye",
             format!(
                 r#"<rect x="{x}" y="{y}" width="10" height="{h}"/><line class="sc-beam" x1="{}" y1="{cy}" x2="{}" y2="{cy}"/><rect x="{}" y="{y}" width="10" height="{h}"/>"#,
@@ -177,7 +184,7 @@ fn shown(state: AppState, w: &Widget) -> String {
             ),
         ),
         WidgetKind::LimitSwitch => (
-            words("pressed", "released"),
+            words(K::sim_scene_limit_pressed, K::sim_scene_limit_released),
             "sc-limit",
             format!(
                 r#"<rect x="{x}" y="{}" width="{wd}" height="{}" rx="2"/><line class="sc-lever" x1="{cx}" y1="{}" x2="{}" y2="{y}"/><circle cx="{}" cy="{y}" r="3"/>"#,
@@ -189,18 +196,21 @@ fn shown(state: AppState, w: &Widget) -> String {
             ),
         ),
         WidgetKind::TrafficLight => {
-            let lamps =
-                [("red", Some(&w.var)), ("yellow", w.yellow.as_ref()), ("green", w.green.as_ref())];
-            let lamps: Vec<(&str, bool)> = lamps
+            let lamps = [
+                ("red", K::sim_scene_red, Some(&w.var)),
+                ("yellow", K::sim_scene_yellow, w.yellow.as_ref()),
+                ("green", K::sim_scene_green, w.green.as_ref()),
+            ];
+            let lamps: Vec<(&str, K, bool)> = lamps
                 .into_iter()
-                .filter_map(|(colour, var)| var.map(|v| (colour, lit(state, Some(v)))))
+                .filter_map(|(colour, word, var)| var.map(|v| (colour, word, lit(state, Some(v)))))
                 .collect();
             let step = h / lamps.len().max(1) as f64;
             let r = (wd.min(step) / 2.0 - 3.0).max(2.0);
             let circles: String = lamps
                 .iter()
                 .enumerate()
-                .map(|(i, (colour, on))| {
+                .map(|(i, (colour, _, on))| {
                     format!(
                         r#"<circle class="sc-tl-{colour}{}" cx="{cx}" cy="{}" r="{r}"/>"#,
                         if *on { " on" } else { "" },
@@ -208,13 +218,16 @@ fn shown(state: AppState, w: &Widget) -> String {
                     )
                 })
                 .collect();
-            let showing: Vec<&str> = lamps.iter().filter(|l| l.1).map(|l| l.0).collect();
+            let showing =
+                lamps.iter().filter(|l| l.2).map(|l| t(l.1).to_string()).reduce(|first, next| {
+                    tf(K::sim_scene_and, &[("first", &first), ("next", &next)])
+                });
             lit_class = "";
             (
-                format!(
-                    "{label}: {}",
-                    if showing.is_empty() { "dark".to_string() } else { showing.join(" and ") }
-                ),
+                match showing {
+                    Some(lights) => format!("{label}: {lights}"),
+                    None => tf(K::sim_scene_dark, &[("label", &label)]),
+                },
                 "sc-traffic",
                 format!(
                     r#"<rect class="sc-housing" x="{x}" y="{y}" width="{wd}" height="{h}" rx="6"/>{circles}"#
@@ -308,7 +321,8 @@ fn Control(widget: Widget) -> impl IntoView {
     let label = widget.label.clone();
     if widget.kind != WidgetKind::Button {
         let fault = widget.kind == WidgetKind::Fault;
-        let name = format!("{label} {}", if fault { "fault" } else { "switch" });
+        let name =
+            tf(if fault { K::sim_scene_fault } else { K::sim_scene_switch }, &[("label", &label)]);
         return view! {
             <g class="sc-widget sc-switch" class:sc-fault=fault class:on=move || on.get() role="switch" tabindex="0"
                 aria-label=name aria-checked=move || if on.get() { "true" } else { "false" }
@@ -326,7 +340,7 @@ fn Control(widget: Widget) -> impl IntoView {
     }
     view! {
         <g class="sc-widget sc-button" class:on=move || on.get() role="button" tabindex="0"
-            aria-label=format!("{label} button") aria-pressed=move || if on.get() { "true" } else { "false" }
+            aria-label=tf(K::sim_scene_button, &[("label", &label)]) aria-pressed=move || if on.get() { "true" } else { "false" }
             on:pointerdown=move |_| press()
             on:pointerup=move |_| release()
             on:pointerleave=move |_| release()
@@ -357,10 +371,10 @@ pub fn ScenePanel() -> impl IntoView {
                 scene.widgets.iter().cloned().partition(|w| w.kind.writes());
             let drawn = move || shown_widgets.iter().map(|w| shown(state, w)).collect::<String>();
             view! {
-                <section class="panel scene-panel" aria-label="Plant">
-                    <h2>"Plant"</h2>
+                <section class="panel scene-panel" aria-label=t(K::sim_plant)>
+                    <h2>{t(K::sim_plant)}</h2>
                     <svg class="sc-svg" viewBox=format!("0 0 {} {}", scene.width, scene.height)
-                        role="group" aria-label="Plant scene">
+                        role="group" aria-label=t(K::sim_plant_scene)>
                         <g inner_html=drawn></g>
                         {controls.into_iter().map(|w| view! { <Control widget=w/> }).collect_view()}
                     </svg>

@@ -7,14 +7,11 @@ use leptos::ev;
 use leptos::prelude::*;
 use plc_core::project::StorageBackend;
 
+use crate::i18n::{t, K};
 use crate::storage::LocalStorage;
 
 /// Where the choice is kept (absent: `System`).
 const THEME_KEY: &str = "plc-trainer/v1/theme";
-
-/// The switch's accessible name and its options' labels (what the user sees).
-const LABEL: &str = "Theme";
-const TITLE: &str = "Colour theme: follow the system, or always light or dark";
 
 /// A theme the user can pick.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -39,9 +36,9 @@ impl Theme {
     /// The option's label.
     fn label(self) -> &'static str {
         match self {
-            Theme::System => "System",
-            Theme::Light => "Light",
-            Theme::Dark => "Dark",
+            Theme::System => t(K::theme_system),
+            Theme::Light => t(K::theme_light),
+            Theme::Dark => t(K::theme_dark),
         }
     }
 
@@ -85,9 +82,9 @@ pub fn ThemeSwitch() -> impl IntoView {
         };
     };
     view! {
-        <label class="theme-select" title=TITLE>
-            <span class="visually-hidden">{LABEL}</span>
-            <select aria-label=LABEL on:change=on_change prop:value=move || theme.get().value()>
+        <label class="theme-select" title=t(K::theme_title)>
+            <span class="visually-hidden">{t(K::theme_theme)}</span>
+            <select aria-label=t(K::theme_theme) on:change=on_change prop:value=move || theme.get().value()>
                 {Theme::ALL.into_iter().map(|t| view! {
                     <option value=t.value() selected=move || theme.get() == t>{t.label()}</option>
                 }).collect_view()}

@@ -12,6 +12,7 @@ use plc_core::ladder::Element;
 use plc_core::project::{Project, StorageBackend};
 
 use crate::exercises::Exercises;
+use crate::i18n::{t, tf, I18n, K};
 use crate::state::AppState;
 use crate::storage::LocalStorage;
 
@@ -22,46 +23,28 @@ const DONE_KEY: &str = "plc-trainer/v1/tour";
 /// How long a step shows that it is done before the next one.
 const ADVANCE_DELAY: std::time::Duration = std::time::Duration::from_millis(1200);
 
-/// One step of the lesson (its words come from a chunk loaded on first use:
+/// One step of the lesson (its markup is made by a chunk loaded on first use:
 /// `lazy::tour_text`).
 struct Step {
-    title: &'static str,
-    text: &'static str,
+    title: K,
+    text: K,
 }
 
 /// What the page marks at each step (`data-tour-target` on the document, matched by the
 /// CSS).
 const TARGETS: [&str; 5] = ["run io", "st", "ladder", "step", "exercises"];
 
-/// The lesson (its words in one place).
+/// The lesson (its words in the catalogue).
 const STEPS: [Step; 5] = [
-    Step {
-        title: "Flip an input and see a lamp",
-        text: "Press Run, then tick Start under Inputs and outputs: the Motor lamp lights, and stays lit when you untick Start, because the program in the editor latches it. Tick Stop to switch it off.",
-    },
-    Step {
-        title: "Change one line of ST",
-        text: "In the ST editor, change Motor := (Start OR Motor) AND NOT Stop; to Motor := Start AND NOT Stop; and watch Problems: once it builds, the PLC runs your change, and Motor is on only while Start is ticked.",
-    },
-    Step {
-        title: "Draw one rung",
-        text: "Press New ladder POU, then Create. Drag NO contact from the palette onto the rung and type Start, then a Coil beside it named Lamp (Enter after each; or select a cell and press c or o). Press Declare under Problems for each new name.",
-    },
-    Step {
-        title: "Press Step and read the timeline",
-        text: "Press Step under Simulation: the PLC runs one scan and the scan count goes up. Tick Chart beside a variable under Variables: the timeline draws its value scan by scan, and a click on it reads any scan.",
-    },
-    Step {
-        title: "Open the first exercise",
-        text: "Press Exercises, choose Level 1 and open an exercise. Write your answer in ST or ladder, then press Check: it runs the exercise's scenarios and tells you what passed.",
-    },
+    Step { title: K::tour_step1_title, text: K::tour_step1_text },
+    Step { title: K::tour_step2_title, text: K::tour_step2_text },
+    Step { title: K::tour_step3_title, text: K::tour_step3_text },
+    Step { title: K::tour_step4_title, text: K::tour_step4_text },
+    Step { title: K::tour_step5_title, text: K::tour_step5_text },
 ];
 
 /// The title and text shown once the last step is done.
-const FINISHED: (&str, &str) = (
-    "You are ready",
-    "That was the tour: inputs and lamps, ST, ladder, Step and the timeline, exercises. Help opens it again, with the keyboard shortcuts and the problems explained.",
-);
+const FINISHED: (K, K) = (K::tour_ready_title, K::tour_ready_text);
 
 /// What the page showed when a step began, to tell when the student has done it.
 #[derive(Debug, Clone, PartialEq)]
@@ -204,7 +187,12 @@ impl Tour {
                 }
             }
         });
+        // The strip's words are made anew when the language shown changes.
+        let shown = use_context::<I18n>().map(|i| i.shown);
         Effect::new(move |_| {
+            if let Some(shown) = shown {
+                shown.track();
+            }
             let step = tour.step.get();
             point_at(step.and_then(|s| TARGETS.get(s)).copied());
             let Some(step) = step else { return };
@@ -221,11 +209,19 @@ impl Tour {
 }
 
 /// What a screen reader hears of `step`, then `\u{1}`, then the strip's markup
-/// ([`tour_html`]): `lazy::tour_text` gives it from the chunk that holds the words.
+/// ([`tour_html`]), in the language shown: `lazy::tour_text` gives it from its chunk.
+
 pub fn tour_text(step: usize, done: bool) -> String {
     let spoken = match STEPS.get(step) {
-        Some(s) => format!("Start here, step {} of {}: {}", step + 1, STEPS.len(), s.title),
-        None => FINISHED.0.to_string(),
+        Some(s) => tf(
+            K::tour_spoken,
+            &[
+                ("n", &(step + 1).to_string()),
+                ("total", &STEPS.len().to_string()),
+                ("title", t(s.title)),
+            ],
+        ),
+        None => t(FINISHED.0).to_string(),
     };
     format!("{spoken}\u{1}{}", tour_html(step, done))
 }
@@ -235,18 +231,32 @@ pub fn tour_text(step: usize, done: bool) -> String {
 fn tour_html(step: usize, done: bool) -> String {
     let total = TARGETS.len();
     let (count, title, text) = match STEPS.get(step) {
-        Some(s) => (format!("Step {} of {total}", step + 1), s.title, s.text),
-        None => ("Finished".to_string(), FINISHED.0, FINISHED.1),
+        Some(s) => (
+            tf(K::tour_count, &[("n", &(step + 1).to_string()), ("total", &total.to_string())]),
+            t(s.title),
+            t(s.text),
+        ),
+        None => (t(K::tour_finished).to_string(), t(FINISHED.0), t(FINISHED.1)),
     };
-    let done = if done { r#"<span class="tour-done"> ✓ Done</span>"# } else { "" };
+    let done = if done {
+        format!(r#"<span class="tour-done"> ✓ {}</span>"#, t(K::tour_done))
+    } else {
+        String::new()
+    };
     let back = if step == 0 { " disabled" } else { "" };
     let buttons = if step < total {
-        r#"<button class="primary" data-tour-action="next">Next</button><button data-tour-action="skip">Skip tour</button>"#
+        format!(
+            r#"<button class="primary" data-tour-action="next">{}</button><button data-tour-action="skip">{}</button>"#,
+            t(K::tour_next),
+            t(K::tour_skip)
+        )
     } else {
-        r#"<button class="primary" data-tour-action="close">Close tour</button>"#
+        format!(r#"<button class="primary" data-tour-action="close">{}</button>"#, t(K::tour_close))
     };
     format!(
-        r#"<p class="tour-name">Start here</p><p class="tour-count">{count}</p><div class="tour-body"><h2 class="tour-title">{title}{done}</h2><p class="tour-text">{text}</p></div><div class="tour-actions"><button data-tour-action="back"{back}>Back</button>{buttons}</div>"#
+        r#"<p class="tour-name">{name}</p><p class="tour-count">{count}</p><div class="tour-body"><h2 class="tour-title">{title}{done}</h2><p class="tour-text">{text}</p></div><div class="tour-actions"><button data-tour-action="back"{back}>{back_word}</button>{buttons}</div>"#,
+        name = t(K::tour_start_here),
+        back_word = t(K::tour_back),
     )
 }
 
@@ -287,7 +297,7 @@ pub fn tour_panel() -> impl IntoView {
         tour.step.get()?;
         let (spoken, html) = tour.content.get()?;
         Some(view! {
-            <section class="tour" role="region" aria-label="Start here" on:click=on_click>
+            <section class="tour" role="region" aria-label=t(K::tour_start_here) on:click=on_click>
                 <div class="tour-grid" inner_html=html></div>
                 <p class="visually-hidden" aria-live="polite">{spoken}</p>
             </section>
@@ -351,8 +361,9 @@ mod tests {
             end.contains(">Finished<") && end.contains(">Close tour<") && !end.contains(">Next<")
         );
         // Inserted as HTML: the texts must hold no markup of their own.
-        for t in STEPS.iter().flat_map(|s| [s.title, s.text]).chain([FINISHED.0, FINISHED.1]) {
-            assert!(!t.contains(['<', '>', '&']), "{t}");
+        for k in STEPS.iter().flat_map(|s| [s.title, s.text]).chain([FINISHED.0, FINISHED.1]) {
+            let text = t(k);
+            assert!(!text.contains(['<', '>', '&']), "{text}");
         }
     }
 }

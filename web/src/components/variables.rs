@@ -11,7 +11,14 @@ use plc_core::semantic::Type;
 use plc_core::syntax::VarSection;
 
 use crate::download::download;
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
+
+/// The accessible name of a value's `Why?` button: `Why is Motor TRUE?`.
+pub fn why_label(name: &str, value: &plc_core::vm::Value) -> String {
+    let value = value_text(value);
+    tf(K::why_why_is, &[("name", name), ("value", &value)])
+}
 
 /// One row of the table.
 #[derive(Debug, Clone, PartialEq)]
@@ -114,11 +121,11 @@ pub fn Variables() -> impl IntoView {
             let csv = match crate::lazy::variables_file(state).await {
                 Ok(Some(csv)) => csv,
                 Ok(None) => {
-                    state.error("No program to export: fix the errors first.");
+                    state.error(t(K::sim_no_program_to_export));
                     return;
                 }
                 Err(e) => {
-                    state.error(format!("Could not export: {e}"));
+                    state.error(tf(K::sim_export_failed, &[("error", &e.to_string())]));
                     return;
                 }
             };
@@ -129,21 +136,21 @@ pub fn Variables() -> impl IntoView {
     };
     provide_context(open);
     view! {
-        <section class="panel variables" aria-label="Variables">
+        <section class="panel variables" aria-label=t(K::sim_variables)>
             <div class="panel-head">
-                <h2>"Variables"</h2>
-                <button on:click=export>"Export CSV"</button>
+                <h2>{t(K::sim_variables)}</h2>
+                <button on:click=export>{t(K::sim_export_csv)}</button>
             </div>
             <div class="table-wrap">
                 <table class="var-table">
                     <thead>
                         <tr>
-                            <th scope="col">"Address"</th>
-                            <th scope="col">"Name"</th>
-                            <th scope="col">"Type"</th>
-                            <th scope="col">"Description"</th>
-                            <th scope="col">"Value"</th>
-                            <th scope="col"><span class="sr-only">"Actions"</span></th>
+                            <th scope="col">{t(K::sim_address)}</th>
+                            <th scope="col">{t(K::sim_name)}</th>
+                            <th scope="col">{t(K::sim_type)}</th>
+                            <th scope="col">{t(K::sim_description)}</th>
+                            <th scope="col">{t(K::sim_value)}</th>
+                            <th scope="col"><span class="sr-only">{t(K::sim_actions)}</span></th>
                         </tr>
                     </thead>
                     <tbody>
@@ -229,7 +236,7 @@ fn VarRow(row: Row) -> impl IntoView {
     let name_cell = {
         let label = row.label.clone();
         let expandable = row.expandable;
-        let disclosure_label = format!("Expand {}", row.path);
+        let disclosure_label = tf(K::sim_expand, &[("path", &row.path)]);
         view! {
             <th scope="row" class="var-name" style=format!("padding-left: {}em", 0.4 + row.depth as f64 * 1.2)>
                 {expandable.then(|| view! {
@@ -241,7 +248,7 @@ fn VarRow(row: Row) -> impl IntoView {
                 })}
                 <span>{label}</span>
                 <Show when=forced>
-                    <span class="badge-forced" title="Forced">"F"</span>
+                    <span class="badge-forced" title=t(K::sim_forced)>"F"</span>
                 </Show>
             </th>
         }
@@ -253,7 +260,7 @@ fn VarRow(row: Row) -> impl IntoView {
     let why_name = move || {
         path.with_value(|p| {
             let v = state.read(p).unwrap_or(plc_core::vm::Value::Bool(false));
-            plc_core::why::why_label(p, &v)
+            why_label(p, &v)
         })
     };
     view! {
@@ -265,7 +272,7 @@ fn VarRow(row: Row) -> impl IntoView {
             <td class="mono value" on:dblclick=move |_| start_edit()>
                 <Show when=move || editing.get()
                     fallback=move || view! { <span>{move || if row.expandable { String::new() } else { value() }}</span> }>
-                    <input class="edit" aria-label=format!("New value of {}", path.get_value())
+                    <input class="edit" aria-label=tf(K::sim_new_value_of, &[("path", &path.get_value())])
                         prop:value=move || draft.get()
                         on:input=move |ev| draft.set(event_target_value(&ev))
                         on:keydown=move |ev| match ev.key().as_str() {
@@ -279,16 +286,16 @@ fn VarRow(row: Row) -> impl IntoView {
             <td class="actions">
                 {is_bool.then(|| view! {
                     <button class="small why" aria-label=why_name
-                        title="Explain this value at the scan shown"
-                        on:click=move |_| path.with_value(|p| state.ask_why(p))>"Why?"</button>
+                        title=t(K::sim_why_title)
+                        on:click=move |_| path.with_value(|p| state.ask_why(p))>{t(K::why_title)}</button>
                 }.into_any())}
                 {scalar.then(|| view! {
-                    <button class="small" aria-label=format!("Edit {path_text}") title="Edit (or double-click the value)"
+                    <button class="small" aria-label=tf(K::sim_edit, &[("path", &path_text)]) title=t(K::sim_edit_title)
                         on:click=move |_| start_edit()>"✎"</button>
                     <button class="small" class:active=forced
-                        aria-label=move || format!("{} {}", if forced() { "Unforce" } else { "Force" }, path.get_value())
+                        aria-label=move || tf(if forced() { K::sim_unforce_name } else { K::sim_force_name }, &[("path", &path.get_value())])
                         on:click=force>
-                        {move || if forced() { "Unforce" } else { "Force" }}
+                        {move || t(if forced() { K::sim_unforce } else { K::sim_force })}
                     </button>
                 })}
             </td>
@@ -307,16 +314,16 @@ fn Breakpoints() -> impl IntoView {
     };
     view! {
         <div class="breakpoints">
-            <h3>"Breakpoints"</h3>
+            <h3>{t(K::sim_breakpoints)}</h3>
             <div class="control-row">
                 <label class="field grow">
-                    <span>"Breakpoint condition"</span>
-                    <input class="mono" placeholder="e.g. Level >= 50 AND Motor"
+                    <span>{t(K::sim_breakpoint_condition)}</span>
+                    <input class="mono" placeholder=t(K::sim_breakpoint_placeholder)
                         prop:value=move || text.get()
                         on:input=move |ev| text.set(event_target_value(&ev))
                         on:keydown=move |ev| if ev.key() == "Enter" { add() }/>
                 </label>
-                <button on:click=move |_| add()>"Add breakpoint"</button>
+                <button on:click=move |_| add()>{t(K::sim_add_breakpoint)}</button>
             </div>
             <ul class="bp-list">
                 {move || state.breakpoints.get().into_iter().enumerate().map(|(i, (cond, id))| {
@@ -324,9 +331,9 @@ fn Breakpoints() -> impl IntoView {
                     view! {
                         <li class:inactive=inactive>
                             <code>{cond.clone()}</code>
-                            {inactive.then(|| view! { <span class="muted">" (does not fit the program)"</span> })}
-                            <button class="small" aria-label=format!("Remove breakpoint {cond}")
-                                on:click=move |_| state.remove_breakpoint(i)>"Remove"</button>
+                            {inactive.then(|| view! { <span class="muted">{t(K::sim_breakpoint_inactive)}</span> })}
+                            <button class="small" aria-label=tf(K::sim_remove_breakpoint, &[("condition", &cond)])
+                                on:click=move |_| state.remove_breakpoint(i)>{t(K::sim_remove)}</button>
                         </li>
                     }
                 }).collect_view()}

@@ -12,29 +12,11 @@
 use leptos::prelude::*;
 use plc_core::build::Site;
 use plc_core::sim::Simulator;
-use plc_core::why::{self, Context, Explanation, Kind};
+use plc_core::why::{self, Context, Explanation, Kind, WrittenBy};
 
+use crate::components::variables::why_label;
+use crate::i18n::{t, tf, K};
 use crate::state::{AppState, RunMode, WhyTarget};
-
-/// The words the region shows (one place, for the translation catalogue to come).
-mod words {
-    pub const TITLE: &str = "Why?";
-    pub const CLOSE: &str = "Close explanation";
-    pub const NO_PROGRAM: &str = "No program runs: fix the errors first.";
-    pub const DECIDED_BY: &str = "Decided by";
-    pub const POWER: &str = "Power flow";
-    pub const HISTORY: &str = "History";
-    pub const NO_CHANGE: &str = "none recorded";
-    pub fn nothing_at_start() -> String {
-        "Run or step the program first: scan 0 is the initial state, before any scan.".into()
-    }
-    pub fn since(scan: u64) -> String {
-        format!("(since scan {scan})")
-    }
-    pub fn go_to_scan(scan: u64) -> String {
-        format!("Go to scan {scan}")
-    }
-}
 
 /// An operand with the question that follows it.
 #[derive(Debug, Clone, PartialEq)]
@@ -60,20 +42,20 @@ struct Answer {
 
 fn explain_now(state: AppState, target: &WhyTarget, scan: u64) -> Result<Answer, String> {
     if scan == 0 {
-        return Err(words::nothing_at_start());
+        return Err(t(K::why_nothing_at_start).to_string());
     }
     state.project.with_untracked(|project| {
         state.sim_build.with_value(|build| {
             state.sim.with_value(|sim| {
                 let (Some(build), Some(sim)) = (build.as_ref(), sim.as_ref()) else {
-                    return Err(words::NO_PROGRAM.to_string());
+                    return Err(t(K::why_no_program).to_string());
                 };
                 let ctx = Context::new(project, build);
                 let ex = match target {
                     WhyTarget::Var(path) => why::explain(&ctx, sim, path, scan),
                     WhyTarget::Place(place) => why::explain_place(&ctx, sim, place, scan),
                 }
-                .map_err(|e| capitalised(&e.to_string()))?;
+                .map_err(|e| why_error(&e))?;
                 let operands = operand_links(sim, &ex);
                 let changes_of = match &ex.place {
                     Some(p) => p.step_variable.clone(),
@@ -83,6 +65,25 @@ fn explain_now(state: AppState, target: &WhyTarget, scan: u64) -> Result<Answer,
             })
         })
     })
+}
+
+/// Why the explanation cannot be given, as a sentence.
+fn why_error(e: &why::WhyError) -> String {
+    use plc_core::sim::RecordError;
+    let n = |x: u64| x.to_string();
+    match e {
+        why::WhyError::Unknown(name) => tf(K::why_unknown, &[("name", name)]),
+        why::WhyError::Record(RecordError::NotRecording) => t(K::why_not_recording).to_string(),
+        why::WhyError::Record(RecordError::OutOfRange { scan, first, last }) => tf(
+            K::why_not_recorded,
+            &[("scan", &n(*scan)), ("first", &n(*first)), ("last", &n(*last))],
+        ),
+        why::WhyError::Record(RecordError::TooLarge { bytes }) => {
+            tf(K::why_too_large, &[("kb", &(bytes / 1024).to_string())])
+        }
+        why::WhyError::Record(RecordError::Replay(m)) => tf(K::why_not_replayed, &[("reason", m)]),
+        other => capitalised(&other.to_string()),
+    }
 }
 
 fn capitalised(text: &str) -> String {
@@ -112,7 +113,7 @@ fn operand_links(sim: &Simulator, ex: &Explanation) -> Vec<OperandLink> {
                 name: o.name.clone(),
                 text: o.text.clone(),
                 since: o.since_scan,
-                label: value.map(|v| why::why_label(&o.name, &v)),
+                label: value.map(|v| why_label(&o.name, &v)),
                 scan: at,
             }
         })
@@ -123,16 +124,68 @@ fn operand_links(sim: &Simulator, ex: &Explanation) -> Vec<OperandLink> {
 fn writer_sentence(ex: &Explanation) -> String {
     let w = &ex.written_by;
     match (w.kind, w.since_scan) {
-        (Kind::None, Some(k)) => format!(
-            "Nothing wrote it on this scan; it has had this value since scan {k}, when {} wrote it.",
-            w.describe()
-        ),
-        (Kind::None, None) => "Nothing wrote it since the first scan recorded.".to_string(),
-        (Kind::Initial, _) => {
-            "Its initial value: nothing has written it since the start.".to_string()
+        (Kind::None, Some(k)) => {
+            tf(K::why_unchanged_since, &[("scan", &k.to_string()), ("writer", &describe(w))])
         }
-        (Kind::Input | Kind::Forced, _) => format!("{}.", capitalised(&w.describe())),
-        _ => format!("Written by {}.", w.describe()),
+        (Kind::None, None) => t(K::why_unchanged_since_first).to_string(),
+        (Kind::Initial, _) => t(K::why_initial_sentence).to_string(),
+        (Kind::Input | Kind::Forced, _) => format!("{}.", capitalised(&describe(w))),
+        _ => tf(K::why_written_by, &[("writer", &describe(w))]),
+    }
+}
+
+/// The writer in words (as `WrittenBy::describe` says it in English): `Main line 9:
+/// Motor := …`, `Latch rung 1 (coil Motor): …`, `a value from outside`.
+fn describe(w: &WrittenBy) -> String {
+    let pou = w.pou.as_deref().unwrap_or_else(|| t(K::why_the_program));
+    let text = w.text.as_deref().unwrap_or_default();
+    let element = w.element.as_deref().unwrap_or_default();
+    let with_text = |head: String| if text.is_empty() { head } else { format!("{head}: {text}") };
+    let line = |key: K| w.line.map(|l| tf(key, &[("line", &l.to_string())])).unwrap_or_default();
+    match w.kind {
+        Kind::Statement => match (w.line, &w.element) {
+            (Some(l), _) => {
+                with_text(tf(K::why_writer_line, &[("pou", pou), ("line", &l.to_string())]))
+            }
+            (None, Some(e)) => with_text(format!("{pou} {e}")),
+            (None, None) => with_text(pou.to_string()),
+        },
+        Kind::Rung => {
+            let rung = w.rung.unwrap_or(0).to_string();
+            let head = tf(K::why_writer_rung, &[("pou", pou), ("rung", &rung)]);
+            let element = w.element.as_deref().map(|e| format!(" ({e})")).unwrap_or_default();
+            with_text(format!("{head}{element}"))
+        }
+        Kind::Element => {
+            with_text(tf(K::why_writer_element, &[("pou", pou), ("element", element)]))
+        }
+        Kind::Transition => {
+            let head = tf(K::why_writer_transition, &[("pou", pou), ("transition", element)]);
+            let line = line(K::why_writer_at_line);
+            match text.is_empty() {
+                true => format!("{head}{line}"),
+                false => {
+                    let condition = tf(K::why_writer_condition, &[("condition", text)]);
+                    format!("{head}{line}{condition}")
+                }
+            }
+        }
+        Kind::StepAction => {
+            let head = if element.starts_with("action ") {
+                format!("{pou} {element}")
+            } else {
+                tf(K::why_writer_action, &[("pou", pou), ("step", element)])
+            };
+            with_text(format!("{head}{}", line(K::why_writer_in_line)))
+        }
+        Kind::Input if text.is_empty() => t(K::why_writer_input).to_string(),
+        Kind::Forced if text.is_empty() => t(K::why_writer_forcing).to_string(),
+        Kind::Input | Kind::Forced => text.to_string(),
+        Kind::Initial => t(K::why_writer_initial).to_string(),
+        Kind::None => match &w.then {
+            Some(then) => describe(then),
+            None => t(K::why_writer_nothing).to_string(),
+        },
     }
 }
 
@@ -142,17 +195,21 @@ fn writer_link(ex: &Explanation) -> Option<(Site, String)> {
     let site = w.site.clone().or_else(|| w.then.as_ref().and_then(|t| t.site.clone()))?;
     let label = match &site {
         Site::Project => return None,
-        Site::St { line, .. } => format!("Go to line {line}"),
-        Site::Ladder { pou, cell: Some((r, ..)) } => format!("Show rung {} of {pou}", r + 1),
-        Site::Ladder { pou, .. } | Site::Declarations { pou, .. } => format!("Show {pou}"),
-        Site::Network { pou, .. } => format!("Show the element in {pou}"),
+        Site::St { line, .. } => tf(K::why_go_to_line, &[("line", &line.to_string())]),
+        Site::Ladder { pou, cell: Some((r, ..)) } => {
+            tf(K::why_show_rung, &[("rung", &(r + 1).to_string()), ("pou", pou)])
+        }
+        Site::Ladder { pou, .. } | Site::Declarations { pou, .. } => {
+            tf(K::why_show_pou, &[("pou", pou)])
+        }
+        Site::Network { pou, .. } => tf(K::why_show_element_in, &[("pou", pou)]),
         Site::Petri { pou, .. } => match w
             .element
             .as_deref()
             .or_else(|| w.then.as_ref().and_then(|t| t.element.as_deref()))
         {
-            Some(e) => format!("Show {e} in {pou}"),
-            None => format!("Show {pou}"),
+            Some(e) => tf(K::why_show_named_in, &[("element", e), ("pou", pou)]),
+            None => tf(K::why_show_pou, &[("pou", pou)]),
         },
     };
     Some((site, label))
@@ -160,12 +217,20 @@ fn writer_link(ex: &Explanation) -> Option<(Site, String)> {
 
 fn headline(ex: &Explanation) -> String {
     match &ex.place {
-        Some(p) if p.holds_token => format!(
-            "{} holds a token at scan {} ({} = {})",
-            p.id, ex.scan, p.step_variable, p.step_value
+        Some(p) if p.holds_token => tf(
+            K::why_holds_token,
+            &[
+                ("place", &p.id),
+                ("scan", &ex.scan.to_string()),
+                ("variable", &p.step_variable),
+                ("value", &p.step_value.to_string()),
+            ],
         ),
-        Some(p) => format!("{} holds no token at scan {}", p.id, ex.scan),
-        None => format!("{} is {} at scan {}", ex.var, ex.value_text, ex.scan),
+        Some(p) => tf(K::why_holds_no_token, &[("place", &p.id), ("scan", &ex.scan.to_string())]),
+        None => tf(
+            K::why_value_at_scan,
+            &[("name", &ex.var), ("value", &ex.value_text), ("scan", &ex.scan.to_string())],
+        ),
     }
 }
 
@@ -184,10 +249,10 @@ pub fn Explanation() -> impl IntoView {
     let when_open = RwSignal::new(false);
     let close = move |_| state.why.set(None);
     view! {
-        <section class="panel explanation" role="region" aria-label="Explanation">
+        <section class="panel explanation" role="region" aria-label=t(K::why_region)>
             <div class="panel-head">
-                <h2>{words::TITLE}</h2>
-                <button class="close" aria-label=words::CLOSE on:click=close>"×"</button>
+                <h2>{t(K::why_title)}</h2>
+                <button class="close" aria-label=t(K::why_close) on:click=close>"×"</button>
             </div>
             {move || answer.get().map(|a| match a {
                 Err(e) => view! { <p class="muted">{e}</p> }.into_any(),
@@ -209,7 +274,7 @@ fn answer_view(state: AppState, a: Answer, when_open: RwSignal<bool>) -> impl In
     });
     let operands = (!a.operands.is_empty()).then(|| {
         view! {
-            <h3>{words::DECIDED_BY}</h3>
+            <h3>{t(K::why_decided_by)}</h3>
             <ul class="why-operands">
                 {a.operands.into_iter().map(|o| {
                     let follow = o.label.map(|label| {
@@ -226,7 +291,7 @@ fn answer_view(state: AppState, a: Answer, when_open: RwSignal<bool>) -> impl In
                     view! {
                         <li>
                             <code>{o.name.clone()}</code>" "{o.text.clone()}" "
-                            <span class="muted">{words::since(o.since)}</span>" "
+                            <span class="muted">{tf(K::why_since, &[("scan", &o.since.to_string())])}</span>" "
                             {follow}
                         </li>
                     }
@@ -236,38 +301,41 @@ fn answer_view(state: AppState, a: Answer, when_open: RwSignal<bool>) -> impl In
     });
     let power = (!ex.path.is_empty()).then(|| {
         view! {
-            <h3>{words::POWER}</h3>
+            <h3>{t(K::why_power)}</h3>
             <ul class="why-power">
                 {ex.path.iter().map(|s| view! {
-                    <li>{format!("{} (row {}, column {}): {}", s.element, s.row, s.column,
-                        if s.powered { "power passes" } else { "no power" })}</li>
+                    <li>{tf(if s.powered { K::why_power_passes } else { K::why_no_power }, &[
+                        ("element", &s.element),
+                        ("row", &s.row.to_string()),
+                        ("column", &s.column.to_string()),
+                    ])}</li>
                 }).collect_view()}
             </ul>
         }
     });
     let block = ex.block.clone().map(|b| {
         view! {
-            <p>{format!("{} is a {}.", b.instance, b.fb)}</p>
+            <p>{tf(K::why_instance_of, &[("instance", &b.instance), ("block", &b.fb)])}</p>
             {(!b.history.is_empty()).then(|| view! {
-                <h3>{words::HISTORY}</h3>
+                <h3>{t(K::why_history)}</h3>
                 <ul class="why-history">
                     {b.history.iter().map(|c| view! {
-                        <li>{format!("scan {}: {} = {}", c.scan, c.name, json_text(&c.value))}</li>
+                        <li>{tf(K::why_history_item, &[("scan", &c.scan.to_string()), ("name", &c.name), ("value", &json_text(&c.value))])}</li>
                     }).collect_view()}
                 </ul>
             })}
         }
     });
     let name = a.changes_of;
-    let when_label = why::when_label(&name);
+    let when_label = tf(K::why_when_changed, &[("name", &name)]);
     let (previous, next) = (ex.previous_change, ex.next_change);
     let jump = move |k: Option<u64>| {
         match k {
         Some(k) => view! {
-            <button class="link" on:click=move |_| state.show_scan(k)>{words::go_to_scan(k)}</button>
+            <button class="link" on:click=move |_| state.show_scan(k)>{tf(K::why_go_to_scan, &[("scan", &k.to_string())])}</button>
         }
         .into_any(),
-        None => view! { <span class="muted">{words::NO_CHANGE}</span> }.into_any(),
+        None => view! { <span class="muted">{t(K::why_none_recorded)}</span> }.into_any(),
     }
     };
     view! {
@@ -283,7 +351,7 @@ fn answer_view(state: AppState, a: Answer, when_open: RwSignal<bool>) -> impl In
         </p>
         <Show when=move || when_open.get()>
             <p class="why-changes">
-                "Previous change: "{jump(previous)}" · Next change: "{jump(next)}
+                {t(K::why_previous_change)}{jump(previous)}{t(K::why_next_change)}{jump(next)}
             </p>
         </Show>
     }

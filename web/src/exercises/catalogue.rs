@@ -5,16 +5,14 @@ use leptos::ev;
 use leptos::prelude::*;
 
 use super::{catalogue, language_name, Exercises, Screen};
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
-
-/// The line that tells a student what an exercise is.
-const INTRO: &str = "Pick an exercise: it opens beside the editor with its task. Choose the language you start in, write your program, and press Check: the report shows what works and where to look next. Level 1 is the place to begin.";
 
 /// A level's name for the filter.
 fn level_name(level: u8) -> String {
     match level {
-        1 => "1 (beginner)".into(),
-        5 => "5 (advanced)".into(),
+        1 => t(K::exercise_level_beginner).into(),
+        5 => t(K::exercise_level_advanced).into(),
         n => n.to_string(),
     }
 }
@@ -47,29 +45,36 @@ pub fn Catalogue() -> impl IntoView {
     };
     let count = move || {
         let passed = ex.passed.with(|p| catalogue().iter().filter(|e| p.contains(e.id)).count());
-        format!("{} of {total} exercises shown · {passed} passed", shown().len())
+        tf(
+            K::exercise_catalogue_count,
+            &[
+                ("shown", &shown().len().to_string()),
+                ("total", &total.to_string()),
+                ("passed", &passed.to_string()),
+            ],
+        )
     };
     view! {
         <main class="catalogue" aria-labelledby="catalogue-title">
             <div class="catalogue-head">
-                <h2 id="catalogue-title">"Exercises"</h2>
-                <label>"Level "
-                    <select aria-label="Level" on:change=move |e: ev::Event| level.set(event_target_value(&e).parse().unwrap_or(0))>
-                        <option value="0">"All levels"</option>
+                <h2 id="catalogue-title">{t(K::exercise_catalogue_title)}</h2>
+                <label>{t(K::exercise_level)}" "
+                    <select aria-label=t(K::exercise_level) on:change=move |e: ev::Event| level.set(event_target_value(&e).parse().unwrap_or(0))>
+                        <option value="0">{t(K::exercise_all_levels)}</option>
                         {(1..=5u8).map(|n| view! { <option value=n.to_string()>{level_name(n)}</option> }).collect_view()}
                     </select>
                 </label>
-                <label>"Language "
-                    <select aria-label="Language" on:change=move |e: ev::Event| language.set(event_target_value(&e))>
-                        <option value="">"All languages"</option>
+                <label>{t(K::exercise_language)}" "
+                    <select aria-label=t(K::exercise_language) on:change=move |e: ev::Event| language.set(event_target_value(&e))>
+                        <option value="">{t(K::exercise_all_languages)}</option>
                         {languages.into_iter().map(|code| view! { <option value=code>{language_name(code)}</option> }).collect_view()}
                     </select>
                 </label>
                 <span class="catalogue-count" aria-live="polite">{count}</span>
-                <button on:click=move |_| ex.screen.set(Screen::Workspace)>"Back to the project"</button>
+                <button on:click=move |_| ex.screen.set(Screen::Workspace)>{t(K::exercise_back_to_project)}</button>
             </div>
-            <p class="catalogue-intro">{INTRO}</p>
-            <ul class="catalogue-list" aria-label="Exercise list">
+            <p class="catalogue-intro">{t(K::exercise_catalogue_intro)}</p>
+            <ul class="catalogue-list" aria-label=t(K::exercise_list)>
                 {move || {
                     let passed = ex.passed.get();
                     shown().into_iter().map(|e| {
@@ -79,8 +84,9 @@ pub fn Catalogue() -> impl IntoView {
                         view! {
                             <li class="catalogue-item" class:passed=done data-exercise=id>
                                 <button class="catalogue-open" on:click=move |_| ex.open_shipped(state, id)>{e.title}</button>
-                                {done.then(|| view! { <span class="tick" role="img" aria-label="Passed" title="Passed">"✓"</span> })}
-                                <span class="catalogue-level">{format!("Level {}", e.level)}</span>
+                                {done.then(|| view! { <span class="tick" role="img" aria-label=t(K::exercise_passed) title=t(K::exercise_passed)>"✓"</span> })}
+                                <span class="catalogue-level">{tf(K::exercise_level_n, &[("level", &e.level.to_string())])}</span>
+
                                 <span class="catalogue-langs">{langs}</span>
                             </li>
                         }

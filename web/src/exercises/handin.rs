@@ -16,29 +16,29 @@ use wasm_bindgen::{JsCast, JsValue};
 use super::protocol::{Reply, Request};
 use super::Exercises;
 use crate::download::{download, download_parts};
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 use crate::storage::LocalStorage;
 
 /// Where the browser keeps the student's name.
 const NAME_KEY: &str = "plc-student-name";
 
-/// What the user reads, in one place (the dialog is static markup: one element for the
-/// page to build instead of nine).
-mod words {
-    pub const HAND_IN: &str = "Hand in";
-    pub const HAND_IN_TITLE: &str = "Download your attempt as a file for your instructor";
-    pub const CHANGE_NAME: &str = "Change name";
-    pub const EXPORT_SCORM: &str = "Export SCORM package";
-    pub const EXPORT_TITLE: &str =
-        "Download this exercise as a SCORM package for a course's LMS (Moodle, Canvas, Blackboard, ILIAS)";
-    pub const PACKING: &str = "Packing the SCORM package…";
-    /// The name dialog: `Your name`, required and not only spaces; Cancel closes it.
-    pub const DIALOG: &str = r#"<dialog id="handin-dialog" class="handin-dialog" aria-labelledby="handin-title">
-<form method="dialog"><h3 id="handin-title">Hand in</h3>
-<label>Your name <input id="handin-name" type="text" autocomplete="name" maxlength="80" required pattern=".*\S.*" autofocus aria-describedby="handin-help"></label>
-<p id="handin-help" class="handin-help">Your instructor sees this name with your attempt. This browser remembers it.</p>
-<div class="handin-buttons"><button type="submit" class="primary">Download hand-in</button><button type="submit" value="cancel" formnovalidate>Cancel</button></div>
-</form></dialog>"#;
+/// The name dialog: `Your name`, required and not only spaces; Cancel closes it (static
+/// markup: one element for the page to build instead of nine; the texts hold no markup).
+fn dialog_html() -> String {
+    format!(
+        r#"<dialog id="handin-dialog" class="handin-dialog" aria-labelledby="handin-title">
+<form method="dialog"><h3 id="handin-title">{}</h3>
+<label>{} <input id="handin-name" type="text" autocomplete="name" maxlength="80" required pattern=".*\S.*" autofocus aria-describedby="handin-help"></label>
+<p id="handin-help" class="handin-help">{}</p>
+<div class="handin-buttons"><button type="submit" class="primary">{}</button><button type="submit" value="cancel" formnovalidate>{}</button></div>
+</form></dialog>"#,
+        t(K::exercise_hand_in),
+        t(K::exercise_your_name),
+        t(K::exercise_name_help),
+        t(K::exercise_download_hand_in),
+        t(K::exercise_cancel),
+    )
 }
 
 /// An element of the page by its id.
@@ -59,10 +59,9 @@ fn hand_in(ex: Exercises, state: AppState, name: &str) {
     let text = HandIn::file_text(&project, &id, name, &when);
     let file = HandIn::file_name(&id, name);
     match download(&file, "application/json", &text) {
-        Ok(()) => state.info(format!(
-            "Downloaded {file}: your attempt at “{}”, handed in as “{}”. Give this file to your instructor.",
-            open.opened.view.title,
-            name.trim()
+        Ok(()) => state.info(tf(
+            K::exercise_handed_in,
+            &[("file", &file), ("title", &open.opened.view.title), ("name", name.trim())],
         )),
         Err(e) => state.error(e),
     }
@@ -87,18 +86,16 @@ async fn export_scorm(ex: Exercises, state: AppState) {
         Ok(v) if v.is_instance_of::<js_sys::Uint8Array>() => v,
         Ok(v) => {
             let e = match serde_json::from_str::<Reply>(&v.as_string().unwrap_or_default()) {
-                Ok(Reply::Error(e)) => e,
-                _ => "the exercise worker gave no package".to_string(),
+                Ok(Reply::Error(f)) => f.text(),
+                _ => t(K::exercise_no_package).to_string(),
             };
-            return state.error(format!("Could not make the SCORM package: {e}"));
+            return state.error(tf(K::exercise_scorm_failed, &[("error", &e)]));
         }
-        Err(e) => return state.error(format!("Could not make the SCORM package: {e}")),
+        Err(e) => return state.error(tf(K::exercise_scorm_failed, &[("error", &e)])),
     };
     let file = format!("{id}-scorm.zip");
     match download_parts(&file, "application/zip", &bytes) {
-        Ok(()) => state.info(format!(
-            "Downloaded {file} (SCORM 1.2): add it to your course as a SCORM activity; each Check sends the score to the gradebook."
-        )),
+        Ok(()) => state.info(tf(K::exercise_scorm_downloaded, &[("file", &file)])),
         Err(e) => state.error(e),
     }
 }
@@ -144,16 +141,17 @@ pub fn HandInActions() -> impl IntoView {
             return;
         }
         packing.set(true);
-        state.info(words::PACKING);
+        state.info(t(K::exercise_packing));
         leptos::task::spawn_local(async move {
             export_scorm(ex, state).await;
             packing.set(false);
         });
     };
     view! {
-        <button on:click=start title=words::HAND_IN_TITLE>{words::HAND_IN}</button>
-        <button class="link handin-name" hidden=move || name.with(Option::is_none) on:click=forget>{words::CHANGE_NAME}</button>
-        <button class="lms-hidden" on:click=export title=words::EXPORT_TITLE disabled=move || packing.get()>{words::EXPORT_SCORM}</button>
-        <div class="handin" on:submit=submit inner_html=words::DIALOG></div>
+        <button on:click=start title=t(K::exercise_hand_in_title)>{t(K::exercise_hand_in)}</button>
+        <button class="link handin-name" hidden=move || name.with(Option::is_none) on:click=forget>{t(K::exercise_change_name)}</button>
+        <button class="lms-hidden" on:click=export title=t(K::exercise_export_scorm_title) disabled=move || packing.get()>{t(K::exercise_export_scorm)}</button>
+        <div class="handin" on:submit=submit inner_html=dialog_html()></div>
+
     }
 }

@@ -19,6 +19,7 @@ use plc_core::project::Project;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 
+use crate::i18n::{t, tf, K};
 use crate::state::{clear_fragment, AppState};
 pub use catalogue::Catalogue;
 use handin::HandInActions;
@@ -66,10 +67,21 @@ pub fn catalogue() -> Vec<Entry> {
 pub fn language_name(code: &str) -> &str {
     match code {
         "st" => "ST",
-        "ld" => "Ladder",
-        "petri" => "Petri net",
+        "ld" => t(K::exercise_lang_ladder),
+        "petri" => t(K::exercise_lang_petri),
         "sfc" => "SFC",
         other => other,
+    }
+}
+
+/// A starter's language for people (`Start in`; empty when unknown).
+pub fn starter_language_name(code: &str) -> &'static str {
+    match code {
+        "st" => t(K::exercise_lang_st),
+        "ld" => t(K::exercise_lang_ladder),
+        "petri" => t(K::exercise_lang_petri),
+        "sfc" => "SFC",
+        _ => "",
     }
 }
 
@@ -161,9 +173,7 @@ impl Exercises {
         let text = match fetch_text(url).await {
             Ok(t) => t,
             Err(e) => {
-                state.error(format!(
-                    "Could not load the exercise from {url}: {e}. Nothing was changed."
-                ));
+                state.error(tf(K::exercise_load_failed, &[("url", url), ("error", &e)]));
                 return;
             }
         };
@@ -176,8 +186,8 @@ impl Exercises {
     async fn open_with(self, state: AppState, request: Request, base: Option<&str>) {
         let mut opened = match ask(&request).await {
             Ok(Reply::Opened(o)) => *o,
-            Ok(Reply::Error(e)) | Err(e) => {
-                state.error(format!("Could not open the exercise: {e}. Nothing was changed."));
+            Err(e) => {
+                state.error(tf(K::exercise_open_failed, &[("error", &e)]));
                 return;
             }
             Ok(_) => return,
@@ -189,8 +199,9 @@ impl Exercises {
                 match fetch_text(&url).await {
                     Ok(text) => files.push(LinkedFile { name, text }),
                     Err(e) => {
-                        state.error(format!(
-                            "Could not load the exercise's starter {url}: {e}. Nothing was changed."
+                        state.error(tf(
+                            K::exercise_starter_load_failed,
+                            &[("url", &url), ("error", &e)],
                         ));
                         return;
                     }
@@ -200,8 +211,8 @@ impl Exercises {
             link.starters.extend(files);
             opened = match ask(&Request::File { link, base: Some(base.to_string()) }).await {
                 Ok(Reply::Opened(o)) => *o,
-                Ok(Reply::Error(e)) | Err(e) => {
-                    state.error(format!("Could not open the exercise: {e}. Nothing was changed."));
+                Err(e) => {
+                    state.error(tf(K::exercise_open_failed, &[("error", &e)]));
                     return;
                 }
                 Ok(_) => return,
@@ -235,18 +246,18 @@ impl Exercises {
                 if state.project_id.get_untracked().as_deref() != Some(pid.as_str()) {
                     state.open(&pid);
                 }
-                state.info(format!("Exercise “{title}”: your saved attempt is open."));
+                state.info(tf(K::exercise_attempt_open, &[("title", &title)]));
             }
             None => {
                 let Some(project) = starter_project(&opened, None) else {
-                    state.error("The exercise's starter cannot be opened.");
+                    state.error(t(K::exercise_starter_broken));
                     return;
                 };
                 state.add_and_open(project);
                 if let Some(pid) = state.project_id.get_untracked() {
                     store::set_attempt(&id, &pid);
                 }
-                state.info(format!("Exercise “{title}”: a new attempt from the starter is open."));
+                state.info(tf(K::exercise_attempt_new, &[("title", &title)]));
             }
         }
     }
@@ -290,7 +301,7 @@ impl Exercises {
                     scorm::report(state, &open.opened.view.id, &report);
                     self.report.set(Some(report));
                 }
-                Ok(Reply::Error(e)) | Err(e) => state.error(format!("Could not check: {e}")),
+                Err(e) => state.error(tf(K::exercise_check_failed, &[("error", &e)])),
                 Ok(_) => {}
             }
         });
@@ -300,10 +311,7 @@ impl Exercises {
     /// asking).
     pub fn reset_to_starter(self, state: AppState) {
         let Some(open) = self.open.get_untracked() else { return };
-        let question = format!(
-            "Discard your work on “{}” and start again from the starter? This cannot be undone.",
-            open.opened.view.title
-        );
+        let question = tf(K::exercise_reset_confirm, &[("title", &open.opened.view.title)]);
         if !confirm(&question) {
             return;
         }
@@ -312,9 +320,9 @@ impl Exercises {
             Some(project) => {
                 state.replace_contents(project);
                 self.report.set(None);
-                state.info("The attempt is back to the starter.");
+                state.info(t(K::exercise_reset_done));
             }
-            None => state.error("The exercise's starter cannot be opened."),
+            None => state.error(t(K::exercise_starter_broken)),
         }
     }
 
@@ -336,11 +344,14 @@ impl Exercises {
     pub fn start_in(self, state: AppState, code: &str) -> bool {
         let Some(open) = self.open.get_untracked() else { return false };
         let Some(project) = starter_project(&open.opened, Some(code)) else {
-            state.error("The exercise's starter cannot be opened.");
+            state.error(t(K::exercise_starter_broken));
             return false;
         };
-        let name =
-            Language::from_code(code).map_or_else(|| code.to_string(), |l| l.name().to_string());
+        let name = match starter_language_name(code) {
+            "" => code.to_string(),
+            known => known.to_string(),
+        };
+
         // The work in a project: its POUs, whatever its name and settings.
         let work = |p: &Project| {
             let mut p = p.clone();
@@ -357,9 +368,9 @@ impl Exercises {
             .filter_map(|s| Project::from_file(&s.project).ok())
             .any(|s| work(&s) == current);
         if !untouched {
-            let question = format!(
-                "Start “{}” again in {name}? Your work on it is replaced by the {name} starter. This cannot be undone.",
-                open.opened.view.title
+            let question = tf(
+                K::exercise_start_in_confirm,
+                &[("title", &open.opened.view.title), ("language", &name)],
             );
             if !confirm(&question) {
                 return false;
@@ -367,7 +378,7 @@ impl Exercises {
         }
         state.replace_contents(project);
         self.report.set(None);
-        state.info(format!("The attempt starts in {name} now."));
+        state.info(tf(K::exercise_started_in, &[("language", &name)]));
         true
     }
 
@@ -392,7 +403,7 @@ fn starter_project(opened: &Opened, language: Option<&str>) -> Option<Project> {
         None => opened.starters.first()?,
     };
     let mut project = Project::from_file(&starter.project).ok()?;
-    project.name = format!("Exercise: {}", opened.view.title);
+    project.name = tf(K::exercise_project_name, &[("title", &opened.view.title)]);
     Some(project)
 }
 
@@ -401,31 +412,31 @@ fn confirm(question: &str) -> bool {
     web_sys::window().and_then(|w| w.confirm_with_message(question).ok()).unwrap_or(false)
 }
 
-/// Sends one request to a fresh exercise worker.
+/// Sends one request to a fresh exercise worker; its `Error` worded in the language shown.
 async fn ask(request: &Request) -> Result<Reply, String> {
     let text = serde_json::to_string(request).map_err(|e| e.to_string())?;
     let answer = crate::import::ask_worker_at(WORKER, &JsValue::from_str(&text)).await?;
-    crate::lazy::read_exercise_reply(answer)
-        .await
-        .map_err(|e| e.to_string())?
-        .ok_or_else(|| "the exercise worker gave no answer".to_string())
+    match crate::lazy::read_exercise_reply(answer).await.map_err(|e| e.to_string())? {
+        Some(Reply::Error(failure)) => Err(failure.text()),
+        Some(reply) => Ok(reply),
+        None => Err(t(K::exercise_worker_no_answer).to_string()),
+    }
 }
 
 /// The text at `url` (a CORS fetch).
 pub(crate) async fn fetch_text(url: &str) -> Result<String, String> {
     let window = web_sys::window().ok_or("no window")?;
-    let failed =
-        |_| "the address cannot be reached (or does not allow other sites to read it)".to_string();
+    let failed = |_| t(K::exercise_unreachable).to_string();
     let response: web_sys::Response = JsFuture::from(window.fetch_with_str(url))
         .await
         .map_err(failed)?
         .dyn_into()
-        .map_err(|_| "no response".to_string())?;
+        .map_err(|_| t(K::exercise_no_response).to_string())?;
     if !response.ok() {
         return Err(format!("HTTP {}", response.status()));
     }
     let text = JsFuture::from(response.text().map_err(failed)?).await.map_err(failed)?;
-    text.as_string().ok_or_else(|| "the answer is not text".to_string())
+    text.as_string().ok_or_else(|| t(K::exercise_not_text).to_string())
 }
 
 /// A query parameter's decoded value (`?exercise=https%3A%2F%2F…`).

@@ -4,23 +4,15 @@
 
 use leptos::ev;
 use leptos::prelude::*;
-use plc_core::exercise::{graded_program, Direction, Language};
+use plc_core::exercise::{graded_program, Direction};
 use plc_core::project::ProgramPou;
 use wasm_bindgen::JsCast;
 
 use super::report::ReportView;
-use super::{language_name, Exercises, Screen};
+use super::{language_name, starter_language_name, Exercises, Screen};
 use crate::components::share_box::{copy_to_clipboard, ShareBox};
-use crate::state::AppState;
-
-/// The words of the panel's own controls.
-const START_IN: &str = "Start in";
-const START_IN_TITLE: &str =
-    "The language you write your answer in: choosing another starts again from its starter";
-const PROGRAM_TO_CHECK: &str = "Program to check";
-const PROGRAM_TO_CHECK_TITLE: &str = "The PROGRAM that Check grades (and the simulator runs)";
-const SCENARIOS: &str =
-    "Check runs these scenarios (the score adds up the points of those passed): ";
+use crate::i18n::{t, tf, K};
+use crate::state::{plural, AppState};
 
 /// The open exercise (nothing when the open project is not an attempt).
 #[component]
@@ -32,7 +24,7 @@ pub fn ExercisePanel() -> impl IntoView {
         ex.share_link.set(Some(link.clone()));
         leptos::task::spawn_local(async move {
             if copy_to_clipboard(&link).await {
-                state.info("Exercise link copied to the clipboard (it never holds hidden scenarios nor the reference).");
+                state.info(t(K::exercise_link_copied));
             }
         });
     };
@@ -41,14 +33,16 @@ pub fn ExercisePanel() -> impl IntoView {
             let v = open.opened.view;
             let langs = v.languages.iter().map(|l| language_name(l)).collect::<Vec<_>>().join(", ");
             let scenarios = v.scenarios.iter().map(|s| {
-                let random = if s.random { ", random inputs" } else { "" };
-                let points = if s.weight == 1 { "1 point".to_string() } else { format!("{} points", s.weight) };
-                format!("{} ({points}{random})", s.name)
+                let n = u64::from(s.weight);
+                let points = tf(plural(n, K::exercise_points_one, K::exercise_points_few, K::exercise_points_many), &[("n", &n.to_string())]);
+                let line = if s.random { K::exercise_scenario_random } else { K::exercise_scenario };
+                tf(line, &[("name", &s.name), ("points", &points)])
             }).collect::<Vec<_>>().join(" · ");
             let starters: Vec<(String, &'static str)> = open.opened.starters.iter().map(|s| {
-                let name = Language::from_code(&s.language).map_or("", Language::name);
-                (s.language.clone(), name)
+                (s.language.clone(), starter_language_name(&s.language))
+
             }).collect();
+
             let (preferred, plant) = (v.program.clone(), v.plant.clone());
             // The PROGRAMs the student may have checked and the one Check grades, re-read
             // when the project changes (the options are redrawn only when these do).
@@ -61,26 +55,26 @@ pub fn ExercisePanel() -> impl IntoView {
             }));
             let attempt_language = Memo::new(move |_| ex.attempt_language(state).unwrap_or_default());
             view! {
-                <section class="exercise-panel" aria-label="Exercise">
+                <section class="exercise-panel" aria-label=t(K::exercise_exercise)>
                     <div class="exercise-head">
                         <h2 class="exercise-title">{v.title.clone()}</h2>
-                        <span class="exercise-meta">{format!("Level {} · {langs}", v.level)}</span>
+                        <span class="exercise-meta">{tf(K::exercise_level_meta, &[("level", &v.level.to_string()), ("languages", &langs)])}</span>
                         <div class="exercise-actions">
                             <button class="primary" on:click=move |_| ex.check(state)
                                 disabled=move || ex.checking.get()>
-                                {move || if ex.checking.get() { "Checking…" } else { "Check" }}
+                                {move || if ex.checking.get() { t(K::exercise_checking) } else { t(K::exercise_check) }}
                             </button>
-                            <button on:click=move |_| ex.reset_to_starter(state)>"Reset to starter"</button>
-                            <button on:click=share title="Copy a link that carries this exercise">"Share exercise"</button>
+                            <button on:click=move |_| ex.reset_to_starter(state)>{t(K::exercise_reset_to_starter)}</button>
+                            <button on:click=share title=t(K::exercise_share_title)>{t(K::exercise_share)}</button>
                             <super::HandInActions/>
-                            <button class="lms-hidden" on:click=move |_| ex.screen.set(Screen::Catalogue)>"All exercises"</button>
+                            <button class="lms-hidden" on:click=move |_| ex.screen.set(Screen::Catalogue)>{t(K::exercise_all_exercises)}</button>
                         </div>
                     </div>
                     <div class="exercise-setup">
                         {(starters.len() > 1).then(|| view! {
                             <label class="field">
-                                <span>{START_IN}</span>
-                                <select aria-label=START_IN title=START_IN_TITLE
+                                <span>{t(K::exercise_start_in)}</span>
+                                <select aria-label=t(K::exercise_start_in) title=t(K::exercise_start_in_title)
                                     prop:value=move || attempt_language.get()
                                     on:change=move |e: ev::Event| {
                                         let code = event_target_value(&e);
@@ -103,8 +97,8 @@ pub fn ExercisePanel() -> impl IntoView {
                             let (programs, checked) = choice.get();
                             view! {
                                 <label class="field">
-                                    <span>{PROGRAM_TO_CHECK}</span>
-                                    <select aria-label=PROGRAM_TO_CHECK title=PROGRAM_TO_CHECK_TITLE
+                                    <span>{t(K::exercise_program_to_check)}</span>
+                                    <select aria-label=t(K::exercise_program_to_check) title=t(K::exercise_program_to_check_title)
                                         on:change=move |e: ev::Event| state.set_program(&event_target_value(&e))>
                                         {programs.into_iter().map(|q| {
                                             let selected = q.name.eq_ignore_ascii_case(&checked);
@@ -117,14 +111,14 @@ pub fn ExercisePanel() -> impl IntoView {
                         }}
                     </div>
                     {move || ex.share_link.get().map(|link| view! {
-                        <ShareBox link=link label="Exercise link" close_label="Close exercise link"
+                        <ShareBox link=link label=t(K::exercise_link) close_label=t(K::exercise_close_link)
                             on_close=move || ex.share_link.set(None)/>
                     })}
                     <details class="exercise-task" open=true>
-                        <summary>"Task"</summary>
+                        <summary>{t(K::exercise_task)}</summary>
                         <div class="statement" inner_html=v.statement_html.clone()></div>
-                        <table class="exercise-interface" aria-label="Interface">
-                            <thead><tr><th>"Variable"</th><th>"Type"</th><th>"Declared as"</th><th>"Meaning"</th></tr></thead>
+                        <table class="exercise-interface" aria-label=t(K::exercise_interface)>
+                            <thead><tr><th>{t(K::exercise_variable)}</th><th>{t(K::exercise_type)}</th><th>{t(K::exercise_declared_as)}</th><th>{t(K::exercise_meaning)}</th></tr></thead>
                             <tbody>
                                 {v.interface.iter().map(|i| {
                                     let kind = match i.direction {
@@ -137,7 +131,8 @@ pub fn ExercisePanel() -> impl IntoView {
                                 }).collect_view()}
                             </tbody>
                         </table>
-                        <p class="exercise-scenarios">{format!("{SCENARIOS}{scenarios}")}</p>
+                        <p class="exercise-scenarios">{tf(K::exercise_scenarios, &[("scenarios", &scenarios)])}</p>
+
                     </details>
                     <ReportView/>
                 </section>

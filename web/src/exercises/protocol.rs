@@ -46,8 +46,77 @@ pub enum Reply {
     Opened(Box<Opened>),
     /// An attempt graded.
     Graded(Report),
-    /// Why the request could not be done (a located message for the user).
-    Error(String),
+    /// Why the request could not be done (worded by the page, in the language shown).
+    Error(Failure),
+}
+
+/// Why the worker could not do a request: what failed, worded by the page in the language
+/// shown (the worker has only English), with the engine's located message or the file
+/// it is about.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub enum Failure {
+    /// The engine's message alone.
+    Plain(String),
+    /// The exercise a link carries does not read.
+    LinkUnusable(String),
+    /// The exercise file does not read.
+    FileUnusable(String),
+    /// The attempt's project file does not read.
+    ProjectUnreadable(String),
+    /// The grader stopped.
+    CannotGrade(String),
+    /// A starter file does not open.
+    StarterBroken(String),
+    /// There is no shipped exercise with this id.
+    NoExercise(String),
+    /// The shipped exercise (id) does not read (why).
+    ExerciseUnreadable(String, String),
+    /// The shipped exercise (id) could not be fetched.
+    ExerciseOffline(String),
+    /// The shipped exercise (id) could not be fetched (HTTP status).
+    ExerciseHttp(String, u16),
+    /// A file of the site (its address) could not be fetched.
+    UrlUnreadable(String),
+    /// A file of the site (its address) could not be fetched (HTTP status).
+    UrlHttp(String, u16),
+    /// The site lists no files to pack.
+    NoFileList(String),
+    /// A SCORM request sent as text.
+    NotText,
+    /// The request does not read.
+    BadRequest(String),
+    /// The answer could not be written.
+    Unwritable,
+}
+
+impl Failure {
+    /// The failure in the language shown.
+    pub fn text(&self) -> String {
+        use crate::i18n::{t, tf, K};
+        let one = |key, name, value: &str| tf(key, &[(name, value)]);
+        match self {
+            Failure::Plain(e) => e.clone(),
+            Failure::LinkUnusable(e) => one(K::exercise_link_unusable, "error", e),
+            Failure::FileUnusable(e) => one(K::exercise_file_unusable, "error", e),
+            Failure::ProjectUnreadable(e) => one(K::exercise_project_unreadable, "error", e),
+            Failure::CannotGrade(e) => one(K::exercise_cannot_grade, "error", e),
+            Failure::StarterBroken(e) => one(K::exercise_starter_unusable, "error", e),
+            Failure::NoExercise(id) => one(K::exercise_no_exercise, "id", id),
+            Failure::ExerciseUnreadable(id, e) => {
+                tf(K::exercise_exercise_unreadable, &[("id", id), ("error", e)])
+            }
+            Failure::ExerciseOffline(id) => one(K::exercise_exercise_offline, "id", id),
+            Failure::ExerciseHttp(id, status) => {
+                tf(K::exercise_exercise_http, &[("id", id), ("status", &status.to_string())])
+            }
+            Failure::UrlUnreadable(url) => one(K::exercise_url_unreadable, "url", url),
+            Failure::UrlHttp(url, status) => format!("{url}: HTTP {status}"),
+            Failure::NoFileList(list) => one(K::exercise_no_file_list, "list", list),
+            Failure::NotText => t(K::exercise_not_text_answer).to_string(),
+            Failure::BadRequest(e) => one(K::exercise_bad_request, "error", e),
+            Failure::Unwritable => t(K::exercise_unwritable).to_string(),
+        }
+    }
 }
 
 /// An exercise ready to show.

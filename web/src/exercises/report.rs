@@ -8,6 +8,7 @@ use leptos::prelude::*;
 use plc_core::exercise::{time_text, Failure, Sample};
 
 use super::Exercises;
+use crate::i18n::{t, tf, K};
 
 /// Width of the labels on the left of the timeline.
 const LABEL_W: f64 = 170.0;
@@ -26,12 +27,12 @@ pub fn ReportView() -> impl IntoView {
         ex.report.get().map(|r| {
             let all = r.error.is_none() && r.score == r.total;
             let summary = match &r.error {
-                Some(e) => format!("Not graded: {e}"),
-                None if all => format!("Score {} of {}: every scenario passes. Well done!", r.score, r.total),
+                Some(e) => tf(K::exercise_not_graded, &[("error", e)]),
+                None if all => tf(K::exercise_all_pass, &[("score", &r.score.to_string()), ("total", &r.total.to_string())]),
                 None => r.score_line(),
             };
             view! {
-                <section class="exercise-report" aria-label="Report" aria-live="polite">
+                <section class="exercise-report" aria-label=t(K::exercise_report) aria-live="polite">
                     {r.checked_line().map(|line| view! { <p class="report-program">{line}</p> })}
                     <p class="report-score" class:report-pass=all class:report-fail=!all>{summary}</p>
                     <ul class="report-scenarios">
@@ -42,12 +43,12 @@ pub fn ReportView() -> impl IntoView {
                                 <li class="report-scenario" class:passed=passed class:failed=!passed data-passed=passed.to_string()>
                                     <span class="report-mark" aria-hidden="true">{if passed { "✓" } else { "✗" }}</span>
                                     <span class="report-name">{s.name.clone()}</span>
-                                    <span class="report-verdict">{if passed { " passed" } else { " failed" }}</span>
+                                    <span class="report-verdict">" "{if passed { t(K::exercise_scenario_passed) } else { t(K::exercise_scenario_failed) }}</span>
                                     {s.failure.map(|f| view! {
                                         <div class="report-failure">
-                                            <p><strong>"Expected: "</strong>{f.expected.clone()}</p>
-                                            <p class="report-actual"><strong>"Actual: "</strong>{f.actual.clone()}</p>
-                                            {s.hint.clone().map(|h| view! { <p class="report-hint"><strong>"Hint: "</strong>{h}</p> })}
+                                            <p><strong>{t(K::exercise_expected)}" "</strong>{f.expected.clone()}</p>
+                                            <p class="report-actual"><strong>{t(K::exercise_actual)}" "</strong>{f.actual.clone()}</p>
+                                            {s.hint.clone().map(|h| view! { <p class="report-hint"><strong>{t(K::exercise_hint)}" "</strong>{h}</p> })}
                                             <FailureTimeline scenario=name.clone() failure=f/>
                                         </div>
                                     })}
@@ -93,12 +94,12 @@ fn rows(failure: &Failure) -> Vec<Row> {
     if let Some(condition) = &failure.condition {
         let opt = |v: Option<bool>| v.map_or(Cell::Any, Cell::Bool);
         rows.push(Row {
-            label: format!("expected: {condition}"),
+            label: tf(K::exercise_row_expected, &[("condition", condition)]),
             class: "row-expected",
             values: w.iter().map(|s| opt(s.expected)).collect(),
         });
         rows.push(Row {
-            label: format!("actual: {condition}"),
+            label: tf(K::exercise_row_actual, &[("condition", condition)]),
             class: "row-actual",
             values: w.iter().map(|s| opt(s.actual)).collect(),
         });
@@ -151,14 +152,20 @@ fn FailureTimeline(scenario: String, failure: Failure) -> impl IntoView {
     let height = TOP + rows.len() as f64 * ROW_H + 20.0;
     let at = w.iter().position(|s| s.scan == failure.scan).unwrap_or(n.saturating_sub(1));
     let cursor_x = LABEL_W + (at as f64 + 0.5) * dx;
-    let cursor_text = format!("{} · scan {}", time_text(failure.time_ns), failure.scan);
+    let cursor_text = tf(
+        K::exercise_cursor,
+        &[("time", &time_text(failure.time_ns)), ("scan", &failure.scan.to_string())],
+    );
     let (first, last) = (&w[0], &w[n - 1]);
-    let summary = format!(
-        "Timeline of “{scenario}” from {} to {}: {}; the cursor is on the first wrong scan, {}",
-        time_text(first.time_ns),
-        time_text(last.time_ns),
-        failure.actual,
-        cursor_text
+    let summary = tf(
+        K::exercise_timeline_summary,
+        &[
+            ("scenario", &scenario),
+            ("from", &time_text(first.time_ns)),
+            ("to", &time_text(last.time_ns)),
+            ("actual", &failure.actual),
+            ("cursor", &cursor_text),
+        ],
     );
     let drawn = rows.iter().enumerate().map(|(r, row)| {
         let top = TOP + r as f64 * ROW_H;
@@ -211,7 +218,8 @@ fn FailureTimeline(scenario: String, failure: Failure) -> impl IntoView {
                 <text class="tl-axis" x=format!("{LABEL_W:.0}") y=format!("{axis_y:.1}")>{time_text(first.time_ns)}</text>
                 <text class="tl-axis tl-axis-end" x=format!("{:.0}", LABEL_W + PLOT_W) y=format!("{axis_y:.1}")>{time_text(last.time_ns)}</text>
             </svg>
-            <figcaption>{format!("The scans around the first wrong one ({cursor_text}): the dashed line is what the condition should have been (shaded where any value is right), the solid line what it was, red where they differ.")}</figcaption>
+            <figcaption>{tf(K::exercise_timeline_caption, &[("cursor", &cursor_text)])}</figcaption>
+
         </figure>
     })
 }

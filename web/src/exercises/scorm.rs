@@ -17,6 +17,7 @@ use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 
 use super::Exercises;
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 
 /// How many windows up the discovery climbs before it gives up.
@@ -24,14 +25,6 @@ const MAX_DEPTH: usize = 10;
 
 /// SCORM 2004's `cmi.suspend_data` limit.
 const SCORM_2004_SUSPEND_LIMIT: usize = 64_000;
-
-/// What the user reads, in one place.
-mod words {
-    pub const RESUMED: &str = "Your attempt kept by the course is open.";
-    pub const UNREADABLE: &str = "The attempt the course kept cannot be read";
-    pub const LMS_PROBLEM: &str = "The course (LMS) did not accept";
-    pub const LMS_FAILED: &str = "The course's SCORM interface failed";
-}
 
 /// The LMS's runtime API and which SCORM it speaks.
 struct Session {
@@ -106,7 +99,7 @@ impl Session {
         let f: js_sys::Function = js_sys::Reflect::get(&self.api, &JsValue::from_str(name))
             .ok()
             .and_then(|f| f.dyn_into().ok())
-            .ok_or_else(|| format!("{}: it has no {name}", words::LMS_FAILED))?;
+            .ok_or_else(|| tf(K::exercise_lms_missing, &[("name", name)]))?;
         let list = js_sys::Array::new();
         for a in args {
             list.push(&JsValue::from_str(a));
@@ -116,7 +109,7 @@ impl Session {
                 .ok()
                 .and_then(|m| m.as_string())
                 .unwrap_or_else(|| text_of(&e));
-            format!("{} ({name}): {why}", words::LMS_FAILED)
+            tf(K::exercise_lms_failed, &[("name", name), ("why", &why)])
         })
     }
 
@@ -136,8 +129,10 @@ impl Session {
         if answer == "true" {
             return Ok(());
         }
-        let why = self.last_error().unwrap_or_else(|| format!("it answered “{answer}”"));
-        Err(format!("{} {what}: {why}", words::LMS_PROBLEM))
+        let why = self
+            .last_error()
+            .unwrap_or_else(|| tf(K::exercise_lms_answered, &[("answer", &answer)]));
+        Err(tf(K::exercise_lms_refused, &[("what", what), ("why", &why)]))
     }
 
     fn set(&self, element: &str, value: &str) -> Result<(), String> {
@@ -150,7 +145,7 @@ impl Session {
     }
 
     fn commit(&self) -> Result<(), String> {
-        self.act("LMSCommit", &[""], "the commit")
+        self.act("LMSCommit", &[""], t(K::exercise_lms_commit))
     }
 
     /// The time since the session started, as the edition writes it.
@@ -168,14 +163,14 @@ impl Session {
     fn keep_attempt(&self, state: AppState) -> Result<(), String> {
         let data = state.project.with_untracked(encode_share);
         let (limit, edition) = if self.v2004 {
-            (SCORM_2004_SUSPEND_LIMIT, "SCORM 2004 keeps 64,000")
+            (SCORM_2004_SUSPEND_LIMIT, t(K::exercise_lms_keeps_2004))
         } else {
-            (SCORM_12_SUSPEND_LIMIT, "SCORM 1.2 keeps 4,096")
+            (SCORM_12_SUSPEND_LIMIT, t(K::exercise_lms_keeps_12))
         };
         if data.len() > limit {
-            return Err(format!(
-                "Your attempt is too big for the course to keep ({} characters compressed; {edition}): the next launch cannot resume it from the course. This browser keeps it, and Hand in makes a file of it.",
-                data.len()
+            return Err(tf(
+                K::exercise_lms_too_big,
+                &[("size", &data.len().to_string()), ("edition", edition)],
             ));
         }
         self.set("cmi.suspend_data", &data)
@@ -200,7 +195,7 @@ pub fn launch(ex: Exercises, state: AppState) -> bool {
     };
     let session =
         Session { api, v2004, exercise: None, started: js_sys::Date::now(), finished: false };
-    if let Err(e) = session.act("LMSInitialize", &[""], "the start of the session") {
+    if let Err(e) = session.act("LMSInitialize", &[""], t(K::exercise_lms_start)) {
         state.error(e);
         return false;
     }
@@ -236,11 +231,9 @@ pub fn resume(ex: Exercises, state: AppState) {
     match decode_share(&kept) {
         Ok(project) => {
             state.replace_contents(project);
-            state.info(words::RESUMED);
+            state.info(t(K::exercise_lms_resumed));
         }
-        Err(e) => {
-            state.error(format!("{}: {e}. This browser's attempt is open.", words::UNREADABLE))
-        }
+        Err(e) => state.error(tf(K::exercise_lms_unreadable, &[("error", &e.to_string())])),
     }
 }
 
@@ -309,7 +302,8 @@ fn finish(ex: Exercises, state: AppState) {
         let _ = s.set(time, &s.session_time());
         let _ = s.set(exit, "suspend");
         let _ = s.commit();
-        let _ = s.act("LMSFinish", &[""], "the end of the session");
+        let _ = s.act("LMSFinish", &[""], t(K::exercise_lms_end));
+
         s.finished = true;
     });
 }

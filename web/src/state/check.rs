@@ -8,6 +8,7 @@ use plc_core::diagnostics::Severity;
 use plc_core::sim::Simulator;
 
 use super::{AppState, PouView, TRACE_CAPACITY};
+use crate::i18n::{t, tf, K};
 
 /// One diagnostic, located for the problem list, the ST editor and the POU views.
 #[derive(Debug, Clone, PartialEq)]
@@ -50,7 +51,7 @@ impl DiagView {
     /// column 2`, `Weighing, transition T5 (guard line 1, column 3)`).
     pub fn place_label(&self) -> String {
         match &self.site {
-            Site::Project => "project".to_string(),
+            Site::Project => t(K::state_place_project).to_string(),
             Site::St { line, column, .. } => format!("{line}:{column}"),
             site => site
                 .describe()
@@ -102,7 +103,7 @@ impl AppState {
                             state.show_main_view();
                         }
                     }
-                    Err(e) => state.error(format!("Could not check the project: {e}")),
+                    Err(e) => state.error(tf(K::state_check_failed, &[("error", &e.to_string())])),
                 }
             });
             return;

@@ -4,7 +4,8 @@
 
 use leptos::prelude::*;
 
-use super::{AppState, Notice, NoticeAction, RunMode};
+use super::{plural, AppState, Notice, NoticeAction, RunMode};
+use crate::i18n::{t, tf, K};
 
 /// What a press of Run, Step or Step N does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -35,13 +36,13 @@ pub fn gate(errors: usize, has_sim: bool, old_chosen: bool) -> Gate {
     }
 }
 
+/// The forms of `Fix N errors to run your changes`.
+const FIX: [K; 3] = [K::state_fix_one, K::state_fix_few, K::state_fix_many];
+
 /// `Fix 1 error to run your changes` / `Fix 3 errors to run your changes`.
 pub fn fix_text(errors: usize) -> String {
-    if errors == 1 {
-        "Fix 1 error to run your changes".to_string()
-    } else {
-        format!("Fix {errors} errors to run your changes")
-    }
+    let n = errors as u64;
+    tf(plural(n, FIX[0], FIX[1], FIX[2]), &[("errors", &n.to_string())])
 }
 
 /// The status line under the controls when the simulator holds an older build than the
@@ -51,10 +52,8 @@ pub fn version_text(stale: bool, mode: RunMode) -> Option<&'static str> {
         return None;
     }
     Some(match mode {
-        RunMode::Running => "Running the last version that built (before your latest edits)",
-        RunMode::Paused | RunMode::Stopped => {
-            "The simulator holds the last version that built (before your latest edits)"
-        }
+        RunMode::Running => t(K::state_running_old),
+        RunMode::Paused | RunMode::Stopped => t(K::state_holding_old),
     })
 }
 
@@ -86,7 +85,7 @@ impl AppState {
                 true
             }
             Gate::NoProgram => {
-                self.error("Nothing to run: the project has no PROGRAM.");
+                self.error(t(K::state_no_program));
                 false
             }
             Gate::Refuse { errors, offer_old } => {
@@ -121,9 +120,17 @@ impl AppState {
     }
 }
 
-/// Whether the banner shows a refusal to run (made by [`AppState::may_scan`]).
+/// Whether the banner shows a refusal to run (made by [`AppState::may_scan`]): one of the
+/// forms of [`fix_text`] in the language shown, with its full stop.
 fn is_refusal(n: &Notice) -> bool {
-    n.error && n.text.starts_with("Fix ") && n.text.ends_with(" to run your changes.")
+    n.error
+        && FIX.iter().any(|k| match t(*k).split_once("{errors}") {
+            Some((before, after)) => {
+                n.text.starts_with(before)
+                    && n.text.strip_suffix('.').is_some_and(|s| s.ends_with(after))
+            }
+            None => n.text.strip_suffix('.') == Some(t(*k)),
+        })
 }
 
 #[cfg(test)]

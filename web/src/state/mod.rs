@@ -16,11 +16,35 @@ use plc_core::petri::PlaceMap;
 use plc_core::project::{Project, ProjectSummary};
 use plc_core::sim::{BreakpointId, ScanView, Simulator};
 
+use crate::i18n::{t, tf, K};
+
 pub use check::DiagView;
 pub use gate::version_text;
 pub use past::{words as past_words, WhyQuery, WhyTarget};
 pub use projects::{clear_fragment, note_panic, project_file_name};
 pub use run::marking_of;
+
+/// The form of a counted text for `n` in the language shown (`<html lang>`): English and
+/// both other forms' `one` for 1 only; Polish `few` for 2–4 except 12–14, Czech `few` for
+/// 2–4; else `many`. English `few` and `many` are the same text.
+pub fn plural(n: u64, one: K, few: K, many: K) -> K {
+    // Natively (tests) the page is English.
+    #[cfg(target_arch = "wasm32")]
+    let lang = web_sys::window()
+        .and_then(|w| w.document())
+        .and_then(|d| d.document_element())
+        .and_then(|e| e.get_attribute("lang"))
+        .unwrap_or_default();
+    #[cfg(not(target_arch = "wasm32"))]
+    let lang = "en";
+
+    match n {
+        1 => one,
+        2..=4 => few,
+        _ if lang == "pl" && matches!(n % 10, 2..=4) && !matches!(n % 100, 12..=14) => few,
+        _ => many,
+    }
+}
 
 /// How long after the last edit of a diagram the project is checked and saved.
 const CHECK_DELAY: std::time::Duration = std::time::Duration::from_millis(300);
@@ -103,14 +127,14 @@ impl NoticeAction {
     /// The button's text (its accessible name).
     pub fn label(&self) -> &'static str {
         match self {
-            NoticeAction::Export => "Export project",
-            NoticeAction::LoadTheirs => "Load the other tab's version",
-            NoticeAction::KeepMine => "Keep this tab's version",
-            NoticeAction::SaveAsNew => "Save this tab's version as a new project",
-            NoticeAction::DownloadDamaged(_) => "Download its text",
-            NoticeAction::DeleteDamaged(_) => "Delete it",
-            NoticeAction::OpenShared(_) => "Open it anyway",
-            NoticeAction::RunLastBuilt => "Run the last version that built",
+            NoticeAction::Export => t(K::state_export_project),
+            NoticeAction::LoadTheirs => t(K::state_load_theirs),
+            NoticeAction::KeepMine => t(K::state_keep_mine),
+            NoticeAction::SaveAsNew => t(K::state_save_as_new),
+            NoticeAction::DownloadDamaged(_) => t(K::state_download_damaged),
+            NoticeAction::DeleteDamaged(_) => t(K::state_delete_damaged),
+            NoticeAction::OpenShared(_) => t(K::state_open_shared),
+            NoticeAction::RunLastBuilt => t(K::state_run_last_built),
         }
     }
 }
@@ -216,7 +240,7 @@ impl AppState {
     /// (as a new project), else the most recent project, else a new one.
     pub fn new() -> Self {
         let state = AppState {
-            project: RwSignal::new(Project::new("My first project")),
+            project: RwSignal::new(Project::new(t(K::state_first_project))),
             project_id: RwSignal::new(None),
             project_rev: StoredValue::new(None),
             damaged: RwSignal::new(BTreeMap::new()),
@@ -360,10 +384,10 @@ impl AppState {
     pub fn add_breakpoint(&self, condition: &str) -> Result<(), String> {
         let condition = condition.trim();
         if condition.is_empty() {
-            return Err("Type a condition, e.g. Level > 50".to_string());
+            return Err(t(K::state_breakpoint_empty).to_string());
         }
         let id = match self.with_sim_mut(|s| s.add_breakpoint(condition)) {
-            None => return Err("The program has errors: fix them to add breakpoints.".to_string()),
+            None => return Err(t(K::state_breakpoint_errors).to_string()),
             Some(Err(e)) => return Err(e.to_string()),
             Some(Ok(id)) => id,
         };
@@ -434,7 +458,9 @@ impl AppState {
                 self.with_sim_mut(|s| s.set_cycle_ns(ns));
                 self.save();
             }
-            Err(message) => self.error(format!("The cycle time is unchanged: {message}.")),
+            Err(message) => {
+                self.error(tf(K::state_cycle_unchanged, &[("message", &message.to_string())]))
+            }
         }
     }
 }

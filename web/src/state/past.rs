@@ -11,6 +11,7 @@ use plc_core::sim::{Readout, ScanView, Simulator};
 use plc_core::vm::Value;
 
 use super::{AppState, RunMode};
+use crate::i18n::{tf, K};
 
 /// What a `Why?` button asks about.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -31,23 +32,31 @@ pub struct WhyQuery {
     pub scan: u64,
 }
 
-/// The words of the stepping controls and the banner (one place, for the translation
-/// catalogue to come).
+/// The words of the stepping controls and the banner.
 pub mod words {
+    use crate::i18n::{tf, K};
+
     /// The banner while a past scan is shown.
     pub fn showing(scan: u64, last: u64) -> String {
-        format!("Showing scan {scan} of {last}")
+        tf(K::state_showing_scan, &[("scan", &scan.to_string()), ("last", &last.to_string())])
     }
     /// The banner's button.
     pub const RETURN_TO_NOW: &str = "Return to now";
     /// The notice after a new future started from a past scan.
     pub fn dropped(scan: u64, last: u64) -> String {
-        if last > scan + 1 {
-            format!("Continued from scan {scan}: scans {} to {last} were dropped.", scan + 1)
+        let many = last > scan + 1;
+        let (scan, from, last) = (scan.to_string(), (scan + 1).to_string(), last.to_string());
+        if many {
+            tf(K::state_dropped_many, &[("scan", &scan), ("from", &from), ("last", &last)])
         } else {
-            format!("Continued from scan {scan}: scan {last} was dropped.")
+            tf(K::state_dropped_one, &[("scan", &scan), ("last", &last)])
         }
     }
+}
+
+/// `Cannot show scan N: why.` (`key` says what could not be done).
+fn cannot(key: K, scan: u64, e: &dyn std::fmt::Display) -> String {
+    tf(key, &[("scan", &scan.to_string()), ("error", &e.to_string())])
 }
 
 impl AppState {
@@ -122,9 +131,9 @@ impl AppState {
                     state.shown.set(Some(scan));
                     state.bump();
                 }
-                Ok(Some(Err(e))) => state.error(format!("Cannot show scan {scan}: {e}.")),
+                Ok(Some(Err(e))) => state.error(cannot(K::state_cannot_show, scan, &e)),
                 Ok(None) => {}
-                Err(e) => state.error(format!("Cannot show scan {scan}: {e}.")),
+                Err(e) => state.error(cannot(K::state_cannot_show, scan, &e)),
             }
         });
     }
@@ -198,9 +207,9 @@ impl AppState {
             state.bump();
             match rewound {
                 Ok(Some(Ok(()))) => state.info(words::dropped(scan, last)),
-                Ok(Some(Err(e))) => state.error(format!("Cannot continue from scan {scan}: {e}.")),
+                Ok(Some(Err(e))) => state.error(cannot(K::state_cannot_continue, scan, &e)),
                 Ok(None) => {}
-                Err(e) => state.error(format!("Cannot continue from scan {scan}: {e}.")),
+                Err(e) => state.error(cannot(K::state_cannot_continue, scan, &e)),
             }
             then();
         });

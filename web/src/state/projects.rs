@@ -19,6 +19,7 @@ use wasm_bindgen::JsCast;
 
 use super::{AppState, Notice, NoticeAction};
 use crate::download::download;
+use crate::i18n::{t, tf, K};
 use crate::storage::LocalStorage;
 
 /// How long a project must have been open before its opening counts as finished.
@@ -89,10 +90,7 @@ impl AppState {
         if hash.starts_with("#p=") {
             if interrupted.as_deref() == Some(share_mark(&hash).as_str()) {
                 clear_fragment();
-                self.error_with(
-                    "The shared project in this link stopped the page the last time it was opened, so it was not opened again. Your own projects are unchanged.",
-                    vec![NoticeAction::OpenShared(hash)],
-                );
+                self.error_with(t(K::state_shared_stopped), vec![NoticeAction::OpenShared(hash)]);
             } else {
                 // The link's reader (base64 and DEFLATE) is a chunk fetched only for links.
                 let state = *self;
@@ -121,24 +119,24 @@ impl AppState {
         match first.map(|p| p.id.clone()) {
             Some(id) => self.open(&id),
             None => {
-                self.add_and_open(Project::new("My first project"));
+                self.add_and_open(Project::new(t(K::state_first_project)));
             }
         }
         // Say why the most recent project is not the one open.
         if let Some(skipped) = projects.first().filter(|p| first.is_none_or(|f| f.id != p.id)) {
             if let Some(reason) = damaged.get(&skipped.id) {
                 self.error_with(
-                    format!("“{}” cannot be opened: {reason}. It is kept as it is.", skipped.name),
+                    tf(
+                        K::state_cannot_open_kept,
+                        &[("name", &skipped.name), ("reason", &reason.to_string())],
+                    ),
                     vec![
                         NoticeAction::DownloadDamaged(skipped.id.clone()),
                         NoticeAction::DeleteDamaged(skipped.id.clone()),
                     ],
                 );
             } else if interrupted.as_deref() == Some(skipped.id.as_str()) {
-                self.error(format!(
-                    "“{}” stopped the page the last time it was opened, so another project was opened instead. It is kept in the list: open it from there when you are ready.",
-                    skipped.name
-                ));
+                self.error(tf(K::state_stopped_page, &[("name", &skipped.name)]));
             }
         }
         if let Some(message) = damage {
@@ -152,9 +150,7 @@ impl AppState {
         let decoded = match crate::lazy::read_share(fragment.to_string()).await {
             Ok(decoded) => decoded,
             Err(e) => {
-                self.error(format!(
-                    "Could not open the shared project: {e}. Your own projects are unchanged; reload the page with this link to try again."
-                ));
+                self.error(tf(K::state_shared_failed, &[("error", &e.to_string())]));
                 return false;
             }
         };
@@ -162,7 +158,7 @@ impl AppState {
             Ok(project) => project,
             Err(e) => {
                 clear_fragment();
-                self.error(format!("{e}. Your own projects are unchanged."));
+                self.error(tf(K::state_shared_unusable, &[("error", &e.to_string())]));
                 return false;
             }
         };
@@ -172,11 +168,11 @@ impl AppState {
         match self.open_as_new(project) {
             Ok(()) => {
                 clear_fragment();
-                self.info(format!("Opened the shared project “{name}” as a new project."));
+                self.info(tf(K::state_shared_opened, &[("name", &name)]));
             }
             // Not stored: the link stays in the address bar so that nothing is lost.
             Err(e) => self.error_with(
-                format!("Opened the shared project “{name}”, but it is not saved: {e}. Export it to keep it, or keep this link."),
+                tf(K::state_shared_not_saved, &[("name", &name), ("error", &e.to_string())]),
                 vec![NoticeAction::Export],
             ),
         }
@@ -203,7 +199,7 @@ impl AppState {
             Ok(()) => true,
             Err(e) => {
                 self.error_with(
-                    format!("“{name}” is open but not saved: {e}."),
+                    tf(K::state_open_not_saved, &[("name", &name), ("error", &e.to_string())]),
                     vec![NoticeAction::Export],
                 );
                 false
@@ -247,7 +243,7 @@ impl AppState {
             Err(StoreError::Damaged(e)) => {
                 let name = self.name_of(id);
                 self.error_with(
-                    format!("“{name}” cannot be opened: {e}. It is kept as it is."),
+                    tf(K::state_cannot_open_kept, &[("name", &name), ("reason", &e.to_string())]),
                     vec![
                         NoticeAction::DownloadDamaged(id.to_string()),
                         NoticeAction::DeleteDamaged(id.to_string()),
@@ -276,9 +272,12 @@ impl AppState {
                     self.project_id.set(Some(id));
                     self.project_rev.set_value(Some(rev));
                     self.refresh_list();
-                    self.info(format!("“{}” is saved now.", project.name));
+                    self.info(tf(K::state_saved_now, &[("name", &project.name)]));
                 }
-                Err(e) => self.error_with(format!("Not saved: {e}."), vec![NoticeAction::Export]),
+                Err(e) => self.error_with(
+                    tf(K::state_not_saved, &[("error", &e.to_string())]),
+                    vec![NoticeAction::Export],
+                ),
             }
             return;
         };
@@ -289,7 +288,10 @@ impl AppState {
                 self.refresh_list();
             }
             Err(StoreError::Conflict { stored, .. }) => self.show_conflict(stored.is_some()),
-            Err(e) => self.error_with(format!("Not saved: {e}."), vec![NoticeAction::Export]),
+            Err(e) => self.error_with(
+                tf(K::state_not_saved, &[("error", &e.to_string())]),
+                vec![NoticeAction::Export],
+            ),
         }
     }
 
@@ -299,12 +301,12 @@ impl AppState {
         let name = self.project.with_untracked(|p| p.name.clone());
         if still_stored {
             self.error_with(
-                format!("“{name}” was changed in another tab. Changes made here are not saved until you choose."),
+                tf(K::state_changed_elsewhere, &[("name", &name)]),
                 vec![NoticeAction::LoadTheirs, NoticeAction::KeepMine, NoticeAction::SaveAsNew],
             );
         } else {
             self.error_with(
-                format!("“{name}” was deleted in another tab. Changes made here are not saved until you choose."),
+                tf(K::state_deleted_elsewhere, &[("name", &name)]),
                 vec![NoticeAction::SaveAsNew, NoticeAction::Export],
             );
         }
@@ -355,7 +357,7 @@ impl AppState {
             NoticeAction::LoadTheirs => {
                 if let Some(id) = self.project_id.get_untracked() {
                     self.open(&id);
-                    self.info("Opened the version saved in the other tab.");
+                    self.info(t(K::state_loaded_theirs));
                 }
             }
             NoticeAction::KeepMine => {
@@ -370,15 +372,15 @@ impl AppState {
             }
             NoticeAction::SaveAsNew => {
                 let mut project = self.project.get_untracked();
-                project.name = format!("{} (this tab)", project.name);
+                project.name = tf(K::state_this_tab, &[("name", &project.name)]);
                 let name = project.name.clone();
                 if self.add_and_open(project) {
-                    self.info(format!("Saved as “{name}”."));
+                    self.info(tf(K::state_saved_as, &[("name", &name)]));
                 }
             }
             NoticeAction::DownloadDamaged(id) => match store().raw(id) {
                 Ok(text) => {
-                    let file = format!("{} (damaged).txt", self.name_of(id));
+                    let file = tf(K::state_damaged_file, &[("name", &self.name_of(id))]);
                     if let Err(e) = download(&project_file_name(&file), "text/plain", &text) {
                         self.error(e);
                     }
@@ -390,7 +392,7 @@ impl AppState {
                 match store().delete(id) {
                     Ok(()) => {
                         self.refresh_list();
-                        self.info(format!("Deleted the damaged project “{name}”."));
+                        self.info(tf(K::state_deleted_damaged, &[("name", &name)]));
                     }
                     Err(e) => self.error(e.to_string()),
                 }
@@ -408,7 +410,7 @@ impl AppState {
     pub fn export_project(&self) {
         let (name, text) = self.project.with_untracked(|p| (p.name.clone(), p.to_file()));
         if let Err(e) = download(&project_file_name(&name), "application/json", &text) {
-            self.error(format!("Could not export the project: {e}"));
+            self.error(tf(K::state_export_failed, &[("error", &e)]));
         }
     }
 
@@ -425,7 +427,7 @@ impl AppState {
     /// Copies the open project and opens the copy.
     pub fn duplicate(&self) {
         let mut p = self.project.get_untracked();
-        p.name = format!("{} (copy)", p.name);
+        p.name = tf(K::state_copy_name, &[("name", &p.name)]);
         self.add_and_open(p);
     }
 
@@ -447,7 +449,7 @@ impl AppState {
         match next {
             Some(id) => self.open(&id),
             None => {
-                self.add_and_open(Project::new("My first project"));
+                self.add_and_open(Project::new(t(K::state_first_project)));
             }
         }
     }

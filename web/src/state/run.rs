@@ -12,6 +12,7 @@ use plc_core::petri::PlaceMap;
 use plc_core::sim::{Readout, ScanOutcome, SimState, Simulator};
 
 use super::{AppState, Notice, RunMode, Speed};
+use crate::i18n::{t, tf, K};
 
 /// The wall time one batch of scans aims at, in milliseconds.
 const BATCH_MS: f64 = 1.0;
@@ -71,7 +72,7 @@ impl AppState {
                 self.run_mode.set(RunMode::Paused);
                 let cond =
                     self.with_sim(|s| s.breakpoint_condition(id).map(str::to_string)).flatten();
-                self.info(format!("Paused at breakpoint: {}", cond.unwrap_or_default()));
+                self.info(tf(K::state_paused_at, &[("condition", &cond.unwrap_or_default())]));
             }
             ScanOutcome::Fault(info) => {
                 self.run_mode.set(RunMode::Stopped);
@@ -82,14 +83,21 @@ impl AppState {
                 let place = match &site {
                     plc_core::build::Site::St { line, .. } => {
                         self.marked_line.set(Some(*line));
-                        format!("line {line}")
+                        tf(K::state_fault_line, &[("line", &line.to_string())])
                     }
                     other => other.describe().unwrap_or_default(),
                 };
                 self.fault_site.set(Some(site.clone()));
                 self.notice.set(Some(Notice {
                     error: true,
-                    text: format!("FAULT on scan {}: {} ({place})", info.scan, info.fault),
+                    text: tf(
+                        K::state_fault,
+                        &[
+                            ("scan", &info.scan.to_string()),
+                            ("fault", &info.fault.to_string()),
+                            ("place", &place),
+                        ],
+                    ),
                     site: Some(site),
                     actions: Vec::new(),
                 }));
@@ -130,7 +138,8 @@ impl AppState {
         }
         let faulted = self.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);
         if faulted {
-            self.error("The PLC is in FAULT: press Reset to restart it.");
+            self.error(t(K::state_in_fault));
+
             return;
         }
         if self.run_mode.get_untracked() == RunMode::Running {

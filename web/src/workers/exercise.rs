@@ -10,7 +10,7 @@
 //! reader or a Markdown renderer. An exercise file in TOML (from an address or a link)
 //! is read by a chunk of its own (`exercise_toml`), fetched only then.
 
-use crate::exercises::protocol::{Opened, Reply, Request, StarterFile};
+use crate::exercises::protocol::{Failure, Opened, Reply, Request, StarterFile};
 use plc_core::exercise::{
     grade_by, is_built, Exercise, ExerciseLink, ExerciseView, GradeOptions, SITE_FILE_LIST,
 };
@@ -33,32 +33,32 @@ async fn answer(request: Request) -> Reply {
         Request::Link(fragment) => match ExerciseLink::unpack(&fragment) {
             Ok(link) => match read(&link.exercise, None).await {
                 Ok(_) => open(link, None).await,
-                Err(e) => Reply::Error(format!("the exercise in this link cannot be used: {e}")),
+                Err(e) => Reply::Error(Failure::LinkUnusable(e)),
             },
-            Err(e) => Reply::Error(e.to_string()),
+            Err(e) => Reply::Error(Failure::Plain(e.to_string())),
         },
         Request::Grade { exercise, project } => {
             let exercise = match read(&exercise, None).await {
                 Ok((e, _)) => e,
-                Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
+                Err(e) => return Reply::Error(Failure::FileUnusable(e)),
             };
             let project = match Project::from_file(&project) {
                 Ok(p) => p,
-                Err(e) => return Reply::Error(format!("the project cannot be read: {e}")),
+                Err(e) => return Reply::Error(Failure::ProjectUnreadable(e.to_string())),
             };
             // The passes for the submission's diagram POUs are chunks, fetched as needed.
             let passes = match super::passes_for(&project).await {
                 Ok(passes) => passes,
-                Err(e) => return Reply::Error(format!("the exercise cannot grade: {e}")),
+                Err(e) => return Reply::Error(Failure::CannotGrade(e.to_string())),
             };
             let options = GradeOptions { window: PAGE_WINDOW };
             match grade_by(&exercise, &project, options, &passes) {
                 Ok(report) => Reply::Graded(report),
-                Err(e) => Reply::Error(format!("the exercise cannot grade: {e}")),
+                Err(e) => Reply::Error(Failure::CannotGrade(e.to_string())),
             }
         }
         // Answered by `reply` (with the package's bytes).
-        Request::Scorm { .. } => Reply::Error("a package is not a text answer".into()),
+        Request::Scorm { .. } => Reply::Error(Failure::NotText),
     }
 }
 
@@ -74,19 +74,20 @@ async fn read(text: &str, base: Option<&str>) -> Result<(Exercise, String), Stri
 }
 
 /// The link that opens the shipped exercise `id` (the file `build.rs` wrote).
-async fn shipped(id: &str) -> Result<ExerciseLink, String> {
-    let missing = || format!("there is no exercise “{id}” in this trainer");
+async fn shipped(id: &str) -> Result<ExerciseLink, Failure> {
+    let missing = || Failure::NoExercise(id.to_string());
     if id.is_empty() || !id.chars().all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_') {
         return Err(missing());
     }
     let text = shipped_file(id).await?.ok_or_else(missing)?;
-    serde_json::from_str(&text).map_err(|e| format!("the exercise “{id}” cannot be read: {e}"))
+    serde_json::from_str(&text)
+        .map_err(|e| Failure::ExerciseUnreadable(id.to_string(), e.to_string()))
 }
 
 /// The text of `exercises/ID.json` next to the worker's script, `None` when there is none.
 #[cfg(target_arch = "wasm32")]
-async fn shipped_file(id: &str) -> Result<Option<String>, String> {
-    let failed = |_| format!("the exercise “{id}” could not be loaded (is the network off?)");
+async fn shipped_file(id: &str) -> Result<Option<String>, Failure> {
+    let failed = |_| Failure::ExerciseOffline(id.to_string());
     let scope: web_sys::WorkerGlobalScope = js_sys::global().unchecked_into();
     let response: web_sys::Response =
         JsFuture::from(scope.fetch_with_str(&format!("exercises/{id}.json")))
@@ -97,10 +98,7 @@ async fn shipped_file(id: &str) -> Result<Option<String>, String> {
         return Ok(None);
     }
     if !response.ok() {
-        return Err(format!(
-            "the exercise “{id}” could not be loaded (HTTP {})",
-            response.status()
-        ));
+        return Err(Failure::ExerciseHttp(id.to_string(), response.status()));
     }
     let text = JsFuture::from(response.text().map_err(failed)?).await.map_err(failed)?;
     Ok(text.as_string())
@@ -108,7 +106,7 @@ async fn shipped_file(id: &str) -> Result<Option<String>, String> {
 
 /// Natively (tests) the files are built in.
 #[cfg(not(target_arch = "wasm32"))]
-async fn shipped_file(id: &str) -> Result<Option<String>, String> {
+async fn shipped_file(id: &str) -> Result<Option<String>, Failure> {
     mod files {
         include!(concat!(env!("OUT_DIR"), "/exercise_files.rs"));
     }
@@ -116,8 +114,8 @@ async fn shipped_file(id: &str) -> Result<Option<String>, String> {
 }
 
 /// The bytes at `url`.
-async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
-    let failed = |_| format!("{url} cannot be read");
+async fn fetch_bytes(url: &str) -> Result<Vec<u8>, Failure> {
+    let failed = |_| Failure::UrlUnreadable(url.to_string());
     let scope: web_sys::WorkerGlobalScope = js_sys::global().unchecked_into();
     let response: web_sys::Response = JsFuture::from(scope.fetch_with_str(url))
         .await
@@ -125,7 +123,7 @@ async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
         .dyn_into()
         .map_err(failed)?;
     if !response.ok() {
-        return Err(format!("{url}: HTTP {}", response.status()));
+        return Err(Failure::UrlHttp(url.to_string(), response.status()));
     }
     let buffer = JsFuture::from(response.array_buffer().map_err(failed)?).await.map_err(failed)?;
     Ok(js_sys::Uint8Array::new(&buffer).to_vec())
@@ -133,18 +131,19 @@ async fn fetch_bytes(url: &str) -> Result<Vec<u8>, String> {
 
 /// The SCORM package of `link`: the files of the site at `site` (its root URL, ending in
 /// `/`) as its `site-files.txt` lists them, the exercise and its starter, and the manifest.
-async fn package(link: ExerciseLink, site: &str) -> Result<Vec<u8>, String> {
-    let list = fetch_bytes(&format!("{site}{SITE_FILE_LIST}")).await.map_err(|_| {
-        format!(
-            "this copy of the trainer has no list of its files ({SITE_FILE_LIST}; `bash scripts/build-web.sh` writes it). Use `plc exercise scorm EXERCISE.toml` instead"
-        )
-    })?;
+async fn package(link: ExerciseLink, site: &str) -> Result<Vec<u8>, Failure> {
+    let list = fetch_bytes(&format!("{site}{SITE_FILE_LIST}"))
+        .await
+        .map_err(|_| Failure::NoFileList(SITE_FILE_LIST.to_string()))?;
     let mut files = Vec::new();
     for path in String::from_utf8_lossy(&list).lines().map(str::trim).filter(|l| !l.is_empty()) {
         files.push((path.to_string(), fetch_bytes(&format!("{site}{path}")).await?));
     }
     let starters: Vec<_> = link.starter.into_iter().chain(link.starters).collect();
-    super::scorm_zip(link.exercise, starters, files).await.map_err(|e| e.to_string())?
+    super::scorm_zip(link.exercise, starters, files)
+        .await
+        .map_err(|e| Failure::Plain(e.to_string()))?
+        .map_err(Failure::Plain)
 }
 
 /// The answer to one message: a SCORM package's bytes (a `Uint8Array`), or the JSON text
@@ -166,7 +165,7 @@ pub async fn reply(message: JsValue) -> JsValue {
 async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
     let (exercise, statement_html) = match read(&link.exercise, base.as_deref()).await {
         Ok(read) => read,
-        Err(e) => return Reply::Error(format!("the exercise file cannot be used: {e}")),
+        Err(e) => return Reply::Error(Failure::FileUnusable(e)),
     };
     let link = link.arranged(&exercise);
     // The exercise was read just now: the link carries nothing the page would refuse.
@@ -198,7 +197,7 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
                 // The passes its diagram POUs need, fetched when missing.
                 match super::passes_for(project).await {
                     Ok(p) => passes = p,
-                    Err(e) => return Reply::Error(format!("the starter cannot be opened: {e}")),
+                    Err(e) => return Reply::Error(Failure::StarterBroken(e.to_string())),
                 }
             }
             files.push((name.to_string(), opened));
@@ -222,7 +221,7 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
                     })
                     .collect();
             }
-            Err(e) => return Reply::Error(e.to_string()),
+            Err(e) => return Reply::Error(Failure::Plain(e.to_string())),
         }
     }
     let view = ExerciseView::with_statement(&exercise, statement_html);
@@ -233,10 +232,9 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
 pub async fn reply_text(text: &str) -> String {
     let reply = match serde_json::from_str::<Request>(text) {
         Ok(request) => answer(request).await,
-        Err(e) => Reply::Error(format!("the exercise worker got a request it cannot read: {e}")),
+        Err(e) => Reply::Error(Failure::BadRequest(e.to_string())),
     };
-    serde_json::to_string(&reply)
-        .unwrap_or_else(|_| r#"{"Error":"the answer could not be written"}"#.into())
+    serde_json::to_string(&reply).unwrap_or_else(|_| r#"{"Error":"Unwritable"}"#.into())
 }
 
 #[cfg(test)]
@@ -359,13 +357,16 @@ mod tests {
 
     #[test]
     fn bad_requests_get_messages() {
-        assert!(reply("nonsense").contains("cannot read"));
+        let Reply::Error(e) = serde_json::from_str(&reply("nonsense")).unwrap() else { panic!() };
+        assert!(e.text().contains("cannot read"));
         let Reply::Error(e) = ask(Request::Shipped("nope".into())) else { panic!() };
-        assert!(e.contains("nope"));
+        assert!(e.text().contains("nope"));
         let Reply::Error(e) = ask(Request::Link("x=AAAA".into())) else { panic!() };
+        let e = e.text();
         assert!(e.contains("damaged"), "{e}");
         let bad = ExerciseLink { exercise: "id = 1".into(), starter: None, starters: Vec::new() };
         let Reply::Error(e) = ask(Request::File { link: bad, base: None }) else { panic!() };
+        let e = e.text();
         assert!(e.starts_with("the exercise file cannot be used: line 1"), "{e}");
         let Reply::Error(e) = ask(Request::Grade {
             exercise: "id = \"a\"\ntitle = \"A\"\nlevel = 1\n".into(),
@@ -373,6 +374,7 @@ mod tests {
         }) else {
             panic!()
         };
+        let e = e.text();
         assert!(e.contains("project cannot be read"), "{e}");
     }
 }

@@ -34,7 +34,11 @@ fn export_reply(what: &str, pou: &str, project_file: &str) -> String {
             match project.petri.iter().find(|p| p.name.eq_ignore_ascii_case(pou)) {
                 Some(net) => serde_json::json!({ "xml": plc_core::pnml::export(net) }),
                 None => {
-                    serde_json::json!({ "error": format!("the project has no Petri net POU named {pou}") })
+                    // `no_pou`: the page words it in the language shown.
+                    serde_json::json!({
+                        "error": format!("the project has no Petri net POU named {pou}"),
+                        "no_pou": pou,
+                    })
                 }
             }
         }

@@ -11,6 +11,7 @@ use plc_core::export::value_text;
 use plc_core::semantic::Type;
 use wasm_bindgen::JsCast;
 
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 use chart::{build, t_of, value_at, Chart, AXIS_H, LEFT, WIDTH};
 
@@ -126,7 +127,7 @@ pub fn Timeline() -> impl IntoView {
             return;
         }
         if state.with_sim(|s| s.executable().locate(&p).is_some()) != Some(true) {
-            state.error(format!("The program has no variable `{p}`."));
+            state.error(tf(K::sim_no_variable, &[("path", &p)]));
             return;
         }
         toggle(p, true);
@@ -140,13 +141,13 @@ pub fn Timeline() -> impl IntoView {
                 _ => match crate::lazy::timeline_file(state, kind == "csv").await {
                     Ok(text) => text,
                     Err(e) => {
-                        state.error(format!("Could not export: {e}"));
+                        state.error(tf(K::sim_export_failed, &[("error", &e.to_string())]));
                         return;
                     }
                 },
             };
             let Some(text) = text else {
-                state.error("Nothing to export yet.");
+                state.error(t(K::sim_nothing_to_export));
                 return;
             };
             let (name, mime) = match kind {
@@ -161,24 +162,24 @@ pub fn Timeline() -> impl IntoView {
     };
 
     view! {
-        <section class="panel timeline" aria-label="Timeline">
+        <section class="panel timeline" aria-label=t(K::sim_timeline)>
             <div class="panel-head">
-                <h2>"Timeline"</h2>
+                <h2>{t(K::sim_timeline)}</h2>
                 <div class="control-row">
-                    <button on:click=move |_| export("csv")>"Export CSV"</button>
-                    <button on:click=move |_| export("vcd")>"Export VCD"</button>
-                    <button on:click=move |_| export("svg")>"Export SVG"</button>
+                    <button on:click=move |_| export("csv")>{t(K::sim_export_csv)}</button>
+                    <button on:click=move |_| export("vcd")>{t(K::sim_export_vcd)}</button>
+                    <button on:click=move |_| export("svg")>{t(K::sim_export_svg)}</button>
                 </div>
             </div>
             <fieldset class="trace-pick">
-                <legend>"Variables on the timeline"</legend>
+                <legend>{t(K::sim_timeline_variables)}</legend>
                 {move || names.get().into_iter().map(|n| {
                     let on = {
                         let n = n.clone();
                         move || traced.with(|t| t.iter().any(|p| p.eq_ignore_ascii_case(&n)))
                     };
                     let name = n.clone();
-                    let label = format!("Chart {n}");
+                    let label = tf(K::sim_chart, &[("name", &n)]);
                     view! {
                         <label class="chip">
                             <input type="checkbox" aria-label=label prop:checked=on
@@ -188,11 +189,11 @@ pub fn Timeline() -> impl IntoView {
                     }
                 }).collect_view()}
                 <span class="add-path">
-                    <input class="mono" aria-label="Variable path" placeholder="e.g. T1.ET, Arr[2]"
+                    <input class="mono" aria-label=t(K::sim_variable_path) placeholder=t(K::sim_variable_path_placeholder)
                         prop:value=move || path_text.get()
                         on:input=move |ev| path_text.set(event_target_value(&ev))
                         on:keydown=move |ev| if ev.key() == "Enter" { add_path() }/>
-                    <button on:click=move |_| add_path()>"Add to timeline"</button>
+                    <button on:click=move |_| add_path()>{t(K::sim_add_to_timeline)}</button>
                 </span>
                 {move || traced.get().into_iter()
                     .filter(|p| !names.with(|n| n.iter().any(|x| x.eq_ignore_ascii_case(p))))
@@ -201,26 +202,26 @@ pub fn Timeline() -> impl IntoView {
                         view! {
                             <span class="chip">
                                 <code>{p.clone()}</code>
-                                <button class="small" aria-label=format!("Remove {p} from the timeline")
+                                <button class="small" aria-label=tf(K::sim_remove_from_timeline, &[("path", &p)])
                                     on:click=move |_| toggle(q.clone(), false)>"×"</button>
                             </span>
                         }
                     }).collect_view()}
             </fieldset>
             <div class="control-row">
-                <button aria-label="Zoom in" title="Zoom in" on:click=move |_| view.zoom(0.5, None, now())>"+"</button>
-                <button aria-label="Zoom out" title="Zoom out" on:click=move |_| view.zoom(2.0, None, now())>"−"</button>
-                <button aria-label="Pan left" title="Earlier" on:click=move |_| {
+                <button aria-label=t(K::sim_zoom_in) title=t(K::sim_zoom_in) on:click=move |_| view.zoom(0.5, None, now())>"+"</button>
+                <button aria-label=t(K::sim_zoom_out) title=t(K::sim_zoom_out) on:click=move |_| view.zoom(2.0, None, now())>"−"</button>
+                <button aria-label=t(K::sim_pan_left) title=t(K::sim_earlier) on:click=move |_| {
                     let s = view.span.get_untracked();
                     view.pan(-s / 4, now())
                 }>"◀"</button>
-                <button aria-label="Pan right" title="Later" on:click=move |_| {
+                <button aria-label=t(K::sim_pan_right) title=t(K::sim_later) on:click=move |_| {
                     let s = view.span.get_untracked();
                     view.pan(s / 4, now())
                 }>"▶"</button>
                 <button aria-pressed=move || if view.follow.get() { "true" } else { "false" }
                     class:active=move || view.follow.get()
-                    on:click=move |_| view.follow.update(|f| *f = !*f)>"Follow"</button>
+                    on:click=move |_| view.follow.update(|f| *f = !*f)>{t(K::sim_follow)}</button>
                 <span class="muted">{move || {
                     let (a, b) = chart.with(|c| c.window);
                     format!("{} – {}", chart::time_label(a, 1_000_000), chart::time_label(b, 1_000_000))
@@ -271,7 +272,7 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
         view.zoom(factor, view.cursor.get_untracked(), now());
     };
     view! {
-        <svg class="timeline-chart" role="img" aria-label="Timeline chart"
+        <svg class="timeline-chart" role="img" aria-label=t(K::sim_timeline_chart)
             xmlns="http://www.w3.org/2000/svg"
             viewBox=move || format!("0 0 {WIDTH} {}", height())
             width="100%"
@@ -297,8 +298,8 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
                         <rect class="tl-lane-bg" x=LEFT y=lane.top width=WIDTH - LEFT height=lane.height fill="#f7f9fb"/>
                         <text class="tl-series" x="4" y=lane.top + 14.0 fill=color font-weight="bold">{lane.path.clone()}</text>
                         {(!lane.digital).then(|| view! {
-                            <text class="tl-tick" x="4" y=lane.top + 28.0 fill="#5b6b7c">{format!("max {}", short(lane.range.1))}</text>
-                            <text class="tl-tick" x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{format!("min {}", short(lane.range.0))}</text>
+                            <text class="tl-tick" x="4" y=lane.top + 28.0 fill="#5b6b7c">{tf(K::sim_lane_max, &[("value", &short(lane.range.1))])}</text>
+                            <text class="tl-tick" x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{tf(K::sim_lane_min, &[("value", &short(lane.range.0))])}</text>
                         })}
                         <polyline class="tl-series" points=lane.points.clone() fill="none" stroke=color stroke-width="1.5"/>
                     </g>
@@ -352,8 +353,8 @@ fn Legend(chart: Memo<Chart>, view: View) -> impl IntoView {
     view! {
         <div class="legend" aria-live="off">
             <span class="legend-time">{move || match view.cursor.get().or_else(|| state.with_shown_view(|v| v.time_ns())) {
-                Some(t) => format!("at {}", chart::time_label(t, 1)),
-                None => "latest".to_string(),
+                Some(at) => tf(K::sim_at_time, &[("time", &chart::time_label(at, 1))]),
+                None => t(K::sim_latest).to_string(),
             }}</span>
             {move || rows().into_iter().enumerate().map(|(i, (p, v))| view! {
                 <span class="legend-item">
