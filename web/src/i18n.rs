@@ -42,6 +42,8 @@ pub struct I18n {
 thread_local! {
     /// The texts shown: English, or a fetched translation (kept for the page's life).
     static SHOWN: Cell<Option<&'static [String]>> = const { Cell::new(None) };
+    /// The language of the texts shown.
+    static SHOWN_LANG: Cell<Lang> = const { Cell::new(Lang::En) };
     /// The translations fetched so far.
     static FETCHED: Cell<[Option<&'static [String]>; 2]> = const { Cell::new([None, None]) };
 }
@@ -102,6 +104,7 @@ impl I18n {
     /// Shows `lang` with its `texts` (none for English).
     fn show(self, lang: Lang, texts: Option<&'static [String]>) {
         SHOWN.with(|s| s.set(texts));
+        SHOWN_LANG.with(|s| s.set(lang));
         if let Some(root) =
             web_sys::window().and_then(|w| w.document()).and_then(|d| d.document_element())
         {
@@ -180,4 +183,48 @@ pub fn tf(key: K, args: &[(&str, &str)]) -> String {
         text = text.replace(&format!("{{{name}}}"), value);
     }
     text
+}
+
+/// The key of a count's words in the form `n` takes in the language shown: `one` for 1;
+/// `few` for 2–4 (in Polish not 12–14, and also 22–24, 32–34 …); else `many`. English has
+/// the same text for `few` and `many`.
+pub fn plural(n: u64, one: K, few: K, many: K) -> K {
+    let lang = SHOWN_LANG.with(Cell::get);
+    match n {
+        1 => one,
+        2..=4 => few,
+        _ if lang == Lang::Pl && matches!(n % 10, 2..=4) && !matches!(n % 100, 12..=14) => few,
+        _ => many,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The form `plural` gives for `n` with `lang` shown.
+    fn form(lang: Lang, n: u64) -> K {
+        SHOWN_LANG.with(|s| s.set(lang));
+        let k = plural(n, K::editor_errors_one, K::editor_errors_few, K::editor_errors_many);
+        SHOWN_LANG.with(|s| s.set(Lang::En));
+        k
+    }
+
+    #[test]
+    fn counts_take_the_form_their_language_gives_them() {
+        for lang in Lang::ALL {
+            assert_eq!(form(lang, 1), K::editor_errors_one);
+            for n in [2, 3, 4] {
+                assert_eq!(form(lang, n), K::editor_errors_few, "{lang:?} {n}");
+            }
+            for n in [0, 5, 11, 12, 13, 14, 25, 112] {
+                assert_eq!(form(lang, n), K::editor_errors_many, "{lang:?} {n}");
+            }
+        }
+        // Polish says 22, 34 and 102 with the few form; Czech and English do not.
+        for n in [22, 34, 102] {
+            assert_eq!(form(Lang::Pl, n), K::editor_errors_few, "{n}");
+            assert_eq!(form(Lang::Cs, n), K::editor_errors_many, "{n}");
+        }
+    }
 }

@@ -13,7 +13,7 @@ use leptos::prelude::*;
 use crate::components::editor::text::{
     byte_to_utf16, gutter_html, highlight_html, offset_of, LineInfo, Mark,
 };
-use crate::components::problems::plural;
+use crate::i18n::plural;
 use crate::i18n::{t, tf, K};
 
 /// Pause after the last keystroke before the text is handed over.
@@ -199,7 +199,7 @@ pub fn DeclarationsBox(
             }>
             <summary>{t(K::editor_declarations)}
                 {move || (count() > 0).then(|| view! {
-                    <span class="ld-decl-count">{tf(plural(count(), K::editor_problem_count_one, K::editor_problem_count_few, K::editor_problem_count_many), &[("n", &count().to_string())])}</span>
+                    <span class="ld-decl-count">{tf(plural(count() as u64, K::editor_problem_count_one, K::editor_problem_count_few, K::editor_problem_count_many), &[("n", &count().to_string())])}</span>
                 })}
             </summary>
             <CodeField label=t(K::editor_declarations) text=text on_commit=on_commit on_leave=on_leave

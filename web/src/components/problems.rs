@@ -16,31 +16,13 @@ use plc_core::build::Site;
 use plc_core::diagnostics::Span;
 use plc_core::ladder::{implied_declaration, replace_name, CellRef, LadderEdit};
 
-use plc_core::i18n::Lang;
 
-use crate::i18n::{t, tf, I18n, K};
+use crate::i18n::{t, tf, K};
 use crate::state::{AppState, DiagView, PouView};
-
-/// The key of a count's words in the form its number takes: `one`, `few` or `many`, as
-/// Polish (2–4 but not 12–14: few) and Czech (2–4: few) choose it; English has the same
-/// text for `few` and `many`.
-pub fn plural(n: usize, one: K, few: K, many: K) -> K {
-    let czech = use_context::<I18n>().is_some_and(|i| i.shown.get_untracked() == Lang::Cs);
-    let few_form = if czech {
-        (2..=4).contains(&n)
-    } else {
-        (2..=4).contains(&(n % 10)) && !(12..=14).contains(&(n % 100))
-    };
-    match n {
-        1 => one,
-        _ if few_form => few,
-        _ => many,
-    }
-}
 
 /// `n` things in words (`1 error`, `3 errors`).
 fn count(n: usize, [one, few, many]: [K; 3]) -> String {
-    tf(plural(n, one, few, many), &[("n", &n.to_string())])
+    tf(crate::i18n::plural(n as u64, one, few, many), &[("n", &n.to_string())])
 }
 
 /// A quick fix offered beside a problem.
@@ -237,17 +219,8 @@ mod tests {
     use super::*;
 
     #[test]
-    fn counts_take_the_polish_form_and_keep_english() {
+    fn counts_keep_their_english_words() {
         let forms = [K::editor_errors_one, K::editor_errors_few, K::editor_errors_many];
-        let form = |n| plural(n, forms[0], forms[1], forms[2]);
-        // Without the page's language (no context) Polish rules apply.
-        assert_eq!(form(1), K::editor_errors_one);
-        for n in [2, 3, 4, 22, 34, 102] {
-            assert_eq!(form(n), K::editor_errors_few, "{n}");
-        }
-        for n in [0, 5, 11, 12, 13, 14, 21, 25, 112] {
-            assert_eq!(form(n), K::editor_errors_many, "{n}");
-        }
         assert_eq!(count(1, forms), "1 error");
         assert_eq!(count(3, forms), "3 errors");
         assert_eq!(count(0, forms), "0 errors");

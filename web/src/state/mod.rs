@@ -24,27 +24,7 @@ pub use past::{words as past_words, WhyQuery, WhyTarget};
 pub use projects::{clear_fragment, note_panic, project_file_name};
 pub use run::marking_of;
 
-/// The form of a counted text for `n` in the language shown (`<html lang>`): English and
-/// both other forms' `one` for 1 only; Polish `few` for 2–4 except 12–14, Czech `few` for
-/// 2–4; else `many`. English `few` and `many` are the same text.
-pub fn plural(n: u64, one: K, few: K, many: K) -> K {
-    // Natively (tests) the page is English.
-    #[cfg(target_arch = "wasm32")]
-    let lang = web_sys::window()
-        .and_then(|w| w.document())
-        .and_then(|d| d.document_element())
-        .and_then(|e| e.get_attribute("lang"))
-        .unwrap_or_default();
-    #[cfg(not(target_arch = "wasm32"))]
-    let lang = "en";
-
-    match n {
-        1 => one,
-        2..=4 => few,
-        _ if lang == "pl" && matches!(n % 10, 2..=4) && !matches!(n % 100, 12..=14) => few,
-        _ => many,
-    }
-}
+pub use crate::i18n::plural;
 
 /// How long after the last edit of a diagram the project is checked and saved.
 const CHECK_DELAY: std::time::Duration = std::time::Duration::from_millis(300);
