@@ -19,6 +19,7 @@ use plc_core::vm::Value;
 
 use crate::components::ladder::geometry::clip;
 use crate::components::pou_actions::{DiagramKind, PouActions};
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 
 /// Values on the network's outputs: (`localId`, pin) → value.
@@ -86,14 +87,16 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
         NetKind::LeftRail | NetKind::RightRail => {
             let on = e.kind == NetKind::LeftRail;
             (
-                if on { "Left power rail".to_string() } else { "Right power rail".to_string() },
+                if on { t(K::network_left_rail) } else { t(K::network_right_rail) }.to_string(),
                 view! { <rect class="nw-rail" class:powered=on x=x y=y width=w.max(3.0) height=h/> }
                     .into_any(),
             )
         }
         NetKind::Contact { operand, contact } => {
             let on = is_on(out(""));
-            let state = out("").map(|_| if on { ", passes power" } else { ", open" }).unwrap_or("");
+            let state = out("")
+                .map(|_| if on { t(K::network_passes_power) } else { t(K::network_open) })
+                .unwrap_or("");
             let (mid, cy) = (x + w / 2.0, y + h / 2.0);
             let mark = match contact {
                 ContactKind::NormallyOpen => "",
@@ -102,13 +105,13 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
                 ContactKind::Falling => "N",
             };
             let kind = match contact {
-                ContactKind::NormallyOpen => "Contact",
-                ContactKind::NormallyClosed => "Normally closed contact",
-                ContactKind::Rising => "Rising edge contact",
-                ContactKind::Falling => "Falling edge contact",
+                ContactKind::NormallyOpen => K::network_contact,
+                ContactKind::NormallyClosed => K::network_contact_nc,
+                ContactKind::Rising => K::network_contact_rising,
+                ContactKind::Falling => K::network_contact_falling,
             };
             (
-                format!("{kind} {operand}{state}"),
+                tf(kind, &[("operand", operand), ("state", state)]),
                 view! {
                     <g class="nw-sym" class:powered=on>
                         <line x1=x y1=cy x2=mid - 5.0 y2=cy/>
@@ -124,12 +127,14 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
         }
         NetKind::Coil { operand, coil } => {
             let on = is_on(out(""));
-            let state = out("").map(|_| if on { ", on" } else { ", off" }).unwrap_or("");
+            let state = out("")
+                .map(|_| if on { t(K::network_on) } else { t(K::network_off) })
+                .unwrap_or("");
             let (mid, cy) = (x + w / 2.0, y + h / 2.0);
             let r = (h / 2.0).max(6.0);
             let mark = crate::components::ladder::coil_letter(*coil);
             (
-                format!("Coil {operand}{state}"),
+                tf(K::network_coil, &[("operand", operand), ("state", state)]),
                 view! {
                     <g class="nw-sym" class:powered=on>
                         <line x1=x y1=cy x2=mid - 7.0 y2=cy/>
@@ -149,14 +154,20 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
                 .iter()
                 .filter_map(|p| shown(out(&p.name)).map(|v| format!("{} = {v}", p.name)))
                 .collect();
-            let label = format!(
-                "Block {type_name}{}{}",
-                instance.as_ref().map(|i| format!(" {i}")).unwrap_or_default(),
-                if outputs.is_empty() {
-                    String::new()
-                } else {
-                    format!(": {}", outputs.join(", "))
-                }
+            let label = tf(
+                K::network_block,
+                &[
+                    ("type", type_name),
+                    ("instance", &instance.as_ref().map(|i| format!(" {i}")).unwrap_or_default()),
+                    (
+                        "outputs",
+                        &if outputs.is_empty() {
+                            String::new()
+                        } else {
+                            format!(": {}", outputs.join(", "))
+                        },
+                    ),
+                ],
             );
             let pins_in = e
                 .inputs
@@ -206,9 +217,12 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
             let text = shown(value);
             let on = is_on(value);
             (
-                format!(
-                    "Variable {expr}{}",
-                    text.as_ref().map(|v| format!(" = {v}")).unwrap_or_default()
+                tf(
+                    K::network_variable,
+                    &[
+                        ("expr", expr),
+                        ("value", &text.as_ref().map(|v| format!(" = {v}")).unwrap_or_default()),
+                    ],
                 ),
                 view! {
                     <rect class="nw-var" class:on=on x=x y=y width=w height=h rx=h / 2.0/>
@@ -227,7 +241,7 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
                 .map(|l| clip(l, ((w / 7.0) as usize).max(4)))
                 .collect();
             (
-                format!("Comment {}", clip(text, 60)),
+                tf(K::network_comment, &[("text", &clip(text, 60))]),
                 view! {
                     <rect class="nw-comment" x=x y=y width=w height=h/>
                     {lines.into_iter().enumerate().map(|(k, l)| view! {
@@ -240,7 +254,10 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
         NetKind::Label { label } | NetKind::Jump { label } => {
             let jump = matches!(e.kind, NetKind::Jump { .. });
             (
-                format!("{} {label}", if jump { "Jump to" } else { "Label" }),
+                tf(
+                    if jump { K::network_jump } else { K::network_label },
+                    &[("label", label)],
+                ),
                 view! {
                     <rect class="nw-var" x=x y=y width=w height=h/>
                     <text class="nw-expr" x=x + w / 2.0 y=y + h / 2.0 + 4.0>{format!("{}{}", if jump { "▶ " } else { "" }, clip(label, 14))}</text>
@@ -249,7 +266,7 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
             )
         }
         NetKind::Return => (
-            "Return".to_string(),
+            t(K::network_return).to_string(),
             view! {
                 <rect class="nw-var" x=x y=y width=w height=h/>
                 <text class="nw-expr" x=x + w / 2.0 y=y + h / 2.0 + 4.0>"RETURN"</text>
@@ -267,7 +284,10 @@ fn element(e: &NetElement, values: &Values, faulty: bool) -> impl IntoView {
         NetKind::Connector { name } | NetKind::Continuation { name } => {
             let connector = matches!(e.kind, NetKind::Connector { .. });
             (
-                format!("{} {name}", if connector { "Connector" } else { "Continuation" }),
+                tf(
+                    if connector { K::network_connector } else { K::network_continuation },
+                    &[("name", name)],
+                ),
                 view! {
                     <path class="nw-var" d=format!("M{x} {y} L{} {y} L{} {} L{} {} L{x} {} Z", x + w - h / 2.0, x + w, y + h / 2.0, x + w - h / 2.0, y + h, y + h)/>
                     <text class="nw-expr" x=x + w / 2.0 y=y + h / 2.0 + 4.0>{clip(name, 14)}</text>
@@ -289,10 +309,9 @@ fn chart_element(e: &NetElement, active: bool) -> (String, AnyView) {
     let (x, y, w, h) = (e.x, e.y, e.width.max(1.0), e.height.max(1.0));
     match &e.kind {
         NetKind::Step { name, initial } => (
-            format!(
-                "{} {name}{}",
-                if *initial { "Initial step" } else { "Step" },
-                if active { ", active" } else { "" }
+            tf(
+                if *initial { K::network_initial_step } else { K::network_step },
+                &[("name", name), ("active", if active { t(K::network_active) } else { "" })],
             ),
             view! {
                 <rect class="nw-step" class:active=active x=x y=y width=w height=h/>
@@ -313,9 +332,9 @@ fn chart_element(e: &NetElement, active: bool) -> (String, AnyView) {
             let cy = y + h / 2.0;
             (
                 if text.is_empty() {
-                    "Transition".to_string()
+                    t(K::network_transition).to_string()
                 } else {
-                    format!("Transition {}", clip(&text, 60))
+                    tf(K::network_transition_condition, &[("condition", &clip(&text, 60))])
                 },
                 view! {
                     <line class="nw-chart" x1=x + w / 2.0 y1=y x2=x + w / 2.0 y2=y + h/>
@@ -326,7 +345,7 @@ fn chart_element(e: &NetElement, active: bool) -> (String, AnyView) {
             )
         }
         NetKind::JumpStep { target } => (
-            format!("Jump to step {target}"),
+            tf(K::network_jump_step, &[("target", target)]),
             view! {
                 <path class="nw-jump" d=format!("M{x} {y} L{} {y} L{} {} Z", x + w, x + w / 2.0, y + h)/>
                 <text class="nw-cond" x=x + w + 4.0 y=y + h / 2.0 + 4.0>{clip(target, 14)}</text>
@@ -351,7 +370,7 @@ fn chart_element(e: &NetElement, active: bool) -> (String, AnyView) {
                 .collect::<Vec<_>>()
                 .join(", ");
             (
-                format!("Actions {label}"),
+                tf(K::network_actions, &[("actions", &label)]),
                 view! {
                     <rect class="nw-box" x=x y=y width=w height=h/>
                     <line class="nw-chart" x1=x + q_w y1=y x2=x + q_w y2=y + h/>
@@ -372,12 +391,12 @@ fn chart_element(e: &NetElement, active: bool) -> (String, AnyView) {
                 kind,
                 NetKind::SimultaneousDivergence | NetKind::SimultaneousConvergence
             );
-            let name = match kind {
-                NetKind::SelectionDivergence => "Selection divergence",
-                NetKind::SelectionConvergence => "Selection convergence",
-                NetKind::SimultaneousDivergence => "Simultaneous divergence",
-                _ => "Simultaneous convergence",
-            };
+            let name = t(match kind {
+                NetKind::SelectionDivergence => K::network_selection_divergence,
+                NetKind::SelectionConvergence => K::network_selection_convergence,
+                NetKind::SimultaneousDivergence => K::network_simultaneous_divergence,
+                _ => K::network_simultaneous_convergence,
+            });
             (
                 name.to_string(),
                 view! {
@@ -397,14 +416,14 @@ fn network_svg(net: &NetworkPou, values: &Values, faulty: &HashSet<String>) -> A
     let (x0, x1) = xs.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
     let (y0, y1) = ys.fold((f64::MAX, f64::MIN), |(a, b), y| (a.min(y), b.max(y)));
     if !x0.is_finite() || !y0.is_finite() {
-        return view! { <p class="muted">"The network has no elements."</p> }.into_any();
+        return view! { <p class="muted">{t(K::network_no_elements)}</p> }.into_any();
     }
     let (vx, vy) = (x0 - 40.0, y0 - 30.0);
     let (vw, vh) = (x1 - x0 + 100.0, y1 - y0 + 60.0);
     let language = net.language.name();
     view! {
         <svg class="nw-svg" viewBox=format!("{vx} {vy} {vw} {vh}") width=vw height=vh
-            role="group" aria-label=format!("{language} network {}", net.name)>
+            role="group" aria-label=tf(K::network_label_aria, &[("language", language), ("name", &net.name)])>
             {wires(net, values)}
             {net.elements.iter().map(|e| element(e, values, faulty.contains(&e.id))).collect_view()}
         </svg>
@@ -506,10 +525,14 @@ pub fn NetworkView(name: String) -> impl IntoView {
         }
         let kind = net.with(|n| n.as_ref().map_or(NetworkPouKind::Program, |n| n.kind));
         Some(match (kind, state.running.get()) {
-            (NetworkPouKind::Function, _) => "A function's network runs inside its callers, which keep none of its values: shown without values.".to_string(),
-            (NetworkPouKind::FunctionBlock, Some(r)) => format!("PROGRAM {r} has no instance of {name}: shown without values."),
-            (NetworkPouKind::Program, Some(r)) => format!("The simulator runs PROGRAM {r}: choose {name} under Simulation to see the values on this network."),
-            (_, None) => "Not running: the project has errors or no PROGRAM.".to_string(),
+            (NetworkPouKind::Function, _) => t(K::network_status_function).to_string(),
+            (NetworkPouKind::FunctionBlock, Some(r)) => {
+                tf(K::network_status_no_instance, &[("program", &r), ("name", &name)])
+            }
+            (NetworkPouKind::Program, Some(r)) => {
+                tf(K::network_status_other, &[("program", &r), ("name", &name)])
+            }
+            (_, None) => t(K::network_status_idle).to_string(),
         })
     };
     let instance_picker = move || {
@@ -517,8 +540,8 @@ pub fn NetworkView(name: String) -> impl IntoView {
         (!list.is_empty()).then(|| {
             let current = instance.get().unwrap_or_default();
             view! {
-                <label class="nw-instance">"Instance "
-                    <select aria-label="Instance" on:change=move |ev| picked.set(Some(event_target_value(&ev)))>
+                <label class="nw-instance">{t(K::network_instance)}" "
+                    <select aria-label=t(K::network_instance) on:change=move |ev| picked.set(Some(event_target_value(&ev)))>
                         {list.into_iter().map(|i| {
                             let selected = i == current;
                             view! { <option value=i.clone() selected=selected>{i.clone()}</option> }
@@ -531,18 +554,18 @@ pub fn NetworkView(name: String) -> impl IntoView {
     let language =
         move || net.with(|n| n.as_ref().map_or(NetworkLanguage::Ld, |n| n.language).name());
     view! {
-        <section class="panel network-view" aria-label=move || format!("{} network {title}", language())>
+        <section class="panel network-view" aria-label=move || tf(K::network_label_aria, &[("language", language()), ("name", &title)])>
             <div class="ed-toolbar">
                 <h2>{language}</h2>
                 <span class="pou-title">{shown_name}</span>
                 <span class="ed-spacer"></span>
                 {instance_picker}
-                <span class="view-note-inline">"As drawn in the imported file"</span>
+                <span class="view-note-inline">{t(K::network_as_drawn)}</span>
                 <PouActions kind=DiagramKind::Network name=actions_name/>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             {move || focused.get().map(|id| view! {
-                <p class="view-note" role="status">{format!("Element localId {id} is marked in red.")}</p>
+                <p class="view-note" role="status">{tf(K::network_marked, &[("id", &id)])}</p>
             })}
             <div class="nw-wrap" tabindex="0">
                 {move || match net.get() {
@@ -553,7 +576,7 @@ pub fn NetworkView(name: String) -> impl IntoView {
                         }
                         values.with(|v| network_svg(&n, v, &marked))
                     }
-                    None => view! { <p class="muted">"This network POU is no longer in the project."</p> }.into_any(),
+                    None => view! { <p class="muted">{t(K::network_gone)}</p> }.into_any(),
                 }}
             </div>
         </section>

@@ -9,6 +9,7 @@ use plc_core::sfc::outline::{outlines, ChartLayout, Outline};
 use plc_core::vm::Value;
 
 use crate::components::ladder::geometry::clip;
+use crate::i18n::{t, tf, K};
 use crate::state::{AppState, PouView};
 
 /// Half the width and height of a step box.
@@ -80,7 +81,7 @@ fn chart_svg(chart: &Outline, active: Memo<Vec<bool>>) -> impl IntoView {
     let (x0, x1) = xs.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
     let (y0, y1) = ys.fold((f64::MAX, f64::MIN), |(a, b), y| (a.min(y), b.max(y)));
     if !x0.is_finite() {
-        return view! { <p class="muted">"The chart has no steps."</p> }.into_any();
+        return view! { <p class="muted">{t(K::sfc_no_steps)}</p> }.into_any();
     }
     let lane = x1 + STEP_HW + 150.0;
     let (vx, vy) = (x0 - STEP_HW - 150.0, y0 - STEP_HH - 40.0);
@@ -93,10 +94,12 @@ fn chart_svg(chart: &Outline, active: Memo<Vec<bool>>) -> impl IntoView {
         .map(|(t, tr)| {
             let (x, y) = lay.transitions[t];
             let name = tr.name.clone().unwrap_or_default();
-            let label = format!(
-                "Transition {}{}",
-                if name.is_empty() { String::new() } else { format!("{name} ") },
-                tr.condition
+            let label = tf(
+                K::sfc_transition,
+                &[
+                    ("name", &if name.is_empty() { String::new() } else { format!("{name} ") }),
+                    ("condition", &tr.condition),
+                ],
             );
             view! {
                 <g class="sfc-transition" role="img" aria-label=label>
@@ -120,10 +123,9 @@ fn chart_svg(chart: &Outline, active: Memo<Vec<bool>>) -> impl IntoView {
             let initial = s.initial;
             view! {
                 <g class="sfc-step" class:active=is_active role="img" data-step=name.clone()
-                    aria-label=move || format!(
-                        "{} {name}{}",
-                        if initial { "Initial step" } else { "Step" },
-                        if is_active() { ", active" } else { "" }
+                    aria-label=move || tf(
+                        if initial { K::sfc_initial_step } else { K::sfc_step },
+                        &[("name", &name), ("active", if is_active() { t(K::sfc_active) } else { "" })],
                     )>
                     <rect x=x - STEP_HW y=y - STEP_HH width=2.0 * STEP_HW height=2.0 * STEP_HH rx="2"/>
                     {initial.then(|| view! {
@@ -140,7 +142,7 @@ fn chart_svg(chart: &Outline, active: Memo<Vec<bool>>) -> impl IntoView {
         .collect_view();
     view! {
         <svg class="sfc-svg" viewBox=format!("{vx} {vy} {vw} {vh}") width=vw height=vh
-            role="group" aria-label=format!("SFC chart {}", chart.pou)>
+            role="group" aria-label=tf(K::sfc_chart, &[("name", &chart.pou)])>
             <defs>
                 <marker id="sfc-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6"
                     markerHeight="6" orient="auto-start-reverse">
@@ -193,25 +195,25 @@ pub fn SfcView(name: String) -> impl IntoView {
         }
         let program = chart.with(|c| c.as_ref().is_some_and(|c| c.program));
         Some(match (program, state.running.get()) {
-            (false, _) => "A function block's chart runs inside its instances: shown without its active steps.".to_string(),
-            (true, Some(r)) => format!("The simulator runs PROGRAM {r}: choose {name} under Simulation to see its active steps."),
-            (true, None) => "Not running: the project has errors or no PROGRAM.".to_string(),
+            (false, _) => t(K::sfc_status_fb).to_string(),
+            (true, Some(r)) => tf(K::sfc_status_other, &[("program", &r), ("name", &name)]),
+            (true, None) => t(K::sfc_status_idle).to_string(),
         })
     };
     view! {
-        <section class="panel sfc-view" aria-label=format!("SFC chart {title}")>
+        <section class="panel sfc-view" aria-label=tf(K::sfc_chart, &[("name", &title)])>
             <div class="ed-toolbar">
                 <h2>"SFC"</h2>
                 <span class="pou-title">{title.clone()}</span>
                 <span class="ed-spacer"></span>
-                <button title="The chart is written as text in the ST source"
-                    on:click=move |_| state.view.set(PouView::St)>"Edit as text"</button>
+                <button title=t(K::sfc_edit_as_text_title)
+                    on:click=move |_| state.view.set(PouView::St)>{t(K::sfc_edit_as_text)}</button>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             <div class="sfc-wrap" tabindex="0">
                 {move || match chart.get() {
                     Some(c) => chart_svg(&c, active).into_any(),
-                    None => view! { <p class="muted">"This POU is no longer a chart in the ST source."</p> }.into_any(),
+                    None => view! { <p class="muted">{t(K::sfc_gone)}</p> }.into_any(),
                 }}
             </div>
         </section>

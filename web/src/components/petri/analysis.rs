@@ -7,12 +7,13 @@ use leptos::prelude::*;
 use plc_core::petri::{analyze, build, conflicts, panel_budget, NetAnalysis, PetriPou, PtNet};
 
 use super::play::Play;
+use crate::i18n::{t, tf, K};
 
 fn verdict(v: Option<bool>) -> (&'static str, &'static str) {
     match v {
-        Some(true) => ("yes", "chip chip-yes"),
-        Some(false) => ("no", "chip chip-no"),
-        None => ("unknown", "chip"),
+        Some(true) => (t(K::petri_yes), "chip chip-yes"),
+        Some(false) => (t(K::petri_no), "chip chip-no"),
+        None => (t(K::petri_unknown), "chip"),
     }
 }
 
@@ -40,24 +41,25 @@ fn conflict_list(pou: &PetriPou, net: &PtNet) -> impl IntoView {
         .into_iter()
         .filter(|c| !c.exclusive)
         .map(|c| {
-            format!(
-                "{} and {} both take the token of {}: {} is tested first (priority {} against {})",
-                net.transition_names[c.first],
-                net.transition_names[c.second],
-                net.place_names[c.place],
-                net.transition_names[c.first],
-                pou.net.transitions[c.first].priority,
-                pou.net.transitions[c.second].priority,
+            tf(
+                K::petri_conflict,
+                &[
+                    ("first", &net.transition_names[c.first]),
+                    ("second", &net.transition_names[c.second]),
+                    ("place", &net.place_names[c.place]),
+                    ("first_priority", &pou.net.transitions[c.first].priority.to_string()),
+                    ("second_priority", &pou.net.transitions[c.second].priority.to_string()),
+                ],
             )
         })
         .collect();
     view! {
-        <h3>"Conflicts"</h3>
+        <h3>{t(K::petri_conflicts)}</h3>
         {if list.is_empty() {
-            view! { <p class="small-text">"None: the generated code does not depend on priorities."</p> }.into_any()
+            view! { <p class="small-text">{t(K::petri_conflicts_none)}</p> }.into_any()
         } else {
             view! {
-                <ul class="pn-conflicts small-text" aria-label="Conflicts">
+                <ul class="pn-conflicts small-text" aria-label=t(K::petri_conflicts)>
                     {list.into_iter().map(|c| view! { <li>{c}</li> }).collect_view()}
                 </ul>
             }.into_any()
@@ -74,45 +76,54 @@ fn summary(net: &PtNet, a: &NetAnalysis, play: RwSignal<Option<Play>>) -> impl I
         None
     };
     let rows = [
-        ("Safe", a.safe),
-        ("Bounded", a.bounded),
-        ("Live", a.live),
-        ("Reversible", a.reversible),
-        ("Deadlock-free", deadlock_free),
+        (t(K::petri_safe), a.safe),
+        (t(K::petri_bounded), a.bounded),
+        (t(K::petri_live), a.live),
+        (t(K::petri_reversible), a.reversible),
+        (t(K::petri_deadlock_free), deadlock_free),
     ];
-    let t = |i: usize| net.transition_names[i].clone();
+    let name_of = |i: usize| net.transition_names[i].clone();
     let deadlocks = a
         .deadlocks
         .iter()
         .map(|d| {
-            let path: Vec<String> = d.path.iter().map(|&i| t(i)).collect();
+            let path: Vec<String> = d.path.iter().map(|&i| name_of(i)).collect();
             let path =
-                if path.is_empty() { "at the start".to_string() } else { path.join(" → ") };
+                if path.is_empty() { t(K::petri_at_the_start).to_string() } else { path.join(" → ") };
             let steps = d.path.clone();
             view! {
                 <li>
-                    <button class="link" title="Play the firing sequence on the net, one transition per step"
+                    <button class="link" title=t(K::petri_deadlock_play_title)
                         on:click=move |_| play.set(Some(Play { path: steps.clone(), step: 0, game: false }))>
-                        {format!("{} after {path}", marking_text(net, &d.marking))}
+                        {tf(K::petri_deadlock_after, &[("marking", &marking_text(net, &d.marking)), ("path", &path)])}
                     </button>
                 </li>
             }
         })
         .collect_view();
     let dead = match &a.dead_transitions {
-        Some(d) if d.is_empty() => "none".to_string(),
-        Some(d) => d.iter().map(|&i| t(i)).collect::<Vec<_>>().join(", "),
-        None => "unknown (the search was cut short)".to_string(),
+        Some(d) if d.is_empty() => t(K::petri_dead_none).to_string(),
+        Some(d) => d.iter().map(|&i| name_of(i)).collect::<Vec<_>>().join(", "),
+        None => t(K::petri_dead_unknown).to_string(),
     };
     let uncovered: Vec<String> = a.uncovered.iter().map(|&i| net.place_names[i].clone()).collect();
     let components = a.components.len();
+    let uncovered = if uncovered.is_empty() {
+        String::new()
+    } else {
+        tf(K::petri_uncovered, &[("places", &uncovered.join(", "))])
+    };
+    let markings = tf(
+        super::plural(
+            a.states as u64,
+            [K::petri_markings_one, K::petri_markings_few, K::petri_markings_many],
+        ),
+        &[("n", &a.states.to_string())],
+    );
+    let incomplete = if a.complete { "" } else { t(K::petri_analysis_incomplete) };
     view! {
         <p class="muted small-text">
-            {format!(
-                "{} reachable markings{}. Guards are ignored: this describes what the net allows.",
-                a.states,
-                if a.complete { "" } else { " (incomplete: the search budget ran out)" }
-            )}
+            {tf(K::petri_analysis_note, &[("markings", &markings), ("incomplete", incomplete)])}
         </p>
         <dl class="pn-verdicts">
             {rows.into_iter().map(|(name, v)| {
@@ -121,14 +132,11 @@ fn summary(net: &PtNet, a: &NetAnalysis, play: RwSignal<Option<Play>>) -> impl I
             }).collect_view()}
         </dl>
         {(!a.deadlocks.is_empty()).then(|| view! {
-            <h3>"Deadlocks"</h3>
+            <h3>{t(K::petri_deadlocks)}</h3>
             <ul class="pn-deadlocks">{deadlocks}</ul>
         })}
-        <p class="small-text">{format!("Dead transitions: {dead}")}</p>
-        <p class="small-text">{format!(
-            "State-machine components: {components}{}",
-            if uncovered.is_empty() { String::new() } else { format!("; not covered: {}", uncovered.join(", ")) }
-        )}</p>
+        <p class="small-text">{tf(K::petri_dead_transitions, &[("dead", &dead)])}</p>
+        <p class="small-text">{tf(K::petri_state_machine_components, &[("count", &components.to_string()), ("uncovered", &uncovered)])}</p>
     }
 }
 
@@ -147,8 +155,7 @@ pub fn AnalysisPanel(pou: Memo<Option<PetriPou>>, play: RwSignal<Option<Play>>) 
                 view! { {summary(&net, &a, play)} {pou} }.into_any()
             }
             Some(Err(_)) => {
-                view! { <p class="muted">"Fix the net's errors (see Problems) to analyse it."</p> }
-                    .into_any()
+                view! { <p class="muted">{t(K::petri_analysis_fix_errors)}</p> }.into_any()
             }
             None => ().into_any(),
         })
@@ -159,7 +166,7 @@ pub fn AnalysisPanel(pou: Memo<Option<PetriPou>>, play: RwSignal<Option<Play>>) 
             let el = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlDetailsElement>().ok());
             open.set(el.is_some_and(|d| d.open()));
         }>
-            <summary>"Analysis (safe, live, reversible, deadlocks)"</summary>
+            <summary>{t(K::petri_analysis)}</summary>
             {body}
         </details>
     }

@@ -8,6 +8,7 @@ use leptos::html;
 use leptos::prelude::*;
 
 use crate::components::editor::text::{gutter_html, highlight_html};
+use crate::i18n::{t, K};
 
 /// Line height of the code view in pixels (must match `--code-line` in editor.css).
 const LINE_PX: f64 = 18.0;
@@ -143,7 +144,7 @@ pub fn CodePanel(
     view! {
         <div class="code-frame" node_ref=frame tabindex="0">
             <div class="ed-gutter code-gutter" aria-hidden="true" inner_html=move || gutter.get()></div>
-            <pre class="code-view code-lines" aria-label="Generated CASE OF code" on:click=click>
+            <pre class="code-view code-lines" aria-label=t(K::petri_generated_code) on:click=click>
                 {selected_bands}
                 {bands}
                 <code inner_html=move || html.get()></code>

@@ -6,6 +6,7 @@ use plc_core::build::Site;
 use plc_core::petri::{NetElement, PetriPou};
 
 use crate::components::editor::text::{highlight_html, offset_of, Mark};
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 
 /// The title and ST text of an element.
@@ -13,21 +14,30 @@ fn element_text(pou: &PetriPou, element: &NetElement) -> (String, String) {
     let net = &pou.net;
     match element {
         NetElement::Place(id) => match net.place(id) {
-            Some(p) => (format!("Place {id}: actions (CASE label {})", p.label), p.actions.clone()),
-            None => (format!("Place {id}"), String::new()),
+            Some(p) => (
+                tf(K::petri_place_actions, &[("name", id), ("label", &p.label.to_string())]),
+                p.actions.clone(),
+            ),
+            None => (tf(K::petri_place_name, &[("name", id)]), String::new()),
         },
         NetElement::Transition(id) => match net.transition(id) {
-            Some(t) => {
-                (format!("Transition {id}: guard (priority {})", t.priority), t.guard.clone())
-            }
-            None => (format!("Transition {id}"), String::new()),
+            Some(tr) => (
+                tf(
+                    K::petri_transition_guard,
+                    &[("name", id), ("priority", &tr.priority.to_string())],
+                ),
+                tr.guard.clone(),
+            ),
+            None => (tf(K::petri_transition_name, &[("name", id)]), String::new()),
         },
-        NetElement::Prologue => ("Prologue".into(), pou.prologue.clone()),
-        NetElement::Epilogue => ("Epilogue".into(), pou.epilogue.clone()),
-        NetElement::Declarations => ("Declarations".into(), pou.declarations.clone()),
+        NetElement::Prologue => (t(K::petri_prologue).into(), pou.prologue.clone()),
+        NetElement::Epilogue => (t(K::petri_epilogue).into(), pou.epilogue.clone()),
+        NetElement::Declarations => (t(K::petri_declarations).into(), pou.declarations.clone()),
         NetElement::Emergency => match &net.emergency {
-            Some(e) => (format!("Emergency: place {}, condition", e.place), e.condition.clone()),
-            None => ("Emergency".into(), String::new()),
+            Some(e) => {
+                (tf(K::petri_emergency_condition, &[("place", &e.place)]), e.condition.clone())
+            }
+            None => (t(K::petri_emergency).into(), String::new()),
         },
         other => (other.to_string(), String::new()),
     }
@@ -57,12 +67,13 @@ pub fn ElementDetails(pou: Memo<Option<PetriPou>>, name: StoredValue<String>) ->
                 .map(|d| format!("{}  {}", d.code, d.message))
                 .collect()
         });
-        let shown = if text.trim().is_empty() { "(empty)".to_string() } else { text.clone() };
+        let shown =
+            if text.trim().is_empty() { t(K::petri_empty).to_string() } else { text.clone() };
         Some(view! {
-            <div class="pn-details" aria-label="Selected element">
+            <div class="pn-details" aria-label=t(K::petri_details)>
                 <div class="panel-head">
                     <h3>{title}</h3>
-                    <button class="close" aria-label="Close the details" on:click=move |_| state.focus.set(None)>"×"</button>
+                    <button class="close" aria-label=t(K::petri_close_details) on:click=move |_| state.focus.set(None)>"×"</button>
                 </div>
                 <pre class="code-view" tabindex="0"><code inner_html=highlight_html(&shown, &marks)></code></pre>
                 {(!problems.is_empty()).then(|| view! {

@@ -8,6 +8,7 @@ use plc_core::petri::{NetEdit, PetriPou, Position};
 use plc_core::project::History;
 
 use super::layout::{layout, Point};
+use crate::i18n::{tf, K};
 use crate::state::AppState;
 
 /// The canvas grid: new and moved elements snap to it, arrow keys move by one step.
@@ -31,12 +32,12 @@ pub enum NetTool {
 
 impl NetTool {
     /// Every tool with its button text (its accessible name).
-    pub fn all() -> [(NetTool, &'static str); 4] {
+    pub fn all() -> [(NetTool, K); 4] {
         [
-            (NetTool::Select, "Select"),
-            (NetTool::Place, "Place"),
-            (NetTool::Transition, "Transition"),
-            (NetTool::Arc, "Arc"),
+            (NetTool::Select, K::petri_select),
+            (NetTool::Place, K::petri_place),
+            (NetTool::Transition, K::petri_transition),
+            (NetTool::Arc, K::petri_arc),
         ]
     }
 }
@@ -157,7 +158,7 @@ impl NetEditor {
             match next.apply(e) {
                 Ok(p) => next = p,
                 Err(err) => {
-                    self.state.error(format!("Not changed: {err}."));
+                    self.state.error(tf(K::petri_not_changed, &[("error", &err.to_string())]));
                     return false;
                 }
             }
@@ -456,7 +457,7 @@ mod tests {
         assert_eq!(snap(29.0), 20.0);
         assert_eq!(snap(31.0), 40.0);
         assert_eq!(snap(-11.0), -20.0);
-        let names: Vec<&str> = NetTool::all().iter().map(|(_, n)| *n).collect();
+        let names: Vec<&str> = NetTool::all().iter().map(|(_, n)| n.en()).collect();
         assert_eq!(names, ["Select", "Place", "Transition", "Arc"]);
     }
 }

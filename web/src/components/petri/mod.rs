@@ -18,10 +18,12 @@ mod props;
 use leptos::prelude::*;
 use plc_core::build::Site;
 use plc_core::export::value_number;
+use plc_core::i18n::Lang;
 use plc_core::petri::{build, compile, Compiled, NetElement, PetriPou, PtNet};
 
 use crate::components::ladder::{geometry::clip, scroll_to};
 use crate::components::pou_actions::{DiagramKind, PouActions};
+use crate::i18n::{t, tf, I18n, K};
 use crate::state::{marking_of, AppState, RunMode};
 use analysis::AnalysisPanel;
 use code::CodePanel;
@@ -39,6 +41,18 @@ const FLY_MS: u64 = 260;
 
 /// Characters of a guard shown beside its transition.
 const GUARD_CHARS: usize = 26;
+
+/// The form of a count's noun: `one`, `few` or `many` of `forms`, as the language shown
+/// says (English: 1 or not; Polish: 2–4 but not 12–14 few; Czech: 2–4 few).
+pub(super) fn plural(n: u64, [one, few, many]: [K; 3]) -> K {
+    let lang = use_context::<I18n>().map(|i| i.shown.get_untracked()).unwrap_or_default();
+    match (lang, n) {
+        (_, 1) => one,
+        (Lang::Pl, n) if (2..=4).contains(&(n % 10)) && !(12..=14).contains(&(n % 100)) => few,
+        (Lang::Cs, 2..=4) => few,
+        _ => many,
+    }
+}
 
 /// Everything the drawing's reactive parts share.
 #[derive(Clone, Copy)]
@@ -176,8 +190,8 @@ fn place_view(
     let tokens = move || ctx.tokens.with(|t| t.get(i).copied().unwrap_or(0));
     let el = StoredValue::new(element);
     let title = format!(
-        "{shown} (CASE label {}){}",
-        place.label,
+        "{}{}",
+        tf(K::petri_place_title, &[("name", &shown), ("label", &place.label.to_string())]),
         if place.actions.trim().is_empty() {
             String::new()
         } else {
@@ -200,7 +214,11 @@ fn place_view(
             data-tokens=move || tokens().to_string()
             aria-label=move || {
                 let n = tokens();
-                format!("Place {label_name}: {n} token{}", if n == 1 { "" } else { "s" })
+                let key = plural(
+                    n.into(),
+                    [K::petri_place_tokens_one, K::petri_place_tokens_few, K::petri_place_tokens_many],
+                );
+                tf(key, &[("name", &label_name), ("n", &n.to_string())])
             }
             on:pointerdown=move |ev: leptos::ev::PointerEvent| ctx.press(&pid, c, &ev)
             on:focus=move |_| ctx.focus(&place_id)
@@ -223,7 +241,7 @@ fn place_view(
 
 /// `Why does P3 hold a token?` beside a place of the running net (issue 36).
 fn why_place(state: AppState, id: &str, c: Point) -> impl IntoView {
-    let label = plc_core::why::why_place_label(id);
+    let label = tf(K::petri_why_place, &[("place", id)]);
     let id = StoredValue::new(id.to_string());
     let ask = move || id.with_value(|p| state.ask_why_place(p));
     let (x, y) = (c.x + PLACE_R + 4.0, c.y - PLACE_R - 4.0);
@@ -241,7 +259,7 @@ fn why_place(state: AppState, id: &str, c: Point) -> impl IntoView {
                     ask();
                 }
             }>
-            <title>"Why?"</title>
+            <title>{t(K::petri_why)}</title>
             <circle cx=x cy=y r="7"/>
             <text x=x y=y + 4.0 text-anchor="middle">"?"</text>
         </g>
@@ -256,19 +274,22 @@ fn transition_view(
     bar: Bar,
     label_left: bool,
 ) -> AnyView {
-    let t = &pou.net.transitions[j];
-    let element = NetElement::Transition(t.id.clone());
-    let shown = if t.name.trim().is_empty() { t.id.clone() } else { t.name.clone() };
+    let tr = &pou.net.transitions[j];
+    let element = NetElement::Transition(tr.id.clone());
+    let shown = if tr.name.trim().is_empty() { tr.id.clone() } else { tr.name.clone() };
     let guard =
-        if t.guard.trim().is_empty() { "TRUE".to_string() } else { t.guard.trim().to_string() };
+        if tr.guard.trim().is_empty() { "TRUE".to_string() } else { tr.guard.trim().to_string() };
     let (hw, hh) = bar.half();
     let el = StoredValue::new(element);
     let fired = move || ctx.fired.with(|f| f.get(j).copied().unwrap_or(false));
     let enabled = move || ctx.enabled.with(|f| f.get(j).copied().unwrap_or(false));
-    let title = format!("{shown}: {guard} (priority {})", t.priority);
+    let title = tf(
+        K::petri_transition_title,
+        &[("name", &shown), ("guard", &guard), ("priority", &tr.priority.to_string())],
+    );
     let (label_x, anchor) =
         if label_left { (c.x - hw - 6.0, "end") } else { (c.x + hw + 6.0, "start") };
-    let id = t.id.clone();
+    let id = tr.id.clone();
     let (pid, kid, sid, fid) = (id.clone(), id.clone(), id.clone(), id.clone());
     let label_name = shown.clone();
     view! {
@@ -279,15 +300,15 @@ fn transition_view(
             class:faulted=move || el.with_value(|e| ctx.is(ctx.state.fault_site.get(), e))
             class:selected=move || ctx.is_selected(&sid)
             class:arc-from=move || ctx.editor.arc_from.with(|a| a.as_deref() == Some(id.as_str()))
-            id=ctx.editor.element_dom_id(&t.id) data-id=t.id.clone() role="button" tabindex="0"
+            id=ctx.editor.element_dom_id(&tr.id) data-id=tr.id.clone() role="button" tabindex="0"
             aria-label=move || {
-                let mut label = format!("Transition {label_name}");
+                let mut label = tf(K::petri_transition_name, &[("name", &label_name)]);
                 if ctx.runs.get() {
                     if enabled() {
-                        label.push_str(", enabled");
+                        label.push_str(t(K::petri_state_enabled));
                     }
                     if fired() {
-                        label.push_str(", fired");
+                        label.push_str(t(K::petri_state_fired));
                     }
                 }
                 label
@@ -378,7 +399,7 @@ fn net_svg(
             Some(view! {
                 <line class="pn-arc" class:selected=selected x1=s.x y1=s.y x2=e.x y2=e.y marker-end="url(#pn-arrow)"/>
                 <line class="pn-arc-hit" x1=s.x y1=s.y x2=e.x y2=e.y data-arc="1"
-                    role="button" aria-label=format!("Arc from {} to {}", a.from, a.to)
+                    role="button" aria-label=tf(K::petri_arc_label, &[("from", &a.from), ("to", &a.to)])
                     on:pointerdown=move |ev: leptos::ev::PointerEvent| {
                         ev.stop_propagation();
                         if ctx.editor.tool.get_untracked() == NetTool::Select {
@@ -457,7 +478,7 @@ fn net_svg(
     view! {
         <svg class="pn-svg" viewBox=format!("{vx} {vy} {vw} {vh}")
             width=move || vw * zoom.get() height=move || vh * zoom.get()
-            id=ctx.editor.canvas_id() role="group" aria-label="Net canvas"
+            id=ctx.editor.canvas_id() role="group" aria-label=t(K::petri_net_canvas)
             class:tool-add=move || matches!(editor.tool.get(), NetTool::Place | NetTool::Transition)
             class:tool-arc=move || editor.tool.get() == NetTool::Arc
             on:pointerdown=move |ev: leptos::ev::PointerEvent| {
@@ -671,7 +692,7 @@ pub fn PetriView(name: String) -> impl IntoView {
     let drawing = move || {
         state.diagnostics.track();
         let Some(p) = pou.get() else {
-            return view! { <p class="muted">"This Petri net POU is no longer in the project."</p> }.into_any();
+            return view! { <p class="muted">{t(K::petri_net_gone)}</p> }.into_any();
         };
         compiled.with(|c| net_layout.with(|l| net_svg(ctx, &p, c.as_ref(), l).into_any()))
     };
@@ -683,14 +704,16 @@ pub fn PetriView(name: String) -> impl IntoView {
             return None;
         }
         Some(match (state.running.get(), compiled.with(Option::is_some)) {
-            (_, false) => "The net has errors (see Problems): showing the initial marking.".to_string(),
-            (Some(r), true) => format!("The simulator runs PROGRAM {r}: choose {} under Simulation to see its tokens move. Showing the initial marking.", ctx.name.get_value()),
-            (None, true) => "Not running: showing the initial marking.".to_string(),
+            (_, false) => t(K::petri_status_errors).to_string(),
+            (Some(r), true) => {
+                tf(K::petri_status_other, &[("program", &r), ("name", &ctx.name.get_value())])
+            }
+            (None, true) => t(K::petri_status_idle).to_string(),
         })
     };
     let layout_note = move || {
         net_layout.with(|l| l.automatic).then(|| view! {
-        <span class="muted small-text" title="The net has no stored positions">"laid out automatically"</span>
+        <span class="muted small-text" title=t(K::petri_laid_out_title)>{t(K::petri_laid_out)}</span>
     })
     };
     // Why no code can be generated, naming the element (the net's errors).
@@ -770,9 +793,9 @@ pub fn PetriView(name: String) -> impl IntoView {
         }
     });
     view! {
-        <section class="panel petri-view" aria-label=format!("Petri net {name}")>
+        <section class="panel petri-view" aria-label=tf(K::petri_net_label, &[("name", &name)])>
             <div class="ed-toolbar">
-                <h2>"Petri net"</h2>
+                <h2>{t(K::petri_net)}</h2>
                 <span class="pou-title">{name.clone()}</span>
                 {layout_note}
                 <span class="ed-spacer"></span>
@@ -784,9 +807,9 @@ pub fn PetriView(name: String) -> impl IntoView {
             <div class="ed-toolbar">
                 <span class="ed-spacer"></span>
                 <span class="pn-legend small-text" aria-hidden="true">
-                    <span class="lg lg-token"></span>"token "
-                    <span class="lg lg-fired"></span>"fired on the last scan "
-                    <span class="lg lg-enabled"></span>"enabled"
+                    <span class="lg lg-token"></span>{t(K::petri_legend_token)}" "
+                    <span class="lg lg-fired"></span>{t(K::petri_legend_fired)}" "
+                    <span class="lg lg-enabled"></span>{t(K::petri_legend_enabled)}
                 </span>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
@@ -804,10 +827,10 @@ pub fn PetriView(name: String) -> impl IntoView {
                     }
                 }>{drawing}</div>
                 <div class="pn-code">
-                    <h3>"Generated CASE OF code"</h3>
+                    <h3>{t(K::petri_generated_code)}</h3>
                     {move || no_code.get().map(|reasons| view! {
                         <div class="pn-no-code" role="status">
-                            <p>"No code can be generated:"</p>
+                            <p>{t(K::petri_no_code)}</p>
                             <ul>{reasons.into_iter().map(|r| view! { <li>{r}</li> }).collect_view()}</ul>
                         </div>
                     })}
@@ -837,7 +860,7 @@ fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
                         state.error(e);
                     }
                 }
-                Err(e) => state.error(format!("The net could not be exported: {e}.")),
+                Err(e) => state.error(tf(K::petri_export_failed, &[("error", &e.to_string())])),
             }
         });
     };
@@ -851,7 +874,7 @@ fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
                     state.error(e);
                 }
             }
-            None => state.error("The net could not be exported: it is not drawn."),
+            None => state.error(t(K::petri_export_not_drawn)),
         }
     };
     let zoom_by = move |f: f64| editor.zoom.update(|z| *z = (*z * f).clamp(0.25, 4.0));
@@ -874,31 +897,31 @@ fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
         }
     };
     view! {
-        <div class="pn-toolbar" role="toolbar" aria-label="Net tools">
+        <div class="pn-toolbar" role="toolbar" aria-label=t(K::petri_net_tools)>
             {NetTool::all().into_iter().map(|(tool, label)| view! {
                 <button class="pn-tool" aria-pressed=move || if editor.tool.get() == tool { "true" } else { "false" }
-                    on:click=move |_| editor.choose(tool)>{label}</button>
+                    on:click=move |_| editor.choose(tool)>{t(label)}</button>
             }).collect_view()}
             <span class="pn-sep"></span>
             <button on:click=move |_| editor.undo() disabled=move || !editor.can_undo()
-                title="Undo (Ctrl+Z)">"Undo"</button>
+                title=t(K::petri_undo_title)>{t(K::petri_undo)}</button>
             <button on:click=move |_| editor.redo() disabled=move || !editor.can_redo()
-                title="Redo (Ctrl+Shift+Z)">"Redo"</button>
+                title=t(K::petri_redo_title)>{t(K::petri_redo)}</button>
             <span class="pn-sep"></span>
-            <button on:click=move |_| zoom_by(1.25)>"Zoom in"</button>
-            <button on:click=move |_| zoom_by(0.8)>"Zoom out"</button>
-            <button on:click=fit>"Fit"</button>
+            <button on:click=move |_| zoom_by(1.25)>{t(K::petri_zoom_in)}</button>
+            <button on:click=move |_| zoom_by(0.8)>{t(K::petri_zoom_out)}</button>
+            <button on:click=fit>{t(K::petri_fit)}</button>
             <span class="pn-sep"></span>
-            <button on:click=export_pnml title="The net as PNML, for plc petri import and other Petri net tools">"Export PNML"</button>
-            <button on:click=export_svg title="The net as drawn, as an SVG picture">"Export SVG"</button>
+            <button on:click=export_pnml title=t(K::petri_export_pnml_title)>{t(K::petri_export_pnml)}</button>
+            <button on:click=export_svg title=t(K::petri_export_svg_title)>{t(K::petri_export_svg)}</button>
         </div>
         // One line whatever it says, so the canvas never moves under a gesture.
         <p class="pn-hint muted small-text" role="status">{move || match (editor.tool.get(), editor.arc_from.get()) {
-            (NetTool::Arc, Some(from)) => format!("Arc from {from}: click a place or transition of the other kind (Escape to stop)."),
-            (NetTool::Arc, None) => "Press on a place or transition and release on one of the other kind.".to_string(),
-            (NetTool::Place, _) => "Click on the canvas to add a place.".to_string(),
-            (NetTool::Transition, _) => "Click on the canvas to add a transition.".to_string(),
-            (NetTool::Select, _) => "Drag an element to move it, the canvas to pan; arrow keys move, Enter edits, Delete removes.".to_string(),
+            (NetTool::Arc, Some(from)) => tf(K::petri_hint_arc_from, &[("from", &from)]),
+            (NetTool::Arc, None) => t(K::petri_hint_arc).to_string(),
+            (NetTool::Place, _) => t(K::petri_hint_place).to_string(),
+            (NetTool::Transition, _) => t(K::petri_hint_transition).to_string(),
+            (NetTool::Select, _) => t(K::petri_hint_select).to_string(),
         }}</p>
     }
 }

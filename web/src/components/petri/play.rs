@@ -6,6 +6,8 @@
 use leptos::prelude::*;
 use plc_core::petri::{Marking, PtNet};
 
+use crate::i18n::{t, tf, K};
+
 /// What is being played.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct Play {
@@ -76,28 +78,33 @@ pub fn PlayControls(play: RwSignal<Option<Play>>, net: Memo<Option<PtNet>>) -> i
             let fired = if names.is_empty() {
                 String::new()
             } else {
-                format!(" Fired: {}.", names.join(" → "))
+                format!(" {}", tf(K::petri_play_fired, &[("names", &names.join(" → "))]))
             };
             Some(if p.game {
-                format!(
-                    "Token game: click an enabled transition to fire it (guards ignored).{fired}"
-                )
+                tf(K::petri_token_game_note, &[("fired", &fired)])
             } else {
-                format!("Deadlock path: step {} of {}.{fired}", p.step, p.path.len())
+                tf(
+                    K::petri_deadlock_path,
+                    &[
+                        ("step", &p.step.to_string()),
+                        ("steps", &p.path.len().to_string()),
+                        ("fired", &fired),
+                    ],
+                )
             })
         })
     };
     view! {
-        <div class="pn-play" role="group" aria-label="Play the net">
+        <div class="pn-play" role="group" aria-label=t(K::petri_play)>
             <button aria-pressed=move || if game_on() { "true" } else { "false" } on:click=toggle
-                title="Fire transitions by clicking them, without the PLC">"Token game"</button>
+                title=t(K::petri_token_game_title)>{t(K::petri_token_game)}</button>
             {move || play.with(Option::is_some).then(|| view! {
-                <button disabled=at_start on:click=move |_| play.update(|p| if let Some(p) = p { p.step = p.step.saturating_sub(1) })>"Previous"</button>
-                <button disabled=at_end on:click=move |_| play.update(|p| if let Some(p) = p { p.step = (p.step + 1).min(p.path.len()) })>"Next"</button>
+                <button disabled=at_start on:click=move |_| play.update(|p| if let Some(p) = p { p.step = p.step.saturating_sub(1) })>{t(K::petri_previous)}</button>
+                <button disabled=at_end on:click=move |_| play.update(|p| if let Some(p) = p { p.step = (p.step + 1).min(p.path.len()) })>{t(K::petri_next)}</button>
                 {move || if game_on() {
-                    view! { <button on:click=move |_| play.set(Some(Play { game: true, ..Play::default() }))>"Reset marking"</button> }.into_any()
+                    view! { <button on:click=move |_| play.set(Some(Play { game: true, ..Play::default() }))>{t(K::petri_reset_marking)}</button> }.into_any()
                 } else {
-                    view! { <button on:click=move |_| play.set(None)>"Stop playing"</button> }.into_any()
+                    view! { <button on:click=move |_| play.set(None)>{t(K::petri_stop_playing)}</button> }.into_any()
                 }}
                 <span class="muted small-text pn-play-note" role="status" title=note>{note}</span>
             })}

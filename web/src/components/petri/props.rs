@@ -11,6 +11,7 @@ use plc_core::petri::{NetEdit, NetElement, PetriPou, TextPart};
 
 use super::editor::{NetEditor, Selection};
 use crate::components::code_field::{CodeField, DeclarationsBox, FieldProblem};
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 
 /// Pause after the last key before a field's value is applied.
@@ -103,7 +104,7 @@ fn field(
 }
 
 fn number(text: &str, what: &str) -> Result<u32, String> {
-    text.trim().parse::<u32>().map_err(|_| format!("{what} is a whole number, 0 or more"))
+    text.trim().parse::<u32>().map_err(|_| tf(K::petri_whole_number, &[("what", what)]))
 }
 
 /// The properties panel of the selection.
@@ -150,14 +151,24 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                     })
                     .unwrap_or_default()
                 });
-                let name_field =
-                    field(editor, "Name", format!("{id}.name"), false, name_of, move |t| {
-                        Ok(NetEdit::SetName { id: sid.get_value(), name: t.to_string() })
-                    });
+                let name_field = field(
+                    editor,
+                    t(K::petri_name),
+                    format!("{id}.name"),
+                    false,
+                    name_of,
+                    move |text| {
+                        Ok(NetEdit::SetName { id: sid.get_value(), name: text.to_string() })
+                    },
+                );
                 let title = match kind {
-                    Some(plc_core::petri::ElementKind::Place) => format!("Place {id}"),
-                    Some(plc_core::petri::ElementKind::Transition) => format!("Transition {id}"),
-                    _ => format!("Macro-place {id}"),
+                    Some(plc_core::petri::ElementKind::Place) => {
+                        tf(K::petri_place_name, &[("name", &id)])
+                    }
+                    Some(plc_core::petri::ElementKind::Transition) => {
+                        tf(K::petri_transition_name, &[("name", &id)])
+                    }
+                    _ => tf(K::petri_macro_place_name, &[("name", &id)]),
                 };
                 let extra = match kind {
                     Some(plc_core::petri::ElementKind::Place) => {
@@ -195,20 +206,20 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                         });
                         let on_leave = Callback::new(move |()| editor.close_group());
                         view! {
-                            {field(editor, "Initial tokens", format!("{id}.tokens"), true, tokens, move |t| {
-                                Ok(NetEdit::SetTokens { id: sid.get_value(), tokens: number(t, "Initial tokens")? })
+                            {field(editor, t(K::petri_initial_tokens), format!("{id}.tokens"), true, tokens, move |text| {
+                                Ok(NetEdit::SetTokens { id: sid.get_value(), tokens: number(text, t(K::petri_initial_tokens))? })
                             })}
-                            {field(editor, "Capacity", format!("{id}.capacity"), true, capacity, move |t| {
-                                let capacity = if t.trim().is_empty() { None } else { Some(number(t, "Capacity")?) };
+                            {field(editor, t(K::petri_capacity), format!("{id}.capacity"), true, capacity, move |text| {
+                                let capacity = if text.trim().is_empty() { None } else { Some(number(text, t(K::petri_capacity))?) };
                                 Ok(NetEdit::SetCapacity { id: sid.get_value(), capacity })
                             })}
-                            {field(editor, "CASE label", format!("{id}.label"), true, label, move |t| {
-                                let label = t.trim().parse::<i64>().map_err(|_| "a CASE label is a whole number".to_string())?;
+                            {field(editor, t(K::petri_case_label), format!("{id}.label"), true, label, move |text| {
+                                let label = text.trim().parse::<i64>().map_err(|_| t(K::petri_case_label_number).to_string())?;
                                 Ok(NetEdit::SetLabel { id: sid.get_value(), label })
                             })}
                             <div class="field pn-actions">
-                                <span>"Actions"</span>
-                                <CodeField label="Actions" text=actions on_commit=on_commit on_leave=on_leave
+                                <span>{t(K::petri_actions)}</span>
+                                <CodeField label=t(K::petri_actions) text=actions on_commit=on_commit on_leave=on_leave
                                     problems=problems min_rows=3 max_rows=12/>
                             </div>
                         }
@@ -232,11 +243,11 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                                 .collect::<Vec<_>>()
                         };
                         view! {
-                            {field(editor, "Guard", format!("{id}.guard"), false, guard, move |t| {
-                                Ok(NetEdit::SetGuard { id: sid.get_value(), text: t.to_string() })
+                            {field(editor, t(K::petri_guard), format!("{id}.guard"), false, guard, move |text| {
+                                Ok(NetEdit::SetGuard { id: sid.get_value(), text: text.to_string() })
                             })}
-                            {field(editor, "Priority", format!("{id}.priority"), true, priority, move |t| {
-                                Ok(NetEdit::SetPriority { id: sid.get_value(), priority: number(t, "Priority")? })
+                            {field(editor, t(K::petri_priority), format!("{id}.priority"), true, priority, move |text| {
+                                Ok(NetEdit::SetPriority { id: sid.get_value(), priority: number(text, t(K::petri_priority))? })
                             })}
                             <ul class="pn-details-problems">
                                 {move || guard_problems().into_iter().map(|m| view! { <li>{m}</li> }).collect_view()}
@@ -270,13 +281,13 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
                     .unwrap_or_default()
                 });
                 view! {
-                    <h3>{format!("Arc from {from} to {to}")}</h3>
+                    <h3>{tf(K::petri_arc_label, &[("from", &from), ("to", &to)])}</h3>
                     <div class="pn-prop-fields">
-                        {field(editor, "Weight", format!("{from}>{to}.weight"), true, weight, move |t| {
+                        {field(editor, t(K::petri_weight), format!("{from}>{to}.weight"), true, weight, move |text| {
                             let (from, to) = ends.get_value();
-                            let weight = number(t, "Weight")?;
+                            let weight = number(text, t(K::petri_weight))?;
                             if weight == 0 {
-                                return Err("Weight is at least 1".to_string());
+                                return Err(t(K::petri_weight_at_least_one).to_string());
                             }
                             Ok(NetEdit::SetWeight { from, to, weight })
                         })}
@@ -286,9 +297,9 @@ pub fn Properties(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoVi
             }
         };
         Some(view! {
-            <div class="pn-props" role="group" aria-label="Properties">
+            <div class="pn-props" role="group" aria-label=t(K::petri_properties)>
                 {body}
-                <button class="pn-props-delete" on:click=move |_| editor.delete_selection()>"Delete"</button>
+                <button class="pn-props-delete" on:click=move |_| editor.delete_selection()>{t(K::petri_delete)}</button>
             </div>
         })
     }
