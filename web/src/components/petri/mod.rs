@@ -18,12 +18,11 @@ mod props;
 use leptos::prelude::*;
 use plc_core::build::Site;
 use plc_core::export::value_number;
-use plc_core::i18n::Lang;
 use plc_core::petri::{build, compile, Compiled, NetElement, PetriPou, PtNet};
 
 use crate::components::ladder::{geometry::clip, scroll_to};
 use crate::components::pou_actions::{DiagramKind, PouActions};
-use crate::i18n::{t, tf, I18n, K};
+use crate::i18n::{t, tf, K};
 use crate::state::{marking_of, AppState, RunMode};
 use analysis::AnalysisPanel;
 use code::CodePanel;
@@ -42,16 +41,9 @@ const FLY_MS: u64 = 260;
 /// Characters of a guard shown beside its transition.
 const GUARD_CHARS: usize = 26;
 
-/// The form of a count's noun: `one`, `few` or `many` of `forms`, as the language shown
-/// says (English: 1 or not; Polish: 2–4 but not 12–14 few; Czech: 2–4 few).
+/// The form of a count's noun (`one`, `few` or `many` of `forms`) in the language shown.
 pub(super) fn plural(n: u64, [one, few, many]: [K; 3]) -> K {
-    let lang = use_context::<I18n>().map(|i| i.shown.get_untracked()).unwrap_or_default();
-    match (lang, n) {
-        (_, 1) => one,
-        (Lang::Pl, n) if (2..=4).contains(&(n % 10)) && !(12..=14).contains(&(n % 100)) => few,
-        (Lang::Cs, 2..=4) => few,
-        _ => many,
-    }
+    crate::i18n::plural(n, one, few, many)
 }
 
 /// Everything the drawing's reactive parts share.
