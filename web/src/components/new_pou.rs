@@ -10,6 +10,7 @@ use plc_core::exercise::interface_declarations;
 use plc_core::ladder::LadderPouKind;
 
 use crate::exercises::Exercises;
+use crate::i18n::{t, tf, K};
 use crate::lazy;
 use crate::state::{AppState, PouView};
 
@@ -75,7 +76,7 @@ fn show_when_connected(
 pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
     let state = expect_context::<AppState>();
     let exercises = use_context::<Exercises>();
-    let title = if petri { "New Petri net POU" } else { "New ladder POU" };
+    let title = t(if petri { K::pou_new_petri } else { K::pou_new_ladder });
     let dialog = NodeRef::<html::Dialog>::new();
     let input = NodeRef::<html::Input>::new();
     let exercise_id = exercises
@@ -123,7 +124,7 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
         };
         if let Err(e) = added {
             // Checked as typed; the project may have changed meanwhile.
-            state.error(format!("Not created: {e}."));
+            state.error(tf(K::pou_not_created, &[("error", &e.to_string())]));
             return;
         }
         let in_exercise = declared.is_some();
@@ -143,9 +144,7 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
         });
         close();
         if in_exercise {
-            state.info(format!(
-                "{text} declares the exercise's interface and is now the program that runs and that Check grades (Program under Simulation chooses another)."
-            ));
+            state.info(tf(K::pou_declares_interface, &[("name", &text)]));
         }
     };
     // Create waits for the editor and its pass, so the new POU is built (and its PROGRAM
@@ -166,8 +165,8 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
             <h2>{title}</h2>
             <form on:submit=move |ev: leptos::ev::SubmitEvent| { ev.prevent_default(); create(); }>
                 <label class="field">
-                    <span>"Name"</span>
-                    <input type="text" node_ref=input aria-label="POU name" spellcheck="false" autocomplete="off"
+                    <span>{t(K::pou_name)}</span>
+                    <input type="text" node_ref=input aria-label=t(K::pou_name_label) spellcheck="false" autocomplete="off"
                         prop:value=move || name.get()
                         aria-invalid=move || problem().is_some().to_string()
                         aria-describedby=error_id
@@ -176,8 +175,8 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
                 <p class="field-error" id=error_id aria-live="polite">{problem}</p>
                 {(!petri).then(|| view! {
                     <label class="field">
-                        <span>"Kind"</span>
-                        <select aria-label="POU kind" on:change=move |ev| kind.set(
+                        <span>{t(K::pou_kind)}</span>
+                        <select aria-label=t(K::pou_kind_label) on:change=move |ev| kind.set(
                             if event_target_value(&ev) == "FUNCTION_BLOCK" { LadderPouKind::FunctionBlock } else { LadderPouKind::Program })>
                             <option value="PROGRAM">"PROGRAM"</option>
                             <option value="FUNCTION_BLOCK">"FUNCTION_BLOCK"</option>
@@ -185,11 +184,12 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
                     </label>
                 })}
                 <p class="muted small-text" hidden=move || !exercises.is_some_and(|ex| ex.open.with(|o| o.as_ref().is_some_and(|o| !o.opened.view.interface.is_empty())))>
-                    "A PROGRAM made here declares the exercise's interface and becomes the program that is checked."
+                    {t(K::pou_exercise_note)}
                 </p>
                 <div class="dialog-actions">
-                    <button type="submit" class="primary" disabled=move || problem().is_some()>"Create"</button>
-                    <button type="button" on:click=move |_| close()>"Cancel"</button>
+                    <button type="submit" class="primary" disabled=move || problem().is_some()>{t(K::pou_create)}</button>
+                    <button type="button" on:click=move |_| close()>{t(K::pou_cancel)}</button>
+
                 </div>
             </form>
         </dialog>

@@ -4,6 +4,7 @@
 
 use leptos::prelude::*;
 
+use crate::i18n::{t, tf, K};
 use crate::state::{AppState, PouView};
 
 /// Which kind of diagram POU the actions are for.
@@ -18,11 +19,12 @@ pub enum DiagramKind {
 }
 
 impl DiagramKind {
-    fn words(self) -> &'static str {
+    /// The keys of the question before deleting and of the note after it.
+    fn delete_keys(self) -> (K, K) {
         match self {
-            DiagramKind::Ladder => "ladder POU",
-            DiagramKind::Petri => "Petri net POU",
-            DiagramKind::Network => "network POU",
+            DiagramKind::Ladder => (K::pou_delete_confirm_ladder, K::pou_deleted_ladder),
+            DiagramKind::Petri => (K::pou_delete_confirm_petri, K::pou_deleted_petri),
+            DiagramKind::Network => (K::pou_delete_confirm_network, K::pou_deleted_network),
         }
     }
 
@@ -57,18 +59,14 @@ pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
                 state.save();
                 state.check_now();
             }
-            Err(e) => state.error(format!("Not renamed: {e}.")),
+            Err(e) => state.error(tf(K::pou_not_renamed, &[("error", &e.to_string())])),
         }
     };
     let delete = move |_| {
         let name = name.get_value();
         let ok = web_sys::window()
             .and_then(|w| {
-                w.confirm_with_message(&format!(
-                    "Delete the {} “{name}”? Undo cannot bring it back.",
-                    kind.words()
-                ))
-                .ok()
+                w.confirm_with_message(&tf(kind.delete_keys().0, &[("name", &name)])).ok()
             })
             .unwrap_or(false);
         if !ok {
@@ -85,13 +83,13 @@ pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
             state.view.set(PouView::St);
             state.save();
             state.check_now();
-            state.info(format!("Deleted the {} “{name}”.", kind.words()));
+            state.info(tf(kind.delete_keys().1, &[("name", &name)]));
         }
     };
     view! {
         {move || if renaming.get() {
             view! {
-                <input type="text" aria-label="New POU name" autofocus
+                <input type="text" aria-label=t(K::pou_new_name) autofocus
                     prop:value=name.get_value()
                     on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
                         "Enter" => { ev.prevent_default(); rename(event_target_value(&ev)); }
@@ -100,8 +98,9 @@ pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
                     }/>
             }.into_any()
         } else {
-            view! { <button on:click=move |_| renaming.set(true)>"Rename POU"</button> }.into_any()
+            view! { <button on:click=move |_| renaming.set(true)>{t(K::pou_rename)}</button> }.into_any()
         }}
-        <button on:click=delete>"Delete POU"</button>
+        <button on:click=delete>{t(K::pou_delete)}</button>
+
     }
 }

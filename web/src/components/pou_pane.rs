@@ -5,9 +5,11 @@
 //! and caret survive switching; ladder and net views are built when selected.
 
 use leptos::prelude::*;
+use plc_core::i18n::Lang;
 
 use crate::components::editor::Editor;
 use crate::components::problems::Problems;
+use crate::i18n::{t, tf, I18n, K};
 use crate::lazy::{self, lazy_view};
 use crate::state::{AppState, PouView};
 
@@ -41,21 +43,21 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
         let mut items = vec![NavItem {
             view: PouView::St,
             badge: "ST",
-            name: "ST source".into(),
-            label: "Structured Text source".into(),
+            name: t(K::pou_st_source).into(),
+            label: t(K::pou_st_source_label).into(),
             errors: errors_in(None),
         }];
         items.extend(p.ladder.iter().map(|l| NavItem {
             view: PouView::Ladder(l.name.clone()),
             badge: "LD",
             name: l.name.clone(),
-            label: format!("Ladder diagram {}", l.name),
+            label: tf(K::pou_ladder_label, &[("name", &l.name)]),
             errors: errors_in(Some(&l.name)),
         }));
         items.extend(state.sfc_charts.get().into_iter().map(|name| NavItem {
             view: PouView::Sfc(name.clone()),
             badge: "SFC",
-            label: format!("SFC chart {name}"),
+            label: tf(K::pou_sfc_label, &[("name", &name)]),
             errors: 0,
             name,
         }));
@@ -65,7 +67,7 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
                 view: PouView::Network(n.name.clone()),
                 badge,
                 name: n.name.clone(),
-                label: format!("{badge} network {}", n.name),
+                label: tf(K::pou_network_label, &[("language", badge), ("name", &n.name)]),
                 errors: errors_in(Some(&n.name)),
             }
         }));
@@ -73,11 +75,28 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
             view: PouView::Petri(n.name.clone()),
             badge: "PN",
             name: n.name.clone(),
-            label: format!("Petri net {}", n.name),
+            label: tf(K::pou_petri_label, &[("name", &n.name)]),
             errors: errors_in(Some(&n.name)),
         }));
         items
     })
+}
+
+/// Which of the `one`, `few` and `many` keys says `n` of something in the language shown
+/// (English: 1 → one, else many; Polish: 1 → one, 2–4 but not 12–14 → few, else many;
+/// Czech: 1 → one, 2–4 → few, else many).
+fn plural(n: usize, [one, few, many]: [K; 3]) -> K {
+    let lang = use_context::<I18n>().map_or(Lang::En, |i| i.shown.get_untracked());
+    let few_here = match lang {
+        Lang::En => false,
+        Lang::Pl => (2..=4).contains(&(n % 10)) && !(12..=14).contains(&(n % 100)),
+        Lang::Cs => (2..=4).contains(&n),
+    };
+    match n {
+        1 => one,
+        _ if few_here => few,
+        _ => many,
+    }
 }
 
 /// A tab's accessible name: its visible text first (badge, name, error count; voice control
@@ -85,8 +104,10 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
 fn tab_name(item: &NavItem) -> String {
     let errors = match item.errors {
         0 => String::new(),
-        1 => " 1 error".to_string(),
-        n => format!(" {n} errors"),
+        n => {
+            let key = plural(n, [K::pou_errors_one, K::pou_errors_few, K::pou_errors_many]);
+            format!(" {}", tf(key, &[("n", &n.to_string())]))
+        }
     };
     format!("{} {}{errors}, {}", item.badge, item.name, item.label)
 }
@@ -109,7 +130,7 @@ fn Navigator() -> impl IntoView {
                 };
                 let runs = running.as_deref().is_some_and(|r| r.eq_ignore_ascii_case(&item.name))
                     && item.view != PouView::St;
-                let title = if runs { "This PROGRAM runs in the simulator" } else { "" };
+                let title = if runs { t(K::pou_runs_title) } else { "" };
                 view! {
                     <button class="pou-tab" aria-label=tab_name(&item) title=title
                         aria-pressed=move || if selected() { "true" } else { "false" }
@@ -128,7 +149,7 @@ fn Navigator() -> impl IntoView {
     };
     // The two New buttons (and their dialogs) stay mounted while the tabs change.
     view! {
-        <nav class="pou-nav" aria-label="POUs">
+        <nav class="pou-nav" aria-label=t(K::pou_nav)>
             {tabs}
             <NewPou petri=false/>
             <NewPou petri=true/>
@@ -140,7 +161,7 @@ fn Navigator() -> impl IntoView {
 /// (`components::new_pou`, loaded on first use: the first screen has a size budget).
 #[component]
 fn NewPou(petri: bool) -> impl IntoView {
-    let title = if petri { "New Petri net POU" } else { "New ladder POU" };
+    let title = t(if petri { K::pou_new_petri } else { K::pou_new_ladder });
     let open = RwSignal::new(false);
     view! {
         <button class="pou-tab pou-new" data-kind=if petri { "petri" } else { "ladder" }
@@ -152,7 +173,7 @@ fn NewPou(petri: bool) -> impl IntoView {
                 });
             }>{title}</button>
         {move || open.get().then(|| {
-            lazy_view("the New POU dialog", move || lazy::new_pou_dialog(petri, open))
+            lazy_view(t(K::pou_loading_new_dialog), move || lazy::new_pou_dialog(petri, open))
         })}
     }
 }
@@ -171,14 +192,14 @@ pub fn PouPane() -> impl IntoView {
             PouView::St => ().into_any(),
             // Each view comes from its own chunk, fetched the first time it is shown.
             PouView::Ladder(name) => {
-                lazy_view("the ladder editor", move || lazy::ladder_view(name.clone()))
+                lazy_view(t(K::pou_loading_ladder), move || lazy::ladder_view(name.clone()))
             }
             PouView::Petri(name) => {
-                lazy_view("the Petri net editor", move || lazy::petri_view(name.clone()))
+                lazy_view(t(K::pou_loading_petri), move || lazy::petri_view(name.clone()))
             }
-            PouView::Sfc(name) => lazy_view("the SFC chart", move || lazy::sfc_view(name.clone())),
+            PouView::Sfc(name) => lazy_view(t(K::pou_loading_sfc), move || lazy::sfc_view(name.clone())),
             PouView::Network(name) => {
-                lazy_view("the network view", move || lazy::network_view(name.clone()))
+                lazy_view(t(K::pou_loading_network), move || lazy::network_view(name.clone()))
             }
         }}
         <Problems/>

@@ -10,6 +10,7 @@ use super::geometry::{
     clip, pin_lines, rung_geometry, runs_to_right_rail, NodePower, PinLine, RungGeometry, RAIL_X,
 };
 use super::live::LadderLive;
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 
 /// Characters of an operand shown above a contact or coil.
@@ -89,12 +90,12 @@ pub(crate) fn coil_letter(kind: CoilKind) -> &'static str {
 }
 
 fn kind_name(kind: ContactKind) -> &'static str {
-    match kind {
-        ContactKind::NormallyOpen => "normally open contact",
-        ContactKind::NormallyClosed => "normally closed contact",
-        ContactKind::Rising => "rising-edge contact",
-        ContactKind::Falling => "falling-edge contact",
-    }
+    t(match kind {
+        ContactKind::NormallyOpen => K::ladder_kind_no,
+        ContactKind::NormallyClosed => K::ladder_kind_nc,
+        ContactKind::Rising => K::ladder_kind_rising,
+        ContactKind::Falling => K::ladder_kind_falling,
+    })
 }
 
 fn contact(
@@ -116,10 +117,11 @@ fn contact(
             key.with_value(|k| ctx.state.hold_input(k, if on { "FALSE" } else { "TRUE" }));
         }
     };
-    let label = format!("Contact {op}");
+    let label = tf(K::ladder_contact, &[("operand", &op)]);
     let title = move || {
         let v = value().map(|v| if v { " = TRUE" } else { " = FALSE" }).unwrap_or("");
-        let hint = if toggles() { " (click to toggle the input)" } else { "" };
+        let hint =
+            if toggles() { format!(" ({})", t(K::ladder_click_to_toggle)) } else { String::new() };
         format!("{op}{v}: {}{hint}", kind_name(kind))
     };
     view! {
@@ -169,13 +171,15 @@ fn coil(
     let (_, value) = operand_state(ctx, &op);
     let name = op.clone();
     let label = move || match value() {
-        Some(v) => format!("Coil {name}: {}", if v { "ON" } else { "OFF" }),
-        None => format!("Coil {name}"),
+        Some(v) => {
+            tf(if v { K::ladder_coil_on } else { K::ladder_coil_off }, &[("operand", &name)])
+        }
+        None => tf(K::ladder_coil, &[("operand", &name)]),
     };
     view! {
         <g class="ld-el ld-coil" class:powered=ctx.out_power(row, col)
             data-cell=format!("{}-{row}-{col}", ctx.rung) role="img" aria-label=label>
-            <title>{format!("{op}: coil")}</title>
+            <title>{tf(K::ladder_coil_title, &[("operand", &op)])}</title>
             {hline(x0, cx - 10.0, y, ctx.node_power(row, col))}
             {hline(cx + 10.0, x1, y, ctx.out_power(row, col))}
             <circle class="ld-state" class:on=move || value() == Some(true) cx=cx cy=y r="11"/>
@@ -261,7 +265,7 @@ fn block(ctx: RungCtx, geo: &RungGeometry, (row, col): (usize, usize), b: &Block
     };
     view! {
         <g class="ld-el ld-block" class:powered=ctx.out_power(row, col)
-            data-cell=format!("{}-{row}-{col}", ctx.rung) role="img" aria-label=format!("Block {title}")>
+            data-cell=format!("{}-{row}-{col}", ctx.rung) role="img" aria-label=tf(K::ladder_block, &[("block", &title)])>
             <title>{title.clone()}</title>
             {hline(x0, left, y, ctx.node_power(row, col))}
             {hline(right, x1, y, ctx.out_power(row, col))}
@@ -295,7 +299,7 @@ fn simple(
         .into_any(),
         Element::Jump { label } => view! {
             <g class="ld-el ld-jump" class:powered=ctx.out_power(row, col) data-cell=cell
-                role="img" aria-label=format!("Jump to {label}")>
+                role="img" aria-label=tf(K::ladder_jump_to, &[("label", label)])>
                 {hline(x0, cx - 12.0, y, ctx.node_power(row, col))}
                 <text class="ld-letter start" x=cx - 10.0 y=y + 4.0>{format!("»{}", clip(label, 9))}</text>
             </g>
@@ -303,7 +307,7 @@ fn simple(
         .into_any(),
         Element::Return => view! {
             <g class="ld-el ld-jump" class:powered=ctx.out_power(row, col) data-cell=cell
-                role="img" aria-label="Return">
+                role="img" aria-label=t(K::ladder_tool_return)>
                 {hline(x0, cx - 18.0, y, ctx.node_power(row, col))}
                 <text class="ld-letter start" x=cx - 16.0 y=y + 4.0>"RETURN"</text>
             </g>
@@ -374,7 +378,7 @@ fn marks(ctx: RungCtx, geo: &RungGeometry, pou: &str) -> impl IntoView {
         })}
         {move || mark(ctx.state.fault_site.get(), "ld-fault").map(|(class, row, col)| {
             let (x, y, w, h) = rect_of(&geo_fault, row, col);
-            view! { <rect class=class x=x y=y width=w height=h rx="5"><title>"The fault happened here"</title></rect> }
+            view! { <rect class=class x=x y=y width=w height=h rx="5"><title>{t(K::ladder_fault_here)}</title></rect> }
         })}
     }
 }
@@ -416,7 +420,8 @@ pub fn rung_svg(ctx: RungCtx, rung: &Rung, pou: &str) -> impl IntoView {
     view! {
         <svg class="ld-rung-svg" viewBox=format!("0 0 {} {}", geo.width, geo.height)
             width=geo.width height=geo.height style=format!("--ld-w:{}", geo.width) role="group"
-            aria-label=format!("Rung {}", ctx.rung + 1)>
+            aria-label=tf(K::ladder_rung, &[("rung", &(ctx.rung + 1).to_string())])>
+
             <line class="ld-rail" class:powered=live x1=RAIL_X y1="2" x2=RAIL_X y2=geo.height - 2.0/>
             <line class="ld-rail" x1=geo.right_rail_x y1="2" x2=geo.right_rail_x y2=geo.height - 2.0/>
             {parts}

@@ -9,6 +9,7 @@ use plc_core::ladder::{
 };
 use plc_core::project::History;
 
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 
 /// The history group of a placement and the operand typed for it (one undo step).
@@ -42,23 +43,24 @@ pub enum Tool {
 impl Tool {
     /// The palette button's accessible name.
     pub fn label(&self) -> String {
-        match self {
-            Tool::Contact(ContactKind::NormallyOpen) => "NO contact".into(),
-            Tool::Contact(ContactKind::NormallyClosed) => "NC contact".into(),
-            Tool::Contact(ContactKind::Rising) => "Rising edge contact".into(),
-            Tool::Contact(ContactKind::Falling) => "Falling edge contact".into(),
-            Tool::Coil(CoilKind::Normal) => "Coil".into(),
-            Tool::Coil(CoilKind::Negated) => "Negated coil".into(),
-            Tool::Coil(CoilKind::Set) => "Set coil".into(),
-            Tool::Coil(CoilKind::Reset) => "Reset coil".into(),
-            Tool::Coil(CoilKind::Rising) => "Rising edge coil".into(),
-            Tool::Coil(CoilKind::Falling) => "Falling edge coil".into(),
-            Tool::Wire => "Wire".into(),
-            Tool::LinkDown => "Link down".into(),
-            Tool::Jump => "Jump".into(),
-            Tool::Return => "Return".into(),
-            Tool::Block(t) => t.clone(),
-        }
+        t(match self {
+            Tool::Block(name) => return name.clone(),
+            Tool::Contact(ContactKind::NormallyOpen) => K::ladder_tool_no_contact,
+            Tool::Contact(ContactKind::NormallyClosed) => K::ladder_tool_nc_contact,
+            Tool::Contact(ContactKind::Rising) => K::ladder_tool_rising_contact,
+            Tool::Contact(ContactKind::Falling) => K::ladder_tool_falling_contact,
+            Tool::Coil(CoilKind::Normal) => K::ladder_tool_coil,
+            Tool::Coil(CoilKind::Negated) => K::ladder_tool_negated_coil,
+            Tool::Coil(CoilKind::Set) => K::ladder_tool_set_coil,
+            Tool::Coil(CoilKind::Reset) => K::ladder_tool_reset_coil,
+            Tool::Coil(CoilKind::Rising) => K::ladder_tool_rising_coil,
+            Tool::Coil(CoilKind::Falling) => K::ladder_tool_falling_coil,
+            Tool::Wire => K::ladder_tool_wire,
+            Tool::LinkDown => K::ladder_tool_link_down,
+            Tool::Jump => K::ladder_tool_jump,
+            Tool::Return => K::ladder_tool_return,
+        })
+        .to_string()
     }
 
     /// The element tools of the palette (blocks come after them).
@@ -244,7 +246,7 @@ impl LadderEditor {
                 true
             }
             Err(e) => {
-                self.state.error(format!("Not changed: {e}."));
+                self.state.error(tf(K::ladder_not_changed, &[("error", &e.to_string())]));
                 false
             }
         }
@@ -428,7 +430,7 @@ impl LadderEditor {
             match next.apply(e) {
                 Ok(p) => next = p,
                 Err(e) => {
-                    self.state.error(format!("Not changed: {e}."));
+                    self.state.error(tf(K::ladder_not_changed, &[("error", &e.to_string())]));
                     return false;
                 }
             }
@@ -533,10 +535,7 @@ impl LadderEditor {
             ("c", true) => {
                 let rung = self.pou().and_then(|p| p.rungs.get(at.rung).cloned());
                 self.clipboard.set_value(rung);
-                self.state.info(format!(
-                    "Rung {} copied: Ctrl+V pastes it below the selected rung.",
-                    at.rung + 1
-                ));
+                self.state.info(tf(K::ladder_rung_copied, &[("rung", &(at.rung + 1).to_string())]));
             }
             ("v", true) => {
                 if let Some(rung) = self.clipboard.get_value() {
@@ -704,17 +703,17 @@ pub enum RungAction {
 }
 
 impl RungAction {
-    /// Every action with its button text (the accessible name).
-    pub fn all() -> [(RungAction, &'static str); 8] {
+    /// Every action with the key of its button text (the accessible name).
+    pub fn all() -> [(RungAction, K); 8] {
         [
-            (RungAction::Add, "Add rung"),
-            (RungAction::Delete, "Delete rung"),
-            (RungAction::Up, "Move rung up"),
-            (RungAction::Down, "Move rung down"),
-            (RungAction::InsertRow, "Insert row"),
-            (RungAction::DeleteRow, "Delete row"),
-            (RungAction::InsertColumn, "Insert column"),
-            (RungAction::DeleteColumn, "Delete column"),
+            (RungAction::Add, K::ladder_add_rung),
+            (RungAction::Delete, K::ladder_delete_rung),
+            (RungAction::Up, K::ladder_move_rung_up),
+            (RungAction::Down, K::ladder_move_rung_down),
+            (RungAction::InsertRow, K::ladder_insert_row),
+            (RungAction::DeleteRow, K::ladder_delete_row),
+            (RungAction::InsertColumn, K::ladder_insert_column),
+            (RungAction::DeleteColumn, K::ladder_delete_column),
         ]
     }
 }

@@ -19,6 +19,7 @@ use plc_core::ladder::{
 
 use crate::components::editor::text::{highlight_html, highlight_line_html};
 use crate::components::pou_actions::{DiagramKind, PouActions};
+use crate::i18n::{t, tf, K};
 use crate::state::AppState;
 use declarations::DeclarationsEditor;
 use draw::{rung_svg, RungCtx};
@@ -40,20 +41,15 @@ fn live_status(state: AppState, pou: &LadderPou, instance: Option<String>) -> Op
     let running = state.running.get();
     if pou.kind == LadderPouKind::FunctionBlock {
         return Some(match (running, instance) {
-            (Some(r), Some(i)) => format!("Live values of instance {i} in PROGRAM {r}."),
-            (Some(r), None) => {
-                format!("PROGRAM {r} has no instance of {}: shown without live values.", pou.name)
-            }
-            (None, _) => "Not running: the project has errors or no PROGRAM.".into(),
+            (Some(r), Some(i)) => tf(K::ladder_live_instance, &[("instance", &i), ("program", &r)]),
+            (Some(r), None) => tf(K::ladder_no_instance, &[("program", &r), ("pou", &pou.name)]),
+            (None, _) => t(K::ladder_not_running).into(),
         });
     }
     match running {
         Some(r) if r.eq_ignore_ascii_case(&pou.name) => None,
-        Some(r) => Some(format!(
-            "The simulator runs PROGRAM {r}: choose {} under Simulation to see this one live.",
-            pou.name
-        )),
-        None => Some("Not running: the project has errors or no PROGRAM.".into()),
+        Some(r) => Some(tf(K::ladder_runs_other, &[("program", &r), ("pou", &pou.name)])),
+        None => Some(t(K::ladder_not_running).into()),
     }
 }
 
@@ -75,7 +71,7 @@ fn why_button(live: Memo<Option<LadderLive>>, element: &Element) -> Option<impl 
         let label =
             op.with_value(|o| plc_core::why::why_label(o, &plc_core::vm::Value::Bool(value)));
         Some(view! {
-            <button class="ld-why" aria-label=label title="Why?"
+            <button class="ld-why" aria-label=label title=t(K::ladder_why)
                 on:pointerdown=move |ev: leptos::ev::PointerEvent| ev.stop_propagation()
                 on:dblclick=move |ev: leptos::ev::MouseEvent| ev.stop_propagation()
                 on:keydown=move |ev: leptos::ev::KeyboardEvent| ev.stop_propagation()
@@ -129,12 +125,14 @@ fn rung_grid(
                         pct(x1 - x0, geo.width),
                         pct(geo.row_h, geo.height)
                     );
-                    let label = format!(
-                        "Rung {}, row {}, column {}: {}",
-                        index + 1,
-                        row + 1,
-                        col + 1,
-                        describe_cell(cell)
+                    let label = tf(
+                        K::ladder_cell,
+                        &[
+                            ("rung", &(index + 1).to_string()),
+                            ("row", &(row + 1).to_string()),
+                            ("column", &(col + 1).to_string()),
+                            ("cell", &describe_cell(cell)),
+                        ],
                     );
                     let why = why_button(live, &cell.element);
                     let is_selected = selection.clone();
@@ -223,7 +221,7 @@ fn rung_grid(
         let list = move || {
             let list = choices.get();
             (!list.is_empty()).then(|| view! {
-                <ul class="ld-choices" id="ld-operand-choices" role="listbox" aria-label="Operand choices">
+                <ul class="ld-choices" id="ld-operand-choices" role="listbox" aria-label=t(K::ladder_operand_choices)>
                     {list.into_iter().enumerate().map(|(i, c)| {
                         let text = c.text.clone();
                         view! {
@@ -241,7 +239,7 @@ fn rung_grid(
         };
         Some(view! {
             <div class="ld-operand" style=style>
-                <input class="ld-operand-box mono" type="text" aria-label="Operand" node_ref=input
+                <input class="ld-operand-box mono" type="text" aria-label=t(K::ladder_operand) node_ref=input
                     aria-autocomplete="list" aria-controls="ld-operand-choices"
                     aria-activedescendant=active_id autocomplete="off"
                     prop:value=move || editor.operand_text.get_untracked() spellcheck="false"
@@ -297,7 +295,7 @@ fn rung_grid(
         })
     };
     view! {
-        <div class="ld-grid" role="grid" aria-label=format!("Rung {} cells", index + 1)>{rows}</div>
+        <div class="ld-grid" role="grid" aria-label=tf(K::ladder_rung_cells, &[("rung", &(index + 1).to_string())])>{rows}</div>
         {operand_box}
     }
 }
@@ -330,16 +328,16 @@ fn RungView(
         <div class="ld-rung" id=format!("ld-rung-{index}")>
             <div class="ld-rung-head">
                 <span class="ld-rung-no">{index + 1}</span>
-                <input class="ld-label-box mono" type="text" aria-label=format!("Label of rung {}", index + 1)
-                    placeholder="Label" title="A label jumps can go to" spellcheck="false"
+                <input class="ld-label-box mono" type="text" aria-label=tf(K::ladder_rung_label, &[("rung", &(index + 1).to_string())])
+                    placeholder=t(K::ladder_label_placeholder) title=t(K::ladder_label_title) spellcheck="false"
                     prop:value=rung.label.clone().unwrap_or_default()
                     on:change=move |ev| {
                         let text = event_target_value(&ev).trim().to_string();
                         let label = (!text.is_empty()).then_some(text);
                         editor.apply(&plc_core::ladder::LadderEdit::SetLabel { rung: index, label }, None);
                     }/>
-                <input class="ld-comment" type="text" aria-label=format!("Comment of rung {}", index + 1)
-                    placeholder="Rung comment" prop:value=rung.comment.clone()
+                <input class="ld-comment" type="text" aria-label=tf(K::ladder_rung_comment, &[("rung", &(index + 1).to_string())])
+                    placeholder=t(K::ladder_rung_comment_placeholder) prop:value=rung.comment.clone()
                     on:change=move |ev| {
                         editor.apply(&plc_core::ladder::LadderEdit::SetComment { rung: index, text: event_target_value(&ev) }, None);
                     }/>
@@ -515,8 +513,7 @@ pub fn LadderView(name: String) -> impl IntoView {
     let name_for_rungs = name.clone();
     let body = move || {
         if !exists.get() {
-            return view! { <p class="muted">"This ladder POU is no longer in the project."</p> }
-                .into_any();
+            return view! { <p class="muted">{t(K::ladder_pou_gone)}</p> }.into_any();
         }
         if show_st.get() {
             let Some(p) = pou.get() else { return ().into_any() };
@@ -524,12 +521,12 @@ pub fn LadderView(name: String) -> impl IntoView {
             let (il, _) = plc_core::ladder::il_view(&p);
             let il_html = highlight_html(&il, &[]);
             return view! {
-                <pre class="code-view" tabindex="0" aria-label=format!("{} as Structured Text", p.name)>
+                <pre class="code-view" tabindex="0" aria-label=tf(K::ladder_as_st, &[("name", &p.name)])>
                     <code inner_html=html></code>
                 </pre>
-                <section class="ld-il-view" role="region" aria-label="IL view">
-                    <h3>"Instruction List"</h3>
-                    <pre class="code-view" tabindex="0" aria-label=format!("{} as Instruction List", p.name)>
+                <section class="ld-il-view" role="region" aria-label=t(K::ladder_il_view)>
+                    <h3>{t(K::ladder_instruction_list)}</h3>
+                    <pre class="code-view" tabindex="0" aria-label=tf(K::ladder_as_il, &[("name", &p.name)])>
                         <code inner_html=il_html></code>
                     </pre>
                 </section>
@@ -565,9 +562,9 @@ pub fn LadderView(name: String) -> impl IntoView {
     let status =
         move || pou.with(|p| p.as_ref().and_then(|p| live_status(state, p, instance.get())));
     view! {
-        <section class="panel ladder-view" id=view_id aria-label=format!("Ladder diagram {name}")>
+        <section class="panel ladder-view" id=view_id aria-label=tf(K::ladder_view_label, &[("name", &name)])>
             <div class="ed-toolbar">
-                <h2>"Ladder"</h2>
+                <h2>{t(K::ladder_heading)}</h2>
                 <span class="pou-title">{name.clone()}</span>
                 <span class="muted small-text">{move || pou.with(|p| match p.as_ref().map(|p| p.kind) {
                     Some(LadderPouKind::FunctionBlock) => "FUNCTION_BLOCK",
@@ -576,8 +573,8 @@ pub fn LadderView(name: String) -> impl IntoView {
                 <span class="ed-spacer"></span>
                 <SideToggle prefs=prefs/>
                 <button aria-pressed=move || if show_st.get() { "true" } else { "false" }
-                    title="Show the POU as readable Structured Text and Instruction List"
-                    on:click=move |_| show_st.update(|s| *s = !*s)>"ST view"</button>
+                    title=t(K::ladder_st_view_title)
+                    on:click=move |_| show_st.update(|s| *s = !*s)>{t(K::ladder_st_view)}</button>
             </div>
             {move || status().map(|s| view! { <p class="view-note">{s}</p> })}
             <DeclarationsEditor editor=editor pou=pou open=decls_open/>
@@ -615,13 +612,13 @@ fn Toolbar(editor: LadderEditor, name: String, children: Children) -> impl IntoV
         }
     };
     view! {
-        <div class="ld-toolbar" role="toolbar" aria-label="Rungs">
+        <div class="ld-toolbar" role="toolbar" aria-label=t(K::ladder_rungs)>
             <button on:click=move |_| editor.undo() disabled=move || !editor.can_undo()
-                title="Undo (Ctrl+Z)">"Undo"</button>
+                title=t(K::ladder_undo_title)>{t(K::ladder_undo)}</button>
             <button on:click=move |_| editor.redo() disabled=move || !editor.can_redo()
-                title="Redo (Ctrl+Shift+Z)">"Redo"</button>
+                title=t(K::ladder_redo_title)>{t(K::ladder_redo)}</button>
             {RungAction::all().into_iter().map(|(action, label)| view! {
-                <button on:click=move |_| editor.rung_action(action)>{label}</button>
+                <button on:click=move |_| editor.rung_action(action)>{t(label)}</button>
             }).collect_view()}
             <PouActions kind=DiagramKind::Ladder name=name.clone()/>
             {children()}
@@ -634,28 +631,28 @@ fn Toolbar(editor: LadderEditor, name: String, children: Children) -> impl IntoV
             let typing = StoredValue::new(false);
             view! {
                 <label class="field ld-picker">
-                    <span>"Block type"</span>
-                    <select aria-label="Block type" node_ref=picker
+                    <span>{t(K::ladder_block_type)}</span>
+                    <select aria-label=t(K::ladder_block_type) node_ref=picker
                         on:keydown=move |ev: leptos::ev::KeyboardEvent| match ev.key().as_str() {
                             "Enter" => { ev.prevent_default(); editor.pick_block(Some(event_target_value(&ev))); }
                             "Escape" => { ev.prevent_default(); editor.pick_block(None); }
                             _ => typing.set_value(true),
                         }
                         on:change=move |ev| if !typing.get_value() { editor.pick_block(Some(event_target_value(&ev))) }>
-                        <option value="" selected=true>"Choose a block…"</option>
+                        <option value="" selected=true>{t(K::ladder_choose_block)}</option>
                         {all_blocks.get().into_iter().map(|b| view! { <option value=b.clone()>{b.clone()}</option> }).collect_view()}
                     </select>
                 </label>
             }
         })}
-        <div class="ld-palette" role="toolbar" aria-label="Palette">
-            {Tool::elements().into_iter().map(|t| {
-                let title = format!("Put a {} into the selected cell", t.label().to_lowercase());
-                tool_button(t, title)
+        <div class="ld-palette" role="toolbar" aria-label=t(K::ladder_palette)>
+            {Tool::elements().into_iter().map(|tool| {
+                let title = tf(K::ladder_put_tool, &[("tool", &tool.label().to_lowercase())]);
+                tool_button(tool, title)
             }).collect_view()}
-            {STANDARD_BLOCKS.iter().map(|b| tool_button(Tool::Block(b.to_string()), format!("Put a {b} block into the selected cell"))).collect_view()}
+            {STANDARD_BLOCKS.iter().map(|b| tool_button(Tool::Block(b.to_string()), tf(K::ladder_put_block, &[("block", b)]))).collect_view()}
             {move || user_blocks.get().into_iter().map(|b| {
-                let title = format!("Put a {b} block into the selected cell");
+                let title = tf(K::ladder_put_block, &[("block", &b)]);
                 tool_button(Tool::Block(b), title)
             }).collect_view()}
         </div>
@@ -680,7 +677,10 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
         let ty = catalog.block(&block.type_name)?.clone();
         let owner = match &block.instance {
             Some(i) => i.clone(),
-            None => format!("{} at rung {}", block.type_name, at.rung + 1),
+            None => tf(
+                K::ladder_block_at_rung,
+                &[("block", &block.type_name), ("rung", &(at.rung + 1).to_string())],
+            ),
         };
         let power_in = block.power_input().to_string();
         let power_out = block.power_output().to_string();
@@ -717,7 +717,7 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
             )
             .collect();
         let height = block.height;
-        let height_label = format!("Height of {owner}");
+        let height_label = tf(K::ladder_height_of, &[("owner", &owner)]);
         // Enter and Escape give the focus back to the cell; leaving a changed box commits it
         // (its change event), so Escape first puts back what the box held.
         let back_to_cell = move |ev: leptos::ev::KeyboardEvent, original: &str| {
@@ -736,7 +736,7 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
             }
         };
         let pins = pins.into_iter().map(|(kind, pin, value)| {
-                    let label = format!("{pin} of {owner}");
+                    let label = tf(K::ladder_pin_of, &[("pin", &pin), ("owner", &owner)]);
                     let name = pin.clone();
                     let original = value.clone();
                     view! {
@@ -749,7 +749,7 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
                     }
                 }).collect_view();
         Some(view! {
-            <div class="ld-pins" role="group" aria-label=format!("Pins of {owner}")>
+            <div class="ld-pins" role="group" aria-label=tf(K::ladder_pins_of, &[("owner", &owner)])>
                 {pins}
                 <label class="field">
                     <span>{height_label.clone()}</span>
@@ -759,7 +759,7 @@ fn PinBoxes(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
                             let done = match event_target_value(&ev).trim().parse::<u32>() {
                                 Ok(h) if h >= 1 => editor.apply(&plc_core::ladder::LadderEdit::ResizeBlock { at, height: h }, None),
                                 _ => {
-                                    state.error("Not changed: a block's height is a whole number of rows, at least 1.");
+                                    state.error(t(K::ladder_bad_height));
                                     false
                                 }
                             };
@@ -814,10 +814,11 @@ fn StBeside(editor: LadderEditor, pou: Memo<Option<LadderPou>>) -> impl IntoView
     move || {
         let name = name.get()?;
         Some(view! {
-            <aside class="ld-st-side" aria-label=format!("ST beside the rungs of {name}")>
+            <aside class="ld-st-side" aria-label=tf(K::ladder_st_beside, &[("name", &name)])>
                 <BesideLines editor=editor lines=st/>
-                <section class="ld-il-view" role="region" aria-label="IL view">
-                    <h3>"Instruction List"</h3>
+                <section class="ld-il-view" role="region" aria-label=t(K::ladder_il_view)>
+                    <h3>{t(K::ladder_instruction_list)}</h3>
+
                     <BesideLines editor=editor lines=il/>
                 </section>
             </aside>

@@ -12,6 +12,7 @@ use plc_core::ladder::LadderPou;
 use plc_core::project::StorageBackend;
 
 use super::geometry::rung_geometry;
+use crate::i18n::{t, K};
 use crate::storage::LocalStorage;
 
 /// Where the zoom is kept.
@@ -24,19 +25,6 @@ pub const MIN_ZOOM: f64 = 1.0;
 pub const MAX_ZOOM: f64 = 2.0;
 /// One press of `Zoom in` or `Zoom out`.
 const ZOOM_STEP: f64 = 0.25;
-
-/// The words of these controls.
-mod text {
-    pub const ZOOM_IN: &str = "Zoom in";
-    pub const ZOOM_OUT: &str = "Zoom out";
-    pub const FIT: &str = "Fit";
-    pub const FIT_TITLE: &str =
-        "Draw the rungs as large as the widest one allows (never below 100 %)";
-    pub const ZOOM_LABEL: &str = "Rung zoom";
-    pub const SIDE: &str = "ST and IL views";
-    pub const SIDE_TITLE: &str =
-        "Show or hide the Structured Text and Instruction List beside the rungs";
-}
 
 /// `zoom` kept within its range, in whole percent.
 pub fn clamp_zoom(zoom: f64) -> f64 {
@@ -125,15 +113,15 @@ pub fn ZoomControls(
         }
     };
     view! {
-        <span class="ld-zoom" role="group" aria-label=text::ZOOM_LABEL>
+        <span class="ld-zoom" role="group" aria-label=t(K::ladder_zoom_label)>
             <button
                 disabled=move || { zoom.get() <= MIN_ZOOM }
-                on:click=move |_| prefs.set_zoom(step_zoom(zoom.get_untracked(), false))>{text::ZOOM_OUT}</button>
+                on:click=move |_| prefs.set_zoom(step_zoom(zoom.get_untracked(), false))>{t(K::ladder_zoom_out)}</button>
             <output class="ld-zoom-value" aria-live="polite">{move || format!("{:.0} %", zoom.get() * 100.0)}</output>
             <button
                 disabled=move || { zoom.get() >= MAX_ZOOM }
-                on:click=move |_| prefs.set_zoom(step_zoom(zoom.get_untracked(), true))>{text::ZOOM_IN}</button>
-            <button title=text::FIT_TITLE on:click=fit>{text::FIT}</button>
+                on:click=move |_| prefs.set_zoom(step_zoom(zoom.get_untracked(), true))>{t(K::ladder_zoom_in)}</button>
+            <button title=t(K::ladder_fit_title) on:click=fit>{t(K::ladder_fit)}</button>
         </span>
     }
 }
@@ -142,9 +130,10 @@ pub fn ZoomControls(
 #[component]
 pub fn SideToggle(prefs: ViewPrefs) -> impl IntoView {
     view! {
-        <button class="ld-side-toggle" title=text::SIDE_TITLE
+        <button class="ld-side-toggle" title=t(K::ladder_side_title)
             aria-pressed=move || if prefs.side.get() { "true" } else { "false" }
-            on:click=move |_| prefs.toggle_side()>{text::SIDE}</button>
+            on:click=move |_| prefs.toggle_side()>{t(K::ladder_side)}</button>
+
     }
 }
 
