@@ -15,7 +15,7 @@ use crate::components::{
 };
 use crate::exercises::{Exercises, Screen};
 use crate::i18n::{t, K};
-use crate::lazy::{self, lazy_view};
+use crate::lazy::{self, lazy_view, What};
 use crate::state::AppState;
 use plc_core::build::Site;
 
@@ -50,7 +50,7 @@ fn layout(state: AppState, exercises: Exercises) -> impl IntoView {
         <Banner/>
         <Show when=catalogue>
             {tour_panel()}
-            {lazy_view("the exercise catalogue", lazy::catalogue_view)}
+            {lazy_view(What::ExerciseCatalogue, lazy::catalogue_view)}
         </Show>
         // Kept while the catalogue is shown (hidden), so the editors keep their state.
         <main class="workspace" hidden=catalogue>
@@ -58,14 +58,14 @@ fn layout(state: AppState, exercises: Exercises) -> impl IntoView {
             {tour_panel()}
             <section class="editor-pane" aria-label="Program">
                 {move || exercises.open.with(Option::is_some).then(|| {
-                    lazy_view("the exercise", lazy::exercise_panel_view)
+                    lazy_view(What::Exercise, lazy::exercise_panel_view)
                 })}
                 <PouPane/>
             </section>
             <section class="sim-pane" id="simulation" tabindex="-1" aria-label="Simulation">
                 <Controls/>
-                {move || asking.get().then(|| lazy_view("the explanation", lazy::explanation_view))}
-                {move || has_scene.get().then(|| lazy_view("the plant scene", lazy::scene_view))}
+                {move || asking.get().then(|| lazy_view(What::Explanation, lazy::explanation_view))}
+                {move || has_scene.get().then(|| lazy_view(What::PlantScene, lazy::scene_view))}
                 <IoPanel/>
                 <Variables/>
                 <Timeline/>

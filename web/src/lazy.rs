@@ -21,7 +21,7 @@ use leptos::wasm_split::wasm_split;
 use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
 use plc_core::semantic::{IlPass, SfcPass};
 
-use crate::i18n::{t, tf, K};
+use crate::i18n::{t, K};
 
 /// A chunk of the app could not be fetched.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -87,47 +87,11 @@ impl What {
             What::PlantScene => K::lazy_failed_plant_scene,
         }
     }
-
-    /// The view an English phrase (`the ladder editor`) names, for [`lazy_view`]'s callers
-    /// that still name it in English.
-    fn from_english(what: &str) -> Option<What> {
-        Some(match what {
-            "the recording" => What::Recording,
-            "the New POU dialog" => What::NewPouDialog,
-            "the ladder editor" => What::LadderEditor,
-            "the Petri net editor" => What::PetriEditor,
-            "the SFC chart" => What::SfcChart,
-            "the network view" => What::NetworkView,
-            "the exercise catalogue" => What::ExerciseCatalogue,
-            "the exercise" => What::Exercise,
-            "the explanation" => What::Explanation,
-            "the plant scene" => What::PlantScene,
-            _ => return None,
-        })
-    }
-}
-
-/// Shows the view that `load` gives, with `Loading {what}…` (role=status) until its chunk
-/// has come, and a `Retry` button if it could not be fetched. `what` is one of the
-/// phrases [`What`] knows (translated whole); another is shown inside a general sentence.
-pub fn lazy_view<F, Fut>(what: &'static str, load: F) -> AnyView
-where
-    F: Fn() -> Fut + Send + Sync + 'static,
-    Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
-{
-    match What::from_english(what) {
-        Some(known) => lazy_view_of(known, load),
-        None => lazy_with(
-            move || tf(K::lazy_loading_other, &[("what", what)]),
-            move || tf(K::lazy_failed_other, &[("what", what)]),
-            load,
-        ),
-    }
 }
 
 /// Shows the view that `load` gives, with `Loading …` (role=status) naming `what` until
 /// its chunk has come, and a `Retry` button if it could not be fetched.
-pub fn lazy_view_of<F, Fut>(what: What, load: F) -> AnyView
+pub fn lazy_view<F, Fut>(what: What, load: F) -> AnyView
 where
     F: Fn() -> Fut + Send + Sync + 'static,
     Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
@@ -135,7 +99,7 @@ where
     lazy_with(move || t(what.loading()), move || t(what.failed()), load)
 }
 
-/// [`lazy_view_of`] with its two sentences.
+/// [`lazy_view`] with its two sentences.
 fn lazy_with<F, Fut, L, E, S>(loading_text: L, failed_text: E, load: F) -> AnyView
 where
     F: Fn() -> Fut + Send + Sync + 'static,

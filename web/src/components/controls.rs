@@ -8,7 +8,7 @@ use plc_core::sim::SimState;
 use plc_core::vm::format_time;
 
 use crate::i18n::{t, tf, K};
-use crate::lazy::{self, lazy_view_of, What};
+use crate::lazy::{self, lazy_view, What};
 use crate::state::{version_text, AppState, RunMode, Speed};
 
 /// The control bar of the simulation pane.
@@ -135,7 +135,7 @@ pub fn Controls() -> impl IntoView {
             // Its room is kept while there is a program, so pressing Run (which starts the
             // recording) never moves the inputs below under the pointer.
             <div class="recorded-slot" class:reserved=has_sim>
-                {move || has_history.get().then(|| lazy_view_of(What::Recording, lazy::recorded_view))}
+                {move || has_history.get().then(|| lazy_view(What::Recording, lazy::recorded_view))}
             </div>
             <div class="readouts">
                 <span class=move || status().1 role="status" aria-label=move || tf(K::sim_plc_state, &[("state", status().0)])>

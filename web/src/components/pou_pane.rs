@@ -5,12 +5,11 @@
 //! and caret survive switching; ladder and net views are built when selected.
 
 use leptos::prelude::*;
-use plc_core::i18n::Lang;
 
 use crate::components::editor::Editor;
 use crate::components::problems::Problems;
-use crate::i18n::{t, tf, I18n, K};
-use crate::lazy::{self, lazy_view};
+use crate::i18n::{t, tf, K};
+use crate::lazy::{self, lazy_view, What};
 use crate::state::{AppState, PouView};
 
 /// One entry of the navigator.
@@ -82,21 +81,9 @@ fn nav_items(state: AppState) -> Vec<NavItem> {
     })
 }
 
-/// Which of the `one`, `few` and `many` keys says `n` of something in the language shown
-/// (English: 1 → one, else many; Polish: 1 → one, 2–4 but not 12–14 → few, else many;
-/// Czech: 1 → one, 2–4 → few, else many).
+/// Which of the `one`, `few` and `many` keys says `n` of something in the language shown.
 fn plural(n: usize, [one, few, many]: [K; 3]) -> K {
-    let lang = use_context::<I18n>().map_or(Lang::En, |i| i.shown.get_untracked());
-    let few_here = match lang {
-        Lang::En => false,
-        Lang::Pl => (2..=4).contains(&(n % 10)) && !(12..=14).contains(&(n % 100)),
-        Lang::Cs => (2..=4).contains(&n),
-    };
-    match n {
-        1 => one,
-        _ if few_here => few,
-        _ => many,
-    }
+    crate::i18n::plural(n as u64, one, few, many)
 }
 
 /// A tab's accessible name: its visible text first (badge, name, error count; voice control
@@ -173,7 +160,7 @@ fn NewPou(petri: bool) -> impl IntoView {
                 });
             }>{title}</button>
         {move || open.get().then(|| {
-            lazy_view(t(K::pou_loading_new_dialog), move || lazy::new_pou_dialog(petri, open))
+            lazy_view(What::NewPouDialog, move || lazy::new_pou_dialog(petri, open))
         })}
     }
 }
@@ -192,14 +179,14 @@ pub fn PouPane() -> impl IntoView {
             PouView::St => ().into_any(),
             // Each view comes from its own chunk, fetched the first time it is shown.
             PouView::Ladder(name) => {
-                lazy_view(t(K::pou_loading_ladder), move || lazy::ladder_view(name.clone()))
+                lazy_view(What::LadderEditor, move || lazy::ladder_view(name.clone()))
             }
             PouView::Petri(name) => {
-                lazy_view(t(K::pou_loading_petri), move || lazy::petri_view(name.clone()))
+                lazy_view(What::PetriEditor, move || lazy::petri_view(name.clone()))
             }
-            PouView::Sfc(name) => lazy_view(t(K::pou_loading_sfc), move || lazy::sfc_view(name.clone())),
+            PouView::Sfc(name) => lazy_view(What::SfcChart, move || lazy::sfc_view(name.clone())),
             PouView::Network(name) => {
-                lazy_view(t(K::pou_loading_network), move || lazy::network_view(name.clone()))
+                lazy_view(What::NetworkView, move || lazy::network_view(name.clone()))
             }
         }}
         <Problems/>

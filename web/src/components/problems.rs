@@ -16,7 +16,6 @@ use plc_core::build::Site;
 use plc_core::diagnostics::Span;
 use plc_core::ladder::{implied_declaration, replace_name, CellRef, LadderEdit};
 
-
 use crate::i18n::{t, tf, K};
 use crate::state::{AppState, DiagView, PouView};
 
