@@ -280,20 +280,31 @@ fn i18n(out_dir: &Path) {
         panic!("the page's words (web/i18n/) are not complete:\n{}", problems.join("\n"));
     }
     let variant = |key: &str| key.replace('.', "_");
+    // Each key is a constant holding its place and its English text, so the English of a
+    // part shown only in a lazily loaded view is data of that view's chunk, not of the
+    // first load (wasm-split moves data with the code that alone uses it).
     let mut out = String::from(
-        "/// A text of the page: one per entry of `web/i18n/en/*.json` (dots become `_`).\n\
-         #[allow(non_camel_case_types)]\n#[derive(Debug, Clone, Copy, PartialEq, Eq)]\npub enum K {\n",
+        "/// One text of the page: its place in a translation file and its English.\n\
+         #[derive(Debug, PartialEq, Eq)]\npub struct Entry {\n    index: u16,\n    en: &'static str,\n}\n\n\
+         /// A text of the page: one per entry of `web/i18n/en/*.json` (dots become `_`).\n\
+         #[derive(Debug, Clone, Copy, PartialEq, Eq)]\npub struct K(&'static Entry);\n\n\
+         #[allow(non_upper_case_globals)]\nimpl K {\n",
     );
-    for (key, text) in &en {
-        let _ = writeln!(out, "    /// {}\n    {},", text.replace('\n', " "), variant(key));
+    for (i, (key, text)) in en.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "    /// {}\n    pub const {}: K = K(&Entry {{ index: {i}, en: {:?} }});",
+            text.replace('\n', " "),
+            variant(key),
+            text
+        );
     }
-    out.push_str("}\n\n/// How many texts the page has (a translation file holds as many).\npub const COUNT: usize = ");
-    let _ = writeln!(out, "{};\n", en.len());
-    out.push_str("/// The English texts in key order.\nstatic EN: [&str; COUNT] = [\n");
-    for (_, text) in &en {
-        let _ = writeln!(out, "    {:?},", text);
-    }
-    out.push_str("];\n\nimpl K {\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        EN[self as usize]\n    }\n}\n");
+    out.push_str(
+        "\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        self.0.en\n    }\n\n\
+         /// Its place in a translation file.\n    pub fn index(self) -> usize {\n        usize::from(self.0.index)\n    }\n}\n\n\
+         /// How many texts the page has (a translation file holds as many).\npub const COUNT: usize = ",
+    );
+    let _ = writeln!(out, "{};", en.len());
     let _ = std::fs::write(out_dir.join("i18n.rs"), out);
 }
 

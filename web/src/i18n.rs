@@ -172,7 +172,7 @@ async fn fetch_translation(lang: Lang) -> Result<Vec<String>, String> {
 pub fn t(key: K) -> &'static str {
     SHOWN
         .with(Cell::get)
-        .and_then(|texts| texts.get(key as usize))
+        .and_then(|texts| texts.get(key.index()))
         .map_or_else(|| key.en(), String::as_str)
 }
 
