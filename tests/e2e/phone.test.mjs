@@ -206,7 +206,7 @@ test('on a laptop: the exercise task folds to its summary line, the editor is on
     return [...svg.querySelectorAll('.tl-tick')].map((t) => parseFloat(getComputedStyle(t).fontSize) * k);
   });
   assert.ok(ticks.length > 0, 'the time axis has ticks');
-  assert.ok(ticks.every((px) => px >= 11), `tick labels are ${ticks.map((p) => p.toFixed(1)).join(', ')} px`);
+  assert.ok(ticks.every((px) => px >= 10.95), `tick labels are ${ticks.map((p) => p.toFixed(1)).join(', ')} px`);
 
   await page.getByRole('button', { name: 'Exercises', exact: true }).click();
   await page.getByRole('list', { name: 'Exercise list' }).getByRole('button', { name: 'Start/stop motor latch' }).click();
