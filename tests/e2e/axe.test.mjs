@@ -53,7 +53,20 @@ async function openApp(context) {
   return { page, errors };
 }
 
+/** A phone (issue 34) folds the header's actions into `Menu`: opened first there. */
+async function openMenu(page) {
+  const menu = page.getByRole('button', { name: 'Menu', exact: true });
+  if (await menu.isVisible() && (await menu.getAttribute('aria-expanded')) !== 'true') await menu.click();
+}
+
+/** A phone shows one pane at a time: its tab (`Program`, `Simulation`, `Exercise`) first. */
+async function showPane(page, name) {
+  const tab = page.getByRole('tab', { name, exact: true });
+  if (await tab.isVisible()) await tab.click();
+}
+
 async function openExample(page, title) {
+  await openMenu(page);
   await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: title });
   await page.getByRole('alert').filter({ hasText: `Opened the example “${title}”` }).waitFor();
 }
@@ -94,7 +107,9 @@ END_PROGRAM
 const VIEWS = {
   'ST editor': async (context) => {
     const { page, errors } = await openApp(context);
+    await showPane(page, 'Simulation');
     await page.getByRole('button', { name: 'Run', exact: true }).click();
+    await showPane(page, 'Program');
     return { page, errors };
   },
   'ladder editor': async (context) => {
@@ -123,6 +138,7 @@ const VIEWS = {
   },
   'SFC chart': async (context) => {
     const { page, errors } = await openApp(context);
+    await openMenu(page);
     await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: 'SFC weighing (ST)' });
     await page.getByRole('button', { name: 'SFC chart SfcWeighing' }).click();
     await page.getByRole('region', { name: 'SFC chart SfcWeighing' }).locator('.sfc-step').first().waitFor();
@@ -131,24 +147,29 @@ const VIEWS = {
   'plant scene': async (context) => {
     const { page, errors } = await openApp(context);
     await openExample(page, 'Weighing with its plant (Petri net and ST plant)');
+    await showPane(page, 'Simulation');
     const scene = page.getByRole('region', { name: 'Plant' });
     await scene.getByRole('img', { name: 'Scale: 0 g' }).waitFor();
     return { page, errors };
   },
   'exercise catalogue': async (context) => {
     const { page, errors } = await openApp(context);
+    await openMenu(page);
     await page.getByRole('button', { name: 'Exercises', exact: true }).click();
     await page.getByRole('list', { name: 'Exercise list' }).getByRole('listitem').first().waitFor();
     return { page, errors };
   },
   'exercise page with a report': async (context) => {
     const { page, errors } = await openApp(context);
+    await openMenu(page);
     await page.getByRole('button', { name: 'Exercises', exact: true }).click();
     await page.getByRole('list', { name: 'Exercise list' }).getByRole('button', { name: 'Start/stop motor latch' }).click();
     await page.getByRole('region', { name: 'Exercise' }).getByRole('heading', { name: 'Start/stop motor latch' }).waitFor();
     await page.waitForFunction(() => document.querySelector('textarea[aria-label="ST source"]')?.value.includes('Motor := FALSE;'));
+    await showPane(page, 'Program');
     await page.getByRole('textbox', { name: 'ST source' }).fill(NO_SEAL);
     await page.waitForTimeout(400);
+    await showPane(page, 'Exercise');
     await page.getByRole('button', { name: 'Check', exact: true }).click();
     const report = page.getByRole('region', { name: 'Report' });
     await report.locator('.report-scenario.failed').first().waitFor();

@@ -34,7 +34,20 @@ async function openApp(context) {
   return { page, errors };
 }
 
+/** A phone (issue 34) folds the header's actions into `Menu`: opened first there. */
+async function openMenu(page) {
+  const menu = page.getByRole('button', { name: 'Menu', exact: true });
+  if (await menu.isVisible() && (await menu.getAttribute('aria-expanded')) !== 'true') await menu.click();
+}
+
+/** A phone shows one pane at a time: its tab (`Program`, `Simulation`, `Exercise`) first. */
+async function showPane(page, name) {
+  const tab = page.getByRole('tab', { name, exact: true });
+  if (await tab.isVisible()) await tab.click();
+}
+
 async function openExample(page, title) {
+  await openMenu(page);
   await page.getByRole('combobox', { name: 'Open example' }).selectOption({ label: title });
   await page.getByRole('alert').filter({ hasText: `Opened the example “${title}”` }).waitFor();
 }
@@ -116,16 +129,20 @@ const VIEWS = {
   ladder: async (page) => {
     await openExample(page, 'Ladder latch');
     await page.getByRole('img', { name: 'Coil Motor: OFF' }).waitFor();
+    await showPane(page, 'Simulation');
     await page.getByRole('button', { name: 'Run', exact: true }).click();
+    await showPane(page, 'Program');
     await page.getByRole('region', { name: 'Ladder diagram Latch' }).getByRole('button', { name: 'Contact Start' }).click();
     await page.getByRole('img', { name: 'Coil Motor: ON' }).waitFor();
   },
   petri: async (page) => {
     await openExample(page, 'Weighing (concurrent Petri net)');
     await page.locator('.pn-place').first().waitFor();
+    await showPane(page, 'Simulation');
     await page.getByRole('button', { name: 'Step', exact: true }).click();
     await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
     await page.getByRole('button', { name: 'Step', exact: true }).click();
+    await showPane(page, 'Program');
     await page.locator('.pn-place[data-tokens="1"]').first().waitFor();
   },
 };

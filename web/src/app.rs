@@ -1,6 +1,8 @@
 //! The page layout: header with the project menu, the `Start here` strip of a first
 //! visit, the editor pane (POU navigator, the
-//! selected POU's view, the problem list) and the simulation panels.
+//! selected POU's view, the problem list) and the simulation panels. On a small screen
+//! (≤ 700 px wide, issue 34) a tab bar shows one of them at a time: `Program`,
+//! `Simulation`, and `Exercise` while one is open.
 
 use leptos::prelude::*;
 
@@ -14,7 +16,7 @@ use crate::components::{
     variables::Variables,
 };
 use crate::exercises::{Exercises, Screen};
-use crate::i18n::{t, K};
+use crate::i18n::{t, tf, K};
 use crate::lazy::{self, lazy_view, What};
 use crate::state::AppState;
 use plc_core::build::Site;
@@ -31,6 +33,17 @@ pub fn App() -> impl IntoView {
     tour.watch(state, exercises);
     let i18n = crate::i18n::I18n::start();
     provide_context(i18n);
+    let pane = RwSignal::new(Pane::Program);
+    provide_context(pane);
+    // On a phone an exercise opened shows its task; closed, the program.
+    let has_exercise = Memo::new(move |_| exercises.open.with(Option::is_some));
+    Effect::new(move |before: Option<bool>| {
+        let open = has_exercise.get();
+        if before.is_some_and(|b| b != open) {
+            pane.set(if open { Pane::Exercise } else { Pane::Program });
+        }
+        open
+    });
     // Drawn again when the language shown changes: the views hold plain texts, the state
     // stays where it is.
     move || {
@@ -44,8 +57,15 @@ fn layout(state: AppState, exercises: Exercises) -> impl IntoView {
     let catalogue = move || exercises.screen.get() == Screen::Catalogue;
     let asking = Memo::new(move |_| state.why.with(Option::is_some));
     let has_scene = Memo::new(move |_| state.project.with(|p| p.scene.is_some()));
+    let pane = expect_context::<RwSignal<Pane>>();
+    let has_exercise = Memo::new(move |_| exercises.open.with(Option::is_some));
+    // The pane shown on a small screen (the exercise's only while one is open).
+    let shown = Memo::new(move |_| match pane.get() {
+        Pane::Exercise if !has_exercise.get() => Pane::Program,
+        p => p,
+    });
     view! {
-        <a class="skip-link" href="#simulation" on:click=skip_to_simulation>{t(K::app_skip_to_simulation)}</a>
+        <a class="skip-link" href="#simulation" on:click=move |ev| skip_to_simulation(ev, pane)>{t(K::app_skip_to_simulation)}</a>
         <Header/>
         <Banner/>
         <Show when=catalogue>
@@ -53,16 +73,21 @@ fn layout(state: AppState, exercises: Exercises) -> impl IntoView {
             {lazy_view(What::ExerciseCatalogue, lazy::catalogue_view)}
         </Show>
         // Kept while the catalogue is shown (hidden), so the editors keep their state.
-        <main class="workspace" hidden=catalogue>
+        <main class="workspace" hidden=catalogue data-pane=move || shown.get().id()>
+            {pane_tabs(pane, shown, has_exercise)}
             // At the top of the simulation column: the editors never move for it.
             {tour_panel()}
-            <section class="editor-pane" aria-label="Program">
-                {move || exercises.open.with(Option::is_some).then(|| {
-                    lazy_view(What::Exercise, lazy::exercise_panel_view)
-                })}
-                <PouPane/>
+            <section class="editor-pane" id="program" aria-label=t(K::app_program)>
+                <div class="exercise-slot" id="exercise">
+                    {move || has_exercise.get().then(|| {
+                        lazy_view(What::Exercise, lazy::exercise_panel_view)
+                    })}
+                </div>
+                <div class="program-slot">
+                    <PouPane/>
+                </div>
             </section>
-            <section class="sim-pane" id="simulation" tabindex="-1" aria-label="Simulation">
+            <section class="sim-pane" id="simulation" tabindex="-1" aria-label=t(K::app_simulation)>
                 <Controls/>
                 {move || asking.get().then(|| lazy_view(What::Explanation, lazy::explanation_view))}
                 {move || has_scene.get().then(|| lazy_view(What::PlantScene, lazy::scene_view))}
@@ -74,16 +99,90 @@ fn layout(state: AppState, exercises: Exercises) -> impl IntoView {
     }
 }
 
-/// The skip link's click: focus moves to the simulation column (Run, the inputs) without
-/// a fragment in the address, which is the share link's place.
-fn skip_to_simulation(ev: leptos::ev::MouseEvent) {
-    ev.prevent_default();
-    let pane = web_sys::window()
+/// The panes a small screen shows one at a time (the `Program` / `Simulation` /
+/// `Exercise` tabs); a wide screen shows them side by side.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Pane {
+    Program,
+    Simulation,
+    Exercise,
+}
+
+impl Pane {
+    /// The id of the pane's element (the tab's `aria-controls`).
+    fn id(self) -> &'static str {
+        match self {
+            Pane::Program => "program",
+            Pane::Simulation => "simulation",
+            Pane::Exercise => "exercise",
+        }
+    }
+}
+
+/// The element with `id`, as an HTML element.
+fn element(id: &str) -> Option<web_sys::HtmlElement> {
+    web_sys::window()
         .and_then(|w| w.document())
-        .and_then(|d| d.get_element_by_id("simulation"))
-        .and_then(|e| wasm_bindgen::JsCast::dyn_into::<web_sys::HtmlElement>(e).ok());
-    if let Some(pane) = pane {
+        .and_then(|d| d.get_element_by_id(id))
+        .and_then(|e| wasm_bindgen::JsCast::dyn_into::<web_sys::HtmlElement>(e).ok())
+}
+
+/// The tab bar of a small screen (hidden on a wide one): a tab per pane, the arrow keys,
+/// Home and End move among them as in every tab bar.
+fn pane_tabs(pane: RwSignal<Pane>, shown: Memo<Pane>, has_exercise: Memo<bool>) -> impl IntoView {
+    let tab = move |p: Pane, label: &'static str| {
+        view! {
+            <button class="pane-tab" role="tab" id=format!("tab-{}", p.id()) aria-controls=p.id()
+                aria-selected=move || (shown.get() == p).to_string()
+                tabindex=move || if shown.get() == p { "0" } else { "-1" }
+                on:click=move |_| pane.set(p)>{label}</button>
+        }
+    };
+    let on_key = move |ev: leptos::ev::KeyboardEvent| {
+        let mut all = vec![Pane::Program, Pane::Simulation];
+        if has_exercise.get_untracked() {
+            all.push(Pane::Exercise);
+        }
+        let at = all.iter().position(|p| *p == shown.get_untracked()).unwrap_or(0);
+        let next = match ev.key().as_str() {
+            "ArrowRight" => (at + 1) % all.len(),
+            "ArrowLeft" => (at + all.len() - 1) % all.len(),
+            "Home" => 0,
+            "End" => all.len() - 1,
+            _ => return,
+        };
+        ev.prevent_default();
+        pane.set(all[next]);
+        if let Some(tab) = element(&format!("tab-{}", all[next].id())) {
+            let _ = tab.focus();
+        }
+    };
+    view! {
+        <div class="pane-tabs" role="tablist" aria-label=t(K::phone_views) on:keydown=on_key>
+            {tab(Pane::Program, t(K::phone_program))}
+            {tab(Pane::Simulation, t(K::phone_simulation))}
+            {move || has_exercise.get().then(|| tab(Pane::Exercise, t(K::phone_exercise)))}
+        </div>
+    }
+}
+
+/// The skip link's click: focus moves to the simulation column (Run, the inputs) without
+/// a fragment in the address, which is the share link's place; a small screen shows its
+/// tab first.
+fn skip_to_simulation(ev: leptos::ev::MouseEvent, pane: RwSignal<Pane>) {
+    ev.prevent_default();
+    pane.set(Pane::Simulation);
+    let focus = || {
+        let pane = element("simulation")?;
         let _ = pane.focus();
+        let active = web_sys::window()?.document()?.active_element()?;
+        Some(active == *pane.as_ref())
+    };
+    // Shown already (a wide screen): at once; else once its tab has shown it.
+    if focus() != Some(true) {
+        request_animation_frame(move || {
+            focus();
+        });
     }
 }
 
@@ -91,6 +190,7 @@ fn skip_to_simulation(ev: leptos::ev::MouseEvent) {
 #[component]
 fn Banner() -> impl IntoView {
     let state = expect_context::<AppState>();
+    let pane = expect_context::<RwSignal<Pane>>();
     move || {
         state.notice.get().map(|n| {
             let class = if n.error { "banner banner-error" } else { "banner banner-info" };
@@ -103,14 +203,17 @@ fn Banner() -> impl IntoView {
                     }).collect_view()}
                     {site.map(|site| {
                         let label = match &site {
-                            Site::St { line, .. } => format!("Go to line {line}"),
-                            _ => "Show".to_string(),
+                            Site::St { line, .. } => tf(K::app_go_to_line, &[("line", &line.to_string())]),
+                            _ => t(K::app_show).to_string(),
                         };
                         view! {
-                            <button class="link" on:click=move |_| state.reveal(&site)>{label}</button>
+                            <button class="link" on:click=move |_| {
+                                pane.set(Pane::Program);
+                                state.reveal(&site);
+                            }>{label}</button>
                         }
                     })}
-                    <button class="close" aria-label="Dismiss" on:click=move |_| state.notice.set(None)>"×"</button>
+                    <button class="close" aria-label=t(K::app_dismiss) on:click=move |_| state.notice.set(None)>"×"</button>
                 </div>
             }
         })

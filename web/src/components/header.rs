@@ -1,6 +1,7 @@
 //! The page header: the app title, the open project's name, the project menu (open,
 //! new, open an example, rename, duplicate, delete, export, import, share), `Help` and the
-//! `Theme` switch.
+//! `Theme` switch. On a small screen (≤ 700 px wide, issue 34) the actions fold into a
+//! `Menu` button that opens them as a panel.
 
 use leptos::ev;
 use leptos::html;
@@ -34,7 +35,7 @@ async fn import_file(state: AppState, file: web_sys::File) {
     let text = match JsFuture::from(file.text()).await {
         Ok(v) => v.as_string().unwrap_or_default(),
         Err(_) => {
-            state.error(format!("Could not read “{name}”. Nothing was changed."));
+            state.error(tf(K::header_read_failed, &[("name", &name)]));
             return;
         }
     };
@@ -46,13 +47,20 @@ async fn import_file(state: AppState, file: web_sys::File) {
                 return; // the banner says it is open but not saved
             }
             let kind = opened.kind;
-            let mut text = format!("Imported “{pname}” from {name} ({kind}).");
+            let mut text =
+                tf(K::header_imported, &[("project", &pname), ("name", &name), ("kind", &kind)]);
             if !opened.warnings.is_empty() {
-                text.push_str(&format!(" Notes: {}", opened.warnings.join("; ")));
+                text.push(' ');
+                text.push_str(&tf(
+                    K::header_import_notes,
+                    &[("notes", &opened.warnings.join("; "))],
+                ));
             }
             state.info(text);
         }
-        Err(e) => state.error(format!("Could not import “{name}”: {e}. Nothing was changed.")),
+        Err(e) => {
+            state.error(tf(K::header_import_failed, &[("name", &name), ("error", &e.to_string())]))
+        }
     }
 }
 
@@ -60,13 +68,13 @@ async fn import_file(state: AppState, file: web_sys::File) {
 async fn share(state: AppState, shown: RwSignal<Option<String>>) {
     let link = match state.share_link().await {
         Ok(link) => link,
-        Err(e) => return state.error(format!("Could not make the share link: {e}")),
+        Err(e) => return state.error(tf(K::header_share_failed, &[("error", &e.to_string())])),
     };
     shown.set(Some(link.clone()));
     if copy_to_clipboard(&link).await {
-        state.info(format!("Share link copied to the clipboard: {link}"));
+        state.info(tf(K::header_share_copied, &[("link", &link)]));
     } else {
-        state.info(format!("Copy this share link (the clipboard is not available here): {link}"));
+        state.info(tf(K::header_share_copy, &[("link", &link)]));
     }
 }
 
@@ -106,6 +114,68 @@ pub fn Header() -> impl IntoView {
     let rename_input = NodeRef::<html::Input>::new();
     let file_input = NodeRef::<html::Input>::new();
     let share_link = RwSignal::new(None::<String>);
+    // The small screen's `Menu` panel: open or not; the button takes the focus back.
+    let menu_open = RwSignal::new(false);
+    let menu_button = NodeRef::<html::Button>::new();
+    let actions = NodeRef::<html::Div>::new();
+    let header = NodeRef::<html::Header>::new();
+    let close_menu = move |focus: bool| {
+        menu_open.set(false);
+        if let Some(b) = menu_button.get_untracked().filter(|_| focus) {
+            let _ = b.focus();
+        }
+    };
+    let toggle_menu = move |_| {
+        let open = !menu_open.get_untracked();
+        menu_open.set(open);
+        // The first action takes the focus, once the panel is shown.
+        if open {
+            request_animation_frame(move || {
+                let first = actions
+                    .get_untracked()
+                    .and_then(|a| a.query_selector("button, select").ok().flatten())
+                    .and_then(|e| e.dyn_into::<web_sys::HtmlElement>().ok());
+                if let Some(first) = first {
+                    let _ = first.focus();
+                }
+            });
+        }
+    };
+    // Esc closes the panel (after a menu inside it, which takes its own Esc first).
+    let on_actions_key = move |ev: ev::KeyboardEvent| {
+        if ev.key() == "Escape" && menu_open.get_untracked() && !ev.default_prevented() {
+            ev.prevent_default();
+            close_menu(true);
+        }
+    };
+    // An action taken closes the panel (not the `Help` button, which opens its own menu).
+    let on_actions_click = move |ev: ev::MouseEvent| {
+        let button = ev
+            .target()
+            .and_then(|t| t.dyn_into::<web_sys::Element>().ok())
+            .and_then(|e| e.closest("button, a").ok().flatten());
+        if menu_open.get_untracked() && button.is_some_and(|b| !b.has_attribute("aria-haspopup")) {
+            close_menu(true);
+        }
+    };
+    let on_actions_change = move |ev: ev::Event| {
+        let file = ev.target().and_then(|t| t.dyn_into::<web_sys::HtmlInputElement>().ok());
+        if menu_open.get_untracked() && file.is_none() {
+            close_menu(true);
+        }
+    };
+    // A tap outside the header closes the panel.
+    let outside = window_event_listener(ev::pointerdown, move |ev| {
+        if !menu_open.get_untracked() {
+            return;
+        }
+        let target = ev.target().and_then(|t| t.dyn_into::<web_sys::Node>().ok());
+        let inside = header.get_untracked().is_some_and(|h| h.contains(target.as_ref()));
+        if !inside {
+            close_menu(false);
+        }
+    });
+    on_cleanup(move || outside.remove());
 
     // A different project: its share link is not this one's.
     Effect::new(move |_| {
@@ -185,7 +255,7 @@ pub fn Header() -> impl IntoView {
     };
 
     view! {
-        <header class="app-header">
+        <header class="app-header" node_ref=header>
             <h1 class="app-title">{t(K::app_title)}</h1>
             <div class="project-title">
                 {move || if renaming.get() {
@@ -203,6 +273,12 @@ pub fn Header() -> impl IntoView {
                     view! { <span class="project-name" title=t(K::header_open_project_title)>{name}</span> }.into_any()
                 }}
             </div>
+            <button class="header-button menu-toggle" node_ref=menu_button aria-controls="header-actions"
+                aria-expanded=move || menu_open.get().to_string() on:click=toggle_menu>{t(K::phone_menu)}</button>
+            // A wide screen lays these out in the header's row (`display: contents`); a small
+            // one shows them only while the `Menu` panel is open.
+            <div class="header-actions" id="header-actions" node_ref=actions class:open=move || menu_open.get()
+                on:keydown=on_actions_key on:click=on_actions_click on:change=on_actions_change>
             <button class="exercises-button" aria-pressed=move || (exercises.screen.get() == Screen::Catalogue).to_string()
                 on:click=move |_| exercises.screen.update(|s| *s = if *s == Screen::Catalogue { Screen::Workspace } else { Screen::Catalogue })
                 title=t(K::header_exercises_title)>{t(K::header_exercises)}</button>
@@ -275,6 +351,7 @@ pub fn Header() -> impl IntoView {
                     on:change=on_file/>
                 <button on:click=on_share title=t(K::header_share_title)>{t(K::header_share)}</button>
             </nav>
+            </div>
             {move || share_link.get().map(|link| view! {
                 <ShareBox link=link label=t(K::header_share_link) close_label=t(K::header_close_share_link)
                     on_close=move || share_link.set(None)/>

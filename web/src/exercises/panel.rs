@@ -114,7 +114,7 @@ pub fn ExercisePanel() -> impl IntoView {
                         <ShareBox link=link label=t(K::exercise_link) close_label=t(K::exercise_close_link)
                             on_close=move || ex.share_link.set(None)/>
                     })}
-                    <details class="exercise-task" open=true>
+                    <details class="exercise-task" open=task_open()>
                         <summary>{t(K::exercise_task)}</summary>
                         <div class="statement" inner_html=v.statement_html.clone()></div>
                         <table class="exercise-interface" aria-label=t(K::exercise_interface)>
@@ -139,4 +139,14 @@ pub fn ExercisePanel() -> impl IntoView {
             }
         })
     }
+}
+
+/// Whether the task starts unfolded: on a screen tall enough for it and the editor (at
+/// 1280 × 800 it folds to its summary line so the editor is on the first screen, issue
+/// 34), and on a phone, where the task has its own `Exercise` tab.
+fn task_open() -> bool {
+    let size = |f: fn(&web_sys::Window) -> Result<wasm_bindgen::JsValue, wasm_bindgen::JsValue>| {
+        web_sys::window().and_then(|w| f(&w).ok()).and_then(|v| v.as_f64()).unwrap_or(0.0)
+    };
+    size(web_sys::Window::inner_height) >= 900.0 || size(web_sys::Window::inner_width) <= 700.0
 }

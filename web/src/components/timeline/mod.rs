@@ -247,7 +247,36 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
     let now = move || state.with_sim(|s| s.time_ns()).unwrap_or(0);
     // While dragging: (start x, window end at start, window span).
     let drag = StoredValue::new(None::<(f64, i64, i64)>);
-    let height = move || chart.with(|c| c.height);
+    // The drawn width in CSS px: the chart's units per px (`k`) keep its text 11 px and
+    // the chart at least 120 px tall at any width (issue 34).
+    let svg_ref = NodeRef::<leptos::svg::Svg>::new();
+    let px = RwSignal::new(0.0_f64);
+    Effect::new(move |_| {
+        let Some(el) = svg_ref.get() else { return };
+        let el: web_sys::Element = el.into();
+        let measured = el.clone();
+        let on_resize = wasm_bindgen::closure::Closure::<dyn Fn()>::new(move || {
+            px.set(measured.get_bounding_client_rect().width());
+        });
+        if let Ok(observer) = web_sys::ResizeObserver::new(on_resize.as_ref().unchecked_ref()) {
+            observer.observe(&el);
+        }
+        on_resize.forget();
+    });
+    let k = move || {
+        let w = px.get();
+        if w > 0.0 {
+            WIDTH / w
+        } else {
+            1.0
+        }
+    };
+    // The lanes' bottom, the axis below them and the whole height, in the chart's units.
+    let axis_y = move || {
+        let k = k();
+        chart.with(|c| (c.height - AXIS_H).max(120.0 * k - AXIS_H * k))
+    };
+    let height = move || axis_y() + AXIS_H * k();
     let on_move = move |ev: web_sys::PointerEvent| {
         let Some(x) = pointer_x(&ev) else { return };
         let window = chart.with_untracked(|c| c.window);
@@ -272,11 +301,11 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
         view.zoom(factor, view.cursor.get_untracked(), now());
     };
     view! {
-        <svg class="timeline-chart" role="img" aria-label=t(K::sim_timeline_chart)
+        <svg class="timeline-chart" role="img" aria-label=t(K::sim_timeline_chart) node_ref=svg_ref
             xmlns="http://www.w3.org/2000/svg"
             viewBox=move || format!("0 0 {WIDTH} {}", height())
             width="100%"
-            font-family="sans-serif" font-size="11"
+            font-family="sans-serif" font-size=move || format!("{:.2}", 11.0 * k())
             on:pointermove=on_move
             on:pointerdown=on_down
             on:pointerup=move |_| drag.set_value(None)
@@ -285,35 +314,37 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
             on:wheel=on_wheel>
             <rect class="tl-bg" x="0" y="0" width=WIDTH height=height fill="#ffffff"/>
             {move || chart.with(|c| c.ticks.iter().map(|(x, label)| {
-                let h = c.height - AXIS_H;
+                let h = axis_y();
                 view! {
                     <line class="tl-grid" x1=*x x2=*x y1="0" y2=h stroke="#e3e8ee" stroke-width="1"/>
-                    <text class="tl-tick" x=*x y=h + 14.0 text-anchor="middle" fill="#5b6b7c">{label.clone()}</text>
+                    <text class="tl-tick" x=*x y=h + 15.0 * k() text-anchor="middle" fill="#5b6b7c">{label.clone()}</text>
                 }
             }).collect_view())}
             {move || chart.with(|c| c.lanes.iter().enumerate().map(|(i, lane)| {
                 let color = COLORS[i % COLORS.len()];
+                // A lane's own labels fit its height.
+                let lane_font = format!("{:.2}", (11.0 * k()).min(lane.height * 0.6));
                 view! {
                     <g>
                         <rect class="tl-lane-bg" x=LEFT y=lane.top width=WIDTH - LEFT height=lane.height fill="#f7f9fb"/>
-                        <text class="tl-series" x="4" y=lane.top + 14.0 fill=color font-weight="bold">{lane.path.clone()}</text>
+                        <text class="tl-series" x="4" y=lane.top + 14.0 fill=color font-weight="bold" font-size=lane_font.clone()>{lane.path.clone()}</text>
                         {(!lane.digital).then(|| view! {
-                            <text class="tl-tick" x="4" y=lane.top + 28.0 fill="#5b6b7c">{tf(K::sim_lane_max, &[("value", &short(lane.range.1))])}</text>
-                            <text class="tl-tick" x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c">{tf(K::sim_lane_min, &[("value", &short(lane.range.0))])}</text>
+                            <text class="tl-tick" x="4" y=lane.top + 28.0 fill="#5b6b7c" font-size=lane_font.clone()>{tf(K::sim_lane_max, &[("value", &short(lane.range.1))])}</text>
+                            <text class="tl-tick" x="4" y=lane.top + lane.height - 4.0 fill="#5b6b7c" font-size=lane_font.clone()>{tf(K::sim_lane_min, &[("value", &short(lane.range.0))])}</text>
                         })}
                         <polyline class="tl-series" points=lane.points.clone() fill="none" stroke=color stroke-width="1.5"/>
                     </g>
                 }
             }).collect_view())}
-            <line class="tl-axis-line" x1=LEFT x2=WIDTH y1=move || height() - AXIS_H y2=move || height() - AXIS_H stroke="#5b6b7c"/>
+            <line class="tl-axis-line" x1=LEFT x2=WIDTH y1=axis_y y2=axis_y stroke="#5b6b7c"/>
             // The recorded scan the page shows (issue 36).
             {move || state.with_shown_view(|v| v.time_ns()).map(|t| {
                 let x = chart::x_of(t, chart.with(|c| c.window));
-                view! { <line class="scan-cursor" x1=x x2=x y1="0" y2=height() - AXIS_H stroke="#b45309" stroke-width="2"/> }
+                view! { <line class="scan-cursor" x1=x x2=x y1="0" y2=axis_y() stroke="#b45309" stroke-width="2"/> }
             })}
             {move || view.cursor.get().map(|t| {
                 let x = chart::x_of(t, chart.with(|c| c.window));
-                view! { <line class="cursor" x1=x x2=x y1="0" y2=height() - AXIS_H stroke="#333" stroke-dasharray="3 3"/> }
+                view! { <line class="cursor" x1=x x2=x y1="0" y2=axis_y() stroke="#333" stroke-dasharray="3 3"/> }
             })}
         </svg>
     }
