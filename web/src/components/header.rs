@@ -84,6 +84,11 @@ async fn share(state: AppState, shown: RwSignal<Option<String>>) {
 #[component]
 fn LanguageSelect() -> impl IntoView {
     let i18n = expect_context::<I18n>();
+    // The exercise catalogue has a `Language` filter of its own (the languages an exercise
+    // is written in): while it is shown, the page's language is left to the project's
+    // screen, so that one control answers to the name.
+    let catalogue = expect_context::<crate::exercises::Exercises>().screen;
+    let in_catalogue = move || catalogue.get() == crate::exercises::Screen::Catalogue;
     let word = t(K::header_language);
     let name = if i18n.shown.get_untracked() == Lang::En {
         word.to_string()
@@ -91,7 +96,7 @@ fn LanguageSelect() -> impl IntoView {
         format!("{word} (Language)")
     };
     view! {
-        <select class="language-select" aria-label=name.clone() title=name
+        <select class="language-select" aria-label=name.clone() title=name hidden=in_catalogue
             prop:value=move || i18n.lang.get().tag()
             on:change=move |ev: ev::Event| {
                 if let Some(lang) = Lang::from_tag(&event_target_value(&ev)) {
