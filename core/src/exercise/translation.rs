@@ -168,16 +168,16 @@ impl Exercise {
             out.push("statement".to_string());
         }
         for v in self.interface.iter().filter(|v| !v.meaning.trim().is_empty()) {
-            if !t.meaning.get(&v.name).is_some_and(|m| !m.trim().is_empty()) {
+            if t.meaning.get(&v.name).is_none_or(|m| m.trim().is_empty()) {
                 out.push(format!("meaning.{}", v.name));
             }
         }
         for s in &self.scenarios {
             let st = t.scenario.get(&s.name);
-            if !st.is_some_and(|st| given(&st.name)) {
+            if st.is_none_or(|st| !given(&st.name)) {
                 out.push(format!("scenario.“{}”.name", s.name));
             }
-            if s.hint.is_some() && !st.is_some_and(|st| given(&st.hint)) {
+            if s.hint.is_some() && st.is_none_or(|st| !given(&st.hint)) {
                 out.push(format!("scenario.“{}”.hint", s.name));
             }
         }
