@@ -24,7 +24,7 @@ fn every_shipped_exercise_is_translated_into_polish_and_czech() {
             if !missing.is_empty() {
                 problems.push(format!("{file}: [lang.{lang}] lacks {}", missing.join(", ")));
             }
-            let t = e.translation(lang).map(|t| t.clone()).unwrap_or_default();
+            let t = e.translation(lang).cloned().unwrap_or_default();
             let texts = [t.title.clone(), t.statement.clone()].into_iter().flatten();
             let texts = texts.chain(t.meaning.values().cloned());
             let texts = texts.chain(
