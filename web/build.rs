@@ -5,9 +5,10 @@
 //!
 //! Lists the shipped exercises (`../exercises/ID/ID.toml`) too: `$OUT_DIR/exercises.rs`
 //! holds the catalogue (id, title, level, languages: all the page needs before one is
-//! opened), and `$OUT_DIR/exercises/ID.json` each exercise with its starter, as the
+//! opened; `TITLES` the Polish and Czech titles), and `$OUT_DIR/exercises/ID.json` each exercise with its starter, as the
 //! exercise link that opens it (`plc_core::exercise::ExerciseLink`), the exercise in the
-//! built form (`core/src/exercise/built_form.rs`: JSON, its statement rendered), so that
+//! built form (`core/src/exercise/built_form.rs`: JSON, its statement and its translations'
+//! rendered), so that
 //! the exercise worker reads it without a TOML reader or a Markdown renderer.
 //! `scripts/build-web.sh` puts these files next to the app; the worker fetches the one it
 //! opens (natively, in tests, `$OUT_DIR/exercise_files.rs` includes them). The reference
@@ -66,6 +67,16 @@ struct Entry {
     starter_petri: Option<String>,
     #[serde(default)]
     starter_sfc: Option<String>,
+    /// The translations (`[lang.pl]`, `[lang.cs]`): the catalogue needs their titles.
+    #[serde(default)]
+    lang: std::collections::BTreeMap<String, EntryLang>,
+}
+
+/// What the catalogue needs of a translation: its title.
+#[derive(serde::Deserialize)]
+struct EntryLang {
+    #[serde(default)]
+    title: Option<String>,
 }
 
 impl Entry {
@@ -108,6 +119,9 @@ fn exercises(out: &Path) {
     let mut catalogue = String::from(
         "/// The shipped exercises, easiest first: (id, title, level, languages).\npub const CATALOGUE: &[(&str, &str, u8, &[&str])] = &[\n",
     );
+    let mut titles = String::from(
+        "\n/// The shipped exercises' titles in Polish and Czech, in the catalogue's order: (id, pl, cs),\n/// the English one where a translation has none.\npub const TITLES: &[(&str, &str, &str)] = &[\n",
+    );
     let mut files = String::from(
         "/// The shipped exercises as the links that open them: (id, JSON of the link).\npub const FILES: &[(&str, &str)] = &[\n",
     );
@@ -121,6 +135,10 @@ fn exercises(out: &Path) {
             "    ({:?}, {:?}, {}, &{:?}),",
             e.id, e.title, e.level, e.languages
         );
+        let title_in = |tag: &str| {
+            e.lang.get(tag).and_then(|t| t.title.clone()).unwrap_or_else(|| e.title.clone())
+        };
+        let _ = writeln!(titles, "    ({:?}, {:?}, {:?}),", e.id, title_in("pl"), title_in("cs"));
         let file = folder.join(format!("{}.toml", e.id));
         let text = std::fs::read_to_string(&file).unwrap_or_default();
         let built = built_form::built_form(&text, |m| statement::statement_html(m, None))
@@ -150,6 +168,8 @@ fn exercises(out: &Path) {
         let _ =
             writeln!(files, "    ({:?}, include_str!({:?})),", e.id, target.display().to_string());
     }
+    catalogue.push_str("];\n");
+    catalogue.push_str(&titles);
     catalogue.push_str("];\n");
     files.push_str("];\n");
     for (name, text) in [("exercises.rs", catalogue), ("exercise_files.rs", files)] {

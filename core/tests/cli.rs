@@ -559,6 +559,58 @@ fn a_new_exercise_skeleton_validates() {
     assert_eq!(again.status.code(), Some(2), "an existing folder is left alone");
 }
 
+/// `plc exercise validate` reports a translation that renames an interface variable, names
+/// a scenario the exercise does not have or changes program text, with the file and the
+/// table; a complete, faithful translation passes.
+#[test]
+fn exercise_validate_reports_a_translation_with_other_names() {
+    let dir = std::env::temp_dir().join(format!("plc-i18n-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let plc = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap()
+    };
+    assert!(plc(&["exercise", "new", "lamp"]).status.success());
+    let file = dir.join("lamp/lamp.toml");
+    let english = std::fs::read_to_string(&file).unwrap();
+    let e = plc_core::exercise::Exercise::from_toml(&english).unwrap();
+    let scenario = e.scenarios[0].name.clone();
+    let translated = |meaning_key: &str, scenario_key: &str| {
+        let mut t = format!("{english}\n[lang.pl]\ntitle = \"Lampka\"\n\n[lang.pl.meaning]\n");
+        for v in &e.interface {
+            let key = if v.name == "Lamp" { meaning_key } else { v.name.as_str() };
+            t.push_str(&format!("{key} = \"znaczenie {}\"\n", v.name));
+        }
+        t.push_str(&format!("\n[lang.pl.scenario.\"{scenario_key}\"]\nname = \"Scenariusz\"\n"));
+        t
+    };
+    std::fs::write(&file, translated("Lamp", &scenario)).unwrap();
+    let out = plc(&["exercise", "validate", "lamp/lamp.toml"]);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(out.status.success(), "{text}");
+    assert!(text.contains("lang.pl: shown in English: statement"), "{text}");
+    std::fs::write(&file, translated("Lampka", "Scenariusz 1")).unwrap();
+    let out = plc(&["exercise", "validate", "lamp/lamp.toml"]);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(!out.status.success(), "{text}");
+    assert!(
+        text.contains(
+            "lamp/lamp.toml: lang.pl.meaning: “Lampka” is not a variable of the interface"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains(
+            "lamp/lamp.toml: lang.pl.scenario.“Scenariusz 1”: there is no scenario of that name"
+        ),
+        "{text}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// `plc exercise link` packs the exercise file and its starter into a `#x=` fragment
 /// that the page reads back; the reference never travels.
 #[test]

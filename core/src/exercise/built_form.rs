@@ -2,7 +2,8 @@
 //! opening one needs neither a TOML reader nor a Markdown renderer (`docs/loading.md`). It
 //! is JSON: `{"plc_exercise":1,"statement_html":"…","exercise":{…}}`, where `exercise`
 //! holds the file's keys and values as they are (TOML tables become objects) except the
-//! statement, which is given rendered. [`crate::exercise::Exercise::from_built`] reads it
+//! statement, which is given rendered (and each translation's, `lang.pl.statement` given as
+//! `lang.pl.statement_html`). [`crate::exercise::Exercise::from_built`] reads it
 //! with the same checks as a TOML file.
 //!
 //! This file uses nothing of the crate but `toml` and `serde_json`: the web app's build
@@ -28,6 +29,10 @@ pub fn built_form(toml_text: &str, render: fn(&str) -> String) -> Result<String,
             html = render(value.as_str().ok_or("the statement is not text")?);
             continue;
         }
+        if key == "lang" {
+            exercise.insert(key, json_of(rendered_translations(value, render)?)?);
+            continue;
+        }
         exercise.insert(key, json_of(value)?);
     }
     // `Value`'s Display writes compact JSON.
@@ -36,6 +41,24 @@ pub fn built_form(toml_text: &str, render: fn(&str) -> String) -> Result<String,
         serde_json::Value::String(html),
         serde_json::Value::Object(exercise)
     ))
+}
+
+/// The `lang` table with each translation's `statement` rendered, as `statement_html`.
+fn rendered_translations(
+    value: toml::Value,
+    render: fn(&str) -> String,
+) -> Result<toml::Value, String> {
+    let toml::Value::Table(mut langs) = value else { return Err("`lang` is not a table".into()) };
+    for (key, t) in langs.iter_mut() {
+        let toml::Value::Table(t) = t else { return Err(format!("`lang.{key}` is not a table")) };
+        if let Some(statement) = t.remove("statement") {
+            let markdown = statement
+                .as_str()
+                .ok_or_else(|| format!("lang.{key}: the statement is not text"))?;
+            t.insert("statement_html".into(), toml::Value::String(render(markdown)));
+        }
+    }
+    Ok(toml::Value::Table(langs))
 }
 
 /// A TOML value as JSON (a date or time, which no exercise key takes, is refused).

@@ -73,6 +73,11 @@ pub struct Exercise {
     /// grader replaces any copy a submission carries.
     #[serde(default)]
     pub plant: Option<ExercisePlant>,
+    /// The exercise in other languages (`[lang.pl]`, `[lang.cs]`): whatever a translation
+    /// leaves out is shown in English, the top-level fields (see
+    /// [`Exercise::localised`]).
+    #[serde(default)]
+    pub lang: BTreeMap<String, super::translation::Translation>,
 }
 
 /// A plant an exercise ships: its PROGRAM, run after the solution on every scan, and the
@@ -408,6 +413,15 @@ impl Exercise {
                 },
             }
         })?;
+        if let Some(key) =
+            exercise.lang.iter().find(|(_, t)| t.statement_html.is_some()).map(|(k, _)| k)
+        {
+            return Err(ExerciseError {
+                message: format!(
+                    "lang.{key}: `statement_html` is the built form's; write the Markdown as `statement`"
+                ),
+            });
+        }
         exercise.checked()
     }
 
@@ -461,6 +475,15 @@ impl Exercise {
         }
         for s in &exercise.scenarios {
             s.check()?;
+        }
+        for key in exercise.lang.keys() {
+            if !super::translation::TRANSLATED.iter().any(|l| l.tag() == key) {
+                return Err(ExerciseError {
+                    message: format!(
+                        "lang.{key}: the translations are [lang.pl] and [lang.cs] (English is the top-level fields)"
+                    ),
+                });
+            }
         }
         if let Some(plant) = &exercise.plant {
             let (file, _) = crate::syntax::parse(&plant.source);

@@ -12,6 +12,7 @@ mod random;
 mod scorm;
 mod starter;
 mod statement;
+mod translation;
 mod view;
 
 pub use built_form::{built_form, is_built, BUILT_PREFIX};
@@ -31,6 +32,7 @@ pub use scorm::{
 };
 pub use starter::{graded_program, Language};
 pub use statement::{next_to, statement_html};
+pub use translation::{ScenarioTranslation, Translation, TRANSLATED};
 pub use view::{ExerciseView, ScenarioView};
 
 #[cfg(test)]

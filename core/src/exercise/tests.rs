@@ -1,6 +1,7 @@
 #![allow(clippy::unwrap_used)]
 
 use super::*;
+use crate::i18n::Lang;
 use crate::project::Project;
 
 const LATCH: &str = r#"
@@ -509,4 +510,137 @@ fn the_built_form_reads_as_the_toml_file() {
     assert!(Exercise::from_built(&damaged).unwrap_err().message.starts_with("the built exercise"));
     assert!(built_form("id = 1979-05-27", render).unwrap_err().contains("date"));
     assert!(built_form("id = ", render).is_err());
+}
+
+/// The latch with a Polish translation that leaves the meaning of `Stop` out and a Czech one
+/// that has only a title.
+fn translated_latch() -> String {
+    format!(
+        r#"{LATCH}
+[lang.pl]
+title = "Podtrzymanie silnika start/stop"
+statement = "Start uruchamia silnik, Stop go zatrzymuje: `Motor := (Start OR Motor) AND NOT Stop;`"
+
+[lang.pl.meaning]
+Start = "przycisk start (zwierny)"
+Motor = "stycznik silnika"
+
+[lang.pl.scenario."Start, release, stop"]
+name = "Start się podtrzymuje"
+hint = "Czy Motor podtrzymuje się sam?"
+
+[lang.cs]
+title = "Samodržný obvod start/stop"
+"#
+    )
+}
+
+/// A localised exercise is the Polish where the file translates it and the English where
+/// it does not; grading is the same.
+#[test]
+fn the_localised_exercise_falls_back_to_english() {
+    let text = translated_latch().replace(
+        "Start starts the motor, Stop stops it; the motor keeps running when Start is released.",
+        "Start starts the motor: `Motor := (Start OR Motor) AND NOT Stop;`",
+    );
+    let e = Exercise::from_toml(&text).unwrap();
+    let pl = e.localised(Lang::Pl);
+    assert_eq!(pl.title, "Podtrzymanie silnika start/stop");
+    assert!(pl.statement.starts_with("Start uruchamia"), "{}", pl.statement);
+    assert_eq!(pl.interface[0].meaning, "przycisk start (zwierny)");
+    assert_eq!(pl.interface[1].meaning, "stop button (NO here)", "English where untranslated");
+    assert_eq!(pl.interface[1].name, "Stop", "names stay");
+    assert_eq!(pl.scenarios[0].name, "Start się podtrzymuje");
+    assert_eq!(pl.scenarios[0].hint.as_deref(), Some("Czy Motor podtrzymuje się sam?"));
+    assert_eq!(pl.scenarios[1], e.scenarios[1], "an untranslated scenario stays English");
+    let cs = e.localised(Lang::Cs);
+    assert_eq!(cs.title, "Samodržný obvod start/stop");
+    assert_eq!((cs.statement.as_str(), &cs.scenarios), (e.statement.as_str(), &e.scenarios));
+    assert_eq!(e.localised(Lang::En), e);
+    assert!(e.translation_problems().is_empty(), "{:?}", e.translation_problems());
+    assert!(e.untranslated(Lang::Pl).contains(&"meaning.Stop".to_string()));
+    assert!(e.untranslated(Lang::Cs).contains(&"statement".to_string()));
+    // The same grade in every language, names translated.
+    let p = project(GOOD);
+    let (en, pl) = (grade(&e, &p).unwrap(), grade(&pl, &p).unwrap());
+    assert_eq!((en.score, en.total), (pl.score, pl.total));
+    assert_eq!(pl.scenarios[0].name, "Start się podtrzymuje");
+}
+
+/// A translation that renames an interface variable or a scenario, or changes program
+/// text, is reported, located; an unknown language is refused.
+#[test]
+fn a_translation_with_other_names_is_reported() {
+    let bad = translated_latch()
+        .replace("Motor = \"stycznik", "Silnik = \"stycznik")
+        .replace("scenario.\"Start, release, stop\"", "scenario.\"Start zatrzaskuje\"")
+        .replace("`Motor := (Start OR Motor) AND NOT Stop;`", "`Silnik := Start;`");
+    let e = Exercise::from_toml(&bad).unwrap();
+    let problems = e.translation_problems();
+    assert_eq!(problems.len(), 3, "{problems:#?}");
+    assert!(
+        problems[0].starts_with(
+            "lang.pl.meaning: “Silnik” is not a variable of the interface (Start, Stop, Motor)"
+        ),
+        "{problems:#?}"
+    );
+    assert!(
+        problems[1]
+            .starts_with("lang.pl.scenario.“Start zatrzaskuje”: there is no scenario of that name"),
+        "{problems:#?}"
+    );
+    assert!(
+        problems[2].starts_with("lang.pl.statement: the program text between backticks differs from English: the translation has `Silnik := Start;`"),
+        "{problems:#?}"
+    );
+    let de = format!("{LATCH}\n[lang.de]\ntitle = \"Selbsthaltung\"\n");
+    assert!(Exercise::from_toml(&de)
+        .unwrap_err()
+        .message
+        .starts_with("lang.de: the translations are"));
+    let unknown = format!("{LATCH}\n[lang.pl]\ntitel = \"x\"\n");
+    assert!(Exercise::from_toml(&unknown).unwrap_err().message.contains("unknown field `titel`"));
+    let html = format!("{LATCH}\n[lang.pl]\nstatement_html = \"<b>x</b>\"\n");
+    assert!(Exercise::from_toml(&html).unwrap_err().message.contains("statement_html"));
+}
+
+/// The built form and the page's view carry the translations, statements rendered; the
+/// view and its reports localise with the English fallback.
+#[test]
+fn the_built_form_and_the_view_carry_the_translations() {
+    let text = translated_latch();
+    let built = built_form(&text, |m| statement_html(m, None)).unwrap();
+    let (read, html) = Exercise::from_built(&built).unwrap();
+    let toml = Exercise::from_toml(&text).unwrap();
+    let pl = &read.lang["pl"];
+    assert_eq!(pl.statement, None);
+    assert!(pl
+        .statement_html
+        .as_deref()
+        .unwrap()
+        .contains("<code>Motor := (Start OR Motor) AND NOT Stop;</code>"));
+    let view = ExerciseView::with_statement(&read, html);
+    assert_eq!(view, ExerciseView::of(&toml, None));
+    let json = serde_json::to_string(&view).unwrap();
+    assert_eq!(serde_json::from_str::<ExerciseView>(&json).unwrap(), view);
+    let v = view.localised(Lang::Pl);
+    assert_eq!(v.title, "Podtrzymanie silnika start/stop");
+    assert!(v.statement_html.starts_with("<p>Start uruchamia"), "{}", v.statement_html);
+    assert_eq!(v.interface[2].meaning, "stycznik silnika");
+    assert_eq!(v.scenarios[0].name, "Start się podtrzymuje");
+    let cs = view.localised(Lang::Cs);
+    assert_eq!(cs.title, "Samodržný obvod start/stop");
+    assert_eq!(
+        (cs.statement_html.as_str(), &cs.interface),
+        (view.statement_html.as_str(), &view.interface)
+    );
+    assert_eq!(view.localised(Lang::En), view);
+    // A failed report: the Polish name and hint.
+    let report = grade(&toml, &project(&GOOD.replace("(Start OR Motor)", "Start"))).unwrap();
+    let failed = report.scenarios.iter().position(|s| s.name == "Start, release, stop").unwrap();
+    assert!(report.scenarios[failed].hint.is_some());
+    let r = view.localised_report(Lang::Pl, report.clone());
+    assert_eq!(r.scenarios[failed].name, "Start się podtrzymuje");
+    assert_eq!(r.scenarios[failed].hint.as_deref(), Some("Czy Motor podtrzymuje się sam?"));
+    assert_eq!(view.localised_report(Lang::Cs, report.clone()), report);
 }

@@ -4,8 +4,12 @@
 
 use serde::{Deserialize, Serialize};
 
+use std::collections::BTreeMap;
+
 use super::format::{Exercise, InterfaceVar};
-use super::statement::statement_html;
+use super::grade::Report;
+use super::translation::Translation;
+use crate::i18n::Lang;
 
 /// An exercise as the page shows it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -18,7 +22,7 @@ pub struct ExerciseView {
     pub level: u8,
     /// The languages a solution may use (`st`, `ld`, `petri`, `sfc`).
     pub languages: Vec<String>,
-    /// The statement, rendered (see [`statement_html`]).
+    /// The statement, rendered (see [`crate::exercise::statement_html`]).
     pub statement_html: String,
     /// The variables the solution declares.
     pub interface: Vec<InterfaceVar>,
@@ -30,6 +34,10 @@ pub struct ExerciseView {
     /// The name of the exercise's plant PROGRAM, if it has one (never the one graded).
     #[serde(default)]
     pub plant: Option<String>,
+    /// The exercise's translations by language tag (`pl`, `cs`), each statement rendered
+    /// (`statement_html`) and never as Markdown: [`ExerciseView::localised`] picks one.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub translations: BTreeMap<String, Translation>,
 }
 
 /// A scenario as the page lists it.
@@ -47,7 +55,8 @@ impl ExerciseView {
     /// The view of `exercise`; relative links in its statement are resolved against
     /// `base`, the exercise file's address.
     pub fn of(exercise: &Exercise, base: Option<&str>) -> ExerciseView {
-        ExerciseView::with_statement(exercise, statement_html(&exercise.statement, base))
+        let (rendered, html) = exercise.clone().rendered(base);
+        ExerciseView::with_statement(&rendered, html)
     }
 
     /// The view of `exercise` with its statement already rendered (the built form).
@@ -70,7 +79,53 @@ impl ExerciseView {
                 .collect(),
             program: exercise.program.clone(),
             plant: exercise.plant.as_ref().map(|p| p.name.clone()),
+            translations: exercise
+                .lang
+                .iter()
+                .map(|(k, t)| (k.clone(), Translation { statement: None, ..t.clone() }))
+                .collect(),
         }
+    }
+
+    /// The view in `lang`: title, statement, meanings and scenario names translated where
+    /// the exercise translates them, English where it does not.
+    pub fn localised(&self, lang: Lang) -> ExerciseView {
+        let mut v = self.clone();
+        let Some(t) = self.translations.get(lang.tag()) else { return v };
+        if let Some(title) = &t.title {
+            v.title = title.clone();
+        }
+        if let Some(html) = &t.statement_html {
+            v.statement_html = html.clone();
+        }
+        for i in &mut v.interface {
+            if let Some(m) = t.meaning.get(&i.name) {
+                i.meaning = m.clone();
+            }
+        }
+        for s in &mut v.scenarios {
+            if let Some(name) = t.scenario.get(&s.name).and_then(|st| st.name.clone()) {
+                s.name = name;
+            }
+        }
+        v
+    }
+
+    /// A report of this exercise with its scenario names and hints in `lang` where the
+    /// exercise translates them (a report names scenarios in English).
+    pub fn localised_report(&self, lang: Lang, mut report: Report) -> Report {
+        let Some(t) = self.translations.get(lang.tag()) else { return report };
+        for s in &mut report.scenarios {
+            if let Some(st) = t.scenario.get(&s.name) {
+                if let (Some(hint), Some(_)) = (&st.hint, &s.hint) {
+                    s.hint = Some(hint.clone());
+                }
+                if let Some(name) = &st.name {
+                    s.name = name.clone();
+                }
+            }
+        }
+        report
     }
 }
 

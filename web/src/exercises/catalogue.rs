@@ -17,11 +17,23 @@ fn level_name(level: u8) -> String {
     }
 }
 
+/// An exercise's title in `lang` (the app draws the catalogue again when the language
+/// changes).
+fn title_in(id: &str, english: &'static str, lang: plc_core::i18n::Lang) -> &'static str {
+    let titles = super::list::TITLES.iter().find(|t| t.0 == id);
+    match (lang, titles) {
+        (plc_core::i18n::Lang::Pl, Some(t)) => t.1,
+        (plc_core::i18n::Lang::Cs, Some(t)) => t.2,
+        _ => english,
+    }
+}
+
 /// The catalogue, in place of the workspace.
 #[component]
 pub fn Catalogue() -> impl IntoView {
     let state = expect_context::<AppState>();
     let ex = expect_context::<Exercises>();
+    let lang = expect_context::<crate::i18n::I18n>().shown.get_untracked();
     let level = RwSignal::new(0u8);
     let language = RwSignal::new(String::new());
     let all = catalogue();
@@ -83,7 +95,7 @@ pub fn Catalogue() -> impl IntoView {
                         let langs = e.languages.iter().map(|l| language_name(l)).collect::<Vec<_>>().join(", ");
                         view! {
                             <li class="catalogue-item" class:passed=done data-exercise=id>
-                                <button class="catalogue-open" on:click=move |_| ex.open_shipped(state, id)>{e.title}</button>
+                                <button class="catalogue-open" on:click=move |_| ex.open_shipped(state, id)>{title_in(id, e.title, lang)}</button>
                                 {done.then(|| view! { <span class="tick" role="img" aria-label=t(K::exercise_passed) title=t(K::exercise_passed)>"✓"</span> })}
                                 <span class="catalogue-level">{tf(K::exercise_level_n, &[("level", &e.level.to_string())])}</span>
 

@@ -19,6 +19,7 @@ use crate::state::{plural, AppState};
 pub fn ExercisePanel() -> impl IntoView {
     let state = expect_context::<AppState>();
     let ex = expect_context::<Exercises>();
+    let shown = expect_context::<crate::i18n::I18n>().shown;
     let share = move |_| {
         let Some(link) = ex.link() else { return };
         ex.share_link.set(Some(link.clone()));
@@ -30,7 +31,7 @@ pub fn ExercisePanel() -> impl IntoView {
     };
     move || {
         ex.open.get().map(|open| {
-            let v = open.opened.view;
+            let v = open.opened.view.localised(shown.get());
             let langs = v.languages.iter().map(|l| language_name(l)).collect::<Vec<_>>().join(", ");
             let scenarios = v.scenarios.iter().map(|s| {
                 let n = u64::from(s.weight);

@@ -23,8 +23,11 @@ const TOP: f64 = 18.0;
 #[component]
 pub fn ReportView() -> impl IntoView {
     let ex = expect_context::<Exercises>();
+    let shown = expect_context::<crate::i18n::I18n>().shown;
     move || {
         ex.report.get().map(|r| {
+            let lang = shown.get();
+            let r = ex.open.with(|o| o.as_ref().map(|o| o.opened.view.localised_report(lang, r.clone()))).unwrap_or(r);
             let all = r.error.is_none() && r.score == r.total;
             let summary = match &r.error {
                 Some(e) => tf(K::exercise_not_graded, &[("error", e)]),

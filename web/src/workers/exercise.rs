@@ -280,6 +280,33 @@ mod tests {
         }
     }
 
+    /// A shipped exercise opens with its Polish and Czech texts, statements rendered, and
+    /// the report of a check names its scenarios in the language chosen.
+    #[test]
+    fn a_shipped_exercise_opens_with_its_translations() {
+        use plc_core::i18n::Lang;
+        let Reply::Opened(opened) = ask(Request::Shipped("lamp".into())) else { panic!() };
+        let v = &opened.view;
+        let pl = v.localised(Lang::Pl);
+        assert_eq!(pl.title, "Przycisk zapala lampkę");
+        assert!(
+            pl.statement_html.contains("<code>Lamp := Button;</code>"),
+            "{}",
+            pl.statement_html
+        );
+        assert!(pl.statement_html.contains("<strong>Sprawdź</strong>"), "{}", pl.statement_html);
+        assert_eq!(pl.interface[1].meaning, "lampka sygnalizacyjna");
+        assert_eq!(pl.scenarios[0].name, "Wciśnięcie i puszczenie");
+        assert_eq!(v.localised(Lang::Cs).title, "Tlačítko rozsvítí kontrolku");
+        assert_eq!(v.localised(Lang::En).title, "A button lights a lamp");
+        let exercise = opened.link.exercise.clone();
+        let project = opened.starters[0].project.clone();
+        let Reply::Graded(report) = ask(Request::Grade { exercise, project }) else { panic!() };
+        let r = v.localised_report(Lang::Cs, report);
+        assert_eq!(r.scenarios[0].name, "Stisk a puštění");
+        assert!(r.scenarios[0].hint.as_deref().unwrap().starts_with("Zapisuje se Lamp"));
+    }
+
     /// An exercise with a plant opens with the plant and its scene in the starter, and
     /// the grader runs its own plant even when the student deleted theirs.
     #[test]

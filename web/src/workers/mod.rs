@@ -50,13 +50,9 @@ fn read_toml(
     text: String,
     base: Option<String>,
 ) -> Result<Result<(plc_core::exercise::Exercise, String), String>, LoadFailed> {
-    use plc_core::exercise::{statement_html, Exercise};
-    Ok(Exercise::from_toml(&text)
-        .map(|e| {
-            let html = statement_html(&e.statement, base.as_deref());
-            (e, html)
-        })
-        .map_err(|e| e.to_string()))
+    use plc_core::exercise::Exercise;
+    // The statement and each translation's rendered (the page shows the language chosen).
+    Ok(Exercise::from_toml(&text).map(|e| e.rendered(base.as_deref())).map_err(|e| e.to_string()))
 }
 
 /// Packs a SCORM 1.2 package of an exercise with the site's files (the manifest and the

@@ -476,6 +476,18 @@ fn validate(path: &Path, hidden: Option<&Path>) -> ExitCode {
             }
         }
     };
+    // The translations keep the English names and program text; what they leave out is
+    // shown in English (a note, not a problem).
+    for problem in ex.translation_problems() {
+        println!("{}: {problem}", path.display());
+        problems.set(problems.get() + 1);
+    }
+    for lang in plc_core::exercise::TRANSLATED {
+        let missing = ex.untranslated(lang);
+        if !missing.is_empty() {
+            println!("lang.{lang}: shown in English: {}", missing.join(", "));
+        }
+    }
     if ex.reference.is_none() {
         println!("reference: missing (give `reference = \"FILE\"`)");
         problems.set(problems.get() + 1);
