@@ -26,10 +26,10 @@ function catalogue(lang) {
 const EN = catalogue('en');
 const TR = { pl: catalogue('pl'), cs: catalogue('cs') };
 
-/** The text `english` (a whole catalogue text) in `lang`. */
-function L(lang, english) {
+/** The text `english` (a whole catalogue text, under `key` when several keys have it) in `lang`. */
+function L(lang, english, key = Object.keys(EN).find((k) => EN[k] === english)) {
   if (lang === 'en') return english;
-  const key = Object.keys(EN).find((k) => EN[k] === english);
+  assert.equal(EN[key], english, `${key} is “${english}” in English`);
   assert.ok(key, `the catalogue has the English text “${english}”`);
   return TR[lang][key];
 }
@@ -100,10 +100,10 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     page.on('pageerror', (e) => errors.push(e.message));
     const shots = path.join(root, 'docs/screenshots');
     await page.goto(app.server.url);
-    const editor = page.getByRole('textbox', { name: L(lang, 'ST source') });
+    const editor = page.getByRole('textbox', { name: L(lang, 'ST source', 'editor.st_source') });
     await editor.waitFor();
     assert.equal(await page.evaluate(() => document.documentElement.lang), lang);
-    const select = page.getByRole('combobox', { name: new RegExp(`^${escape(L(lang, 'Language'))}`) });
+    const select = page.getByRole('combobox', { name: new RegExp(`^${escape(L(lang, 'Language', 'header.language'))}`) });
     assert.equal(await select.inputValue(), lang);
 
     // The ST editor with a located error.
@@ -155,12 +155,12 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     const errors = [];
     page.on('pageerror', (e) => errors.push(e.message));
     await page.goto(app.server.url);
-    await page.getByRole('textbox', { name: L(lang, 'ST source') }).waitFor();
-    await page.getByRole('button', { name: L(lang, 'Exercises'), exact: true }).click();
+    await page.getByRole('textbox', { name: L(lang, 'ST source', 'editor.st_source') }).waitFor();
+    await page.getByRole('button', { name: L(lang, 'Exercises', 'header.exercises'), exact: true }).click();
     await page.locator('.catalogue-item[data-exercise="latch"] button').first().click();
-    const panel = page.getByRole('region', { name: L(lang, 'Exercise') });
+    const panel = page.getByRole('region', { name: L(lang, 'Exercise', 'exercise.exercise') });
     await panel.waitFor();
-    await page.getByRole('textbox', { name: L(lang, 'ST source') }).fill(LATCH_ERROR.replace('Stopp', 'Stop').replace('(Start OR Motor)', 'Start'));
+    await page.getByRole('textbox', { name: L(lang, 'ST source', 'editor.st_source') }).fill(LATCH_ERROR.replace('Stopp', 'Stop').replace('(Start OR Motor)', 'Start'));
     await page.waitForTimeout(400);
     await page.getByRole('button', { name: L(lang, 'Check'), exact: true }).click();
     await page.locator('.report-scenario.failed').first().waitFor();
