@@ -71,6 +71,8 @@ async function englishLeft(page, lang, allowed) {
   const left = [];
   for (const [key, english] of Object.entries(EN)) {
     if (TR[lang][key] === english || allowed.has(english)) continue;
+    // A text that is mostly placeholders (`{pin} of {block}`) would match any sentence.
+    if (english.replace(/\{[a-z_]+\}/g, '').replace(/[^\p{L}]/gu, '').length < 5) continue;
     const re = pattern(english);
     const hit = shown.find((s) => re.test(s));
     if (hit) left.push(`${key}: “${hit}”`);

@@ -24,6 +24,9 @@ use plc_core::build::Site;
 /// The whole app.
 #[component]
 pub fn App() -> impl IntoView {
+    // First: the state, the exercises and the tour make words in the language shown.
+    let i18n = crate::i18n::I18n::start();
+    provide_context(i18n);
     let state = AppState::new();
     provide_context(state);
     let exercises = Exercises::new(state);
@@ -31,8 +34,6 @@ pub fn App() -> impl IntoView {
     let tour = Tour::new();
     provide_context(tour);
     tour.watch(state, exercises);
-    let i18n = crate::i18n::I18n::start();
-    provide_context(i18n);
     let pane = RwSignal::new(Pane::Program);
     provide_context(pane);
     // On a phone an exercise opened shows its task; closed, the program.
@@ -48,7 +49,7 @@ pub fn App() -> impl IntoView {
     // stays where it is.
     move || {
         i18n.shown.track();
-        i18n.ready.get().then(|| untrack(move || layout(state, exercises)))
+        untrack(move || layout(state, exercises))
     }
 }
 

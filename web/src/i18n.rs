@@ -34,9 +34,6 @@ pub struct I18n {
     pub lang: RwSignal<Lang>,
     /// The language the page shows: the chosen one once its translation is here.
     pub shown: RwSignal<Lang>,
-    /// Whether the page may be drawn: false only while the translation of the language the
-    /// page opens in is on its way (so a Polish student never sees English flash first).
-    pub ready: RwSignal<bool>,
 }
 
 thread_local! {
@@ -57,16 +54,55 @@ fn slot(lang: Lang) -> Option<usize> {
     }
 }
 
+/// Keeps `texts` as the translation of `lang` for the page's life.
+fn keep(lang: Lang, texts: Vec<String>) -> &'static [String] {
+    let texts: &'static [String] = Vec::leak(texts);
+    FETCHED.with(|f| {
+        let mut all = f.get();
+        if let Some(s) = slot(lang) {
+            all[s] = Some(texts);
+        }
+        f.set(all);
+    });
+    texts
+}
+
+/// Whether the language the page opens in needs its words fetched before the page is
+/// drawn (not English).
+pub fn needs_preparing() -> bool {
+    initial_lang() != Lang::En
+}
+
+/// Fetches the words of the language the page opens in and shows them, before anything
+/// (the first project's name, the tour) is made: a Polish or Czech student never sees
+/// English first. If they cannot be fetched the page opens in English.
+pub async fn prepare() {
+    let lang = initial_lang();
+    match fetch_translation(lang).await {
+        Ok(texts) => show_texts(lang, Some(keep(lang, texts))),
+        Err(e) => web_sys::console::warn_1(&format!("the page opens in English: {e}").into()),
+    }
+}
+
+/// Makes `texts` (none for English) the words shown and `lang` the page's `<html lang>`.
+fn show_texts(lang: Lang, texts: Option<&'static [String]>) {
+    SHOWN.with(|s| s.set(texts));
+    SHOWN_LANG.with(|s| s.set(lang));
+    if let Some(root) =
+        web_sys::window().and_then(|w| w.document()).and_then(|d| d.document_element())
+    {
+        let _ = root.set_attribute("lang", lang.tag());
+    }
+}
+
 impl I18n {
-    /// The page's language as the address, local storage and the browser say, with its
-    /// translation on its way; `<html lang>` follows the language shown.
+    /// The page's language as the address, local storage and the browser say (shown at
+    /// once when [`prepare`] has fetched its words); `<html lang>` follows the language
+    /// shown.
     pub fn start() -> I18n {
         let lang = initial_lang();
-        let i18n = I18n {
-            lang: RwSignal::new(lang),
-            shown: RwSignal::new(Lang::En),
-            ready: RwSignal::new(lang == Lang::En),
-        };
+        let shown = SHOWN_LANG.with(Cell::get);
+        let i18n = I18n { lang: RwSignal::new(lang), shown: RwSignal::new(shown) };
         Effect::new(move |_| {
             let lang = i18n.lang.get();
             let fetched = slot(lang).and_then(|s| FETCHED.with(Cell::get)[s]);
@@ -79,21 +115,11 @@ impl I18n {
                         web_sys::console::warn_1(&format!("the page stays in English: {e}").into());
                     }
                     if let Ok(texts) = fetched {
-                        let texts: &'static [String] = Vec::leak(texts);
-                        FETCHED.with(|f| {
-                            let mut all = f.get();
-                            if let Some(s) = slot(lang) {
-                                all[s] = Some(texts);
-                            }
-                            f.set(all);
-                        });
+                        let texts = keep(lang, texts);
                         // Shown only if it is still the language chosen.
                         if i18n.lang.get_untracked() == lang {
                             i18n.show(lang, Some(texts));
                         }
-                    }
-                    if !i18n.ready.get_untracked() {
-                        i18n.ready.set(true);
                     }
                 }),
             }
@@ -103,13 +129,7 @@ impl I18n {
 
     /// Shows `lang` with its `texts` (none for English).
     fn show(self, lang: Lang, texts: Option<&'static [String]>) {
-        SHOWN.with(|s| s.set(texts));
-        SHOWN_LANG.with(|s| s.set(lang));
-        if let Some(root) =
-            web_sys::window().and_then(|w| w.document()).and_then(|d| d.document_element())
-        {
-            let _ = root.set_attribute("lang", lang.tag());
-        }
+        show_texts(lang, texts);
         if self.shown.get_untracked() != lang {
             self.shown.set(lang);
         }

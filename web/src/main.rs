@@ -24,5 +24,13 @@ fn main() {
     }));
     // The chosen theme before the first paint of the app, so it never flashes light.
     components::theme::apply(components::theme::stored());
-    leptos::mount::mount_to_body(app::App);
+    // A page opening in Polish or Czech fetches its words first (English is built in).
+    if i18n::needs_preparing() {
+        wasm_bindgen_futures::spawn_local(async {
+            i18n::prepare().await;
+            leptos::mount::mount_to_body(app::App);
+        });
+    } else {
+        leptos::mount::mount_to_body(app::App);
+    }
 }
