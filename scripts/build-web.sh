@@ -50,6 +50,8 @@ for f in "$work"/split/split_*.wasm "$work"/split/chunk_*.wasm; do
 done
 wait "$main_opt"
 cp "$work/split/__wasm_split.js" web/boot.js web/worker.js "$work/app/"
+# The diagrams' and the exercises' style sheets come with their views (web/src/lazy.rs).
+cp public/views.css public/exercises.css "$work/app/"
 cp -r "$out_dir/exercises" "$work/app/exercises"
 # The translations of the page's words (i18n/pl.json, i18n/cs.json), fetched when chosen.
 cp -r "$out_dir/i18n" "$work/app/i18n"

@@ -96,21 +96,78 @@ where
     F: Fn() -> Fut + Send + Sync + 'static,
     Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
 {
-    lazy_with(move || t(what.loading()), move || t(what.failed()), load)
+    lazy_with(what, load)
 }
 
-/// [`lazy_view`] with its two sentences.
-fn lazy_with<F, Fut, L, E, S>(loading_text: L, failed_text: E, load: F) -> AnyView
+impl What {
+    /// The style sheet the view needs beyond the first load's: the diagrams' and the
+    /// exercises' rules come with their views (in the app's folder, cached offline).
+    fn sheet(self) -> Option<&'static str> {
+        match self {
+            What::Recording | What::Explanation => None,
+            What::Exercise | What::ExerciseCatalogue => Some("exercises.css"),
+            What::NewPouDialog
+            | What::LadderEditor
+            | What::PetriEditor
+            | What::SfcChart
+            | What::NetworkView
+            | What::PlantScene => Some("views.css"),
+        }
+    }
+}
+
+/// Loads the style sheet `name` from the app's folder, once for the page: resolves when
+/// its rules apply. A sheet that could not be fetched is taken out again, so that `Retry`
+/// asks for it anew.
+async fn sheet(name: &'static str) -> Result<(), LoadFailed> {
+    use wasm_bindgen::{closure::Closure, JsCast};
+    let doc = web_sys::window().and_then(|w| w.document()).ok_or(LoadFailed)?;
+    let link = match doc.query_selector(&format!("link[data-sheet=\"{name}\"]")) {
+        Ok(Some(link)) => link,
+        _ => {
+            let link = doc.create_element("link").map_err(|_| LoadFailed)?;
+            let _ = link.set_attribute("rel", "stylesheet");
+            let _ = link.set_attribute("data-sheet", name);
+            let _ = link.set_attribute("href", &format!("{}{name}", crate::import::app_base()));
+            // The first listener marks the sheet loaded: a later caller that finds no mark
+            // is in time for the event.
+            let mark = link.clone();
+            let loaded = Closure::once_into_js(move || {
+                let _ = mark.set_attribute("data-loaded", "");
+            });
+            let _ = link.add_event_listener_with_callback("load", loaded.unchecked_ref());
+            let head = doc.query_selector("head").ok().flatten().ok_or(LoadFailed)?;
+            head.append_child(&link).map_err(|_| LoadFailed)?;
+            link
+        }
+    };
+    if link.has_attribute("data-loaded") {
+        return Ok(());
+    }
+    let target = link.clone();
+    let done = js_sys::Promise::new(&mut |resolve, reject| {
+        let _ = target.add_event_listener_with_callback("load", &resolve);
+        let _ = target.add_event_listener_with_callback("error", &reject);
+    });
+    match wasm_bindgen_futures::JsFuture::from(done).await {
+        Ok(_) => Ok(()),
+        Err(_) => {
+            link.remove();
+            Err(LoadFailed)
+        }
+    }
+}
+
+/// Shows `what`'s view once its chunk (and its style sheet) has come: `Loading …` until
+/// then, a sentence and `Retry` if it could not be fetched.
+fn lazy_with<F, Fut>(what: What, load: F) -> AnyView
 where
     F: Fn() -> Fut + Send + Sync + 'static,
     Fut: Future<Output = Result<AnyView, LoadFailed>> + 'static,
-    L: Fn() -> S + Send + Sync + 'static,
-    E: Fn() -> S + Send + Sync + Copy + 'static,
-    S: IntoView + 'static,
 {
     let attempt = RwSignal::new(0u32);
     let loading = move || {
-        view! { <p class="lazy-loading" role="status">{loading_text()}</p> }
+        view! { <p class="lazy-loading" role="status">{t(what.loading())}</p> }
     };
     view! {
         <Suspense fallback=loading>
@@ -119,11 +176,15 @@ where
                 let load = load();
                 // The page is single-threaded: the future never leaves it.
                 Suspend::new(SendWrapper::new(async move {
-                    match load.await {
-                        Ok(view) => view,
-                        Err(_) => view! {
+                    let styled = match what.sheet() {
+                        Some(name) => sheet(name).await,
+                        None => Ok(()),
+                    };
+                    match (styled, load.await) {
+                        (Ok(()), Ok(view)) => view,
+                        _ => view! {
                             <p class="lazy-failed" role="alert">
-                                {failed_text()}" "
+                                {t(what.failed())}" "
                                 <button class="link" on:click=move |_| attempt.update(|n| *n += 1)>{t(K::lazy_retry)}</button>
                             </p>
                         }
