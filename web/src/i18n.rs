@@ -196,6 +196,11 @@ pub fn t(key: K) -> &'static str {
         .map_or_else(|| key.en(), String::as_str)
 }
 
+/// The language of the words shown now.
+pub fn shown_lang() -> Lang {
+    SHOWN_LANG.with(Cell::get)
+}
+
 /// The text of `key` with its `{name}` placeholders filled from `args`.
 pub fn tf(key: K, args: &[(&str, &str)]) -> String {
     let mut text = t(key).to_string();

@@ -87,6 +87,11 @@ impl ExerciseView {
         }
     }
 
+    /// The title in `lang` (English where the exercise has no translation of it).
+    pub fn title_in(&self, lang: Lang) -> &str {
+        self.translations.get(lang.tag()).and_then(|t| t.title.as_deref()).unwrap_or(&self.title)
+    }
+
     /// The view in `lang`: title, statement, meanings and scenario names translated where
     /// the exercise translates them, English where it does not.
     pub fn localised(&self, lang: Lang) -> ExerciseView {

@@ -210,7 +210,6 @@ impl Tour {
 
 /// What a screen reader hears of `step`, then `\u{1}`, then the strip's markup
 /// ([`tour_html`]), in the language shown: `lazy::tour_text` gives it from its chunk.
-
 pub fn tour_text(step: usize, done: bool) -> String {
     let spoken = match STEPS.get(step) {
         Some(s) => tf(

@@ -53,7 +53,7 @@ fn stored_name() -> Option<String> {
 /// Downloads the hand-in of the open attempt as `name`.
 fn hand_in(ex: Exercises, state: AppState, name: &str) {
     let Some(open) = ex.open.get_untracked() else { return };
-    let id = open.opened.view.id;
+    let id = open.opened.view.id.clone();
     let when = String::from(js_sys::Date::new_0().to_iso_string());
     let project = state.project.with_untracked(Project::to_file);
     let text = HandIn::file_text(&project, &id, name, &when);
@@ -61,7 +61,11 @@ fn hand_in(ex: Exercises, state: AppState, name: &str) {
     match download(&file, "application/json", &text) {
         Ok(()) => state.info(tf(
             K::exercise_handed_in,
-            &[("file", &file), ("title", &open.opened.view.title), ("name", name.trim())],
+            &[
+                ("file", &file),
+                ("title", open.opened.view.title_in(crate::i18n::shown_lang())),
+                ("name", name.trim()),
+            ],
         )),
         Err(e) => state.error(e),
     }

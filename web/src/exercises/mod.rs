@@ -226,7 +226,7 @@ impl Exercises {
     /// and shows the exercise beside it.
     fn attach(self, state: AppState, opened: Opened, shipped: bool) {
         let id = opened.view.id.clone();
-        let title = opened.view.title.clone();
+        let title = opened.view.title_in(crate::i18n::shown_lang()).to_string();
         if !shipped {
             store::keep_source(
                 &id,
@@ -311,7 +311,10 @@ impl Exercises {
     /// asking).
     pub fn reset_to_starter(self, state: AppState) {
         let Some(open) = self.open.get_untracked() else { return };
-        let question = tf(K::exercise_reset_confirm, &[("title", &open.opened.view.title)]);
+        let question = tf(
+            K::exercise_reset_confirm,
+            &[("title", open.opened.view.title_in(crate::i18n::shown_lang()))],
+        );
         if !confirm(&question) {
             return;
         }
@@ -370,7 +373,10 @@ impl Exercises {
         if !untouched {
             let question = tf(
                 K::exercise_start_in_confirm,
-                &[("title", &open.opened.view.title), ("language", &name)],
+                &[
+                    ("title", open.opened.view.title_in(crate::i18n::shown_lang())),
+                    ("language", &name),
+                ],
             );
             if !confirm(&question) {
                 return false;
@@ -403,7 +409,8 @@ fn starter_project(opened: &Opened, language: Option<&str>) -> Option<Project> {
         None => opened.starters.first()?,
     };
     let mut project = Project::from_file(&starter.project).ok()?;
-    project.name = tf(K::exercise_project_name, &[("title", &opened.view.title)]);
+    project.name =
+        tf(K::exercise_project_name, &[("title", opened.view.title_in(crate::i18n::shown_lang()))]);
     Some(project)
 }
 
