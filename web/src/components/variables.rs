@@ -268,7 +268,8 @@ fn VarRow(row: Row) -> impl IntoView {
             <td class="mono">{row.address.clone()}</td>
             {name_cell}
             <td class="mono">{row.ty.clone()}</td>
-            <td>{row.comment.clone()}</td>
+            // The program's own words: never translated (by the page or the browser).
+            <td translate="no">{row.comment.clone()}</td>
             <td class="mono value" on:dblclick=move |_| start_edit()>
                 <Show when=move || editing.get()
                     fallback=move || view! { <span>{move || if row.expandable { String::new() } else { value() }}</span> }>
