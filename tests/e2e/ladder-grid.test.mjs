@@ -106,6 +106,12 @@ test('the rung grid is readable at 1280 × 800: cells at least 44 × 32 px, oper
   // No page-wide horizontal scroll: the rung scrolls in its own box.
   assert.equal(await page.evaluate(() => document.documentElement.scrollWidth <= innerWidth), true, 'the page scrolls sideways');
   await page.screenshot({ path: path.join(root, 'docs/screenshots/ladder-1280.png') });
+  // The ST and IL views beside the rungs show one line per line, no blank line after each.
+  const lines = await view.locator('.ld-st-line').evaluateAll((ls) => ls.map((l) => [l.textContent, l.getBoundingClientRect().height, parseFloat(getComputedStyle(l).lineHeight)]));
+  assert.ok(lines.length > 0, 'the ST and IL views show lines');
+  for (const [text, height, lineHeight] of lines) {
+    assert.ok(height <= lineHeight + 1, `the line ${JSON.stringify(text)} is ${height} px tall, a line is ${lineHeight} px`);
+  }
 
   // Zoom in twice: 150 %, cells and text grow by half.
   const zoomIn = view.getByRole('button', { name: 'Zoom in', exact: true });

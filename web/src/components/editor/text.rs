@@ -284,6 +284,17 @@ pub fn highlight_html(text: &str, marks: &[Mark]) -> String {
     out
 }
 
+/// One line of read-only code as highlighted HTML, without the blank line
+/// [`highlight_html`] adds for an editor's overlay: for views that put each line in a
+/// block of its own (the ladder's ST and IL views beside the rungs).
+pub fn highlight_line_html(line: &str) -> String {
+    let mut html = highlight_html(line.trim_end_matches(['\n', '\r']), &[]);
+    if html.ends_with("\n ") {
+        html.truncate(html.len() - 2);
+    }
+    html
+}
+
 fn emit_points(out: &mut String, points: &[Mark], at: usize) {
     let mut err = None;
     for p in points.iter().filter(|p| p.start == at) {
@@ -371,6 +382,15 @@ mod tests {
         assert!(o.start <= o.end && o.end <= o.text.len());
         assert_eq!(outdent("  x", 3, 3), Edit { text: "x".into(), start: 1, end: 1 });
         assert_eq!(indent("ab", 1, 1).text, "a    b");
+    }
+
+    #[test]
+    fn a_highlighted_line_is_one_line() {
+        for line in ["LD Start", "Motor := (Start OR Motor) AND NOT Stop;\n", "(* a < b *)"] {
+            let html = highlight_line_html(line);
+            assert!(!html.contains('\n'), "{line:?} gave {html:?}");
+            assert!(html.contains("Start") || html.contains("&lt;"), "{html:?}");
+        }
     }
 
     #[test]

@@ -17,7 +17,7 @@ use plc_core::ladder::{
     describe_cell, st_view_pou, CellRef, Element, LadderPou, LadderPouKind, PinKind,
 };
 
-use crate::components::editor::text::highlight_html;
+use crate::components::editor::text::{highlight_html, highlight_line_html};
 use crate::components::pou_actions::{DiagramKind, PouActions};
 use crate::state::AppState;
 use declarations::DeclarationsEditor;
@@ -850,7 +850,7 @@ fn BesideLines(editor: LadderEditor, lines: Memo<Vec<(String, Option<usize>)>>) 
         // Focusable: keyboard users scroll its long lines.
         <pre class="code-view" tabindex="0">
             <For each=keyed key=|line| line.clone() children=move |(_, text, rung)| {
-                let html = highlight_html(&text, &[]);
+                let html = highlight_line_html(&text);
                 let lit = move || rung.is_some() && selected_rung.get() == rung;
                 view! {
                     <div class="ld-st-line" class:lit=lit
