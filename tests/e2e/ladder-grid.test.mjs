@@ -106,7 +106,14 @@ test('the rung grid is readable at 1280 × 800: cells at least 44 × 32 px, oper
   // No page-wide horizontal scroll: the rung scrolls in its own box.
   assert.equal(await page.evaluate(() => document.documentElement.scrollWidth <= innerWidth), true, 'the page scrolls sideways');
   await page.screenshot({ path: path.join(root, 'docs/screenshots/ladder-1280.png') });
-  // The ST and IL views beside the rungs show one line per line, no blank line after each.
+  // The ST and IL views beside the rungs show one line per line, no blank line after each
+  // (a rung with its coil, so that it has code to show).
+  await cell(view, 1, 1, 2).click();
+  await page.keyboard.press('o');
+  await page.keyboard.type('Motor');
+  await page.keyboard.press('Enter');
+  await view.getByRole('gridcell', { name: /^Rung 1, row 1, column \d+: coil Motor/ }).waitFor();
+  await view.locator('.ld-st-line').first().waitFor();
   const lines = await view.locator('.ld-st-line').evaluateAll((ls) => ls.map((l) => [l.textContent, l.getBoundingClientRect().height, parseFloat(getComputedStyle(l).lineHeight)]));
   assert.ok(lines.length > 0, 'the ST and IL views show lines');
   for (const [text, height, lineHeight] of lines) {
