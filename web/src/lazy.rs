@@ -10,7 +10,9 @@
 //! service worker cached it) gives [`LoadFailed`] instead of stopping the page.
 //!
 //! To make a view lazy: write a split function that returns it as an `AnyView` and show it
-//! with [`lazy_view`], which says `Loading …` (role=status) while the chunk comes.
+//! with [`lazy_view`], naming it by a [`What`]: that gives its `Loading …` (role=status)
+//! and `Could not load …` sentences, and the style sheet it needs (`views.css`,
+//! `exercises.css`: fetched with the first view that needs it).
 
 use std::cell::Cell;
 use std::future::Future;
