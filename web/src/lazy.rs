@@ -250,6 +250,17 @@ pub fn read_exercise_reply(
     Ok(serde_json::from_str(&text).ok())
 }
 
+/// Opening an exercise: asking the worker, fetching its starter, opening the attempt. The
+/// returned future does it (its code is in this chunk too).
+#[wasm_split(exercise_ui, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn open_exercise(
+    ex: crate::exercises::Exercises,
+    state: crate::state::AppState,
+    how: crate::exercises::OpenHow,
+) -> Result<std::pin::Pin<Box<dyn Future<Output = ()>>>, LoadFailed> {
+    Ok(Box::pin(ex.open_how(state, how)))
+}
+
 /// Starts the SCORM session when the page was launched by an LMS (false without one).
 #[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn scorm_launch(

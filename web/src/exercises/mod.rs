@@ -128,7 +128,7 @@ impl Exercises {
             let fragment = fragment.to_string();
             clear_fragment();
             leptos::task::spawn_local(async move {
-                ex.open_with(state, Request::Link(fragment), None).await;
+                ex.open_lazily(state, OpenHow::Link(fragment)).await;
             });
         } else if let Some(url) = query_param(&search, "exercise") {
             // Launched by an LMS (a SCORM package): report to it (the SCORM runtime is a
@@ -136,7 +136,7 @@ impl Exercises {
             let scorm = query_param(&search, "scorm").as_deref() == Some("1");
             leptos::task::spawn_local(async move {
                 let lms = scorm && crate::lazy::scorm_launch(ex, state).await.unwrap_or(false);
-                ex.open_url(state, &url).await;
+                ex.open_lazily(state, OpenHow::Url(url)).await;
                 if lms {
                     let _ = crate::lazy::scorm_resume(ex, state).await;
                 }
@@ -164,8 +164,26 @@ impl Exercises {
     pub fn open_shipped(self, state: AppState, id: &str) {
         let id = id.to_string();
         leptos::task::spawn_local(async move {
-            self.open_with(state, Request::Shipped(id), None).await;
+            self.open_lazily(state, OpenHow::Shipped(id)).await;
         });
+    }
+
+    /// Opens an exercise with the code that does it, a chunk fetched the first time
+    /// (`lazy::open_exercise`): the first screen does not carry it.
+    async fn open_lazily(self, state: AppState, how: OpenHow) {
+        match crate::lazy::open_exercise(self, state, how).await {
+            Ok(opening) => opening.await,
+            Err(_) => state.error(t(K::lazy_failed_exercise)),
+        }
+    }
+
+    /// Opens the exercise `how` names (in the `exercise_ui` chunk).
+    pub(crate) async fn open_how(self, state: AppState, how: OpenHow) {
+        match how {
+            OpenHow::Shipped(id) => self.open_with(state, Request::Shipped(id), None).await,
+            OpenHow::Link(fragment) => self.open_with(state, Request::Link(fragment), None).await,
+            OpenHow::Url(url) => self.open_url(state, &url).await,
+        }
     }
 
     /// Fetches the exercise file at `url` (and its starter next to it) and opens it.
@@ -428,6 +446,16 @@ async fn ask(request: &Request) -> Result<Reply, String> {
         Some(reply) => Ok(reply),
         None => Err(t(K::exercise_worker_no_answer).to_string()),
     }
+}
+
+/// Which exercise to open.
+pub enum OpenHow {
+    /// A shipped exercise, by its id.
+    Shipped(String),
+    /// The exercise a share link's fragment (`x=…`) carries.
+    Link(String),
+    /// The exercise file at an address (`?exercise=URL`).
+    Url(String),
 }
 
 /// The text at `url` (a CORS fetch).
