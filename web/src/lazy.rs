@@ -261,6 +261,16 @@ pub fn open_exercise(
     Ok(Box::pin(ex.open_how(state, how)))
 }
 
+/// Imports the file the student chose as a new project (reading it, asking the import
+/// worker, the banner's words): fetched the first time a file is imported.
+#[wasm_split(import_ui, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn import_file(
+    state: crate::state::AppState,
+    file: web_sys::File,
+) -> Result<std::pin::Pin<Box<dyn Future<Output = ()>>>, LoadFailed> {
+    Ok(Box::pin(crate::components::header::import_file(state, file)))
+}
+
 /// Starts the SCORM session when the page was launched by an LMS (false without one).
 #[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn scorm_launch(

@@ -29,8 +29,8 @@ fn untitled_name(existing: &[String]) -> String {
 }
 
 /// Reads the chosen file (a project file, PLCopen XML, PNML or ST) and imports it as a new
-/// project.
-async fn import_file(state: AppState, file: web_sys::File) {
+/// project (code of the `import_ui` chunk: `lazy::import_file`).
+pub(crate) async fn import_file(state: AppState, file: web_sys::File) {
     let name = file.name();
     let text = match JsFuture::from(file.text()).await {
         Ok(v) => v.as_string().unwrap_or_default(),
@@ -248,7 +248,16 @@ pub fn Header() -> impl IntoView {
         let file = input.files().and_then(|f| f.get(0));
         input.set_value("");
         if let Some(file) = file {
-            leptos::task::spawn_local(import_file(state, file));
+            leptos::task::spawn_local(async move {
+                let name = file.name();
+                match crate::lazy::import_file(state, file).await {
+                    Ok(importing) => importing.await,
+                    Err(_) => state.error(tf(
+                        K::header_import_failed,
+                        &[("name", &name), ("error", t(K::lazy_load_failed))],
+                    )),
+                }
+            });
         }
     };
     let on_share = move |_| leptos::task::spawn_local(share(state, share_link));

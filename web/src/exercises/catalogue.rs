@@ -33,6 +33,8 @@ fn title_in(id: &str, english: &'static str, lang: plc_core::i18n::Lang) -> &'st
 pub fn Catalogue() -> impl IntoView {
     let state = expect_context::<AppState>();
     let ex = expect_context::<Exercises>();
+    // The ticks as kept (another tab may have passed one meanwhile).
+    ex.passed.set(super::store::passed());
     let lang = expect_context::<crate::i18n::I18n>().shown.get_untracked();
     let level = RwSignal::new(0u8);
     let language = RwSignal::new(String::new());

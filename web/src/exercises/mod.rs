@@ -103,7 +103,7 @@ pub struct Exercises {
     pub report: RwSignal<Option<Report>>,
     /// A check is running.
     pub checking: RwSignal<bool>,
-    /// The ids of the exercises passed (the catalogue's ticks).
+    /// The ids of the exercises passed (the catalogue's ticks, read when it is shown).
     pub passed: RwSignal<BTreeSet<String>>,
     /// The link of the open exercise, once `Share exercise` made it.
     pub share_link: RwSignal<Option<String>>,
@@ -118,7 +118,7 @@ impl Exercises {
             open: RwSignal::new(None),
             report: RwSignal::new(None),
             checking: RwSignal::new(false),
-            passed: RwSignal::new(store::passed()),
+            passed: RwSignal::new(BTreeSet::new()),
             share_link: RwSignal::new(None),
         };
         let location = web_sys::window().map(|w| w.location());
@@ -154,7 +154,11 @@ impl Exercises {
             ex.share_link.set(None);
             match exercise {
                 None => ex.open.set(None),
-                Some(id) => leptos::task::spawn_local(async move { ex.reattach(state, &id).await }),
+                // Asking the worker again is code of the exercise chunk, fetched only for a
+                // project that is an attempt.
+                Some(id) => leptos::task::spawn_local(async move {
+                    ex.open_lazily(state, OpenHow::Reattach(id)).await
+                }),
             }
         });
         ex
@@ -183,6 +187,7 @@ impl Exercises {
             OpenHow::Shipped(id) => self.open_with(state, Request::Shipped(id), None).await,
             OpenHow::Link(fragment) => self.open_with(state, Request::Link(fragment), None).await,
             OpenHow::Url(url) => self.open_url(state, &url).await,
+            OpenHow::Reattach(id) => self.reattach(state, &id).await,
         }
     }
 
@@ -456,6 +461,9 @@ pub enum OpenHow {
     Link(String),
     /// The exercise file at an address (`?exercise=URL`).
     Url(String),
+    /// The exercise of the project opened (an attempt), by its id: shown again without
+    /// opening a new attempt.
+    Reattach(String),
 }
 
 /// The text at `url` (a CORS fetch).
