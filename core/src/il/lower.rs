@@ -143,7 +143,7 @@ fn guard(condition: IlCondition, cr: Expr, span: Span) -> Option<Expr> {
 }
 
 impl<T: Typing> Lowering<'_, T> {
-    fn error(&mut self, code: Code, span: Span, msg: impl Into<String>) {
+    fn error(&mut self, code: Code, span: Span, msg: impl Into<crate::diagnostics::Said>) {
         self.diags.push(Diagnostic::error(code, span, msg));
     }
 

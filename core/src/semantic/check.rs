@@ -134,7 +134,7 @@ impl<'a> Checker<'a> {
     }
 
     /// Reports an error.
-    pub fn error(&mut self, code: Code, span: Span, message: impl Into<String>) {
+    pub fn error(&mut self, code: Code, span: Span, message: impl Into<crate::diagnostics::Said>) {
         self.diags.push(Diagnostic::error(code, span, message));
     }
 
@@ -145,7 +145,7 @@ impl<'a> Checker<'a> {
         &mut self,
         code: Code,
         span: Span,
-        message: String,
+        message: impl Into<crate::diagnostics::Said>,
         name: &str,
         candidates: Vec<String>,
     ) -> bool {
@@ -173,7 +173,12 @@ impl<'a> Checker<'a> {
     }
 
     /// Reports a warning.
-    pub fn warning(&mut self, code: Code, span: Span, message: impl Into<String>) {
+    pub fn warning(
+        &mut self,
+        code: Code,
+        span: Span,
+        message: impl Into<crate::diagnostics::Said>,
+    ) {
         self.diags.push(Diagnostic::warning(code, span, message));
     }
 

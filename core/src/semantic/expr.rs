@@ -4,6 +4,7 @@ use super::check::Checker;
 use super::ir::{BinOp, Builtin, Cmp, Expr, ExprKind, InitValue, MathFn, Place, SysVar, UnOp, Var};
 use super::types::{Elem, Type};
 use crate::diagnostics::{Code, Diagnostic, Span};
+use crate::msg;
 use crate::syntax::{self as ast, AddressArea, AddressSize, LiteralValue, VarSection};
 use crate::values::arith;
 
@@ -444,7 +445,7 @@ impl<'a> Checker<'a> {
         match def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&value.name)) {
             Some((_, v)) => Some(Typed::fixed(self.const_expr(*v as u64, resolved.ty, span))),
             None => {
-                let msg = format!("`{}` has no value `{}`", def.name, value.name);
+                let msg = msg!(NoEnumValue, ty = &def.name, value = &value.name);
                 let values: Vec<String> = def.values.iter().map(|(n, _)| n.clone()).collect();
                 self.error_suggesting(Code::UndeclaredName, value.span, msg, &value.name, values);
                 None
@@ -566,12 +567,9 @@ impl<'a> Checker<'a> {
         let candidates = self.names_in_scope();
         let suggestion =
             crate::diagnostics::suggest::closest(&id.name, candidates.iter().map(String::as_str));
-        let mut d = Diagnostic::error(
-            Code::UndeclaredName,
-            id.span,
-            format!("`{}` is not declared", id.name),
-        )
-        .suggesting(suggestion);
+        let mut d =
+            Diagnostic::error(Code::UndeclaredName, id.span, msg!(NotDeclared, name = &id.name))
+                .suggesting(suggestion);
         d.implied_type = expected.and_then(|t| self.declarable(t));
         self.diags.push(d);
     }
@@ -645,7 +643,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::AssignToConstant,
                             e.span,
-                            format!("`{}` is a system variable and cannot be written", id.name),
+                            msg!(SystemVariableWritten, name = &id.name),
                         );
                         return None;
                     }
@@ -657,11 +655,7 @@ impl<'a> Checker<'a> {
                     None
                 }
                 NameRef::Enumerator(..) | NameRef::Pou => {
-                    self.error(
-                        Code::NotAssignable,
-                        e.span,
-                        format!("`{}` is not a variable", id.name),
-                    );
+                    self.error(Code::NotAssignable, e.span, msg!(NotAVariable, name = &id.name));
                     None
                 }
             },
@@ -814,25 +808,18 @@ impl<'a> Checker<'a> {
     fn check_writable(&mut self, var: &Var, span: Span) -> Option<()> {
         let pou_kind = self.pous.get(self.body.pou as usize).map(|p| p.kind);
         if self.body.read_only {
-            self.error(Code::NotAssignable, span, "a condition cannot change variables");
+            self.error(Code::NotAssignable, span, msg!(ConditionWrites));
             return None;
         }
         if var.constant {
-            self.error(
-                Code::AssignToConstant,
-                span,
-                format!("`{}` is a CONSTANT and cannot be changed", var.name),
-            );
+            self.error(Code::AssignToConstant, span, msg!(ConstantWritten, name = &var.name));
             return None;
         }
         if pou_kind == Some(crate::syntax::PouKind::Function) && var.section == VarSection::Input {
             self.warning(
                 Code::FunctionInputWritten,
                 span,
-                format!(
-                    "`{}` is an input of the FUNCTION: this changes the function's own copy, not the caller's variable",
-                    var.name
-                ),
+                msg!(FunctionInputWritten, name = &var.name),
             );
         }
         Some(())
@@ -1057,12 +1044,9 @@ impl<'a> Checker<'a> {
                 let message = if fe.is_num() && te.is_num() || fe.is_integral() && te.is_integral()
                 {
                     // Both are numbers: the value would fit only sometimes.
-                    format!(
-                        "{f} does not convert to {to} without possible loss: convert it \
-                         explicitly with {f}_TO_{to}(…)"
-                    )
+                    msg!(LossyConversion, from = f, to = to)
                 } else {
-                    format!("expected a value of type {to}, found {f}")
+                    msg!(ExpectedType, to = to, from = f)
                 };
                 self.error(Code::TypeMismatch, span, message);
                 None
@@ -1077,11 +1061,7 @@ impl<'a> Checker<'a> {
             }
             _ => {
                 let (f, to) = (self.tname(from), self.tname(target));
-                self.error(
-                    Code::TypeMismatch,
-                    span,
-                    format!("expected a value of type {to}, found {f}"),
-                );
+                self.error(Code::TypeMismatch, span, msg!(ExpectedType, to = to, from = f));
                 None
             }
         }

@@ -39,7 +39,7 @@ impl Checker<'_> {
     ) -> Option<(Place, Type)> {
         let t = self.expr(base, None)?;
         if write && self.body.read_only {
-            self.error(Code::NotAssignable, span, "a condition cannot change variables");
+            self.error(Code::NotAssignable, span, crate::msg!(ConditionWrites));
             return None;
         }
         match self.types.ref_target(t.e.ty) {
