@@ -210,6 +210,11 @@ impl Msg {
 }
 
 impl Message {
+    /// An English text that is not data yet ([`Msg::Text`]), shown as it is in every language.
+    pub fn text(text: String) -> Message {
+        Message { key: Msg::Text, args: vec![("text", Arg::Text(text))] }
+    }
+
     /// The message in `lang`.
     pub fn render(&self, lang: Lang) -> String {
         let args: Vec<(&str, String)> = self

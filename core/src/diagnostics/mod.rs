@@ -117,12 +117,7 @@ impl Diagnostic {
 
     /// The message in `lang`, with its `did you mean NAME?` when it has one.
     pub fn render(&self, lang: Lang) -> String {
-        let mut text = self.msg.render(lang);
-        if let Some(s) = &self.suggestion {
-            text.push_str("; ");
-            text.push_str(&fill(Msg::DidYouMean.template(lang), |_| Some(s.as_str())));
-        }
-        text
+        render_with_hint(&self.msg, self.suggestion.as_deref(), lang)
     }
 
     /// True when this diagnostic stops the program from running.
@@ -134,4 +129,14 @@ impl Diagnostic {
 /// True when any of `diagnostics` is an error.
 pub fn has_errors(diagnostics: &[Diagnostic]) -> bool {
     diagnostics.iter().any(Diagnostic::is_error)
+}
+
+/// `message` in `lang`, ending in `; did you mean NAME?` when there is a `suggestion`.
+pub fn render_with_hint(message: &Message, suggestion: Option<&str>, lang: Lang) -> String {
+    let mut text = message.render(lang);
+    if let Some(s) = suggestion {
+        text.push_str("; ");
+        text.push_str(&fill(Msg::DidYouMean.template(lang), |_| Some(s)));
+    }
+    text
 }

@@ -357,6 +357,7 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
     if !lib_diags.is_empty() {
         diags.extend(lib_diags.into_iter().map(|mut d| {
             d.message = format!("standard library: {}", d.message);
+            d.msg = crate::diagnostics::Message::text(d.message.clone());
             d.span = Span::default();
             d
         }));

@@ -801,6 +801,7 @@ impl<'a> Checker<'a> {
         if !self.error_suggesting(Code::NoSuchMember, span, message, &field.name, members) {
             if let Some(d) = self.diags.last_mut() {
                 d.message.push_str(&listed);
+                d.msg = crate::diagnostics::Message::text(d.message.clone());
             }
         }
     }

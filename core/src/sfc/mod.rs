@@ -95,6 +95,7 @@ impl Desugared {
                         },
                         Reword::Wrap(sentence) => format!("{sentence} ({})", d.message),
                     };
+                    d.msg = crate::diagnostics::Message::text(d.message.clone());
                 }
                 d
             })
