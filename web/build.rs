@@ -227,6 +227,22 @@ fn i18n(out_dir: &Path) {
             en.push((key, text));
         }
     }
+    // ---- The diagnostics' messages (issue 33): core/i18n/messages.LANG.json as the part
+    // `diag` (keys `diag.KEY`), after every part of the page so that `K::diag_*` are in
+    // `plc_core::diagnostics::Msg` order from `DIAG_START` on. Their English is the core's
+    // (`Msg::en`), not repeated in `EN`. ----
+    let core_i18n = Path::new(env!("CARGO_MANIFEST_DIR")).join("../core/i18n");
+    let diag_file = |lang: &str| core_i18n.join(format!("messages.{lang}.json"));
+    if parts.iter().any(|p| p == "diag") {
+        problems.push("en/diag.json: the part `diag` is the diagnostics' (core/i18n/)".into());
+    }
+    let diag_start = en.len();
+    println!("cargo:rerun-if-changed={}", diag_file("en").display());
+    match catalogue(&diag_file("en")) {
+        Ok(texts) => en.extend(texts.into_iter().map(|(k, v)| (format!("diag.{k}"), v))),
+        Err(e) => problems.push(e),
+    }
+    // ---- end of the diagnostics' hunk ----
     let _ = std::fs::create_dir_all(out_dir.join("i18n"));
     for lang in ["pl", "cs"] {
         let lang_dir = dir.join(lang);
@@ -244,6 +260,12 @@ fn i18n(out_dir: &Path) {
                 Ok(texts) => tr.extend(texts),
                 Err(e) => problems.push(e),
             }
+        }
+        // The diagnostics' messages in this language (see above).
+        println!("cargo:rerun-if-changed={}", diag_file(lang).display());
+        match catalogue(&diag_file(lang)) {
+            Ok(texts) => tr.extend(texts.into_iter().map(|(k, v)| (format!("diag.{k}"), v))),
+            Err(e) => problems.push(e),
         }
         let lookup: std::collections::BTreeMap<&str, &str> =
             tr.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
@@ -289,11 +311,60 @@ fn i18n(out_dir: &Path) {
     }
     out.push_str("}\n\n/// How many texts the page has (a translation file holds as many).\npub const COUNT: usize = ");
     let _ = writeln!(out, "{};\n", en.len());
-    out.push_str("/// The English texts in key order.\nstatic EN: [&str; COUNT] = [\n");
-    for (_, text) in &en {
+    // The diagnostics' part: `K::diag_*` from DIAG_START on, in `Msg` order.
+    let _ = writeln!(
+        out,
+        "/// The first of the diagnostics' messages (`K::diag_*`, in `Msg` order).\npub const DIAG_START: usize = {diag_start};\n"
+    );
+    out.push_str("/// The English texts in key order (the diagnostics' are the core's, `Msg::en`).\nstatic EN: [&str; DIAG_START] = [\n");
+    for (_, text) in &en[..diag_start] {
         let _ = writeln!(out, "    {:?},", text);
     }
-    out.push_str("];\n\nimpl K {\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        EN[self as usize]\n    }\n}\n");
+    out.push_str("];\n\nimpl K {\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        match EN.get(self as usize) {\n            Some(text) => text,\n            None => Msg::ALL.get(self as usize - DIAG_START).map_or(\"\", |m| m.en()),\n        }\n    }\n");
+    out.push_str("\n    /// The page's key of a diagnostic's message (`K::diag_undeclared_name`).\n    #[allow(dead_code)]\n    pub fn from_msg(m: Msg) -> K {\n        match m {\n");
+    for (key, _) in &en[diag_start..] {
+        let core_key = &key["diag.".len()..];
+        let v: String = core_key
+            .split(['_', '.'])
+            .map(|w| {
+                let mut c = w.chars();
+                c.next()
+                    .map(|f| f.to_ascii_uppercase().to_string() + c.as_str())
+                    .unwrap_or_default()
+            })
+            .collect();
+        let _ = writeln!(out, "            Msg::{v} => K::{},", variant(key));
+    }
+    out.push_str("            _ => K::diag_text,\n        }\n    }\n}\n\n");
+    out.push_str(
+        "use plc_core::diagnostics::Msg;\n\n\
+         /// A diagnostic's message in the language shown: its template and its phrase\n\
+         /// arguments through [`t`], its program text as it is.\n\
+         #[allow(dead_code)]\n\
+         pub fn message_text(m: &plc_core::diagnostics::Message) -> String {\n\
+         \x20   let args: Vec<(&str, &str)> = m\n\
+         \x20       .args\n\
+         \x20       .iter()\n\
+         \x20       .map(|(name, a)| match a {\n\
+         \x20           plc_core::diagnostics::Arg::Text(s) => (*name, s.as_str()),\n\
+         \x20           plc_core::diagnostics::Arg::Msg(p) => (*name, t(K::from_msg(p.key))),\n\
+         \x20       })\n\
+         \x20       .collect();\n\
+         \x20   plc_core::diagnostics::fill(t(K::from_msg(m.key)), |n| {\n\
+         \x20       args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v)\n\
+         \x20   })\n\
+         }\n\n\
+         /// [`message_text`] ending in `; did you mean NAME?` when there is a `suggestion`.\n\
+         #[allow(dead_code)]\n\
+         pub fn message_with_hint(m: &plc_core::diagnostics::Message, suggestion: Option<&str>) -> String {\n\
+         \x20   let mut text = message_text(m);\n\
+         \x20   if let Some(s) = suggestion {\n\
+         \x20       text.push_str(\"; \");\n\
+         \x20       text.push_str(&tf(K::diag_did_you_mean, &[(\"name\", s)]));\n\
+         \x20   }\n\
+         \x20   text\n\
+         }\n",
+    );
     let _ = std::fs::write(out_dir.join("i18n.rs"), out);
 }
 

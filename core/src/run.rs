@@ -364,7 +364,7 @@ fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticRep
         line,
         column,
         suggestion: d.suggestion().map(str::to_string),
-        msg: d.msg.clone().filter(|_| matches!(d.site, Site::St { .. })),
+        msg: d.msg.as_deref().filter(|_| matches!(d.site, Site::St { .. })).cloned(),
     }
 }
 

@@ -182,7 +182,7 @@ pub struct ProjectDiagnostic {
     pub message: String,
     /// The message as data, to be shown in any language ([`ProjectDiagnostic::render`]);
     /// `None` while the stage that found the problem words it in English only.
-    pub msg: Option<crate::diagnostics::Message>,
+    pub msg: Option<Box<crate::diagnostics::Message>>,
     /// Where the problem is.
     pub site: Site,
     /// For an unknown name: the declared name it probably misspells and the type its use
@@ -446,7 +446,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
         severity: d.severity,
         code: d.code,
         message: d.message,
-        msg: Some(d.msg),
+        msg: Some(Box::new(d.msg)),
         site: site_in(&source, &index, d.span),
         hint: NameHint::of(d.suggestion, d.implied_type),
     }));

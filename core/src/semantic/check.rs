@@ -198,7 +198,7 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::DuplicateDeclaration,
                                 def.name.span,
-                                format!("type `{}` is already declared", def.name.name),
+                                crate::msg!(TypeAlreadyDeclared, name = def.name.name.to_string()),
                             );
                             continue;
                         }
@@ -218,7 +218,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::DuplicateDeclaration,
                             pou.name.span,
-                            format!("`{}` is {what}; choose another name", pou.name.name),
+                            crate::msg!(ChooseAnotherName, name = pou.name.name.to_string(), what = what.to_string()),
                         );
                         continue;
                     }
@@ -264,7 +264,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::DuplicateDeclaration,
                     var.span,
-                    format!("global variable `{}` is already declared", var.name),
+                    crate::msg!(GlobalVariableAlreadyDeclared, name = var.name.to_string()),
                 );
                 continue;
             }
@@ -297,7 +297,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::RecursiveCall,
                         span,
-                        format!("`{name}` calls itself (directly or through other POUs); PLC programs cannot recurse"),
+                        crate::msg!(CallsItselfDirectlyThroughOther, name = name.to_string()),
                     );
                     break;
                 }
@@ -477,7 +477,7 @@ pub(super) fn check_expression_in(
         c.error(
             Code::UndeclaredName,
             expr.span,
-            "a direct address that the program does not use cannot be watched",
+            crate::msg!(DirectAddressProgramDoesNot),
         );
     }
     if crate::diagnostics::has_errors(&c.diags) {

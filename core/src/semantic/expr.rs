@@ -185,7 +185,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::NotAVariable,
                     span,
-                    format!("`{}` is a POU, not a value; call it with `{}(…)`", id.name, id.name),
+                    crate::msg!(PouNotValueCall, name = id.name.to_string()),
                 );
                 None
             }
@@ -220,11 +220,7 @@ impl<'a> Checker<'a> {
             .elem()
             .filter(|e| matches!(e, Elem::Byte | Elem::Word | Elem::DWord | Elem::LWord))
         else {
-            let msg = format!(
-                "partial access `.%{}{index}` needs a bit string (BYTE, WORD, DWORD, LWORD), not {}",
-                part_letter(part),
-                self.tname(base)
-            );
+            let msg = crate::msg!(PartialAccessNeedsBitString, part_letter = (part_letter(part)).to_string(), index = index.to_string(), base = (self.tname(base)).to_string());
             self.error(Code::NotAStruct, span, msg);
             return None;
         };
@@ -299,10 +295,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::TypeMismatch,
                 span,
-                format!(
-                    "`{}` is a function block instance: use one of its outputs, e.g. `{}.Q`",
-                    var.name, var.name
-                ),
+                crate::msg!(FunctionBlockInstanceUseOne, name = var.name.to_string()),
             );
             return None;
         }
@@ -322,7 +315,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::InvalidTypedLiteral,
                             p.span,
-                            format!("unknown type prefix `{}#`", p.name),
+                            crate::msg!(UnknownTypePrefix, name = p.name.to_string()),
                         );
                         return None;
                     }
@@ -334,7 +327,7 @@ impl<'a> Checker<'a> {
                 c.error(
                     Code::InvalidTypedLiteral,
                     span,
-                    format!("`{}#` does not fit this literal", p.name),
+                    crate::msg!(DoesNotFitLiteral, name = p.name.to_string()),
                 );
             }
         };
@@ -350,7 +343,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::IntegerLiteralTooLarge,
                             span,
-                            format!("{v} is too large for any integer type"),
+                            crate::msg!(TooLargeAnyIntegerType, v = v.to_string()),
                         );
                         return None;
                     };
@@ -366,7 +359,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::ConstantOutOfRange,
                             span,
-                            format!("{v} does not fit {} ({lo}..{hi})", el.name()),
+                            crate::msg!(DoesNotFit, v = v.to_string(), name = (el.name()).to_string(), lo = lo.to_string(), hi = hi.to_string()),
                         );
                         return None;
                     }
@@ -437,7 +430,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::TypeMismatch,
                 type_name.span,
-                format!("`{}` is not an enumeration", type_name.name),
+                crate::msg!(NotEnumeration, name = type_name.name.to_string()),
             );
             return None;
         };
@@ -469,17 +462,7 @@ impl<'a> Checker<'a> {
         }
         let def = &self.types.enums[eid as usize];
         let &(_, value) = def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&id.name))?;
-        let message = format!(
-            "`{}` is both the variable `{}` ({}) and a value of `{}`; it is read as the value \
-             because a {} is expected here: write `{}#{}` to say so, or rename the variable",
-            id.name,
-            var.name,
-            self.tname(var.ty),
-            def.name,
-            def.name,
-            def.name,
-            id.name
-        );
+        let message = crate::msg!(BothVariableValueReadValue, name = id.name.to_string(), name2 = var.name.to_string(), ty = (self.tname(var.ty)).to_string(), name3 = def.name.to_string());
         self.warning(Code::VariableShadowsEnumValue, id.span, message);
         Some(NameRef::Enumerator(Type::Enum(eid), value))
     }
@@ -540,10 +523,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::UndeclaredName,
                     id.span,
-                    format!(
-                        "`{}` is a value of both `{a}` and `{b}`; write `{a}#{}` or `{b}#{}`",
-                        id.name, id.name, id.name
-                    ),
+                    crate::msg!(ValueBothWrite, name = id.name.to_string(), a = a.to_string(), b = b.to_string()),
                 );
                 return None;
             }
@@ -650,7 +630,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAVariable,
                         e.span,
-                        format!("`{}` is a system variable, not a place in memory", id.name),
+                        crate::msg!(SystemVariableNotPlaceMemory, name = id.name.to_string()),
                     );
                     None
                 }
@@ -695,21 +675,14 @@ impl<'a> Checker<'a> {
                         let var = &pou.vars[i as usize];
                         let ty = var.ty;
                         if write && !matches!(var.section, VarSection::Input) {
-                            let msg = format!(
-                                "`{}` is not an input of `{}`; only inputs may be set from outside the block",
-                                field.name, pou.name
-                            );
+                            let msg = crate::msg!(NotInputOnlyInputsMay, name = field.name.to_string(), name2 = pou.name.to_string());
                             self.error(Code::NotAssignable, e.span, msg);
                             return None;
                         }
                         Some((Place::Field(Box::new(bp), i), ty))
                     }
                     other => {
-                        let msg = format!(
-                            "`.{}`: a value of type {} has no members",
-                            field.name,
-                            self.tname(other)
-                        );
+                        let msg = crate::msg!(ValueTypeHasNoMembers, name = field.name.to_string(), other = (self.tname(other)).to_string());
                         self.error(Code::NotAStruct, field.span, msg);
                         None
                     }
@@ -718,16 +691,13 @@ impl<'a> Checker<'a> {
             K::Bit(base, n) => {
                 let (bp, bty) = self.place(base, write)?;
                 let Some(el) = bty.elem().filter(|e| e.is_integral()) else {
-                    let msg = format!(
-                        "bit access `.{n}` needs an integer or bit string, not {}",
-                        self.tname(bty)
-                    );
+                    let msg = crate::msg!(BitAccessNeedsIntegerBit, n = n.to_string(), bty = (self.tname(bty)).to_string());
                     self.error(Code::NotAStruct, e.span, msg);
                     return None;
                 };
                 if *n >= el.bits() {
                     let msg =
-                        format!("{} has bits 0..{}; there is no bit {n}", el.name(), el.bits() - 1);
+                        crate::msg!(HasBits0ThereNo, name = (el.name()).to_string(), bits = (el.bits() - 1).to_string(), n = n.to_string());
                     self.error(Code::BitOutOfRange, e.span, msg);
                     return None;
                 }
@@ -739,17 +709,13 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAnArray,
                         e.span,
-                        format!("a value of type {} cannot be indexed", self.tname(bty)),
+                        crate::msg!(ValueTypeCannotIndexed, bty = (self.tname(bty)).to_string()),
                     );
                     return None;
                 };
                 let def = self.types.arrays[aid as usize].clone();
                 if def.dims.len() != indices.len() {
-                    let msg = format!(
-                        "this array has {} dimension(s) but {} index(es) were given",
-                        def.dims.len(),
-                        indices.len()
-                    );
+                    let msg = crate::msg!(ArrayHasDimensionSBut, dims = (def.dims.len()).to_string(), indices = (indices.len()).to_string());
                     self.error(Code::WrongIndexCount, e.span, msg);
                     return None;
                 }
@@ -757,16 +723,13 @@ impl<'a> Checker<'a> {
                 for (ix, (lo, hi)) in indices.iter().zip(&def.dims) {
                     let t = self.expr(ix, None)?;
                     if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-                        let msg = format!(
-                            "an array index must be an integer, not {}",
-                            self.tname(t.e.ty)
-                        );
+                        let msg = crate::msg!(ArrayIndexMustIntegerNot, ty = (self.tname(t.e.ty)).to_string());
                         self.error(Code::TypeMismatch, ix.span, msg);
                         return None;
                     }
                     if let Some(v) = super::consts::int_value(&t.e) {
                         if v < *lo || v > *hi {
-                            let msg = format!("index {v} is outside the array bounds {lo}..{hi}");
+                            let msg = crate::msg!(IndexOutsideArrayBounds, v = v.to_string(), lo = lo.to_string(), hi = hi.to_string());
                             self.error(Code::ConstantIndexOutOfRange, ix.span, msg);
                             return None;
                         }
@@ -782,7 +745,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::NotAssignable,
                     e.span,
-                    format!("this expression cannot be {what}; it is not a variable"),
+                    crate::msg!(ExpressionCannotNotVariable, what = what.to_string()),
                 );
                 None
             }
@@ -902,7 +865,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::OperatorTypeMismatch,
                         span,
-                        format!("unary `+` needs a number, not {}", self.tname(ty)),
+                        crate::msg!(UnaryNeedsNumberNot, ty = (self.tname(ty)).to_string()),
                     );
                     return None;
                 }
@@ -915,7 +878,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::OperatorTypeMismatch,
                         span,
-                        format!("`-` needs a number or TIME, not {}", self.tname(ty)),
+                        crate::msg!(NeedsNumberTimeNot, ty = (self.tname(ty)).to_string()),
                     );
                     return None;
                 };
@@ -940,7 +903,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::OperatorTypeMismatch,
                         span,
-                        format!("NOT needs a BOOL or a bit string, not {}", self.tname(ty)),
+                        crate::msg!(NotNeedsBoolBitString, ty = (self.tname(ty)).to_string()),
                     );
                     return None;
                 };
@@ -1022,7 +985,7 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::ConstantOutOfRange,
                                 span,
-                                format!("{v} does not fit {} ({lo}..{hi})", te.name()),
+                                crate::msg!(DoesNotFit, v = v.to_string(), name = (te.name()).to_string(), lo = lo.to_string(), hi = hi.to_string()),
                             );
                             return None;
                         }
@@ -1116,7 +1079,7 @@ impl<'a> Checker<'a> {
         let (at, bt) = (a.e.ty, b.e.ty);
         let mismatch = |c: &mut Self| {
             let msg =
-                format!("`{}` cannot combine {} and {}", op_text(op), c.tname(at), c.tname(bt));
+                crate::msg!(CannotCombine, op_text = (op_text(op)).to_string(), tname = (c.tname(at)).to_string(), tname2 = (c.tname(bt)).to_string());
             c.error(Code::OperatorTypeMismatch, span, msg);
             None
         };
@@ -1196,7 +1159,7 @@ impl<'a> Checker<'a> {
                     BinOp::Sub => x.checked_sub(y),
                     BinOp::Mul => x.checked_mul(y),
                     BinOp::Div if y == 0 => {
-                        self.error(Code::DivisionByZeroConstant, span, "division by zero");
+                        self.error(Code::DivisionByZeroConstant, span, crate::msg!(DivisionZero));
                         return None;
                     }
                     BinOp::Div => Some(x / y),
@@ -1226,14 +1189,14 @@ impl<'a> Checker<'a> {
             }
         };
         if op == BinOp::Mod && !el.is_integral() {
-            let msg = format!("MOD needs integers, not {}", el.name());
+            let msg = crate::msg!(ModNeedsIntegersNot, name = (el.name()).to_string());
             self.error(Code::OperatorTypeMismatch, span, msg);
             return None;
         }
         let ty = Type::Elem(el);
         let (x, y) = (self.convert(a.e, ty), self.convert(b.e, ty));
         if op == BinOp::Div && el.is_integral() && matches!(y.kind, ExprKind::Const(0)) {
-            self.error(Code::DivisionByZeroConstant, r.span, "division by a constant zero");
+            self.error(Code::DivisionByZeroConstant, r.span, crate::msg!(DivisionConstantZero));
             return None;
         }
         Some(Typed { e: make(self, ty, x, y)?, flexible })

@@ -221,7 +221,7 @@ impl Parser<'_> {
         self.bump();
         let length = self.parse_expr()?;
         let what = if close_kind == TokenKind::RBracket { "`]`" } else { "`)`" };
-        let close = self.expect(close_kind, &format!("{what} after the string length"))?;
+        let close = self.expect(close_kind, format!("{what} after the string length"))?;
         Ok(TypeRef::String { wide, length: Some(Box::new(length)), span: tok.span.to(close.span) })
     }
 
@@ -412,7 +412,7 @@ impl Parser<'_> {
     fn parse_type_def(&mut self) -> PResult<TypeDef> {
         let name_tok = self.bump();
         let name = self.ident(name_tok);
-        self.expect(TokenKind::Colon, &format!("`:` and a type after `{}`", name.name))?;
+        self.expect(TokenKind::Colon, format!("`:` and a type after `{}`", name.name))?;
         let ty = self.parse_type_spec()?;
         let init = if self.eat(TokenKind::Assign).is_some() {
             Some(self.parse_initializer()?)

@@ -310,7 +310,7 @@ impl Parser<'_> {
         let prefix = self.ident(prefix_tok);
         let Some(class) = literal::prefix_class(&prefix.name) else {
             let value_tok =
-                self.expect(TokenKind::Ident, &format!("an enumerator after `{}#`", prefix.name))?;
+                self.expect(TokenKind::Ident, format!("an enumerator after `{}#`", prefix.name))?;
             let value = self.ident(value_tok);
             let span = prefix_tok.span.to(value_tok.span);
             return Ok(Expr { kind: ExprKind::EnumValue { type_name: prefix, value }, span });
@@ -343,7 +343,7 @@ impl Parser<'_> {
             }
             TokenKind::True if !negative => LiteralValue::Bool(true),
             TokenKind::False if !negative => LiteralValue::Bool(false),
-            _ => return Err(self.expected(&format!("a value after `{}#`", prefix.name))),
+            _ => return Err(self.expected(format!("a value after `{}#`", prefix.name))),
         };
         self.bump();
         let value = match (negative, value) {

@@ -324,7 +324,7 @@ impl<'a> Parser<'a> {
         let name = match self.eat(TokenKind::Ident) {
             Some(t) => self.ident(t),
             None => {
-                self.expected(&format!("a name after `{kw_text}`"));
+                self.expected(format!("a name after `{kw_text}`"));
                 Ident { name: String::new(), span: self.tok().span }
             }
         };

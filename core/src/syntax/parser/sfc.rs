@@ -105,7 +105,7 @@ impl Parser<'_> {
         };
         let header = opener.span.to(name.span);
         if self.eat(TokenKind::Colon).is_none() {
-            self.expected(&format!("`:` after the step name `{}`", name.name));
+            self.expected(format!("`:` after the step name `{}`", name.name));
         }
         let mut associations = Vec::new();
         while !self.at(TokenKind::EndStep)
@@ -147,7 +147,7 @@ impl Parser<'_> {
         let action = self.sfc_name("an action association such as `Fill(N);` or `END_STEP`")?;
         if self.eat(TokenKind::LParen).is_none() {
             let name = action.name.clone();
-            return Err(self.expected(&format!(
+            return Err(self.expected(format!(
                 "`(` and a qualifier after the action name, as in `{name}(N);`"
             )));
         }
@@ -295,7 +295,7 @@ impl Parser<'_> {
         let priority = if self.at(TokenKind::LParen) { Some(self.parse_priority()?) } else { None };
         if !self.word_at(0, "FROM") {
             let kw = self.text(opener).to_string();
-            return Err(self.expected(&format!("`FROM` and the steps this {kw} leaves")));
+            return Err(self.expected(format!("`FROM` and the steps this {kw} leaves")));
         }
         self.bump();
         let from = self.step_list("a step name after FROM")?;
@@ -342,7 +342,7 @@ impl Parser<'_> {
         };
         let header = opener.span.to(name.span);
         if self.eat(TokenKind::Colon).is_none() {
-            self.expected(&format!("`:` after the action name `{}`", name.name));
+            self.expected(format!("`:` after the action name `{}`", name.name));
         }
         let body = self.parse_stmts(false);
         let what = format!("action `{}`", name.name);

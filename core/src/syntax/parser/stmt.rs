@@ -98,7 +98,7 @@ impl Parser<'_> {
     /// Consumes keyword `kind` (named `name`) or reports it missing without skipping.
     fn expect_keyword(&mut self, kind: TokenKind, name: &str, context: &str) {
         if self.eat(kind).is_none() {
-            self.expected(&format!("`{name}` {context}"));
+            self.expected(format!("`{name}` {context}"));
         }
     }
 
@@ -169,7 +169,7 @@ impl Parser<'_> {
             let what =
                 self.src.get(target.span.start as usize..target.span.end as usize).unwrap_or("");
             let what: String = what.chars().take(40).collect();
-            return Err(self.expected(&format!("`:=` or a call `(…)` after `{what}`")));
+            return Err(self.expected(format!("`:=` or a call `(…)` after `{what}`")));
         };
         let span = self.end_statement(start);
         Ok(Stmt { kind, span })
