@@ -173,7 +173,12 @@ impl<'a> Checker<'a> {
         };
         if wrong {
             let want = if variadic { "at least 2".to_string() } else { params.len().to_string() };
-            let msg = crate::msg!(TakesArgumentSGiven, name = name.name.to_string(), want = want.to_string(), given = (given.len()).to_string());
+            let msg = crate::msg!(
+                TakesArgumentSGiven,
+                name = name.name.to_string(),
+                want = want.to_string(),
+                given = (given.len()).to_string()
+            );
             self.error(Code::WrongArgumentCount, span, msg);
             return None;
         }
@@ -208,7 +213,11 @@ impl<'a> Checker<'a> {
                     match t.e.ty {
                         Type::Str { wide: w, len: l } if w == wide => len = len.max(l),
                         other => {
-                            let msg = crate::msg!(AllInputsMustStringsFound, what = what.to_string(), other = (self.tname(other)).to_string());
+                            let msg = crate::msg!(
+                                AllInputsMustStringsFound,
+                                what = what.to_string(),
+                                other = (self.tname(other)).to_string()
+                            );
                             self.error(Code::TypeMismatch, t.e.span, msg);
                             return None;
                         }
@@ -225,7 +234,12 @@ impl<'a> Checker<'a> {
                         _ => None,
                     };
                     let Some(el) = el else {
-                        let msg = crate::msg!(InputsTypesDoNotMix, what = what.to_string(), ty = (self.tname(acc.e.ty)).to_string(), ty2 = (self.tname(t.e.ty)).to_string());
+                        let msg = crate::msg!(
+                            InputsTypesDoNotMix,
+                            what = what.to_string(),
+                            ty = (self.tname(acc.e.ty)).to_string(),
+                            ty2 = (self.tname(t.e.ty)).to_string()
+                        );
                         self.error(Code::TypeMismatch, t.e.span, msg);
                         return None;
                     };
@@ -428,7 +442,11 @@ impl<'a> Checker<'a> {
             "SHL" | "SHR" | "ROL" | "ROR" => {
                 let t = self.expr(a[0], None)?;
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
-                    let msg = crate::msg!(NeedsBitStringIntegerNot, key = key.to_string(), ty = (self.tname(t.e.ty)).to_string());
+                    let msg = crate::msg!(
+                        NeedsBitStringIntegerNot,
+                        key = key.to_string(),
+                        ty = (self.tname(t.e.ty)).to_string()
+                    );
                     self.error(Code::TypeMismatch, a[0].span, msg);
                     return None;
                 }
@@ -571,7 +589,11 @@ impl<'a> Checker<'a> {
         let value = match from {
             Some(Type::Elem(Elem::LWord)) if key.starts_with("BCD_TO_") => {
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
-                    let msg = crate::msg!(NeedsBitStringHoldingBcd, name = name.name.to_string(), ty = (self.tname(t.e.ty)).to_string());
+                    let msg = crate::msg!(
+                        NeedsBitStringHoldingBcd,
+                        name = name.name.to_string(),
+                        ty = (self.tname(t.e.ty)).to_string()
+                    );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     return None;
                 }
@@ -588,7 +610,11 @@ impl<'a> Checker<'a> {
         match to {
             ConvTarget::Bcd => {
                 let Some(el) = from_ty.elem().filter(|e| e.is_integral()) else {
-                    self.error(Code::TypeMismatch, arg.span, crate::msg!(BcdConversionNeedsInteger));
+                    self.error(
+                        Code::TypeMismatch,
+                        arg.span,
+                        crate::msg!(BcdConversionNeedsInteger),
+                    );
                     return None;
                 };
                 let out = match el.bits() {
@@ -605,7 +631,11 @@ impl<'a> Checker<'a> {
                     Some(self.builtin_expr(Builtin::ToString, vec![value], to, span))
                 }
                 other => {
-                    let msg = crate::msg!(CannotConvertValueType, name = name.name.to_string(), other = (self.tname(other)).to_string());
+                    let msg = crate::msg!(
+                        CannotConvertValueType,
+                        name = name.name.to_string(),
+                        other = (self.tname(other)).to_string()
+                    );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     None
                 }
@@ -621,7 +651,11 @@ impl<'a> Checker<'a> {
                     Some(self.convert(as_int, to))
                 }
                 other => {
-                    let msg = crate::msg!(CannotConvertValueType, name = name.name.to_string(), other = (self.tname(other)).to_string());
+                    let msg = crate::msg!(
+                        CannotConvertValueType,
+                        name = name.name.to_string(),
+                        other = (self.tname(other)).to_string()
+                    );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     None
                 }

@@ -44,12 +44,16 @@ impl<'a> Checker<'a> {
                     return match self.pous[pou as usize].kind {
                         PouKind::Function => Some(Callee::Function(pou)),
                         PouKind::FunctionBlock => {
-                            let msg = crate::msg!(FunctionBlockTypeDeclareInstance, name = id.name.to_string());
+                            let msg = crate::msg!(
+                                FunctionBlockTypeDeclareInstance,
+                                name = id.name.to_string()
+                            );
                             self.error(Code::UnknownFunction, callee.span, msg);
                             None
                         }
                         PouKind::Program => {
-                            let msg = crate::msg!(ProgramProgramsAreRunPlc, name = id.name.to_string());
+                            let msg =
+                                crate::msg!(ProgramProgramsAreRunPlc, name = id.name.to_string());
                             self.error(Code::ProgramCalled, callee.span, msg);
                             None
                         }
@@ -75,7 +79,8 @@ impl<'a> Checker<'a> {
                 Some(Callee::Instance(place, fb))
             }
             other => {
-                let msg = crate::msg!(ValueTypeCannotCalled, other = (self.tname(other)).to_string());
+                let msg =
+                    crate::msg!(ValueTypeCannotCalled, other = (self.tname(other)).to_string());
                 self.error(Code::UnknownFunction, callee.span, msg);
                 None
             }
@@ -190,11 +195,7 @@ impl<'a> Checker<'a> {
         let positional = args.iter().any(|a| matches!(a, ast::Arg::Positional(_)));
         let named = args.iter().any(|a| !matches!(a, ast::Arg::Positional(_)));
         if positional && named {
-            self.error(
-                Code::MixedArguments,
-                span,
-                crate::msg!(WriteEveryArgumentNameValue),
-            );
+            self.error(Code::MixedArguments, span, crate::msg!(WriteEveryArgumentNameValue));
             return None;
         }
         let mut out = Vec::new();
@@ -205,7 +206,11 @@ impl<'a> Checker<'a> {
             let (index, value_expr, output) = match arg {
                 ast::Arg::Positional(e) => {
                     let Some(&i) = params.get(next_positional) else {
-                        let msg = crate::msg!(TakesArgumentSMoreWere, name = callee.name.to_string(), params = (params.len()).to_string());
+                        let msg = crate::msg!(
+                            TakesArgumentSMoreWere,
+                            name = callee.name.to_string(),
+                            params = (params.len()).to_string()
+                        );
                         self.error(Code::WrongArgumentCount, e.span, msg);
                         return None;
                     };
@@ -250,7 +255,11 @@ impl<'a> Checker<'a> {
                         continue;
                     };
                     if callee.vars[i as usize].section != VarSection::Output {
-                        let msg = crate::msg!(NotOutputUseInputs, name = name.name.to_string(), name2 = callee.name.to_string());
+                        let msg = crate::msg!(
+                            NotOutputUseInputs,
+                            name = name.name.to_string(),
+                            name2 = callee.name.to_string()
+                        );
                         self.error(Code::NotAnOutput, name.span, msg);
                         ok = false;
                         continue;
@@ -259,7 +268,8 @@ impl<'a> Checker<'a> {
                 }
             };
             if given.contains(&index) {
-                let msg = crate::msg!(GivenTwice, name = (callee.vars[index as usize].name).to_string());
+                let msg =
+                    crate::msg!(GivenTwice, name = (callee.vars[index as usize].name).to_string());
                 self.error(Code::DuplicateArgument, value_expr.span, msg);
                 ok = false;
                 continue;
@@ -272,7 +282,8 @@ impl<'a> Checker<'a> {
                     continue;
                 };
                 if matches!(place, Place::Bit(..) | Place::Slice(..)) {
-                    let msg = crate::msg!(OutputWrittenWholeVariableNot, name = param.name.to_string());
+                    let msg =
+                        crate::msg!(OutputWrittenWholeVariableNot, name = param.name.to_string());
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -330,7 +341,12 @@ impl<'a> Checker<'a> {
                 if ty != param.ty
                     && !matches!((ty, param.ty), (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b)
                 {
-                    let msg = crate::msg!(VarOutNeedsVariableType, name = param.name.to_string(), ty = (self.tname(param.ty)).to_string(), ty2 = (self.tname(ty)).to_string());
+                    let msg = crate::msg!(
+                        VarOutNeedsVariableType,
+                        name = param.name.to_string(),
+                        ty = (self.tname(param.ty)).to_string(),
+                        ty2 = (self.tname(ty)).to_string()
+                    );
                     self.error(Code::TypeMismatch, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -354,7 +370,11 @@ impl<'a> Checker<'a> {
         for &i in &params {
             let p = &callee.vars[i as usize];
             if p.section == VarSection::InOut && !given.contains(&i) {
-                let msg = crate::msg!(VarOutMustGivenEvery, name = p.name.to_string(), name2 = callee.name.to_string());
+                let msg = crate::msg!(
+                    VarOutMustGivenEvery,
+                    name = p.name.to_string(),
+                    name2 = callee.name.to_string()
+                );
                 self.error(Code::MissingInOut, span, msg);
                 ok = false;
             }

@@ -218,7 +218,11 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::DuplicateDeclaration,
                             pou.name.span,
-                            crate::msg!(ChooseAnotherName, name = pou.name.name.to_string(), what = what.to_string()),
+                            crate::msg!(
+                                ChooseAnotherName,
+                                name = pou.name.name.to_string(),
+                                what = what.to_string()
+                            ),
                         );
                         continue;
                     }
@@ -474,11 +478,7 @@ pub(super) fn check_expression_in(
         None => Some(t.e),
     });
     if c.globals.len() != globals_before {
-        c.error(
-            Code::UndeclaredName,
-            expr.span,
-            crate::msg!(DirectAddressProgramDoesNot),
-        );
+        c.error(Code::UndeclaredName, expr.span, crate::msg!(DirectAddressProgramDoesNot));
     }
     if crate::diagnostics::has_errors(&c.diags) {
         return Err(c.diags);

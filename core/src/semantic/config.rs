@@ -36,7 +36,11 @@ impl Checker<'_> {
             self.error(
                 Code::UnsupportedConfiguration,
                 other.name.span,
-                crate::msg!(ProgramHasOneConfigurationSecond, name = other.name.name.to_string(), name2 = first.name.name.to_string()),
+                crate::msg!(
+                    ProgramHasOneConfigurationSecond,
+                    name = other.name.name.to_string(),
+                    name2 = first.name.name.to_string()
+                ),
             );
         }
         Some(self.check_configuration(first))
@@ -63,7 +67,10 @@ impl Checker<'_> {
                     self.error(
                         Code::DuplicateDeclaration,
                         p.name.span,
-                        crate::msg!(AlreadyGlobalVariableNameProgram, name = p.name.name.to_string()),
+                        crate::msg!(
+                            AlreadyGlobalVariableNameProgram,
+                            name = p.name.name.to_string()
+                        ),
                     );
                     continue;
                 }
@@ -116,7 +123,11 @@ impl Checker<'_> {
         what: &'n str,
     ) -> bool {
         if let Some(other) = names.get(&name.key()) {
-            let msg = crate::msg!(AlreadyNamesConfiguration, name = name.name.to_string(), other = other.to_string());
+            let msg = crate::msg!(
+                AlreadyNamesConfiguration,
+                name = name.name.to_string(),
+                other = other.to_string()
+            );
             self.error(Code::DuplicateDeclaration, name.span, msg);
             return true;
         }
@@ -203,7 +214,11 @@ impl Checker<'_> {
                 self.error(
                     Code::NotAProgramType,
                     p.type_name.span,
-                    crate::msg!(ProgramInstanceNamesProgram, name = p.type_name.name.to_string(), what = what.to_string()),
+                    crate::msg!(
+                        ProgramInstanceNamesProgram,
+                        name = p.type_name.name.to_string(),
+                        what = what.to_string()
+                    ),
                 );
                 return None;
             }
@@ -216,7 +231,11 @@ impl Checker<'_> {
                     self.error(
                         Code::UnknownTask,
                         t.span,
-                        crate::msg!(ResourceDeclaresNoTask, resource = resource.to_string(), name = t.name.to_string()),
+                        crate::msg!(
+                            ResourceDeclaresNoTask,
+                            resource = resource.to_string(),
+                            name = t.name.to_string()
+                        ),
                     );
                     return None;
                 }
@@ -247,7 +266,12 @@ impl Checker<'_> {
             .map(|v| (v.name.clone(), v.ty));
         let Some((param, ty)) = param else {
             let what = if conn.output { "VAR_OUTPUT (`=>`)" } else { "VAR_INPUT (`:=`)" };
-            let msg = crate::msg!(NotProgram, name = conn.param.name.to_string(), what = what.to_string(), name2 = prog.name.to_string());
+            let msg = crate::msg!(
+                NotProgram,
+                name = conn.param.name.to_string(),
+                what = what.to_string(),
+                name2 = prog.name.to_string()
+            );
             self.error(Code::BadProgramConnection, conn.param.span, msg);
             return;
         };
@@ -288,7 +312,12 @@ impl Checker<'_> {
             let Some((steps, var)) = self.config_path(v, instances, pou) else { continue };
             let Some(ty) = self.resolve_type(&v.ty, &var.name).map(|r| r.ty) else { continue };
             if ty != var.ty {
-                let msg = crate::msg!(DeclaredVarConfigEntryGives, name = var.name.to_string(), ty = (self.tname(var.ty)).to_string(), ty2 = (self.tname(ty)).to_string());
+                let msg = crate::msg!(
+                    DeclaredVarConfigEntryGives,
+                    name = var.name.to_string(),
+                    ty = (self.tname(var.ty)).to_string(),
+                    ty2 = (self.tname(ty)).to_string()
+                );
                 self.error(Code::BadConfigVar, v.ty.span(), msg);
                 continue;
             }
@@ -387,7 +416,11 @@ impl Checker<'_> {
         };
         if let Some(why) = refused {
             let name = v.path.last().map_or(v.span, |n| n.span);
-            let msg = crate::msg!(CannotTakeInitialValueFrom, name = var.name.to_string(), why = why.to_string());
+            let msg = crate::msg!(
+                CannotTakeInitialValueFrom,
+                name = var.name.to_string(),
+                why = why.to_string()
+            );
             self.error(Code::BadConfigVar, name, msg);
             return false;
         }
@@ -457,7 +490,12 @@ impl Checker<'_> {
             return None;
         };
         if decl.area != loc.area || decl.size != loc.size || loc.path.is_empty() {
-            let msg = crate::msg!(DeclaredGiveCompleteAddressArea, name = var.name.to_string(), text = decl.text.to_string(), ty = (self.tname(var.ty)).to_string());
+            let msg = crate::msg!(
+                DeclaredGiveCompleteAddressArea,
+                name = var.name.to_string(),
+                text = decl.text.to_string(),
+                ty = (self.tname(var.ty)).to_string()
+            );
             self.error(Code::BadConfigVar, loc.span, msg);
             return None;
         }

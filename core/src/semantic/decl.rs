@@ -18,7 +18,11 @@ impl<'a> Checker<'a> {
             Some(TypeSlot::Failed) | None => return None,
             Some(TypeSlot::Resolving(span)) => {
                 let span = *span;
-                self.error(Code::RecursiveType, span, crate::msg!(TypeContainsItself, key = key.to_string()));
+                self.error(
+                    Code::RecursiveType,
+                    span,
+                    crate::msg!(TypeContainsItself, key = key.to_string()),
+                );
                 self.type_slots.insert(key.to_string(), TypeSlot::Failed);
                 return None;
             }
@@ -48,7 +52,11 @@ impl<'a> Checker<'a> {
     /// type is refused at `span` of the reference rather than exhausting the stack.
     pub fn resolve_type(&mut self, tr: &TypeRef, owner: &str) -> Option<Resolved> {
         if self.resolve_depth >= MAX_TYPE_NESTING {
-            let message = crate::msg!(TypeBuiltFromTypesNested, owner = owner.to_string(), MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string());
+            let message = crate::msg!(
+                TypeBuiltFromTypesNested,
+                owner = owner.to_string(),
+                MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string()
+            );
             self.error(Code::TooComplex, tr.span(), message);
             return None;
         }
@@ -81,7 +89,11 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::UnknownType,
                         id.span,
-                        crate::msg!(NotType, name = id.name.to_string(), kind_name = (kind_name(self.pous[pou as usize].kind)).to_string()),
+                        crate::msg!(
+                            NotType,
+                            name = id.name.to_string(),
+                            kind_name = (kind_name(self.pous[pou as usize].kind)).to_string()
+                        ),
                     );
                     return None;
                 }
@@ -106,7 +118,11 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::InvalidArraySize,
                         *span,
-                        crate::msg!(StringLengthMustBetween1, MAX_STRING_LEN = MAX_STRING_LEN.to_string(), len = len.to_string()),
+                        crate::msg!(
+                            StringLengthMustBetween1,
+                            MAX_STRING_LEN = MAX_STRING_LEN.to_string(),
+                            len = len.to_string()
+                        ),
                     );
                     return None;
                 }
@@ -120,7 +136,11 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::InvalidRange,
                             lo.span.to(hi.span),
-                            crate::msg!(ArrayBoundsLowerBoundAbove, l = l.to_string(), h = h.to_string()),
+                            crate::msg!(
+                                ArrayBoundsLowerBoundAbove,
+                                l = l.to_string(),
+                                h = h.to_string()
+                            ),
                         );
                         return None;
                     }
@@ -139,7 +159,10 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::InvalidArraySize,
                         *span,
-                        crate::msg!(ArraysMayHoldMostElements, MAX_ARRAY_ELEMENTS = MAX_ARRAY_ELEMENTS.to_string()),
+                        crate::msg!(
+                            ArraysMayHoldMostElements,
+                            MAX_ARRAY_ELEMENTS = MAX_ARRAY_ELEMENTS.to_string()
+                        ),
                     );
                     return None;
                 }
@@ -161,7 +184,12 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::InvalidRange,
                         *span,
-                        crate::msg!(SubrangeEmptyDoesNotFit, l = l.to_string(), h = h.to_string(), name = (elem.name()).to_string()),
+                        crate::msg!(
+                            SubrangeEmptyDoesNotFit,
+                            l = l.to_string(),
+                            h = h.to_string(),
+                            name = (elem.name()).to_string()
+                        ),
                     );
                     return None;
                 }
@@ -237,11 +265,7 @@ impl<'a> Checker<'a> {
         let typed = self.expr(e, None)?;
         let value = consts::int_value(&typed.e);
         if value.is_none() {
-            self.error(
-                Code::NotConstant,
-                e.span,
-                crate::msg!(MustConstantIntegerLiteralConstant),
-            );
+            self.error(Code::NotConstant, e.span, crate::msg!(MustConstantIntegerLiteralConstant));
         }
         value
     }
@@ -270,7 +294,12 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::SubrangeViolation,
                             e.span,
-                            crate::msg!(InitialValueOutsideSubrange, n = n.to_string(), lo = lo.to_string(), hi = hi.to_string()),
+                            crate::msg!(
+                                InitialValueOutsideSubrange,
+                                n = n.to_string(),
+                                lo = lo.to_string(),
+                                hi = hi.to_string()
+                            ),
                         );
                     }
                 }
@@ -290,7 +319,11 @@ impl<'a> Checker<'a> {
                                 self.error(
                                     Code::TooManyInitializers,
                                     *span,
-                                    crate::msg!(RepeatCountDoesNotFit, n = n.to_string(), def = (def.len()).to_string()),
+                                    crate::msg!(
+                                        RepeatCountDoesNotFit,
+                                        n = n.to_string(),
+                                        def = (def.len()).to_string()
+                                    ),
                                 );
                                 return None;
                             }
@@ -305,7 +338,11 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::TooManyInitializers,
                             *span,
-                            crate::msg!(InitialValuesArrayElements, out = (out.len()).to_string(), def = (def.len()).to_string()),
+                            crate::msg!(
+                                InitialValuesArrayElements,
+                                out = (out.len()).to_string(),
+                                def = (def.len()).to_string()
+                            ),
                         );
                         return None;
                     }
@@ -356,7 +393,11 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::TypeMismatch,
                     other.span(),
-                    crate::msg!(CannotInitialiseValueType, what = what.to_string(), ty = (self.tname(ty)).to_string()),
+                    crate::msg!(
+                        CannotInitialiseValueType,
+                        what = what.to_string(),
+                        ty = (self.tname(ty)).to_string()
+                    ),
                 );
                 None
             }
@@ -438,7 +479,11 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::ExternalWithoutGlobal,
                     name.span,
-                    crate::msg!(VarExternalMustHaveType, name = name.name.to_string(), want = want.to_string()),
+                    crate::msg!(
+                        VarExternalMustHaveType,
+                        name = name.name.to_string(),
+                        want = want.to_string()
+                    ),
                 );
             }
             Some(_) => {}
@@ -456,7 +501,11 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::InvalidLocation,
                 loc.span,
-                crate::msg!(CanOnlyHoldElementaryValue, text = loc.text.to_string(), ty = (self.tname(ty)).to_string()),
+                crate::msg!(
+                    CanOnlyHoldElementaryValue,
+                    text = loc.text.to_string(),
+                    ty = (self.tname(ty)).to_string()
+                ),
             );
             return;
         };
@@ -471,7 +520,11 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::InvalidLocation,
                 loc.span,
-                crate::msg!(DoesNotFitVariableType, text = loc.text.to_string(), name = (e.name()).to_string()),
+                crate::msg!(
+                    DoesNotFitVariableType,
+                    text = loc.text.to_string(),
+                    name = (e.name()).to_string()
+                ),
             );
         }
     }

@@ -220,7 +220,12 @@ impl<'a> Checker<'a> {
             .elem()
             .filter(|e| matches!(e, Elem::Byte | Elem::Word | Elem::DWord | Elem::LWord))
         else {
-            let msg = crate::msg!(PartialAccessNeedsBitString, part_letter = (part_letter(part)).to_string(), index = index.to_string(), base = (self.tname(base)).to_string());
+            let msg = crate::msg!(
+                PartialAccessNeedsBitString,
+                part_letter = (part_letter(part)).to_string(),
+                index = index.to_string(),
+                base = (self.tname(base)).to_string()
+            );
             self.error(Code::NotAStruct, span, msg);
             return None;
         };
@@ -359,7 +364,13 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::ConstantOutOfRange,
                             span,
-                            crate::msg!(DoesNotFit, v = v.to_string(), name = (el.name()).to_string(), lo = lo.to_string(), hi = hi.to_string()),
+                            crate::msg!(
+                                DoesNotFit,
+                                v = v.to_string(),
+                                name = (el.name()).to_string(),
+                                lo = lo.to_string(),
+                                hi = hi.to_string()
+                            ),
                         );
                         return None;
                     }
@@ -462,7 +473,13 @@ impl<'a> Checker<'a> {
         }
         let def = &self.types.enums[eid as usize];
         let &(_, value) = def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&id.name))?;
-        let message = crate::msg!(BothVariableValueReadValue, name = id.name.to_string(), name2 = var.name.to_string(), ty = (self.tname(var.ty)).to_string(), name3 = def.name.to_string());
+        let message = crate::msg!(
+            BothVariableValueReadValue,
+            name = id.name.to_string(),
+            name2 = var.name.to_string(),
+            ty = (self.tname(var.ty)).to_string(),
+            name3 = def.name.to_string()
+        );
         self.warning(Code::VariableShadowsEnumValue, id.span, message);
         Some(NameRef::Enumerator(Type::Enum(eid), value))
     }
@@ -523,7 +540,12 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::UndeclaredName,
                     id.span,
-                    crate::msg!(ValueBothWrite, name = id.name.to_string(), a = a.to_string(), b = b.to_string()),
+                    crate::msg!(
+                        ValueBothWrite,
+                        name = id.name.to_string(),
+                        a = a.to_string(),
+                        b = b.to_string()
+                    ),
                 );
                 return None;
             }
@@ -675,14 +697,22 @@ impl<'a> Checker<'a> {
                         let var = &pou.vars[i as usize];
                         let ty = var.ty;
                         if write && !matches!(var.section, VarSection::Input) {
-                            let msg = crate::msg!(NotInputOnlyInputsMay, name = field.name.to_string(), name2 = pou.name.to_string());
+                            let msg = crate::msg!(
+                                NotInputOnlyInputsMay,
+                                name = field.name.to_string(),
+                                name2 = pou.name.to_string()
+                            );
                             self.error(Code::NotAssignable, e.span, msg);
                             return None;
                         }
                         Some((Place::Field(Box::new(bp), i), ty))
                     }
                     other => {
-                        let msg = crate::msg!(ValueTypeHasNoMembers, name = field.name.to_string(), other = (self.tname(other)).to_string());
+                        let msg = crate::msg!(
+                            ValueTypeHasNoMembers,
+                            name = field.name.to_string(),
+                            other = (self.tname(other)).to_string()
+                        );
                         self.error(Code::NotAStruct, field.span, msg);
                         None
                     }
@@ -691,13 +721,21 @@ impl<'a> Checker<'a> {
             K::Bit(base, n) => {
                 let (bp, bty) = self.place(base, write)?;
                 let Some(el) = bty.elem().filter(|e| e.is_integral()) else {
-                    let msg = crate::msg!(BitAccessNeedsIntegerBit, n = n.to_string(), bty = (self.tname(bty)).to_string());
+                    let msg = crate::msg!(
+                        BitAccessNeedsIntegerBit,
+                        n = n.to_string(),
+                        bty = (self.tname(bty)).to_string()
+                    );
                     self.error(Code::NotAStruct, e.span, msg);
                     return None;
                 };
                 if *n >= el.bits() {
-                    let msg =
-                        crate::msg!(HasBits0ThereNo, name = (el.name()).to_string(), bits = (el.bits() - 1).to_string(), n = n.to_string());
+                    let msg = crate::msg!(
+                        HasBits0ThereNo,
+                        name = (el.name()).to_string(),
+                        bits = (el.bits() - 1).to_string(),
+                        n = n.to_string()
+                    );
                     self.error(Code::BitOutOfRange, e.span, msg);
                     return None;
                 }
@@ -715,7 +753,11 @@ impl<'a> Checker<'a> {
                 };
                 let def = self.types.arrays[aid as usize].clone();
                 if def.dims.len() != indices.len() {
-                    let msg = crate::msg!(ArrayHasDimensionSBut, dims = (def.dims.len()).to_string(), indices = (indices.len()).to_string());
+                    let msg = crate::msg!(
+                        ArrayHasDimensionSBut,
+                        dims = (def.dims.len()).to_string(),
+                        indices = (indices.len()).to_string()
+                    );
                     self.error(Code::WrongIndexCount, e.span, msg);
                     return None;
                 }
@@ -723,13 +765,21 @@ impl<'a> Checker<'a> {
                 for (ix, (lo, hi)) in indices.iter().zip(&def.dims) {
                     let t = self.expr(ix, None)?;
                     if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-                        let msg = crate::msg!(ArrayIndexMustIntegerNot, ty = (self.tname(t.e.ty)).to_string());
+                        let msg = crate::msg!(
+                            ArrayIndexMustIntegerNot,
+                            ty = (self.tname(t.e.ty)).to_string()
+                        );
                         self.error(Code::TypeMismatch, ix.span, msg);
                         return None;
                     }
                     if let Some(v) = super::consts::int_value(&t.e) {
                         if v < *lo || v > *hi {
-                            let msg = crate::msg!(IndexOutsideArrayBounds, v = v.to_string(), lo = lo.to_string(), hi = hi.to_string());
+                            let msg = crate::msg!(
+                                IndexOutsideArrayBounds,
+                                v = v.to_string(),
+                                lo = lo.to_string(),
+                                hi = hi.to_string()
+                            );
                             self.error(Code::ConstantIndexOutOfRange, ix.span, msg);
                             return None;
                         }
@@ -985,7 +1035,13 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::ConstantOutOfRange,
                                 span,
-                                crate::msg!(DoesNotFit, v = v.to_string(), name = (te.name()).to_string(), lo = lo.to_string(), hi = hi.to_string()),
+                                crate::msg!(
+                                    DoesNotFit,
+                                    v = v.to_string(),
+                                    name = (te.name()).to_string(),
+                                    lo = lo.to_string(),
+                                    hi = hi.to_string()
+                                ),
                             );
                             return None;
                         }
@@ -1078,8 +1134,12 @@ impl<'a> Checker<'a> {
         let (a, b) = self.bool_literals(op, a?, b?);
         let (at, bt) = (a.e.ty, b.e.ty);
         let mismatch = |c: &mut Self| {
-            let msg =
-                crate::msg!(CannotCombine, op_text = (op_text(op)).to_string(), tname = (c.tname(at)).to_string(), tname2 = (c.tname(bt)).to_string());
+            let msg = crate::msg!(
+                CannotCombine,
+                op_text = (op_text(op)).to_string(),
+                tname = (c.tname(at)).to_string(),
+                tname2 = (c.tname(bt)).to_string()
+            );
             c.error(Code::OperatorTypeMismatch, span, msg);
             None
         };

@@ -96,7 +96,11 @@ impl Checker<'_> {
             }
         }
         for (span, name) in found {
-            let message = crate::msg!(TypeNestsFbInstancesStructs, name = name.to_string(), MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string());
+            let message = crate::msg!(
+                TypeNestsFbInstancesStructs,
+                name = name.to_string(),
+                MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string()
+            );
             self.error(Code::TooComplex, span, message);
         }
     }

@@ -171,7 +171,12 @@ impl Checker<'_> {
             _ => None,
         };
         let Some(operand) = operand else {
-            let msg = crate::msg!(CannotCombine2, op_text = (super::expr::op_text(op)).to_string(), ty = (self.tname(a.ty)).to_string(), ty2 = (self.tname(b.ty)).to_string());
+            let msg = crate::msg!(
+                CannotCombine2,
+                op_text = (super::expr::op_text(op)).to_string(),
+                ty = (self.tname(a.ty)).to_string(),
+                ty2 = (self.tname(b.ty)).to_string()
+            );
             self.error(Code::OperatorTypeMismatch, span, msg);
             return None;
         };

@@ -45,7 +45,11 @@ impl<'a> Checker<'a> {
         // A condition is a BOOL context: an untyped `0` or `1` is FALSE or TRUE.
         let t = self.bool_literal(t, Type::BOOL);
         if !t.e.ty.is_bool() {
-            let msg = crate::msg!(ConditionMustBoolNot, what = what.to_string(), ty = (self.tname(t.e.ty)).to_string());
+            let msg = crate::msg!(
+                ConditionMustBoolNot,
+                what = what.to_string(),
+                ty = (self.tname(t.e.ty)).to_string()
+            );
             self.error(Code::ConditionNotBool, e.span, msg);
             return None;
         }
@@ -118,8 +122,7 @@ impl<'a> Checker<'a> {
                 let ty = place.as_ref().map(|p| p.1);
                 let el = ty.and_then(Type::elem).filter(|e| e.is_int());
                 if place.is_some() && el.is_none() {
-                    let msg =
-                        crate::msg!(VariableMustIntegerVariable, name = var.name.to_string());
+                    let msg = crate::msg!(VariableMustIntegerVariable, name = var.name.to_string());
                     self.error(Code::ForVariableNotInteger, var.span, msg);
                 }
                 let vty = el.map(Type::Elem);
@@ -140,11 +143,7 @@ impl<'a> Checker<'a> {
                 };
                 if let Some(step) = &b {
                     if consts::int_value(step) == Some(0) {
-                        self.error(
-                            Code::ZeroForStep,
-                            step.span,
-                            crate::msg!(LoopStep0NeverEnds),
-                        );
+                        self.error(Code::ZeroForStep, step.span, crate::msg!(LoopStep0NeverEnds));
                     }
                 }
                 self.body.loop_depth += 1;
@@ -265,7 +264,12 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::SubrangeViolation,
                 value.span,
-                crate::msg!(OutsideSubrangeVariable, v = v.to_string(), lo = lo.to_string(), hi = hi.to_string()),
+                crate::msg!(
+                    OutsideSubrangeVariable,
+                    v = v.to_string(),
+                    lo = lo.to_string(),
+                    hi = hi.to_string()
+                ),
             );
         }
     }
@@ -282,7 +286,10 @@ impl<'a> Checker<'a> {
             |t: Type| matches!(t, Type::Enum(_)) || t.elem().is_some_and(|e| e.is_integral());
         if let Some(t) = sel_ty {
             if !ok_selector(t) {
-                let msg = crate::msg!(CaseSelectorMustIntegerEnumeration, value = (self.tname(t)).to_string());
+                let msg = crate::msg!(
+                    CaseSelectorMustIntegerEnumeration,
+                    value = (self.tname(t)).to_string()
+                );
                 self.error(Code::TypeMismatch, selector.span, msg);
             }
         }
@@ -305,7 +312,11 @@ impl<'a> Checker<'a> {
                 };
                 let span = lo_e.span.to(hi_e.span);
                 if lo > hi {
-                    self.error(Code::InvalidRange, span, crate::msg!(RangeEmpty, lo = lo.to_string(), hi = hi.to_string()));
+                    self.error(
+                        Code::InvalidRange,
+                        span,
+                        crate::msg!(RangeEmpty, lo = lo.to_string(), hi = hi.to_string()),
+                    );
                     continue;
                 }
                 if seen.range(..=hi).next_back().is_some_and(|(_, &end)| end >= lo) {
@@ -342,7 +353,10 @@ impl<'a> Checker<'a> {
             }
             _ => {
                 if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-                    let msg = crate::msg!(CaseLabelMustIntegerConstant, ty = (self.tname(t.e.ty)).to_string());
+                    let msg = crate::msg!(
+                        CaseLabelMustIntegerConstant,
+                        ty = (self.tname(t.e.ty)).to_string()
+                    );
                     self.error(Code::CaseLabelType, e.span, msg);
                     return None;
                 }
@@ -355,7 +369,11 @@ impl<'a> Checker<'a> {
         if let (Some(v), Some(el)) = (value, sel.elem()) {
             let (lo, hi) = el.int_range();
             if (v as i128) < lo || (v as i128) > hi {
-                let msg = crate::msg!(LabelCanNeverMatchSelector, v = v.to_string(), name = (el.name()).to_string());
+                let msg = crate::msg!(
+                    LabelCanNeverMatchSelector,
+                    v = v.to_string(),
+                    name = (el.name()).to_string()
+                );
                 self.warning(Code::CaseWithoutMatch, e.span, msg);
             }
         }
