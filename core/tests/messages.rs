@@ -111,15 +111,18 @@ fn every_key_is_used_and_only_the_listed_codes_are_english_only() {
         .collect();
     assert!(unused.is_empty(), "message keys no diagnostic uses: {unused:?}");
 
-    // A code has a message when some statement naming it also makes one with `msg!`.
+    // A code has a message when some statement naming it, or the one before (`let msg =
+    // msg!(…);`), makes one with `msg!`.
     let mut worded = BTreeSet::new();
     let mut named = BTreeSet::new();
     for (_, text) in &engine {
-        for statement in text.split(';') {
+        let statements: Vec<&str> = text.split(';').collect();
+        for (i, statement) in statements.iter().enumerate() {
+            let before = if i > 0 { statements[i - 1] } else { "" };
             for part in statement.split("Code::").skip(1) {
                 let name: String = part.chars().take_while(|c| c.is_ascii_alphanumeric()).collect();
                 named.insert(name.clone());
-                if statement.contains("msg!(") {
+                if statement.contains("msg!(") || before.contains("msg!(") {
                     worded.insert(name);
                 }
             }
