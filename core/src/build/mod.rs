@@ -409,7 +409,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
     }
     let ladder_diag = |(pou, d): (String, crate::ladder::LadderDiagnostic)| ProjectDiagnostic {
         severity: d.severity,
-        msg: None,
+        msg: Some(Box::new(d.msg)),
         code: d.code,
         message: d.message,
         site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
