@@ -316,11 +316,11 @@ fn i18n(out_dir: &Path) {
         out,
         "/// The first of the diagnostics' messages (`K::diag_*`, in `Msg` order).\npub const DIAG_START: usize = {diag_start};\n"
     );
-    out.push_str("/// The English texts in key order (the diagnostics' are the core's, `Msg::en`).\nstatic EN: [&str; DIAG_START] = [\n");
+    out.push_str("/// The English texts in key order, up to the diagnostics' (whose English every\n/// diagnostic carries as its `message`: not repeated here, and the core's table of them is\n/// not pulled into the first load).\nstatic EN: [&str; DIAG_START] = [\n");
     for (_, text) in &en[..diag_start] {
         let _ = writeln!(out, "    {:?},", text);
     }
-    out.push_str("];\n\nimpl K {\n    /// The English text.\n    pub fn en(self) -> &'static str {\n        match EN.get(self as usize) {\n            Some(text) => text,\n            None => Msg::ALL.get(self as usize - DIAG_START).map_or(\"\", |m| m.en()),\n        }\n    }\n");
+    out.push_str("];\n\nimpl K {\n    /// The English text; empty for a diagnostic's message (`K::diag_*`), whose English is\n    /// the diagnostic's `message`: show those with [`message_text`].\n    pub fn en(self) -> &'static str {\n        EN.get(self as usize).copied().unwrap_or_default()\n    }\n");
     out.push_str("\n    /// The page's key of a diagnostic's message (`K::diag_undeclared_name`).\n    #[allow(dead_code)]\n    pub fn from_msg(m: Msg) -> K {\n        match m {\n");
     for (key, _) in &en[diag_start..] {
         let core_key = &key["diag.".len()..];
@@ -338,26 +338,37 @@ fn i18n(out_dir: &Path) {
     out.push_str("            _ => K::diag_text,\n        }\n    }\n}\n\n");
     out.push_str(
         "use plc_core::diagnostics::Msg;\n\n\
-         /// A diagnostic's message in the language shown: its template and its phrase\n\
-         /// arguments through [`t`], its program text as it is.\n\
+         /// A diagnostic's message in the language shown: `english` (the diagnostic's\n\
+         /// `message`) while the page is in English, else the message's template from the\n\
+         /// fetched translation with its phrase arguments translated too and its program text\n\
+         /// as it is; `english` again for a message the translation lacks.\n\
          #[allow(dead_code)]\n\
-         pub fn message_text(m: &plc_core::diagnostics::Message) -> String {\n\
+         pub fn message_text(m: &plc_core::diagnostics::Message, english: &str) -> String {\n\
+         \x20   let Some(texts) = SHOWN.with(Cell::get) else { return english.to_string() };\n\
+         \x20   let text = |key: Msg| texts.get(K::from_msg(key) as usize).map(String::as_str);\n\
+         \x20   let Some(template) = text(m.key) else { return english.to_string() };\n\
          \x20   let args: Vec<(&str, &str)> = m\n\
          \x20       .args\n\
          \x20       .iter()\n\
          \x20       .map(|(name, a)| match a {\n\
          \x20           plc_core::diagnostics::Arg::Text(s) => (*name, s.as_str()),\n\
-         \x20           plc_core::diagnostics::Arg::Msg(p) => (*name, t(K::from_msg(p.key))),\n\
+         \x20           plc_core::diagnostics::Arg::Msg(p) => (*name, text(p.key).unwrap_or(p.en)),\n\
          \x20       })\n\
          \x20       .collect();\n\
-         \x20   plc_core::diagnostics::fill(t(K::from_msg(m.key)), |n| {\n\
-         \x20       args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v)\n\
-         \x20   })\n\
+         \x20   plc_core::diagnostics::fill(template, |n| args.iter().find(|(k, _)| *k == n).map(|(_, v)| *v))\n\
          }\n\n\
-         /// [`message_text`] ending in `; did you mean NAME?` when there is a `suggestion`.\n\
+         /// [`message_text`] of a diagnostic that may end in `; did you mean NAME?`\n\
+         /// (`suggestion`): `english` is its whole English `message`, hint included.\n\
          #[allow(dead_code)]\n\
-         pub fn message_with_hint(m: &plc_core::diagnostics::Message, suggestion: Option<&str>) -> String {\n\
-         \x20   let mut text = message_text(m);\n\
+         pub fn message_with_hint(\n\
+         \x20   m: &plc_core::diagnostics::Message,\n\
+         \x20   suggestion: Option<&str>,\n\
+         \x20   english: &str,\n\
+         ) -> String {\n\
+         \x20   if SHOWN.with(Cell::get).is_none() {\n\
+         \x20       return english.to_string();\n\
+         \x20   }\n\
+         \x20   let mut text = message_text(m, english);\n\
          \x20   if let Some(s) = suggestion {\n\
          \x20       text.push_str(\"; \");\n\
          \x20       text.push_str(&tf(K::diag_did_you_mean, &[(\"name\", s)]));\n\
