@@ -247,6 +247,25 @@ fn i18n(out_dir: &Path) {
             en.push((key, text));
         }
     }
+    // ---- The diagnostics' messages (issue 33): core/i18n/messages.LANG.json as the part
+    // `diag` (keys `diag.KEY`), after every part of the page so that `K::diag_*` are in
+    // `plc_core::diagnostics::Msg` order (key order) from `DIAG_START` on: the page finds a
+    // message's translation at `DIAG_START + Msg::index`. ----
+    let core_i18n = Path::new(env!("CARGO_MANIFEST_DIR")).join("../core/i18n");
+    let diag_file = |lang: &str| core_i18n.join(format!("messages.{lang}.json"));
+    if parts.iter().any(|p| p == "diag") {
+        problems.push("en/diag.json: the part `diag` is the diagnostics' (core/i18n/)".into());
+    }
+    let diag_start = en.len();
+    println!("cargo:rerun-if-changed={}", diag_file("en").display());
+    match catalogue(&diag_file("en")) {
+        Ok(mut texts) => {
+            texts.sort();
+            en.extend(texts.into_iter().map(|(k, v)| (format!("diag.{k}"), v)))
+        }
+        Err(e) => problems.push(e),
+    }
+    // ---- end of the diagnostics' hunk ----
     let _ = std::fs::create_dir_all(out_dir.join("i18n"));
     for lang in ["pl", "cs"] {
         let lang_dir = dir.join(lang);
@@ -264,6 +283,12 @@ fn i18n(out_dir: &Path) {
                 Ok(texts) => tr.extend(texts),
                 Err(e) => problems.push(e),
             }
+        }
+        // The diagnostics' messages in this language (see above).
+        println!("cargo:rerun-if-changed={}", diag_file(lang).display());
+        match catalogue(&diag_file(lang)) {
+            Ok(texts) => tr.extend(texts.into_iter().map(|(k, v)| (format!("diag.{k}"), v))),
+            Err(e) => problems.push(e),
         }
         let lookup: std::collections::BTreeMap<&str, &str> =
             tr.iter().map(|(k, v)| (k.as_str(), v.as_str())).collect();
@@ -311,6 +336,11 @@ fn i18n(out_dir: &Path) {
          #[allow(non_upper_case_globals)]\nimpl K {\n",
     );
     for (i, (key, text)) in en.iter().enumerate() {
+        if i == diag_start {
+            // The diagnostics' messages: the page shows them by `Msg` (`message_text`);
+            // only a few are named (`K::diag_did_you_mean`).
+            out.push_str("}\n\n#[allow(non_upper_case_globals, dead_code)]\nimpl K {\n");
+        }
         let _ = writeln!(
             out,
             "    /// {}\n    pub const {}: K = K(&Entry {{ index: {i}, en: {:?} }});",
@@ -325,6 +355,11 @@ fn i18n(out_dir: &Path) {
          /// How many texts the page has (a translation file holds as many).\npub const COUNT: usize = ",
     );
     let _ = writeln!(out, "{};", en.len());
+    // The diagnostics' part: their keys from DIAG_START on, in `Msg` order.
+    let _ = writeln!(
+        out,
+        "\n/// The place of the first diagnostic's message (`diag.*`, in `Msg` order).\npub const DIAG_START: usize = {diag_start};"
+    );
     let _ = std::fs::write(out_dir.join("i18n.rs"), out);
 }
 

@@ -112,13 +112,25 @@ pub struct DiagnosticReport {
     /// mean NAME?`); absent when there is none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub suggestion: Option<String>,
+    /// The message as data (`None` while it is English only, or when the message has a
+    /// place in front of it): [`DiagnosticReport::render`] shows it in any language.
+    #[serde(skip)]
+    pub msg: Option<crate::diagnostics::Message>,
 }
 
 impl DiagnosticReport {
     /// A diagnostic at a line and column (0, 0: the file as a whole).
     pub fn new(severity: Severity, code: Code, message: String, line: u32, column: u32) -> Self {
         let code = code.as_str().to_string();
-        DiagnosticReport { severity, code, message, line, column, suggestion: None }
+        DiagnosticReport { severity, code, message, line, column, suggestion: None, msg: None }
+    }
+
+    /// The message in `lang` (English when it is not data yet).
+    pub fn render(&self, lang: crate::i18n::Lang) -> String {
+        match &self.msg {
+            Some(m) => crate::diagnostics::render_with_hint(m, self.suggestion.as_deref(), lang),
+            None => self.message.clone(),
+        }
     }
 }
 
@@ -171,6 +183,7 @@ fn diagnostic_report(index: &LineIndex<'_>, d: &Diagnostic) -> DiagnosticReport 
         line: loc.line,
         column: loc.column,
         suggestion: d.suggestion.clone(),
+        msg: Some(d.msg.clone()),
     }
 }
 
@@ -351,6 +364,7 @@ fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticRep
         line,
         column,
         suggestion: d.suggestion().map(str::to_string),
+        msg: d.msg.as_deref().filter(|_| matches!(d.site, Site::St { .. })).cloned(),
     }
 }
 

@@ -14,13 +14,15 @@ import { useApp, root } from './setup.mjs';
 
 const app = useApp();
 
-/** The catalogue of `lang`: key → text. */
+/** The catalogue of `lang`: key → text; the diagnostics' messages (core/i18n/) as `diag.KEY`. */
 function catalogue(lang) {
   const dir = path.join(root, 'web/i18n', lang);
   const out = {};
   for (const f of readdirSync(dir).filter((f) => f.endsWith('.json'))) {
     Object.assign(out, JSON.parse(readFileSync(path.join(dir, f), 'utf8')));
   }
+  const messages = JSON.parse(readFileSync(path.join(root, `core/i18n/messages.${lang}.json`), 'utf8'));
+  for (const [key, text] of Object.entries(messages)) out[`diag.${key}`] = text;
   return out;
 }
 const EN = catalogue('en');
@@ -116,6 +118,11 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     // The ST editor with a located error.
     await editor.fill(LATCH_ERROR);
     await page.locator('.ed-problem').first().waitFor();
+    // The error's message in the language shown (a diagnostic is data: its key, the
+    // misspelt name and the name meant), program text as written.
+    const said = (key, name) => L(lang, EN[key], key).replace('{name}', name);
+    const undeclared = `${said('diag.not_declared', 'Stopp')}; ${said('diag.did_you_mean', 'Stop')}`;
+    await page.getByText(undeclared).first().waitFor();
     assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES, comments), [], 'the ST editor and the panels');
     await page.screenshot({ path: path.join(shots, `i18n-${lang}-st.png`) });
 
@@ -146,6 +153,7 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     assert.ok(pous.join(' ').includes('Latch') && pous.join(' ').includes('Cycle'), `the new POUs are kept: ${pous}`);
     await page.locator('.pou-tab').first().click();
     assert.equal(await page.getByRole('textbox', { name: 'ST source' }).inputValue(), LATCH_ERROR, 'the unsaved ST edit is kept');
+    await page.getByText('`Stopp` is not declared; did you mean Stop?').first().waitFor();
 
     // And back to the language, kept across a reload.
     await select.selectOption(lang);

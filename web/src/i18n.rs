@@ -210,6 +210,28 @@ pub fn tf(key: K, args: &[(&str, &str)]) -> String {
     text
 }
 
+/// A diagnostic's message in the language shown: `english` (the diagnostic's own
+/// `message`, its `did you mean` included) while the page is in English or when the
+/// translation lacks the message; else the message's template from the fetched
+/// translation (`diag.*`, from [`DIAG_START`] in `Msg` order), its phrases translated, its
+/// program text as it is, and `; did you mean NAME?` after it when it `suggests` a name.
+pub fn message_text(
+    message: &plc_core::diagnostics::Message,
+    suggests: Option<&str>,
+    english: &str,
+) -> String {
+    let Some(texts) = SHOWN.with(Cell::get) else { return english.to_string() };
+    let template = |m: plc_core::diagnostics::Msg| {
+        texts.get(DIAG_START + m.index()).map(String::as_str)
+    };
+    let Some(mut text) = message.render_from(template) else { return english.to_string() };
+    if let Some(name) = suggests {
+        text.push_str("; ");
+        text.push_str(&tf(K::diag_did_you_mean, &[("name", name)]));
+    }
+    text
+}
+
 /// The key of a count's words in the form `n` takes in the language shown: `one` for 1;
 /// `few` for 2–4 (in Polish not 12–14, and also 22–24, 32–34 …); else `many`. English has
 /// the same text for `few` and `many`.

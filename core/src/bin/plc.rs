@@ -35,6 +35,9 @@ enum Command {
     Check {
         /// The ST source file.
         file: PathBuf,
+        /// The language of the messages: en (the default), pl or cs.
+        #[arg(long, default_value = "en")]
+        lang: plc_core::i18n::Lang,
     },
     /// Run a program for a number of scans on a virtual clock and print its variables.
     Run {
@@ -295,6 +298,7 @@ fn name_skipped_programs(report: &mut RunReport, skipped: &[plc_core::plcopen::S
                 "the file holds no PROGRAM that could be imported: left out {}",
                 programs.join(", ")
             );
+            d.msg = None;
         }
     }
 }
@@ -344,7 +348,7 @@ fn read_source(path: &Path) -> Result<String, String> {
     }))
 }
 
-fn check(path: &Path) -> ExitCode {
+fn check(path: &Path, lang: plc_core::i18n::Lang) -> ExitCode {
     let loaded = match open_file(path) {
         Ok(l) => l,
         Err(f) => {
@@ -356,7 +360,7 @@ fn check(path: &Path) -> ExitCode {
     };
     let source = match loaded.input {
         Input::Source(s) => s,
-        Input::Project(ref project) => return check_project(path, project, &loaded),
+        Input::Project(ref project) => return check_project(path, project, &loaded, lang),
     };
     let analysis = plc_core::semantic::analyze(&source);
     let index = LineIndex::new(&source);
@@ -368,7 +372,8 @@ fn check(path: &Path) -> ExitCode {
         } else {
             warnings += 1;
         }
-        print_diagnostic(path, d.severity, loc.line, loc.column, d.code.as_str(), &d.message);
+        let message = d.render(lang);
+        print_diagnostic(path, d.severity, loc.line, loc.column, d.code.as_str(), &message);
     }
     eprintln!("{}: {errors} error(s), {warnings} warning(s)", path.display());
     if errors > 0 {
@@ -380,7 +385,12 @@ fn check(path: &Path) -> ExitCode {
 
 /// Checks a project (ST and ladder POUs): diagnostics as for ST; ladder problems name
 /// their POU, rung, row and column in the message.
-fn check_project(path: &Path, project: &Project, loaded: &Loaded) -> ExitCode {
+fn check_project(
+    path: &Path,
+    project: &Project,
+    loaded: &Loaded,
+    lang: plc_core::i18n::Lang,
+) -> ExitCode {
     let options =
         RunOptions { cycles: 0, file_map: loaded.file_map.clone(), ..RunOptions::default() };
     let mut report = run_project(project, &options);
@@ -391,7 +401,8 @@ fn check_project(path: &Path, project: &Project, loaded: &Loaded) -> ExitCode {
             plc_core::diagnostics::Severity::Error => errors += 1,
             plc_core::diagnostics::Severity::Warning => warnings += 1,
         }
-        print_diagnostic(path, d.severity, d.line, d.column, &d.code, &d.message);
+        let message = d.render(lang);
+        print_diagnostic(path, d.severity, d.line, d.column, &d.code, &message);
     }
     eprintln!("{}: {errors} error(s), {warnings} warning(s)", path.display());
     if errors > 0 {
@@ -593,7 +604,7 @@ fn explain(code: &str, lang: plc_core::i18n::Lang) -> ExitCode {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::Check { file } => check(&file),
+        Command::Check { file, lang } => check(&file, lang),
         Command::Run { file, program, cycles, cycle_ms, set, set_at, json, trace, csv } => {
             let (pairs, set_at) = match settings(&set, &set_at) {
                 Ok(s) => s,

@@ -178,8 +178,11 @@ pub struct ProjectDiagnostic {
     pub severity: Severity,
     /// The stable problem code.
     pub code: Code,
-    /// The message, without its location.
+    /// The message, without its location (English).
     pub message: String,
+    /// The message as data, to be shown in any language ([`ProjectDiagnostic::render`]);
+    /// `None` while the stage that found the problem words it in English only.
+    pub msg: Option<Box<crate::diagnostics::Message>>,
     /// Where the problem is.
     pub site: Site,
     /// For an unknown name: the declared name it probably misspells and the type its use
@@ -223,6 +226,15 @@ impl ProjectDiagnostic {
     /// The type the use of an undeclared name implies, when known (`Declare NAME`).
     pub fn implied_type(&self) -> Option<&str> {
         self.hint.as_ref()?.implied_type.as_deref()
+    }
+
+    /// The message (without its location) in `lang`, with its `did you mean NAME?`; the
+    /// English [`ProjectDiagnostic::message`] when it is not data yet.
+    pub fn render(&self, lang: crate::i18n::Lang) -> String {
+        match &self.msg {
+            Some(m) => crate::diagnostics::render_with_hint(m, self.suggestion(), lang),
+            None => self.message.clone(),
+        }
     }
 
     /// The message with the site in front when the site is not in the ST source, as
@@ -328,6 +340,7 @@ impl ProjectBuild {
     ) -> Result<Simulator, ProjectDiagnostic> {
         let error = |code, message| ProjectDiagnostic {
             severity: Severity::Error,
+            msg: None,
             code,
             message,
             site: Site::Project,
@@ -384,6 +397,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
         .cloned()
         .map(|(pou, d)| ProjectDiagnostic {
             severity: d.severity,
+            msg: None,
             code: d.code,
             message: d.message,
             site: Site::Petri { pou, element: Some(d.element), at: d.at },
@@ -395,6 +409,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
     }
     let ladder_diag = |(pou, d): (String, crate::ladder::LadderDiagnostic)| ProjectDiagnostic {
         severity: d.severity,
+        msg: Some(Box::new(d.msg)),
         code: d.code,
         message: d.message,
         site: Site::Ladder { pou, cell: Some((d.rung, d.row, d.column)) },
@@ -413,6 +428,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
             .iter()
             .map(|(pou, e)| ProjectDiagnostic {
                 severity: Severity::Error,
+                msg: None,
                 code: Code::NetworkNotRunnable,
                 message: e.message.clone(),
                 site: Site::Network { pou: pou.clone(), element: Some(e.element.clone()) },
@@ -430,6 +446,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
         severity: d.severity,
         code: d.code,
         message: d.message,
+        msg: Some(Box::new(d.msg)),
         site: site_in(&source, &index, d.span),
         hint: NameHint::of(d.suggestion, d.implied_type),
     }));
@@ -474,6 +491,7 @@ fn scene_diagnostics(
         .filter(|(_, path)| !known(path))
         .map(|(label, path)| ProjectDiagnostic {
             severity: Severity::Warning,
+            msg: None,
             code: Code::SceneUnknownVariable,
             message: format!(
                 "the scene's widget “{label}” is bound to `{path}`, which the program does not have"

@@ -8,6 +8,7 @@
 
 mod codes;
 mod explain;
+mod message;
 mod pages;
 mod span;
 pub mod suggest;
@@ -15,6 +16,11 @@ mod translations;
 
 pub use codes::Code;
 pub use explain::{Example, Explanation, EXPLANATIONS};
+pub(crate) use message::msg_en;
+pub use message::{
+    catalogue_source, english_catalogue, fill, placeholders, Arg, Message, Msg, Phrase, Said, ToArg,
+    MSG_COUNT,
+};
 pub use pages::{
     explain_text, explain_text_in, problems_html, problems_html_in, problems_markdown,
     problems_page_name,
@@ -23,6 +29,8 @@ pub use span::{LineIndex, Location, Span};
 pub use translations::{parse_translation, CodeTexts, PageWords, ProblemTexts, TRANSLATIONS};
 
 use serde::Serialize;
+
+use crate::i18n::Lang;
 
 /// How bad a diagnostic is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -51,8 +59,11 @@ pub struct Diagnostic {
     pub severity: Severity,
     /// The stable problem code (`E0042`).
     pub code: Code,
-    /// A message a student understands, naming things as the user wrote them.
+    /// A message a student understands, naming things as the user wrote them (English).
     pub message: String,
+    /// The message as data: its key and arguments, to be shown in any language
+    /// ([`Diagnostic::render`]).
+    pub msg: Message,
     /// Where the problem is.
     pub span: Span,
     /// The declared name the one at `span` probably misspells; the message ends with
@@ -67,11 +78,13 @@ pub struct Diagnostic {
 
 impl Diagnostic {
     /// An error with `code` at `span`.
-    pub fn error(code: Code, span: Span, message: impl Into<String>) -> Self {
+    pub fn error(code: Code, span: Span, message: impl Into<Said>) -> Self {
+        let Said { message, english } = message.into();
         Diagnostic {
             severity: Severity::Error,
             code,
-            message: message.into(),
+            message: english,
+            msg: message,
             span,
             suggestion: None,
             implied_type: None,
@@ -79,11 +92,13 @@ impl Diagnostic {
     }
 
     /// A warning with `code` at `span`.
-    pub fn warning(code: Code, span: Span, message: impl Into<String>) -> Self {
+    pub fn warning(code: Code, span: Span, message: impl Into<Said>) -> Self {
+        let Said { message, english } = message.into();
         Diagnostic {
             severity: Severity::Warning,
             code,
-            message: message.into(),
+            message: english,
+            msg: message,
             span,
             suggestion: None,
             implied_type: None,
@@ -100,6 +115,11 @@ impl Diagnostic {
         self
     }
 
+    /// The message in `lang`, with its `did you mean NAME?` when it has one.
+    pub fn render(&self, lang: Lang) -> String {
+        render_with_hint(&self.msg, self.suggestion.as_deref(), lang)
+    }
+
     /// True when this diagnostic stops the program from running.
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
@@ -109,4 +129,14 @@ impl Diagnostic {
 /// True when any of `diagnostics` is an error.
 pub fn has_errors(diagnostics: &[Diagnostic]) -> bool {
     diagnostics.iter().any(Diagnostic::is_error)
+}
+
+/// `message` in `lang`, ending in `; did you mean NAME?` when there is a `suggestion`.
+pub fn render_with_hint(message: &Message, suggestion: Option<&str>, lang: Lang) -> String {
+    let mut text = message.render(lang);
+    if let Some(s) = suggestion {
+        text.push_str("; ");
+        text.push_str(&fill(Msg::DidYouMean.template(lang), |_| Some(s)));
+    }
+    text
 }

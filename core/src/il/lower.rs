@@ -143,7 +143,7 @@ fn guard(condition: IlCondition, cr: Expr, span: Span) -> Option<Expr> {
 }
 
 impl<T: Typing> Lowering<'_, T> {
-    fn error(&mut self, code: Code, span: Span, msg: impl Into<String>) {
+    fn error(&mut self, code: Code, span: Span, msg: impl Into<crate::diagnostics::Said>) {
         self.diags.push(Diagnostic::error(code, span, msg));
     }
 
@@ -156,10 +156,7 @@ impl<T: Typing> Lowering<'_, T> {
                     self.error(
                         Code::IlNoCurrentResult,
                         at.span,
-                        format!(
-                            "`{}` needs the current result, but none is loaded here: begin with `LD`",
-                            at.operator.name
-                        ),
+                        crate::msg!(NeedsCurrentResultButNone, name = at.operator.name.to_string()),
                     );
                 }
                 self.poisoned = true;
@@ -221,7 +218,7 @@ impl<T: Typing> Lowering<'_, T> {
                 self.error(
                     Code::IlResultType,
                     at,
-                    format!("the current result here is a {shown}; IL keeps only elementary values (BOOL, integers, reals, TIME, dates) in it"),
+                    crate::msg!(CurrentResultHereIlKeeps, shown = shown.to_string()),
                 );
                 None
             }
@@ -257,7 +254,7 @@ impl<T: Typing> Lowering<'_, T> {
                     self.diags.push(Diagnostic::warning(
                         Code::UnreachableCode,
                         next.span,
-                        "this instruction can never run: the JMP or RET before it always leaves, and no label stands before it",
+                        crate::msg!(InstructionCanNeverRunJmp),
                     ));
                 }
                 return false;
@@ -276,7 +273,7 @@ impl<T: Typing> Lowering<'_, T> {
     /// Reports `(` left open at the end of a body or segment.
     fn close_check(&mut self) {
         for d in std::mem::take(&mut self.deferred) {
-            self.error(Code::IlBadInstruction, d.span, "this `(` is never closed with `)`");
+            self.error(Code::IlBadInstruction, d.span, crate::msg!(NeverClosed));
         }
     }
 
@@ -342,10 +339,11 @@ impl<T: Typing> Lowering<'_, T> {
                 self.error(
                     Code::IlResultType,
                     at,
-                    format!(
-                        "the current result reaches `{label}` as {} here but as {} on another way in",
-                        b.name.trim_start_matches("IL__CR_"),
-                        a.name.trim_start_matches("IL__CR_")
+                    crate::msg!(
+                        CurrentResultReachesHereBut,
+                        label = label.to_string(),
+                        here = (b.name.trim_start_matches("IL__CR_")).to_string(),
+                        there = (a.name.trim_start_matches("IL__CR_")).to_string()
                     ),
                 );
                 return;
@@ -379,7 +377,7 @@ impl<T: Typing> Lowering<'_, T> {
                 self.error(
                     Code::IlUndefinedLabel,
                     label.span,
-                    format!("the label `{}` is not defined in this body", label.name),
+                    crate::msg!(LabelNotDefinedBody, name = label.name.to_string()),
                 );
                 None
             }
@@ -405,10 +403,7 @@ impl<T: Typing> Lowering<'_, T> {
             self.error(
                 Code::IlBadInstruction,
                 at,
-                format!(
-                    "`{}` cannot stand inside parentheses: only loads and operations can",
-                    ins.operator.name
-                ),
+                crate::msg!(CannotStandInsideParenthesesOnly, name = ins.operator.name.to_string()),
             );
             return true;
         }
@@ -459,7 +454,7 @@ impl<T: Typing> Lowering<'_, T> {
                         self.error(
                             Code::TooComplex,
                             at,
-                            format!("more than {MAX_DEFERRED} `(` open at once"),
+                            crate::msg!(MoreThanOpenOnce, MAX_DEFERRED = MAX_DEFERRED.to_string()),
                         );
                         self.poisoned = true;
                         self.cr = None;
@@ -480,11 +475,7 @@ impl<T: Typing> Lowering<'_, T> {
             }
             IlKind::Close => {
                 let Some(d) = self.deferred.pop() else {
-                    self.error(
-                        Code::IlBadInstruction,
-                        at,
-                        "`)` without an operation with `(` before it",
-                    );
+                    self.error(Code::IlBadInstruction, at, crate::msg!(WithoutOperationBefore));
                     return true;
                 };
                 let Some(inner) = self.need_cr(ins) else { return true };

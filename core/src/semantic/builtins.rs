@@ -158,7 +158,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAnOutput,
                         p.span,
-                        format!("`{}` has no outputs; use its result", name.name),
+                        crate::msg!(HasNoOutputsUseResult, name = name.name.to_string()),
                     );
                     return None;
                 }
@@ -173,7 +173,12 @@ impl<'a> Checker<'a> {
         };
         if wrong {
             let want = if variadic { "at least 2".to_string() } else { params.len().to_string() };
-            let msg = format!("`{}` takes {want} argument(s), {} given", name.name, given.len());
+            let msg = crate::msg!(
+                TakesArgumentSGiven,
+                name = name.name.to_string(),
+                want = want.to_string(),
+                given = (given.len()).to_string()
+            );
             self.error(Code::WrongArgumentCount, span, msg);
             return None;
         }
@@ -208,9 +213,10 @@ impl<'a> Checker<'a> {
                     match t.e.ty {
                         Type::Str { wide: w, len: l } if w == wide => len = len.max(l),
                         other => {
-                            let msg = format!(
-                                "{what}: all inputs must be strings, found {}",
-                                self.tname(other)
+                            let msg = crate::msg!(
+                                AllInputsMustStringsFound,
+                                what = what.to_string(),
+                                other = (self.tname(other)).to_string()
                             );
                             self.error(Code::TypeMismatch, t.e.span, msg);
                             return None;
@@ -228,10 +234,11 @@ impl<'a> Checker<'a> {
                         _ => None,
                     };
                     let Some(el) = el else {
-                        let msg = format!(
-                            "{what}: inputs of types {} and {} do not mix",
-                            self.tname(acc.e.ty),
-                            self.tname(t.e.ty)
+                        let msg = crate::msg!(
+                            InputsTypesDoNotMix,
+                            what = what.to_string(),
+                            ty = (self.tname(acc.e.ty)).to_string(),
+                            ty2 = (self.tname(t.e.ty)).to_string()
                         );
                         self.error(Code::TypeMismatch, t.e.span, msg);
                         return None;
@@ -255,7 +262,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::TypeMismatch,
                         span,
-                        format!("{what}: all inputs must have the same type"),
+                        crate::msg!(AllInputsMustHaveSame, what = what.to_string()),
                     );
                     return None;
                 }
@@ -289,7 +296,7 @@ impl<'a> Checker<'a> {
     fn want_int(&mut self, e: &ast::Expr) -> Option<Expr> {
         let t = self.expr(e, None)?;
         if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-            let msg = format!("expected an integer, found {}", self.tname(t.e.ty));
+            let msg = crate::msg!(ExpectedIntegerFound, ty = (self.tname(t.e.ty)).to_string());
             self.error(Code::TypeMismatch, e.span, msg);
             return None;
         }
@@ -299,7 +306,7 @@ impl<'a> Checker<'a> {
     fn want_string(&mut self, e: &ast::Expr) -> Option<Expr> {
         let t = self.expr(e, None)?;
         if !t.e.ty.is_string() {
-            let msg = format!("expected a STRING, found {}", self.tname(t.e.ty));
+            let msg = crate::msg!(ExpectedStringFound, ty = (self.tname(t.e.ty)).to_string());
             self.error(Code::TypeMismatch, e.span, msg);
             return None;
         }
@@ -327,7 +334,7 @@ impl<'a> Checker<'a> {
                 Type::Elem(if el.bits() <= 16 { Elem::Real } else { Elem::LReal })
             }
             _ => {
-                let msg = format!("expected a number, found {}", self.tname(t.e.ty));
+                let msg = crate::msg!(ExpectedNumberFound, ty = (self.tname(t.e.ty)).to_string());
                 self.error(Code::TypeMismatch, e.span, msg);
                 return None;
             }
@@ -403,7 +410,7 @@ impl<'a> Checker<'a> {
                 let t = self.expr(a[0], None)?;
                 let t = self.adapt(t, num_hint);
                 if !t.e.ty.elem().is_some_and(|e| e.is_num()) {
-                    let msg = format!("ABS needs a number, not {}", self.tname(t.e.ty));
+                    let msg = crate::msg!(AbsNeedsNumberNot, ty = (self.tname(t.e.ty)).to_string());
                     self.error(Code::TypeMismatch, a[0].span, msg);
                     return None;
                 }
@@ -435,9 +442,10 @@ impl<'a> Checker<'a> {
             "SHL" | "SHR" | "ROL" | "ROR" => {
                 let t = self.expr(a[0], None)?;
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
-                    let msg = format!(
-                        "{key} needs a bit string or an integer, not {}",
-                        self.tname(t.e.ty)
+                    let msg = crate::msg!(
+                        NeedsBitStringIntegerNot,
+                        key = key.to_string(),
+                        ty = (self.tname(t.e.ty)).to_string()
                     );
                     self.error(Code::TypeMismatch, a[0].span, msg);
                     return None;
@@ -465,7 +473,7 @@ impl<'a> Checker<'a> {
             "MAX" | "MIN" | "LIMIT" => {
                 let items = a.iter().map(|e| self.expr(e, hint)).collect::<Option<Vec<_>>>()?;
                 if let Some(r) = items.iter().find(|t| t.e.ty.is_ref()) {
-                    let msg = format!("{key} compares its inputs; references have no order");
+                    let msg = crate::msg!(ComparesInputsReferencesHaveNo, key = key.to_string());
                     self.error(Code::OperatorTypeMismatch, r.e.span, msg);
                     return None;
                 }
@@ -551,7 +559,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::TypeMismatch,
                             i.span,
-                            "CONCAT cannot mix STRING and WSTRING",
+                            crate::msg!(ConcatCannotMixStringWstring),
                         );
                         return None;
                     }
@@ -581,10 +589,10 @@ impl<'a> Checker<'a> {
         let value = match from {
             Some(Type::Elem(Elem::LWord)) if key.starts_with("BCD_TO_") => {
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
-                    let msg = format!(
-                        "{} needs a bit string holding BCD digits, not {}",
-                        name.name,
-                        self.tname(t.e.ty)
+                    let msg = crate::msg!(
+                        NeedsBitStringHoldingBcd,
+                        name = name.name.to_string(),
+                        ty = (self.tname(t.e.ty)).to_string()
                     );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     return None;
@@ -602,7 +610,11 @@ impl<'a> Checker<'a> {
         match to {
             ConvTarget::Bcd => {
                 let Some(el) = from_ty.elem().filter(|e| e.is_integral()) else {
-                    self.error(Code::TypeMismatch, arg.span, "BCD conversion needs an integer");
+                    self.error(
+                        Code::TypeMismatch,
+                        arg.span,
+                        crate::msg!(BcdConversionNeedsInteger),
+                    );
                     return None;
                 };
                 let out = match el.bits() {
@@ -619,10 +631,10 @@ impl<'a> Checker<'a> {
                     Some(self.builtin_expr(Builtin::ToString, vec![value], to, span))
                 }
                 other => {
-                    let msg = format!(
-                        "{} cannot convert a value of type {}",
-                        name.name,
-                        self.tname(other)
+                    let msg = crate::msg!(
+                        CannotConvertValueType,
+                        name = name.name.to_string(),
+                        other = (self.tname(other)).to_string()
                     );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     None
@@ -639,10 +651,10 @@ impl<'a> Checker<'a> {
                     Some(self.convert(as_int, to))
                 }
                 other => {
-                    let msg = format!(
-                        "{} cannot convert a value of type {}",
-                        name.name,
-                        self.tname(other)
+                    let msg = crate::msg!(
+                        CannotConvertValueType,
+                        name = name.name.to_string(),
+                        other = (self.tname(other)).to_string()
                     );
                     self.error(Code::TypeMismatch, arg.span, msg);
                     None

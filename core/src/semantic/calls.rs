@@ -44,18 +44,16 @@ impl<'a> Checker<'a> {
                     return match self.pous[pou as usize].kind {
                         PouKind::Function => Some(Callee::Function(pou)),
                         PouKind::FunctionBlock => {
-                            let msg = format!(
-                                "`{}` is a function block type: declare an instance (`t : {} ;`) and call that",
-                                id.name, id.name
+                            let msg = crate::msg!(
+                                FunctionBlockTypeDeclareInstance,
+                                name = id.name.to_string()
                             );
                             self.error(Code::UnknownFunction, callee.span, msg);
                             None
                         }
                         PouKind::Program => {
-                            let msg = format!(
-                                "`{}` is a PROGRAM; programs are run by the PLC, not called",
-                                id.name
-                            );
+                            let msg =
+                                crate::msg!(ProgramProgramsAreRunPlc, name = id.name.to_string());
                             self.error(Code::ProgramCalled, callee.span, msg);
                             None
                         }
@@ -81,7 +79,8 @@ impl<'a> Checker<'a> {
                 Some(Callee::Instance(place, fb))
             }
             other => {
-                let msg = format!("a value of type {} cannot be called", self.tname(other));
+                let msg =
+                    crate::msg!(ValueTypeCannotCalled, other = (self.tname(other)).to_string());
                 self.error(Code::UnknownFunction, callee.span, msg);
                 None
             }
@@ -117,10 +116,7 @@ impl<'a> Checker<'a> {
                 let ty = self.pous[pou as usize].result_type();
                 if ty == Type::Void {
                     let name = self.pous[pou as usize].name.clone();
-                    let msg = format!(
-                        "`{name}` has no result type, so it gives no value here; call it as a \
-                         statement of its own: `{name}(…);`"
-                    );
+                    let msg = crate::msg!(HasNoResultTypeSo, name = name.to_string());
                     self.error(Code::NoReturnValue, span, msg);
                     return None;
                 }
@@ -149,11 +145,7 @@ impl<'a> Checker<'a> {
         let call = self.call_expr(callee, &rest, span, expected)?;
         let ty = call.ty;
         if !matches!(ty, Type::Elem(_)) {
-            let msg = format!(
-                "EN on a function whose result is {}: only functions with an elementary result \
-                 take EN in an expression",
-                self.tname(ty)
-            );
+            let msg = crate::msg!(EnFunctionWhoseResultOnly, ty = (self.tname(ty)).to_string());
             self.error(Code::TypeMismatch, span, msg);
             return None;
         }
@@ -203,11 +195,7 @@ impl<'a> Checker<'a> {
         let positional = args.iter().any(|a| matches!(a, ast::Arg::Positional(_)));
         let named = args.iter().any(|a| !matches!(a, ast::Arg::Positional(_)));
         if positional && named {
-            self.error(
-                Code::MixedArguments,
-                span,
-                "write every argument as `name := value`, or none of them",
-            );
+            self.error(Code::MixedArguments, span, crate::msg!(WriteEveryArgumentNameValue));
             return None;
         }
         let mut out = Vec::new();
@@ -218,10 +206,10 @@ impl<'a> Checker<'a> {
             let (index, value_expr, output) = match arg {
                 ast::Arg::Positional(e) => {
                     let Some(&i) = params.get(next_positional) else {
-                        let msg = format!(
-                            "`{}` takes {} argument(s), more were given",
-                            callee.name,
-                            params.len()
+                        let msg = crate::msg!(
+                            TakesArgumentSMoreWere,
+                            name = callee.name.to_string(),
+                            params = (params.len()).to_string()
                         );
                         self.error(Code::WrongArgumentCount, e.span, msg);
                         return None;
@@ -267,9 +255,10 @@ impl<'a> Checker<'a> {
                         continue;
                     };
                     if callee.vars[i as usize].section != VarSection::Output {
-                        let msg = format!(
-                            "`{}` is not an output of `{}`; use `:=` for inputs",
-                            name.name, callee.name
+                        let msg = crate::msg!(
+                            NotOutputUseInputs,
+                            name = name.name.to_string(),
+                            name2 = callee.name.to_string()
                         );
                         self.error(Code::NotAnOutput, name.span, msg);
                         ok = false;
@@ -279,7 +268,8 @@ impl<'a> Checker<'a> {
                 }
             };
             if given.contains(&index) {
-                let msg = format!("`{}` is given twice", callee.vars[index as usize].name);
+                let msg =
+                    crate::msg!(GivenTwice, name = (callee.vars[index as usize].name).to_string());
                 self.error(Code::DuplicateArgument, value_expr.span, msg);
                 ok = false;
                 continue;
@@ -292,10 +282,8 @@ impl<'a> Checker<'a> {
                     continue;
                 };
                 if matches!(place, Place::Bit(..) | Place::Slice(..)) {
-                    let msg = format!(
-                        "the output `{}` is written to a whole variable, not to a bit or a located variable (a part of the process image): write it to a variable, then copy that",
-                        param.name
-                    );
+                    let msg =
+                        crate::msg!(OutputWrittenWholeVariableNot, name = param.name.to_string());
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -335,10 +323,7 @@ impl<'a> Checker<'a> {
                         | ast::ExprKind::Deref(_)
                 );
                 if !is_place {
-                    let msg = format!(
-                        "`{}` is VAR_IN_OUT: pass a variable, not an expression",
-                        param.name
-                    );
+                    let msg = crate::msg!(VarOutPassVariableNot, name = param.name.to_string());
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -348,10 +333,7 @@ impl<'a> Checker<'a> {
                     continue;
                 };
                 if matches!(place, Place::Bit(..) | Place::Slice(..)) {
-                    let msg = format!(
-                        "`{}` is VAR_IN_OUT: a bit or a located variable (a part of the process image) has no cell of its own to pass; copy it to a variable",
-                        param.name
-                    );
+                    let msg = crate::msg!(VarOutBitLocatedVariable, name = param.name.to_string());
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -359,11 +341,11 @@ impl<'a> Checker<'a> {
                 if ty != param.ty
                     && !matches!((ty, param.ty), (Type::Str { wide: a, .. }, Type::Str { wide: b, .. }) if a == b)
                 {
-                    let msg = format!(
-                        "VAR_IN_OUT `{}` needs a variable of type {}, not {}",
-                        param.name,
-                        self.tname(param.ty),
-                        self.tname(ty)
+                    let msg = crate::msg!(
+                        VarOutNeedsVariableType,
+                        name = param.name.to_string(),
+                        ty = (self.tname(param.ty)).to_string(),
+                        ty2 = (self.tname(ty)).to_string()
                     );
                     self.error(Code::TypeMismatch, value_expr.span, msg);
                     ok = false;
@@ -388,9 +370,10 @@ impl<'a> Checker<'a> {
         for &i in &params {
             let p = &callee.vars[i as usize];
             if p.section == VarSection::InOut && !given.contains(&i) {
-                let msg = format!(
-                    "VAR_IN_OUT `{}` of `{}` must be given in every call",
-                    p.name, callee.name
+                let msg = crate::msg!(
+                    VarOutMustGivenEvery,
+                    name = p.name.to_string(),
+                    name2 = callee.name.to_string()
                 );
                 self.error(Code::MissingInOut, span, msg);
                 ok = false;

@@ -134,7 +134,7 @@ impl<'a> Checker<'a> {
     }
 
     /// Reports an error.
-    pub fn error(&mut self, code: Code, span: Span, message: impl Into<String>) {
+    pub fn error(&mut self, code: Code, span: Span, message: impl Into<crate::diagnostics::Said>) {
         self.diags.push(Diagnostic::error(code, span, message));
     }
 
@@ -145,7 +145,7 @@ impl<'a> Checker<'a> {
         &mut self,
         code: Code,
         span: Span,
-        message: String,
+        message: impl Into<crate::diagnostics::Said>,
         name: &str,
         candidates: Vec<String>,
     ) -> bool {
@@ -173,7 +173,12 @@ impl<'a> Checker<'a> {
     }
 
     /// Reports a warning.
-    pub fn warning(&mut self, code: Code, span: Span, message: impl Into<String>) {
+    pub fn warning(
+        &mut self,
+        code: Code,
+        span: Span,
+        message: impl Into<crate::diagnostics::Said>,
+    ) {
         self.diags.push(Diagnostic::warning(code, span, message));
     }
 
@@ -193,7 +198,7 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::DuplicateDeclaration,
                                 def.name.span,
-                                format!("type `{}` is already declared", def.name.name),
+                                crate::msg!(TypeAlreadyDeclared, name = def.name.name.to_string()),
                             );
                             continue;
                         }
@@ -213,7 +218,11 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::DuplicateDeclaration,
                             pou.name.span,
-                            format!("`{}` is {what}; choose another name", pou.name.name),
+                            crate::msg!(
+                                ChooseAnotherName,
+                                name = pou.name.name.to_string(),
+                                what = what.to_string()
+                            ),
                         );
                         continue;
                     }
@@ -259,7 +268,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::DuplicateDeclaration,
                     var.span,
-                    format!("global variable `{}` is already declared", var.name),
+                    crate::msg!(GlobalVariableAlreadyDeclared, name = var.name.to_string()),
                 );
                 continue;
             }
@@ -292,7 +301,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::RecursiveCall,
                         span,
-                        format!("`{name}` calls itself (directly or through other POUs); PLC programs cannot recurse"),
+                        crate::msg!(CallsItselfDirectlyThroughOther, name = name.to_string()),
                     );
                     break;
                 }
@@ -352,6 +361,7 @@ pub(super) fn check_with_prelude(file: &ast::SourceFile) -> (Option<Program>, Ve
     if !lib_diags.is_empty() {
         diags.extend(lib_diags.into_iter().map(|mut d| {
             d.message = format!("standard library: {}", d.message);
+            d.msg = crate::diagnostics::Message::text(d.message.clone());
             d.span = Span::default();
             d
         }));
@@ -468,11 +478,7 @@ pub(super) fn check_expression_in(
         None => Some(t.e),
     });
     if c.globals.len() != globals_before {
-        c.error(
-            Code::UndeclaredName,
-            expr.span,
-            "a direct address that the program does not use cannot be watched",
-        );
+        c.error(Code::UndeclaredName, expr.span, crate::msg!(DirectAddressProgramDoesNot));
     }
     if crate::diagnostics::has_errors(&c.diags) {
         return Err(c.diags);

@@ -36,9 +36,10 @@ impl Checker<'_> {
             self.error(
                 Code::UnsupportedConfiguration,
                 other.name.span,
-                format!(
-                    "a program has one CONFIGURATION; `{}` is a second one (put its resources in `{}`)",
-                    other.name.name, first.name.name
+                crate::msg!(
+                    ProgramHasOneConfigurationSecond,
+                    name = other.name.name.to_string(),
+                    name2 = first.name.name.to_string()
                 ),
             );
         }
@@ -66,7 +67,10 @@ impl Checker<'_> {
                     self.error(
                         Code::DuplicateDeclaration,
                         p.name.span,
-                        format!("`{}` is already a global variable; name the program instance otherwise", p.name.name),
+                        crate::msg!(
+                            AlreadyGlobalVariableNameProgram,
+                            name = p.name.name.to_string()
+                        ),
                     );
                     continue;
                 }
@@ -119,7 +123,11 @@ impl Checker<'_> {
         what: &'n str,
     ) -> bool {
         if let Some(other) = names.get(&name.key()) {
-            let msg = format!("`{}` already names a {other} of this configuration", name.name);
+            let msg = crate::msg!(
+                AlreadyNamesConfiguration,
+                name = name.name.to_string(),
+                other = other.to_string()
+            );
             self.error(Code::DuplicateDeclaration, name.span, msg);
             return true;
         }
@@ -151,7 +159,7 @@ impl Checker<'_> {
                 Some(_) => self.error(
                     Code::BadTaskSetting,
                     e.span,
-                    format!("the INTERVAL of task `{}` must be a constant TIME above zero, such as T#20ms", t.name.name),
+                    crate::msg!(IntervalTaskMustConstantTime, name = t.name.name.to_string()),
                 ),
             }
         }
@@ -172,7 +180,7 @@ impl Checker<'_> {
                 None => self.error(
                     Code::BadTaskSetting,
                     e.span,
-                    format!("the SINGLE of task `{}` must be a BOOL global variable; its rising edge starts the task", t.name.name),
+                    crate::msg!(SingleTaskMustBoolGlobal, name = t.name.name.to_string()),
                 ),
             }
         }
@@ -206,7 +214,11 @@ impl Checker<'_> {
                 self.error(
                     Code::NotAProgramType,
                     p.type_name.span,
-                    format!("`{}` {what}; a program instance names a PROGRAM", p.type_name.name),
+                    crate::msg!(
+                        ProgramInstanceNamesProgram,
+                        name = p.type_name.name.to_string(),
+                        what = what.to_string()
+                    ),
                 );
                 return None;
             }
@@ -219,7 +231,11 @@ impl Checker<'_> {
                     self.error(
                         Code::UnknownTask,
                         t.span,
-                        format!("resource `{resource}` declares no task `{}`", t.name),
+                        crate::msg!(
+                            ResourceDeclaresNoTask,
+                            resource = resource.to_string(),
+                            name = t.name.to_string()
+                        ),
                     );
                     return None;
                 }
@@ -250,7 +266,12 @@ impl Checker<'_> {
             .map(|v| (v.name.clone(), v.ty));
         let Some((param, ty)) = param else {
             let what = if conn.output { "VAR_OUTPUT (`=>`)" } else { "VAR_INPUT (`:=`)" };
-            let msg = format!("`{}` is not a {what} of PROGRAM `{}`", conn.param.name, prog.name);
+            let msg = crate::msg!(
+                NotProgram,
+                name = conn.param.name.to_string(),
+                what = what.to_string(),
+                name2 = prog.name.to_string()
+            );
             self.error(Code::BadProgramConnection, conn.param.span, msg);
             return;
         };
@@ -291,11 +312,11 @@ impl Checker<'_> {
             let Some((steps, var)) = self.config_path(v, instances, pou) else { continue };
             let Some(ty) = self.resolve_type(&v.ty, &var.name).map(|r| r.ty) else { continue };
             if ty != var.ty {
-                let msg = format!(
-                    "`{}` is declared {}; a VAR_CONFIG entry gives the variable's own type, not {}",
-                    var.name,
-                    self.tname(var.ty),
-                    self.tname(ty)
+                let msg = crate::msg!(
+                    DeclaredVarConfigEntryGives,
+                    name = var.name.to_string(),
+                    ty = (self.tname(var.ty)).to_string(),
+                    ty2 = (self.tname(ty)).to_string()
                 );
                 self.error(Code::BadConfigVar, v.ty.span(), msg);
                 continue;
@@ -395,7 +416,11 @@ impl Checker<'_> {
         };
         if let Some(why) = refused {
             let name = v.path.last().map_or(v.span, |n| n.span);
-            let msg = format!("`{}` cannot take an initial value from VAR_CONFIG: {why}", var.name);
+            let msg = crate::msg!(
+                CannotTakeInitialValueFrom,
+                name = var.name.to_string(),
+                why = why.to_string()
+            );
             self.error(Code::BadConfigVar, name, msg);
             return false;
         }
@@ -460,14 +485,16 @@ impl Checker<'_> {
     ) -> Option<(String, crate::syntax::DirectAddress)> {
         let incomplete = var.location.as_ref().filter(|l| l.path.is_empty());
         let Some(decl) = incomplete else {
-            let msg = format!("`{}` is not declared at an incomplete address (`AT %Q*`), so it has none to complete", var.name);
+            let msg = crate::msg!(NotDeclaredIncompleteAddressQ, name = var.name.to_string());
             self.error(Code::BadConfigVar, v.span, msg);
             return None;
         };
         if decl.area != loc.area || decl.size != loc.size || loc.path.is_empty() {
-            let msg = format!(
-                "`{}` is declared `AT {} : {}`: give it a complete address of that area and size, and its type",
-                var.name, decl.text, self.tname(var.ty)
+            let msg = crate::msg!(
+                DeclaredGiveCompleteAddressArea,
+                name = var.name.to_string(),
+                text = decl.text.to_string(),
+                ty = (self.tname(var.ty)).to_string()
             );
             self.error(Code::BadConfigVar, loc.span, msg);
             return None;

@@ -18,7 +18,11 @@ impl<'a> Checker<'a> {
             Some(TypeSlot::Failed) | None => return None,
             Some(TypeSlot::Resolving(span)) => {
                 let span = *span;
-                self.error(Code::RecursiveType, span, format!("type `{key}` contains itself"));
+                self.error(
+                    Code::RecursiveType,
+                    span,
+                    crate::msg!(TypeContainsItself, key = key.to_string()),
+                );
                 self.type_slots.insert(key.to_string(), TypeSlot::Failed);
                 return None;
             }
@@ -48,9 +52,10 @@ impl<'a> Checker<'a> {
     /// type is refused at `span` of the reference rather than exhausting the stack.
     pub fn resolve_type(&mut self, tr: &TypeRef, owner: &str) -> Option<Resolved> {
         if self.resolve_depth >= MAX_TYPE_NESTING {
-            let message = format!(
-                "the type of `{owner}` is built from types nested more than \
-                 {MAX_TYPE_NESTING} levels deep; flatten it"
+            let message = crate::msg!(
+                TypeBuiltFromTypesNested,
+                owner = owner.to_string(),
+                MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string()
             );
             self.error(Code::TooComplex, tr.span(), message);
             return None;
@@ -84,10 +89,10 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::UnknownType,
                         id.span,
-                        format!(
-                            "`{}` is a {}, not a type",
-                            id.name,
-                            kind_name(self.pous[pou as usize].kind)
+                        crate::msg!(
+                            NotType,
+                            name = id.name.to_string(),
+                            kind_name = (kind_name(self.pous[pou as usize].kind)).to_string()
                         ),
                     );
                     return None;
@@ -113,8 +118,10 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::InvalidArraySize,
                         *span,
-                        format!(
-                            "a string length must be between 1 and {MAX_STRING_LEN}, not {len}"
+                        crate::msg!(
+                            StringLengthMustBetween1,
+                            MAX_STRING_LEN = MAX_STRING_LEN.to_string(),
+                            len = len.to_string()
                         ),
                     );
                     return None;
@@ -129,8 +136,10 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::InvalidRange,
                             lo.span.to(hi.span),
-                            format!(
-                                "array bounds {l}..{h}: the lower bound is above the upper bound"
+                            crate::msg!(
+                                ArrayBoundsLowerBoundAbove,
+                                l = l.to_string(),
+                                h = h.to_string()
                             ),
                         );
                         return None;
@@ -150,7 +159,10 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::InvalidArraySize,
                         *span,
-                        format!("arrays may hold at most {MAX_ARRAY_ELEMENTS} elements"),
+                        crate::msg!(
+                            ArraysMayHoldMostElements,
+                            MAX_ARRAY_ELEMENTS = MAX_ARRAY_ELEMENTS.to_string()
+                        ),
                     );
                     return None;
                 }
@@ -162,7 +174,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::TypeMismatch,
                         base.span,
-                        format!("a subrange needs an integer base type, not `{}`", base.name),
+                        crate::msg!(SubrangeNeedsIntegerBaseType, name = base.name.to_string()),
                     );
                     return None;
                 };
@@ -172,7 +184,12 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::InvalidRange,
                         *span,
-                        format!("subrange {l}..{h} is empty or does not fit {}", elem.name()),
+                        crate::msg!(
+                            SubrangeEmptyDoesNotFit,
+                            l = l.to_string(),
+                            h = h.to_string(),
+                            name = (elem.name()).to_string()
+                        ),
                     );
                     return None;
                 }
@@ -193,7 +210,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::DuplicateEnumerator,
                             name.span,
-                            format!("`{}` appears twice in this enumeration", name.name),
+                            crate::msg!(AppearsTwiceEnumeration, name = name.name.to_string()),
                         );
                         continue;
                     }
@@ -225,7 +242,7 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::DuplicateDeclaration,
                                 name.span,
-                                format!("field `{}` is declared twice", name.name),
+                                crate::msg!(FieldDeclaredTwice, name = name.name.to_string()),
                             );
                             continue;
                         }
@@ -248,11 +265,7 @@ impl<'a> Checker<'a> {
         let typed = self.expr(e, None)?;
         let value = consts::int_value(&typed.e);
         if value.is_none() {
-            self.error(
-                Code::NotConstant,
-                e.span,
-                "this must be a constant integer (a literal or a CONSTANT variable)",
-            );
+            self.error(Code::NotConstant, e.span, crate::msg!(MustConstantIntegerLiteralConstant));
         }
         value
     }
@@ -272,7 +285,7 @@ impl<'a> Checker<'a> {
                 let typed = self.expr(e, Some(ty))?;
                 let value = self.coerce(typed, ty, e.span)?;
                 let Some(v) = consts::to_init_value(&value) else {
-                    self.error(Code::NotConstant, e.span, "an initial value must be a constant");
+                    self.error(Code::NotConstant, e.span, crate::msg!(InitialValueMustConstant));
                     return None;
                 };
                 if let (Some((lo, hi)), InitValue::Scalar(bits), Type::Elem(el)) = (range, &v, ty) {
@@ -281,7 +294,12 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::SubrangeViolation,
                             e.span,
-                            format!("initial value {n} is outside the subrange {lo}..{hi}"),
+                            crate::msg!(
+                                InitialValueOutsideSubrange,
+                                n = n.to_string(),
+                                lo = lo.to_string(),
+                                hi = hi.to_string()
+                            ),
                         );
                     }
                 }
@@ -301,9 +319,10 @@ impl<'a> Checker<'a> {
                                 self.error(
                                     Code::TooManyInitializers,
                                     *span,
-                                    format!(
-                                        "repeat count {n} does not fit an array of {} elements",
-                                        def.len()
+                                    crate::msg!(
+                                        RepeatCountDoesNotFit,
+                                        n = n.to_string(),
+                                        def = (def.len()).to_string()
                                     ),
                                 );
                                 return None;
@@ -319,10 +338,10 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::TooManyInitializers,
                             *span,
-                            format!(
-                                "{} initial values for an array of {} elements",
-                                out.len(),
-                                def.len()
+                            crate::msg!(
+                                InitialValuesArrayElements,
+                                out = (out.len()).to_string(),
+                                def = (def.len()).to_string()
                             ),
                         );
                         return None;
@@ -374,7 +393,11 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::TypeMismatch,
                     other.span(),
-                    format!("{what} cannot initialise a value of type {}", self.tname(ty)),
+                    crate::msg!(
+                        CannotInitialiseValueType,
+                        what = what.to_string(),
+                        ty = (self.tname(ty)).to_string()
+                    ),
                 );
                 None
             }
@@ -392,7 +415,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::FunctionBlockInFunction,
                     decl.ty.span(),
-                    "a FUNCTION cannot hold function block instances (it keeps no state between calls); use a FUNCTION_BLOCK",
+                    crate::msg!(FunctionCannotHoldFunctionBlock),
                 );
                 continue;
             }
@@ -424,7 +447,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::DuplicateDeclaration,
                         name.span,
-                        format!("`{}` is already declared in this POU", name.name),
+                        crate::msg!(AlreadyDeclaredPou, name = name.name.to_string()),
                     );
                     continue;
                 }
@@ -449,16 +472,17 @@ impl<'a> Checker<'a> {
             None => self.error(
                 Code::ExternalWithoutGlobal,
                 name.span,
-                format!("VAR_EXTERNAL `{}` has no matching VAR_GLOBAL", name.name),
+                crate::msg!(VarExternalHasNoMatching, name = name.name.to_string()),
             ),
             Some(&g) if self.globals[g as usize].ty != ty => {
                 let want = self.tname(self.globals[g as usize].ty);
                 self.error(
                     Code::ExternalWithoutGlobal,
                     name.span,
-                    format!(
-                        "VAR_EXTERNAL `{}` must have the type of its VAR_GLOBAL, {want}",
-                        name.name
+                    crate::msg!(
+                        VarExternalMustHaveType,
+                        name = name.name.to_string(),
+                        want = want.to_string()
                     ),
                 );
             }
@@ -477,7 +501,11 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::InvalidLocation,
                 loc.span,
-                format!("{} can only hold an elementary value, not {}", loc.text, self.tname(ty)),
+                crate::msg!(
+                    CanOnlyHoldElementaryValue,
+                    text = loc.text.to_string(),
+                    ty = (self.tname(ty)).to_string()
+                ),
             );
             return;
         };
@@ -492,7 +520,11 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::InvalidLocation,
                 loc.span,
-                format!("{} does not fit a variable of type {}", loc.text, e.name()),
+                crate::msg!(
+                    DoesNotFitVariableType,
+                    text = loc.text.to_string(),
+                    name = (e.name()).to_string()
+                ),
             );
         }
     }
@@ -538,7 +570,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::SectionNotAllowed,
                         block.span,
-                        "VAR_GLOBAL is only allowed at top level or in a PROGRAM",
+                        crate::msg!(VarGlobalOnlyAllowedTop),
                     );
                 }
                 continue;
@@ -561,7 +593,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::DuplicateDeclaration,
                             ast.name.span,
-                            "a variable cannot have the name of its FUNCTION (that name is the result)",
+                            crate::msg!(VariableCannotHaveNameFunction),
                         );
                     }
                     result = Some(vars.len() as u32);

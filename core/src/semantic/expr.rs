@@ -4,6 +4,7 @@ use super::check::Checker;
 use super::ir::{BinOp, Builtin, Cmp, Expr, ExprKind, InitValue, MathFn, Place, SysVar, UnOp, Var};
 use super::types::{Elem, Type};
 use crate::diagnostics::{Code, Diagnostic, Span};
+use crate::msg;
 use crate::syntax::{self as ast, AddressArea, AddressSize, LiteralValue, VarSection};
 use crate::values::arith;
 
@@ -184,7 +185,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::NotAVariable,
                     span,
-                    format!("`{}` is a POU, not a value; call it with `{}(…)`", id.name, id.name),
+                    crate::msg!(PouNotValueCall, name = id.name.to_string()),
                 );
                 None
             }
@@ -219,10 +220,11 @@ impl<'a> Checker<'a> {
             .elem()
             .filter(|e| matches!(e, Elem::Byte | Elem::Word | Elem::DWord | Elem::LWord))
         else {
-            let msg = format!(
-                "partial access `.%{}{index}` needs a bit string (BYTE, WORD, DWORD, LWORD), not {}",
-                part_letter(part),
-                self.tname(base)
+            let msg = crate::msg!(
+                PartialAccessNeedsBitString,
+                part_letter = (part_letter(part)).to_string(),
+                index = index.to_string(),
+                base = (self.tname(base)).to_string()
             );
             self.error(Code::NotAStruct, span, msg);
             return None;
@@ -298,10 +300,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::TypeMismatch,
                 span,
-                format!(
-                    "`{}` is a function block instance: use one of its outputs, e.g. `{}.Q`",
-                    var.name, var.name
-                ),
+                crate::msg!(FunctionBlockInstanceUseOne, name = var.name.to_string()),
             );
             return None;
         }
@@ -321,7 +320,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::InvalidTypedLiteral,
                             p.span,
-                            format!("unknown type prefix `{}#`", p.name),
+                            crate::msg!(UnknownTypePrefix, name = p.name.to_string()),
                         );
                         return None;
                     }
@@ -333,7 +332,7 @@ impl<'a> Checker<'a> {
                 c.error(
                     Code::InvalidTypedLiteral,
                     span,
-                    format!("`{}#` does not fit this literal", p.name),
+                    crate::msg!(DoesNotFitLiteral, name = p.name.to_string()),
                 );
             }
         };
@@ -349,7 +348,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::IntegerLiteralTooLarge,
                             span,
-                            format!("{v} is too large for any integer type"),
+                            crate::msg!(TooLargeAnyIntegerType, v = v.to_string()),
                         );
                         return None;
                     };
@@ -365,7 +364,13 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::ConstantOutOfRange,
                             span,
-                            format!("{v} does not fit {} ({lo}..{hi})", el.name()),
+                            crate::msg!(
+                                DoesNotFit,
+                                v = v.to_string(),
+                                name = (el.name()).to_string(),
+                                lo = lo.to_string(),
+                                hi = hi.to_string()
+                            ),
                         );
                         return None;
                     }
@@ -436,7 +441,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::TypeMismatch,
                 type_name.span,
-                format!("`{}` is not an enumeration", type_name.name),
+                crate::msg!(NotEnumeration, name = type_name.name.to_string()),
             );
             return None;
         };
@@ -444,7 +449,7 @@ impl<'a> Checker<'a> {
         match def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&value.name)) {
             Some((_, v)) => Some(Typed::fixed(self.const_expr(*v as u64, resolved.ty, span))),
             None => {
-                let msg = format!("`{}` has no value `{}`", def.name, value.name);
+                let msg = msg!(NoEnumValue, ty = &def.name, value = &value.name);
                 let values: Vec<String> = def.values.iter().map(|(n, _)| n.clone()).collect();
                 self.error_suggesting(Code::UndeclaredName, value.span, msg, &value.name, values);
                 None
@@ -468,16 +473,12 @@ impl<'a> Checker<'a> {
         }
         let def = &self.types.enums[eid as usize];
         let &(_, value) = def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&id.name))?;
-        let message = format!(
-            "`{}` is both the variable `{}` ({}) and a value of `{}`; it is read as the value \
-             because a {} is expected here: write `{}#{}` to say so, or rename the variable",
-            id.name,
-            var.name,
-            self.tname(var.ty),
-            def.name,
-            def.name,
-            def.name,
-            id.name
+        let message = crate::msg!(
+            BothVariableValueReadValue,
+            name = id.name.to_string(),
+            name2 = var.name.to_string(),
+            ty = (self.tname(var.ty)).to_string(),
+            name3 = def.name.to_string()
         );
         self.warning(Code::VariableShadowsEnumValue, id.span, message);
         Some(NameRef::Enumerator(Type::Enum(eid), value))
@@ -539,9 +540,11 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::UndeclaredName,
                     id.span,
-                    format!(
-                        "`{}` is a value of both `{a}` and `{b}`; write `{a}#{}` or `{b}#{}`",
-                        id.name, id.name, id.name
+                    crate::msg!(
+                        ValueBothWrite,
+                        name = id.name.to_string(),
+                        a = a.to_string(),
+                        b = b.to_string()
                     ),
                 );
                 return None;
@@ -566,12 +569,9 @@ impl<'a> Checker<'a> {
         let candidates = self.names_in_scope();
         let suggestion =
             crate::diagnostics::suggest::closest(&id.name, candidates.iter().map(String::as_str));
-        let mut d = Diagnostic::error(
-            Code::UndeclaredName,
-            id.span,
-            format!("`{}` is not declared", id.name),
-        )
-        .suggesting(suggestion);
+        let mut d =
+            Diagnostic::error(Code::UndeclaredName, id.span, msg!(NotDeclared, name = &id.name))
+                .suggesting(suggestion);
         d.implied_type = expected.and_then(|t| self.declarable(t));
         self.diags.push(d);
     }
@@ -645,23 +645,19 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::AssignToConstant,
                             e.span,
-                            format!("`{}` is a system variable and cannot be written", id.name),
+                            msg!(SystemVariableWritten, name = &id.name),
                         );
                         return None;
                     }
                     self.error(
                         Code::NotAVariable,
                         e.span,
-                        format!("`{}` is a system variable, not a place in memory", id.name),
+                        crate::msg!(SystemVariableNotPlaceMemory, name = id.name.to_string()),
                     );
                     None
                 }
                 NameRef::Enumerator(..) | NameRef::Pou => {
-                    self.error(
-                        Code::NotAssignable,
-                        e.span,
-                        format!("`{}` is not a variable", id.name),
-                    );
+                    self.error(Code::NotAssignable, e.span, msg!(NotAVariable, name = &id.name));
                     None
                 }
             },
@@ -701,9 +697,10 @@ impl<'a> Checker<'a> {
                         let var = &pou.vars[i as usize];
                         let ty = var.ty;
                         if write && !matches!(var.section, VarSection::Input) {
-                            let msg = format!(
-                                "`{}` is not an input of `{}`; only inputs may be set from outside the block",
-                                field.name, pou.name
+                            let msg = crate::msg!(
+                                NotInputOnlyInputsMay,
+                                name = field.name.to_string(),
+                                name2 = pou.name.to_string()
                             );
                             self.error(Code::NotAssignable, e.span, msg);
                             return None;
@@ -711,10 +708,10 @@ impl<'a> Checker<'a> {
                         Some((Place::Field(Box::new(bp), i), ty))
                     }
                     other => {
-                        let msg = format!(
-                            "`.{}`: a value of type {} has no members",
-                            field.name,
-                            self.tname(other)
+                        let msg = crate::msg!(
+                            ValueTypeHasNoMembers,
+                            name = field.name.to_string(),
+                            other = (self.tname(other)).to_string()
                         );
                         self.error(Code::NotAStruct, field.span, msg);
                         None
@@ -724,16 +721,21 @@ impl<'a> Checker<'a> {
             K::Bit(base, n) => {
                 let (bp, bty) = self.place(base, write)?;
                 let Some(el) = bty.elem().filter(|e| e.is_integral()) else {
-                    let msg = format!(
-                        "bit access `.{n}` needs an integer or bit string, not {}",
-                        self.tname(bty)
+                    let msg = crate::msg!(
+                        BitAccessNeedsIntegerBit,
+                        n = n.to_string(),
+                        bty = (self.tname(bty)).to_string()
                     );
                     self.error(Code::NotAStruct, e.span, msg);
                     return None;
                 };
                 if *n >= el.bits() {
-                    let msg =
-                        format!("{} has bits 0..{}; there is no bit {n}", el.name(), el.bits() - 1);
+                    let msg = crate::msg!(
+                        HasBits0ThereNo,
+                        name = (el.name()).to_string(),
+                        bits = (el.bits() - 1).to_string(),
+                        n = n.to_string()
+                    );
                     self.error(Code::BitOutOfRange, e.span, msg);
                     return None;
                 }
@@ -745,16 +747,16 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAnArray,
                         e.span,
-                        format!("a value of type {} cannot be indexed", self.tname(bty)),
+                        crate::msg!(ValueTypeCannotIndexed, bty = (self.tname(bty)).to_string()),
                     );
                     return None;
                 };
                 let def = self.types.arrays[aid as usize].clone();
                 if def.dims.len() != indices.len() {
-                    let msg = format!(
-                        "this array has {} dimension(s) but {} index(es) were given",
-                        def.dims.len(),
-                        indices.len()
+                    let msg = crate::msg!(
+                        ArrayHasDimensionSBut,
+                        dims = (def.dims.len()).to_string(),
+                        indices = (indices.len()).to_string()
                     );
                     self.error(Code::WrongIndexCount, e.span, msg);
                     return None;
@@ -763,16 +765,21 @@ impl<'a> Checker<'a> {
                 for (ix, (lo, hi)) in indices.iter().zip(&def.dims) {
                     let t = self.expr(ix, None)?;
                     if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-                        let msg = format!(
-                            "an array index must be an integer, not {}",
-                            self.tname(t.e.ty)
+                        let msg = crate::msg!(
+                            ArrayIndexMustIntegerNot,
+                            ty = (self.tname(t.e.ty)).to_string()
                         );
                         self.error(Code::TypeMismatch, ix.span, msg);
                         return None;
                     }
                     if let Some(v) = super::consts::int_value(&t.e) {
                         if v < *lo || v > *hi {
-                            let msg = format!("index {v} is outside the array bounds {lo}..{hi}");
+                            let msg = crate::msg!(
+                                IndexOutsideArrayBounds,
+                                v = v.to_string(),
+                                lo = lo.to_string(),
+                                hi = hi.to_string()
+                            );
                             self.error(Code::ConstantIndexOutOfRange, ix.span, msg);
                             return None;
                         }
@@ -788,7 +795,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::NotAssignable,
                     e.span,
-                    format!("this expression cannot be {what}; it is not a variable"),
+                    crate::msg!(ExpressionCannotNotVariable, what = what.to_string()),
                 );
                 None
             }
@@ -807,6 +814,7 @@ impl<'a> Checker<'a> {
         if !self.error_suggesting(Code::NoSuchMember, span, message, &field.name, members) {
             if let Some(d) = self.diags.last_mut() {
                 d.message.push_str(&listed);
+                d.msg = crate::diagnostics::Message::text(d.message.clone());
             }
         }
     }
@@ -814,25 +822,18 @@ impl<'a> Checker<'a> {
     fn check_writable(&mut self, var: &Var, span: Span) -> Option<()> {
         let pou_kind = self.pous.get(self.body.pou as usize).map(|p| p.kind);
         if self.body.read_only {
-            self.error(Code::NotAssignable, span, "a condition cannot change variables");
+            self.error(Code::NotAssignable, span, msg!(ConditionWrites));
             return None;
         }
         if var.constant {
-            self.error(
-                Code::AssignToConstant,
-                span,
-                format!("`{}` is a CONSTANT and cannot be changed", var.name),
-            );
+            self.error(Code::AssignToConstant, span, msg!(ConstantWritten, name = &var.name));
             return None;
         }
         if pou_kind == Some(crate::syntax::PouKind::Function) && var.section == VarSection::Input {
             self.warning(
                 Code::FunctionInputWritten,
                 span,
-                format!(
-                    "`{}` is an input of the FUNCTION: this changes the function's own copy, not the caller's variable",
-                    var.name
-                ),
+                msg!(FunctionInputWritten, name = &var.name),
             );
         }
         Some(())
@@ -914,7 +915,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::OperatorTypeMismatch,
                         span,
-                        format!("unary `+` needs a number, not {}", self.tname(ty)),
+                        crate::msg!(UnaryNeedsNumberNot, ty = (self.tname(ty)).to_string()),
                     );
                     return None;
                 }
@@ -927,7 +928,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::OperatorTypeMismatch,
                         span,
-                        format!("`-` needs a number or TIME, not {}", self.tname(ty)),
+                        crate::msg!(NeedsNumberTimeNot, ty = (self.tname(ty)).to_string()),
                     );
                     return None;
                 };
@@ -952,7 +953,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::OperatorTypeMismatch,
                         span,
-                        format!("NOT needs a BOOL or a bit string, not {}", self.tname(ty)),
+                        crate::msg!(NotNeedsBoolBitString, ty = (self.tname(ty)).to_string()),
                     );
                     return None;
                 };
@@ -1034,7 +1035,13 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::ConstantOutOfRange,
                                 span,
-                                format!("{v} does not fit {} ({lo}..{hi})", te.name()),
+                                crate::msg!(
+                                    DoesNotFit,
+                                    v = v.to_string(),
+                                    name = (te.name()).to_string(),
+                                    lo = lo.to_string(),
+                                    hi = hi.to_string()
+                                ),
                             );
                             return None;
                         }
@@ -1057,12 +1064,9 @@ impl<'a> Checker<'a> {
                 let message = if fe.is_num() && te.is_num() || fe.is_integral() && te.is_integral()
                 {
                     // Both are numbers: the value would fit only sometimes.
-                    format!(
-                        "{f} does not convert to {to} without possible loss: convert it \
-                         explicitly with {f}_TO_{to}(…)"
-                    )
+                    msg!(LossyConversion, from = f, to = to)
                 } else {
-                    format!("expected a value of type {to}, found {f}")
+                    msg!(ExpectedType, to = to, from = f)
                 };
                 self.error(Code::TypeMismatch, span, message);
                 None
@@ -1077,11 +1081,7 @@ impl<'a> Checker<'a> {
             }
             _ => {
                 let (f, to) = (self.tname(from), self.tname(target));
-                self.error(
-                    Code::TypeMismatch,
-                    span,
-                    format!("expected a value of type {to}, found {f}"),
-                );
+                self.error(Code::TypeMismatch, span, msg!(ExpectedType, to = to, from = f));
                 None
             }
         }
@@ -1134,8 +1134,12 @@ impl<'a> Checker<'a> {
         let (a, b) = self.bool_literals(op, a?, b?);
         let (at, bt) = (a.e.ty, b.e.ty);
         let mismatch = |c: &mut Self| {
-            let msg =
-                format!("`{}` cannot combine {} and {}", op_text(op), c.tname(at), c.tname(bt));
+            let msg = crate::msg!(
+                CannotCombine,
+                op_text = (op_text(op)).to_string(),
+                tname = (c.tname(at)).to_string(),
+                tname2 = (c.tname(bt)).to_string()
+            );
             c.error(Code::OperatorTypeMismatch, span, msg);
             None
         };
@@ -1215,7 +1219,7 @@ impl<'a> Checker<'a> {
                     BinOp::Sub => x.checked_sub(y),
                     BinOp::Mul => x.checked_mul(y),
                     BinOp::Div if y == 0 => {
-                        self.error(Code::DivisionByZeroConstant, span, "division by zero");
+                        self.error(Code::DivisionByZeroConstant, span, crate::msg!(DivisionZero));
                         return None;
                     }
                     BinOp::Div => Some(x / y),
@@ -1245,14 +1249,14 @@ impl<'a> Checker<'a> {
             }
         };
         if op == BinOp::Mod && !el.is_integral() {
-            let msg = format!("MOD needs integers, not {}", el.name());
+            let msg = crate::msg!(ModNeedsIntegersNot, name = (el.name()).to_string());
             self.error(Code::OperatorTypeMismatch, span, msg);
             return None;
         }
         let ty = Type::Elem(el);
         let (x, y) = (self.convert(a.e, ty), self.convert(b.e, ty));
         if op == BinOp::Div && el.is_integral() && matches!(y.kind, ExprKind::Const(0)) {
-            self.error(Code::DivisionByZeroConstant, r.span, "division by a constant zero");
+            self.error(Code::DivisionByZeroConstant, r.span, crate::msg!(DivisionConstantZero));
             return None;
         }
         Some(Typed { e: make(self, ty, x, y)?, flexible })

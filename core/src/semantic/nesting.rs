@@ -96,9 +96,10 @@ impl Checker<'_> {
             }
         }
         for (span, name) in found {
-            let message = format!(
-                "the type of `{name}` nests FB instances, structs or arrays more than \
-                 {MAX_TYPE_NESTING} levels deep; flatten it"
+            let message = crate::msg!(
+                TypeNestsFbInstancesStructs,
+                name = name.to_string(),
+                MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string()
             );
             self.error(Code::TooComplex, span, message);
         }

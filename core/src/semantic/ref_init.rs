@@ -75,7 +75,7 @@ impl Checker<'_> {
         match self.static_path(place, p.scope.pou) {
             Ok(path) => Some(path),
             Err(why) => {
-                let msg = format!("a reference's initial value must point at a variable that exists for the whole run: {why}");
+                let msg = crate::msg!(ReferenceSInitialValueMust, why = why.to_string());
                 self.error(Code::RefNotAVariable, span, msg);
                 None
             }

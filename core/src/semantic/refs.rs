@@ -39,7 +39,7 @@ impl Checker<'_> {
     ) -> Option<(Place, Type)> {
         let t = self.expr(base, None)?;
         if write && self.body.read_only {
-            self.error(Code::NotAssignable, span, "a condition cannot change variables");
+            self.error(Code::NotAssignable, span, crate::msg!(ConditionWrites));
             return None;
         }
         match self.types.ref_target(t.e.ty) {
@@ -65,13 +65,13 @@ impl Checker<'_> {
     #[inline(never)]
     pub(super) fn ref_call(&mut self, args: &[ast::Arg], span: Span) -> Option<Expr> {
         let [ast::Arg::Positional(arg) | ast::Arg::Input { value: arg, .. }] = args else {
-            let msg = format!("REF takes one variable, {} argument(s) given", args.len());
+            let msg = crate::msg!(RefTakesOneVariableArgument, args = (args.len()).to_string());
             self.error(Code::WrongArgumentCount, span, msg);
             return None;
         };
         if let ast::Arg::Input { name, .. } = &args[0] {
             if !name.name.eq_ignore_ascii_case("IN") {
-                let msg = format!("REF has one parameter, `IN`, not `{}`", name.name);
+                let msg = crate::msg!(RefHasOneParameterNot, name = name.name.to_string());
                 self.error(Code::NoSuchParameter, name.span, msg);
                 return None;
             }
@@ -86,7 +86,7 @@ impl Checker<'_> {
             _ => None,
         };
         if let Some(why) = refused {
-            let msg = format!("REF needs a whole variable, element or field: {why}");
+            let msg = crate::msg!(RefNeedsWholeVariableElement, why = why.to_string());
             self.error(Code::RefNotAVariable, arg.span, msg);
             return None;
         }
@@ -129,7 +129,7 @@ impl Checker<'_> {
                     }
                 }
                 Some(_) => {
-                    let msg = format!("type `{}` refers to itself; only a STRUCT may", name.name);
+                    let msg = crate::msg!(TypeRefersItselfOnlyStruct, name = name.name.to_string());
                     self.error(Code::RecursiveType, name.span, msg);
                 }
                 None => {}
@@ -171,11 +171,11 @@ impl Checker<'_> {
             _ => None,
         };
         let Some(operand) = operand else {
-            let msg = format!(
-                "`{}` cannot combine {} and {}",
-                super::expr::op_text(op),
-                self.tname(a.ty),
-                self.tname(b.ty)
+            let msg = crate::msg!(
+                CannotCombine2,
+                op_text = (super::expr::op_text(op)).to_string(),
+                ty = (self.tname(a.ty)).to_string(),
+                ty2 = (self.tname(b.ty)).to_string()
             );
             self.error(Code::OperatorTypeMismatch, span, msg);
             return None;

@@ -20,7 +20,7 @@ impl<'a> Checker<'a> {
                     K::Exit => "the EXIT before it always leaves the loop",
                     _ => "the CONTINUE before it always goes on with the loop's next pass",
                 };
-                let msg = format!("this statement can never run: {why}");
+                let msg = crate::msg!(StatementCanNeverRun, why = why.to_string());
                 self.warning(Code::UnreachableCode, next.span, msg);
             }
         }
@@ -45,7 +45,11 @@ impl<'a> Checker<'a> {
         // A condition is a BOOL context: an untyped `0` or `1` is FALSE or TRUE.
         let t = self.bool_literal(t, Type::BOOL);
         if !t.e.ty.is_bool() {
-            let msg = format!("the condition of {what} must be BOOL, not {}", self.tname(t.e.ty));
+            let msg = crate::msg!(
+                ConditionMustBoolNot,
+                what = what.to_string(),
+                ty = (self.tname(t.e.ty)).to_string()
+            );
             self.error(Code::ConditionNotBool, e.span, msg);
             return None;
         }
@@ -71,7 +75,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAssignable,
                         target.span,
-                        "a function block instance cannot be assigned; call it instead",
+                        crate::msg!(FunctionBlockInstanceCannotAssigned),
                     );
                     return None;
                 }
@@ -84,7 +88,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAssignable,
                         value.span,
-                        "arrays and structures can only be copied from a variable",
+                        crate::msg!(ArraysStructuresCanOnlyCopied),
                     );
                     return None;
                 }
@@ -92,7 +96,7 @@ impl<'a> Checker<'a> {
             }
             K::Call(call) => {
                 let ast::ExprKind::Call { callee, args } = &call.kind else {
-                    self.error(Code::UnexpectedToken, span, "expected a call");
+                    self.error(Code::UnexpectedToken, span, crate::msg!(ExpectedCall));
                     return None;
                 };
                 self.call_stmt(callee, args, span)?
@@ -118,8 +122,7 @@ impl<'a> Checker<'a> {
                 let ty = place.as_ref().map(|p| p.1);
                 let el = ty.and_then(Type::elem).filter(|e| e.is_int());
                 if place.is_some() && el.is_none() {
-                    let msg =
-                        format!("the FOR variable `{}` must be an integer variable", var.name);
+                    let msg = crate::msg!(VariableMustIntegerVariable, name = var.name.to_string());
                     self.error(Code::ForVariableNotInteger, var.span, msg);
                 }
                 let vty = el.map(Type::Elem);
@@ -140,11 +143,7 @@ impl<'a> Checker<'a> {
                 };
                 if let Some(step) = &b {
                     if consts::int_value(step) == Some(0) {
-                        self.error(
-                            Code::ZeroForStep,
-                            step.span,
-                            "a FOR loop with step 0 never ends",
-                        );
+                        self.error(Code::ZeroForStep, step.span, crate::msg!(LoopStep0NeverEnds));
                     }
                 }
                 self.body.loop_depth += 1;
@@ -174,7 +173,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::ExitOutsideLoop,
                         span,
-                        format!("{kw} can only be used inside FOR, WHILE or REPEAT"),
+                        crate::msg!(CanOnlyUsedInsideWhile, kw = kw.to_string()),
                     );
                     return None;
                 }
@@ -265,7 +264,12 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::SubrangeViolation,
                 value.span,
-                format!("{v} is outside the subrange {lo}..{hi} of this variable"),
+                crate::msg!(
+                    OutsideSubrangeVariable,
+                    v = v.to_string(),
+                    lo = lo.to_string(),
+                    hi = hi.to_string()
+                ),
             );
         }
     }
@@ -282,9 +286,9 @@ impl<'a> Checker<'a> {
             |t: Type| matches!(t, Type::Enum(_)) || t.elem().is_some_and(|e| e.is_integral());
         if let Some(t) = sel_ty {
             if !ok_selector(t) {
-                let msg = format!(
-                    "a CASE selector must be an integer or an enumeration, not {}",
-                    self.tname(t)
+                let msg = crate::msg!(
+                    CaseSelectorMustIntegerEnumeration,
+                    value = (self.tname(t)).to_string()
                 );
                 self.error(Code::TypeMismatch, selector.span, msg);
             }
@@ -308,14 +312,18 @@ impl<'a> Checker<'a> {
                 };
                 let span = lo_e.span.to(hi_e.span);
                 if lo > hi {
-                    self.error(Code::InvalidRange, span, format!("the range {lo}..{hi} is empty"));
+                    self.error(
+                        Code::InvalidRange,
+                        span,
+                        crate::msg!(RangeEmpty, lo = lo.to_string(), hi = hi.to_string()),
+                    );
                     continue;
                 }
                 if seen.range(..=hi).next_back().is_some_and(|(_, &end)| end >= lo) {
                     self.error(
                         Code::DuplicateCaseLabel,
                         span,
-                        "this CASE label is already covered by an earlier one",
+                        crate::msg!(CaseLabelAlreadyCoveredEarlier),
                     );
                     continue;
                 }
@@ -337,7 +345,7 @@ impl<'a> Checker<'a> {
         let value = match sel {
             Type::Enum(_) => {
                 if t.e.ty != sel {
-                    let msg = format!("this label is not a value of {}", self.tname(sel));
+                    let msg = crate::msg!(LabelNotValue, sel = (self.tname(sel)).to_string());
                     self.error(Code::CaseLabelType, e.span, msg);
                     return None;
                 }
@@ -345,9 +353,9 @@ impl<'a> Checker<'a> {
             }
             _ => {
                 if !t.e.ty.elem().is_some_and(|el| el.is_integral()) {
-                    let msg = format!(
-                        "a CASE label must be an integer constant, not {}",
-                        self.tname(t.e.ty)
+                    let msg = crate::msg!(
+                        CaseLabelMustIntegerConstant,
+                        ty = (self.tname(t.e.ty)).to_string()
                     );
                     self.error(Code::CaseLabelType, e.span, msg);
                     return None;
@@ -356,12 +364,16 @@ impl<'a> Checker<'a> {
             }
         };
         if value.is_none() {
-            self.error(Code::NotConstant, e.span, "a CASE label must be a constant");
+            self.error(Code::NotConstant, e.span, crate::msg!(CaseLabelMustConstant));
         }
         if let (Some(v), Some(el)) = (value, sel.elem()) {
             let (lo, hi) = el.int_range();
             if (v as i128) < lo || (v as i128) > hi {
-                let msg = format!("label {v} can never match a selector of type {}", el.name());
+                let msg = crate::msg!(
+                    LabelCanNeverMatchSelector,
+                    v = v.to_string(),
+                    name = (el.name()).to_string()
+                );
                 self.warning(Code::CaseWithoutMatch, e.span, msg);
             }
         }

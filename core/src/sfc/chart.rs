@@ -123,9 +123,12 @@ pub(super) fn resolve<'a>(
         }
         let key = id.key();
         if let Some((other, first)) = names.get(&key) {
-            let msg = format!(
-                "`{}` is already the name of {other} `{}` in this chart; give this {what} another name",
-                id.name, first.name
+            let msg = crate::msg!(
+                AlreadyNameChartGiveAnother,
+                name = id.name.to_string(),
+                other = other.to_string(),
+                name2 = first.name.to_string(),
+                what = what.to_string()
             );
             diags.push(Diagnostic::error(Code::SfcDuplicateName, id.span, msg));
             return false;
@@ -136,9 +139,11 @@ pub(super) fn resolve<'a>(
             } else {
                 "a global variable".to_string()
             };
-            let msg = format!(
-                "`{}` is {whose} and cannot also name a {what}; steps, transitions and actions share the POU's names",
-                id.name
+            let msg = crate::msg!(
+                CannotAlsoNameStepsTransitions,
+                name = id.name.to_string(),
+                whose = whose.to_string(),
+                what = what.to_string()
             );
             diags.push(Diagnostic::error(Code::SfcDuplicateName, id.span, msg));
             return false;
@@ -216,15 +221,15 @@ pub(super) fn resolve<'a>(
                     let span = assoc.action.span;
                     let d = match &hint {
                         Some(_) => {
-                            let msg = format!(
-                                "`{name}` is neither an ACTION of this chart nor a variable"
-                            );
+                            let msg =
+                                crate::msg!(NeitherActionChartNorVariable, name = name.to_string());
                             Diagnostic::error(Code::SfcUnknownAction, span, msg)
                                 .suggesting(hint.as_deref())
                         }
                         None => {
-                            let msg = format!(
-                                "`{name}` is neither an ACTION of this chart nor a variable; declare `ACTION {name} : … END_ACTION` or a BOOL variable `{name}`"
+                            let msg = crate::msg!(
+                                NeitherActionChartNorVariable2,
+                                name = name.to_string()
                             );
                             Diagnostic::error(Code::SfcUnknownAction, span, msg)
                         }
@@ -237,19 +242,13 @@ pub(super) fn resolve<'a>(
         }
     }
     if chart.steps.is_empty() {
-        let msg = format!(
-            "the SFC body of `{}` has no INITIAL_STEP (it has no step at all)",
-            pou.name.name
-        );
+        let msg = crate::msg!(SfcBodyHasNoInitial, name = pou.name.name.to_string());
         diags.push(Diagnostic::error(Code::SfcNoInitialStep, pou.name.span, msg));
     }
     check_networks(&chart, diags);
     for a in &chart.actions {
         if let (ActionKind::Declared(decl), true) = (&a.kind, a.uses.is_empty()) {
-            let msg = format!(
-                "no step uses action `{}`, so it never runs; associate it with a step, e.g. `{}(N);`",
-                a.name.name, a.name.name
-            );
+            let msg = crate::msg!(NoStepUsesActionSo, name = a.name.name.to_string());
             diags.push(Diagnostic::warning(Code::SfcUnusedAction, decl.header, msg));
         }
     }
@@ -280,7 +279,11 @@ fn step_list(
     for id in ids {
         match index.get(&id.key()) {
             Some(&i) if out.contains(&i) => {
-                let msg = format!("step `{}` is listed twice after {which}", id.name);
+                let msg = crate::msg!(
+                    StepListedTwiceAfter,
+                    name = id.name.to_string(),
+                    which = which.to_string()
+                );
                 diags.push(Diagnostic::error(Code::SfcStepListedTwice, id.span, msg));
                 ok = false;
             }
@@ -376,10 +379,11 @@ fn check_priorities(chart: &Chart, diags: &mut Vec<Diagnostic>) {
             u.ast.priority.is_some_and(|(q, _)| q == p) && u.from.iter().any(|s| t.from.contains(s))
         });
         if let Some(u) = earlier {
-            let msg = format!(
-                "{} has the same PRIORITY {p} as {} and leaves the same step; the one written first wins",
-                t.describe(),
-                u.describe()
+            let msg = crate::msg!(
+                HasSamePriorityLeavesSame,
+                describe = (t.describe()).to_string(),
+                p = p.to_string(),
+                describe2 = (u.describe()).to_string()
             );
             diags.push(Diagnostic::warning(Code::SfcSamePriority, span, msg));
         }

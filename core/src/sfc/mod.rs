@@ -95,6 +95,7 @@ impl Desugared {
                         },
                         Reword::Wrap(sentence) => format!("{sentence} ({})", d.message),
                     };
+                    d.msg = crate::diagnostics::Message::text(d.message.clone());
                 }
                 d
             })
@@ -117,10 +118,7 @@ pub fn desugar(file: &mut SourceFile) -> Desugared {
         let Item::Pou(pou) = item else { continue };
         let Some(body) = &pou.sfc else { continue };
         if pou.kind == PouKind::Function {
-            let msg = format!(
-                "FUNCTION `{}` cannot have an SFC body: a function keeps nothing between calls; make it a FUNCTION_BLOCK",
-                pou.name.name
-            );
+            let msg = crate::msg!(FunctionCannotHaveSfcBody, name = pou.name.name.to_string());
             out.diagnostics.push(Diagnostic::error(Code::SfcNotAllowedHere, pou.name.span, msg));
             continue;
         }
@@ -170,10 +168,7 @@ fn check_reserved(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> bool {
     let mut report = |name: &crate::syntax::ast::Ident| {
         if name.name.eq_ignore_ascii_case(STEP_TYPE) {
             clash = true;
-            let msg = format!(
-                "`{}` is the type of SFC steps in a file with an SFC body; choose another name",
-                name.name
-            );
+            let msg = crate::msg!(TypeSfcStepsFileSfc, name = name.name.to_string());
             diags.push(Diagnostic::error(Code::SfcReservedName, name.span, msg));
         }
     };
@@ -223,16 +218,13 @@ fn check_statements(
             protected.insert(a.name.key(), "action");
         }
     }
-    let no_return = |stmts: &[crate::syntax::ast::Stmt],
-                     what: &str,
-                     diags: &mut Vec<Diagnostic>| {
-        if let Some(span) = walk::first_return(stmts) {
-            let msg = format!(
-                "RETURN cannot be used in {what}: it would leave the whole POU and skip the rest of the chart; use IF … END_IF instead"
-            );
-            diags.push(Diagnostic::error(Code::SfcReturnInAction, span, msg));
-        }
-    };
+    let no_return =
+        |stmts: &[crate::syntax::ast::Stmt], what: &str, diags: &mut Vec<Diagnostic>| {
+            if let Some(span) = walk::first_return(stmts) {
+                let msg = crate::msg!(ReturnCannotUsedWouldLeave, what = what.to_string());
+                diags.push(Diagnostic::error(Code::SfcReturnInAction, span, msg));
+            }
+        };
     for element in &body.elements {
         match element {
             SfcElement::Action(a) => {
@@ -254,9 +246,9 @@ fn check_statements(
                             ));
                         }
                         Some(name) if !walk::assigns(stmts, name) => {
-                            let msg = format!(
-                                "the body of transition `{}` never assigns `{0}`, so the transition never fires",
-                                name.name
+                            let msg = crate::msg!(
+                                BodyTransitionNeverAssignsSo,
+                                name = name.name.to_string()
                             );
                             diags.push(Diagnostic::warning(
                                 Code::SfcTransitionNotAssigned,

@@ -79,11 +79,11 @@ pub(super) fn check(chart: &Chart, diags: &mut Vec<Diagnostic>) {
                     // Only the first (shortest) one: the others usually follow from it.
                     unsafe_reported = true;
                     let path = path_to(chart, &parent, here);
-                    let msg = format!(
-                        "{} can activate step `{}` while it is already active ({}; conditions ignored): the SFC is unsafe, and a step flag cannot count two activations",
-                        tr.describe(),
-                        chart.steps[s].name.name,
-                        path
+                    let msg = crate::msg!(
+                        CanActivateStepWhileAlready,
+                        describe = (tr.describe()).to_string(),
+                        name = (chart.steps[s].name.name).to_string(),
+                        path = path.to_string()
                     );
                     diags.push(Diagnostic::warning(Code::SfcUnsafe, tr.ast.header, msg));
                 }
@@ -106,10 +106,7 @@ pub(super) fn check(chart: &Chart, diags: &mut Vec<Diagnostic>) {
     }
     for (i, s) in chart.steps.iter().enumerate() {
         if !reached[i] {
-            let msg = format!(
-                "step `{}` can never become active: no sequence of transitions from the initial step reaches it (even ignoring conditions)",
-                s.name.name
-            );
+            let msg = crate::msg!(StepCanNeverBecomeActive, name = s.name.name.to_string());
             diags.push(Diagnostic::warning(Code::SfcUnreachableStep, s.header, msg));
         }
     }
@@ -121,10 +118,10 @@ pub(super) fn check(chart: &Chart, diags: &mut Vec<Diagnostic>) {
         if !enabled[t] && tr.from.iter().all(|&s| reached[s]) {
             let names: Vec<String> =
                 tr.from.iter().map(|&s| format!("`{}`", chart.steps[s].name.name)).collect();
-            let msg = format!(
-                "{} can never fire: its steps {} are never active at the same time (even ignoring conditions)",
-                tr.describe(),
-                names.join(", ")
+            let msg = crate::msg!(
+                CanNeverFireStepsAre,
+                describe = (tr.describe()).to_string(),
+                join = (names.join(", ")).to_string()
             );
             diags.push(Diagnostic::warning(Code::SfcDeadTransition, tr.ast.header, msg));
         }

@@ -6,7 +6,8 @@
 //! comments are kept aside so the parser can attach a declaration's description.
 //! The lexer never fails: every byte either becomes part of a token or a diagnostic.
 
-use crate::diagnostics::{Code, Diagnostic, Span};
+use crate::diagnostics::{Code, Diagnostic, Said, Span};
+use crate::msg;
 
 /// One token: what it is and where it stands. Its text is `&source[span]`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -360,7 +361,7 @@ impl Lexer<'_> {
         self.bytes.get(self.pos + ahead).copied().unwrap_or(0)
     }
 
-    fn error(&mut self, code: Code, start: usize, end: usize, msg: String) {
+    fn error(&mut self, code: Code, start: usize, end: usize, msg: impl Into<Said>) {
         self.out.diagnostics.push(Diagnostic::error(code, Span::new(start, end), msg));
     }
 
@@ -407,7 +408,7 @@ impl Lexer<'_> {
                     Code::UnterminatedComment,
                     start,
                     (start + 2).min(self.bytes.len()),
-                    format!("this comment `{opener}` is never closed by `{closer}`"),
+                    msg!(CommentNotClosed, opener = opener, closer = closer),
                 );
                 let text = self.src.get(body_start..).unwrap_or("").trim().to_string();
                 self.out.comments.push(Comment { span: Span::new(start, self.pos), text });
@@ -438,12 +439,7 @@ impl Lexer<'_> {
             self.pos += 1;
         }
         if self.pos >= self.bytes.len() {
-            self.error(
-                Code::UnterminatedComment,
-                start,
-                start + 1,
-                "this pragma `{` is never closed by `}`".to_string(),
-            );
+            self.error(Code::UnterminatedComment, start, start + 1, msg!(PragmaNotClosed));
         } else {
             self.pos += 1;
         }
@@ -462,9 +458,7 @@ impl Lexer<'_> {
                         Code::UnterminatedString,
                         start,
                         self.pos,
-                        format!(
-                            "this string is never closed: add `{what}` before the end of the line"
-                        ),
+                        msg!(StringNotClosed, quote = what),
                     );
                     break;
                 }
@@ -541,12 +535,7 @@ impl Lexer<'_> {
                 self.pos += 1;
             }
             let text = &self.src[start..self.pos];
-            self.error(
-                Code::InvalidNumber,
-                start,
-                self.pos,
-                format!("`{text}` is not a valid number"),
-            );
+            self.error(Code::InvalidNumber, start, self.pos, msg!(InvalidNumber, text = text));
         }
         self.push(kind, start);
     }
@@ -564,7 +553,7 @@ impl Lexer<'_> {
                     Code::UnexpectedCharacter,
                     self.pos,
                     self.pos + len,
-                    format!("`{ch}` cannot be used in a name: names use only the letters A–Z, digits and `_`"),
+                    msg!(CharacterInName, ch = ch),
                 );
                 self.pos += len;
             } else {
@@ -595,7 +584,7 @@ impl Lexer<'_> {
                 Code::InvalidIdentifier,
                 start,
                 self.pos,
-                format!("the name `{word}` may not end with `_` or contain `__`"),
+                msg!(InvalidIdentifier, name = word),
             );
         }
         self.push(TokenKind::Ident, start);
@@ -642,12 +631,7 @@ impl Lexer<'_> {
         let start = self.pos;
         let (ch, len) = self.char_here();
         self.pos += len;
-        self.error(
-            Code::UnexpectedCharacter,
-            start,
-            self.pos,
-            format!("the character `{ch}` cannot appear here"),
-        );
+        self.error(Code::UnexpectedCharacter, start, self.pos, msg!(UnexpectedCharacter, ch = ch));
         self.push(TokenKind::Error, start);
     }
 
@@ -684,9 +668,9 @@ impl Lexer<'_> {
             _ => {
                 self.pos += 1;
                 let shown = if b.is_ascii_graphic() {
-                    format!("the character `{}` cannot appear here", b as char)
+                    msg!(UnexpectedCharacter, ch = b as char)
                 } else {
-                    format!("the control character 0x{b:02X} cannot appear here")
+                    msg!(UnexpectedControlCharacter, hex = format!("{b:02X}"))
                 };
                 self.error(Code::UnexpectedCharacter, start, self.pos, shown);
                 self.push(Error, start);

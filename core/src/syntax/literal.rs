@@ -6,10 +6,11 @@
 //! parser places the problem on the literal's token.
 
 use super::ast::{AddressArea, AddressSize, LiteralValue};
-use crate::diagnostics::Code;
+use crate::diagnostics::{Arg, Code, Said};
+use crate::{msg, phrase};
 
 /// A problem with a literal: its code and a message.
-pub(crate) type LitError = (Code, String);
+pub(crate) type LitError = (Code, Said);
 
 type LitResult<T> = Result<T, LitError>;
 
@@ -22,19 +23,14 @@ const NS_PER_DAY: i128 = 24 * NS_PER_H;
 
 /// The value of an integer literal: `123_456`, `2#1110_0000`, `8#377`, `16#e5`.
 pub(crate) fn parse_integer(text: &str) -> LitResult<i128> {
-    let bad = || (Code::InvalidNumber, format!("`{text}` is not a valid integer"));
+    let bad = || (Code::InvalidNumber, msg!(InvalidInteger, text = text));
     let (base, digits) = match text.split_once('#') {
         Some((b, d)) => {
             let base: u32 = match b.replace('_', "").as_str() {
                 "2" => 2,
                 "8" => 8,
                 "16" => 16,
-                _ => {
-                    return Err((
-                        Code::InvalidNumber,
-                        format!("`{b}#` is not a number base: use `2#`, `8#` or `16#`"),
-                    ))
-                }
+                _ => return Err((Code::InvalidNumber, msg!(InvalidBase, base = b))),
             };
             (base, d)
         }
@@ -46,15 +42,12 @@ pub(crate) fn parse_integer(text: &str) -> LitResult<i128> {
         let Some(d) = c.to_digit(base) else {
             return Err((
                 Code::InvalidNumber,
-                format!("`{c}` is not a digit in base {base} (in `{text}`)"),
+                msg!(InvalidDigit, digit = c, base = base, text = text),
             ));
         };
         value = value * i128::from(base) + i128::from(d);
         if value > i128::from(u64::MAX) {
-            return Err((
-                Code::IntegerLiteralTooLarge,
-                format!("`{text}` is too large for any integer type"),
-            ));
+            return Err((Code::IntegerLiteralTooLarge, msg!(IntegerTooLarge, text = text)));
         }
     }
     Ok(value)
@@ -74,7 +67,7 @@ fn check_underscores(digits: &str) -> Result<(), ()> {
 
 /// The value of a real literal: `1.5`, `3.14159_26`, `1.234e-6`, `1.0E+3`.
 pub(crate) fn parse_real(text: &str) -> LitResult<f64> {
-    let bad = || (Code::InvalidNumber, format!("`{text}` is not a valid real number"));
+    let bad = || (Code::InvalidNumber, msg!(InvalidReal, text = text));
     let (mantissa, _) = text.split_once(['e', 'E']).unwrap_or((text, ""));
     for part in mantissa.split('.') {
         check_underscores(part).map_err(|_| bad())?;
@@ -145,12 +138,7 @@ pub(crate) fn parse_wstring(text: &str) -> LitResult<Vec<u16>> {
             for _ in 0..3 {
                 match chars.next() {
                     Some(h) if h.is_ascii_hexdigit() => hex.push(h),
-                    _ => {
-                        return Err((
-                            Code::InvalidEscape,
-                            format!("`${hex}` is not a valid escape: in a \"…\" string write four hex digits, e.g. `$00C4`"),
-                        ))
-                    }
+                    _ => return Err((Code::InvalidEscape, msg!(InvalidWideEscape, hex = hex))),
                 }
             }
             let unit =
@@ -184,12 +172,7 @@ fn simple_escape(e: char) -> Option<u8> {
 }
 
 fn escape_error(found: &str) -> LitError {
-    (
-        Code::InvalidEscape,
-        format!(
-            "`{found}` is not a valid escape: use `$$`, `$'`, `$\"`, `$L`, `$N`, `$R`, `$T`, `$P` or `$` with two hex digits"
-        ),
-    )
+    (Code::InvalidEscape, msg!(InvalidEscape, found = found))
 }
 
 /// The text after the first `#` (the whole text if there is none).
@@ -200,8 +183,7 @@ fn after_hash(text: &str) -> &str {
 /// The value in nanoseconds of a duration literal with its prefix: `T#5d14h12m18s3.5ms`.
 pub(crate) fn parse_duration(text: &str) -> LitResult<i64> {
     let body = after_hash(text);
-    let bad =
-        |why: &str| (Code::InvalidTimeLiteral, format!("`{text}` is not a valid duration: {why}"));
+    let bad = |why: Arg| (Code::InvalidTimeLiteral, msg!(InvalidDuration, text = text, why = why));
     let (negative, rest) = match body.as_bytes().first() {
         Some(b'-') => (true, &body[1..]),
         Some(b'+') => (false, &body[1..]),
@@ -209,7 +191,7 @@ pub(crate) fn parse_duration(text: &str) -> LitResult<i64> {
     };
     let rest = rest.trim_start_matches('_');
     if rest.is_empty() {
-        return Err(bad("write a number and a unit, e.g. `T#1s` or `T#1h30m`"));
+        return Err(bad(phrase!(WhyWriteNumberAndUnitT1sOr).into()));
     }
     const UNITS: [(&str, i128, i128); 7] = [
         ("d", NS_PER_DAY, 0),
@@ -231,7 +213,7 @@ pub(crate) fn parse_duration(text: &str) -> LitResult<i64> {
             continue;
         }
         if had_fraction {
-            return Err(bad("only the last unit may have a fraction"));
+            return Err(bad(phrase!(WhyOnlyLastUnitMayHaveFraction).into()));
         }
         // The number.
         let num_start = i;
@@ -240,7 +222,7 @@ pub(crate) fn parse_duration(text: &str) -> LitResult<i64> {
         }
         let int_text = &rest[num_start..i];
         if int_text.is_empty() {
-            return Err(bad("a number must come before each unit"));
+            return Err(bad(phrase!(WhyNumberMustComeBeforeUnit).into()));
         }
         let mut frac_text = "";
         if i < bytes.len() && bytes[i] == b'.' {
@@ -251,7 +233,7 @@ pub(crate) fn parse_duration(text: &str) -> LitResult<i64> {
             }
             frac_text = &rest[f_start..i];
             if frac_text.is_empty() {
-                return Err(bad("a digit must follow the decimal point"));
+                return Err(bad(phrase!(WhyDigitMustFollowDecimalPoint).into()));
             }
             had_fraction = true;
         }
@@ -263,32 +245,34 @@ pub(crate) fn parse_duration(text: &str) -> LitResult<i64> {
         let unit_text = rest[u_start..i].to_ascii_lowercase();
         let Some(unit_index) = UNITS.iter().position(|(u, _, _)| *u == unit_text) else {
             return Err(if unit_text.is_empty() {
-                bad("each number needs a unit (d, h, m, s, ms, us or ns)")
+                bad(phrase!(WhyNumberNeedsUnitDHM).into())
             } else {
-                bad(&format!("`{unit_text}` is not a unit; use d, h, m, s, ms, us or ns"))
+                bad(Arg::Text(format!("`{unit_text}` is not a unit; use d, h, m, s, ms, us or ns")))
             });
         };
         if let Some(prev) = last_unit {
             if unit_index <= prev {
-                return Err(bad("units must go from the largest to the smallest, each once"));
+                return Err(bad(phrase!(WhyUnitsMustGoFromLargestTo).into()));
             }
         }
         let (unit_name, unit_ns, limit) = UNITS[unit_index];
-        let whole = digits_value(int_text).ok_or_else(|| bad("the number is too large"))?;
+        let whole =
+            digits_value(int_text).ok_or_else(|| bad(phrase!(WhyNumberIsTooLarge).into()))?;
         if last_unit.is_some() && whole >= limit {
-            return Err(bad(&format!(
+            return Err(bad(Arg::Text(format!(
                 "`{whole}{unit_name}` is too large after a larger unit (must be below {limit})"
-            )));
+            ))));
         }
-        let mut part = whole.checked_mul(unit_ns).ok_or_else(|| bad("the duration is too long"))?;
+        let mut part =
+            whole.checked_mul(unit_ns).ok_or_else(|| bad(phrase!(WhyDurationIsTooLong).into()))?;
         part += fraction_ns(frac_text, unit_ns);
-        total = total.checked_add(part).ok_or_else(|| bad("the duration is too long"))?;
+        total = total.checked_add(part).ok_or_else(|| bad(phrase!(WhyDurationIsTooLong).into()))?;
         last_unit = Some(unit_index);
     }
     if negative {
         total = -total;
     }
-    i64::try_from(total).map_err(|_| bad("the duration is too long (at most about 292 years)"))
+    i64::try_from(total).map_err(|_| bad(phrase!(WhyDurationIsTooLongAtMost).into()))
 }
 
 /// Decimal digits with `_` separators as a number (None when absurdly long).
@@ -336,8 +320,8 @@ fn days_in_month(year: i64, month: i64) -> i64 {
     }
 }
 
-fn date_error(text: &str, why: &str) -> LitError {
-    (Code::InvalidDateLiteral, format!("`{text}` is not a valid date or time: {why}"))
+fn date_error(text: &str, why: impl Into<Arg>) -> LitError {
+    (Code::InvalidDateLiteral, msg!(InvalidDate, text = text, why = why.into()))
 }
 
 /// A field of digits (with `_`), at most 9 digits.
@@ -353,16 +337,16 @@ fn field(s: &str) -> Option<i64> {
 fn date_days(full: &str, body: &str) -> LitResult<i64> {
     let parts: Vec<&str> = body.split('-').collect();
     let [y, m, d] = parts.as_slice() else {
-        return Err(date_error(full, "write the date as year-month-day, e.g. `D#2006-03-20`"));
+        return Err(date_error(full, phrase!(WhyWriteDateAsYearMonthDay)));
     };
     let (Some(year), Some(month), Some(day)) = (field(y), field(m), field(d)) else {
-        return Err(date_error(full, "write the date as year-month-day, e.g. `D#2006-03-20`"));
+        return Err(date_error(full, phrase!(WhyWriteDateAsYearMonthDay)));
     };
     if !(1..=12).contains(&month) {
-        return Err(date_error(full, &format!("there is no month {month}")));
+        return Err(date_error(full, format!("there is no month {month}")));
     }
     if day < 1 || day > days_in_month(year, month) {
-        return Err(date_error(full, &format!("month {month} of {year} has no day {day}")));
+        return Err(date_error(full, format!("month {month} of {year} has no day {day}")));
     }
     Ok(days_from_civil(year, month, day))
 }
@@ -373,39 +357,31 @@ fn daytime_ns(full: &str, body: &str) -> LitResult<i64> {
     let (h, m, s) = match parts.as_slice() {
         [h, m, s] => (*h, *m, *s),
         [h, m] => (*h, *m, "0"),
-        _ => {
-            return Err(date_error(
-                full,
-                "write the time as hours:minutes:seconds, e.g. `10:42:23.78`",
-            ))
-        }
+        _ => return Err(date_error(full, phrase!(WhyWriteTimeAsHoursMinutesSeconds))),
     };
     let (sec_text, frac_text) = s.split_once('.').unwrap_or((s, ""));
     let (Some(hour), Some(minute), Some(second)) = (field(h), field(m), field(sec_text)) else {
-        return Err(date_error(
-            full,
-            "write the time as hours:minutes:seconds, e.g. `10:42:23.78`",
-        ));
+        return Err(date_error(full, phrase!(WhyWriteTimeAsHoursMinutesSeconds)));
     };
     let frac_ok = frac_text.chars().all(|c| c.is_ascii_digit() || c == '_')
         && (!s.contains('.') || frac_text.chars().any(|c| c.is_ascii_digit()));
     if !frac_ok {
-        return Err(date_error(full, "the seconds are not a number"));
+        return Err(date_error(full, phrase!(WhySecondsAreNotNumber)));
     }
     if hour > 23 {
-        return Err(date_error(full, &format!("there is no hour {hour} (0–23)")));
+        return Err(date_error(full, format!("there is no hour {hour} (0–23)")));
     }
     if minute > 59 {
-        return Err(date_error(full, &format!("there is no minute {minute} (0–59)")));
+        return Err(date_error(full, format!("there is no minute {minute} (0–59)")));
     }
     if second > 59 {
-        return Err(date_error(full, &format!("there is no second {second} (0–59)")));
+        return Err(date_error(full, format!("there is no second {second} (0–59)")));
     }
     let ns = i128::from(hour) * NS_PER_H
         + i128::from(minute) * NS_PER_MIN
         + i128::from(second) * NS_PER_S
         + fraction_ns(frac_text, NS_PER_S);
-    i64::try_from(ns).map_err(|_| date_error(full, "out of range"))
+    i64::try_from(ns).map_err(|_| date_error(full, phrase!(WhyOutOfRange)))
 }
 
 /// Microseconds in a day: DATE and DT count microseconds since 1970-01-01 (`values::arith`).
@@ -417,7 +393,7 @@ fn days_to_us(full: &str, days: i64) -> LitResult<i64> {
     const FIRST: i64 = -719_162; // 0001-01-01
     const LAST: i64 = 2_932_896; // 9999-12-31
     if !(FIRST..=LAST).contains(&days) {
-        return Err(date_error(full, "dates must lie between 0001-01-01 and 9999-12-31"));
+        return Err(date_error(full, phrase!(WhyDatesMustLieBetween000101)));
     }
     Ok(days * US_PER_DAY)
 }
@@ -440,7 +416,7 @@ pub(crate) fn parse_date_time(text: &str) -> LitResult<i64> {
     // The date has exactly two `-`; the third separates the time of day.
     let split = body.match_indices('-').nth(2).map(|(i, _)| i);
     let Some(split) = split else {
-        return Err(date_error(text, "write date and time as `DT#2006-03-20-10:42:23`"));
+        return Err(date_error(text, phrase!(WhyWriteDateAndTimeAsDt20060320104223)));
     };
     let days = date_days(text, &body[..split])?;
     let tod = daytime_ns(text, &body[split + 1..])?;
@@ -453,15 +429,14 @@ pub(crate) type ParsedAddress = (AddressArea, AddressSize, Vec<u32>);
 
 /// `%IX0.0`, `%QW4`, `%MD10`, `%I0.0`, `%I*` → area, size and path.
 pub(crate) fn parse_direct_address(text: &str) -> LitResult<ParsedAddress> {
-    let bad =
-        |why: &str| (Code::InvalidDirectAddress, format!("`{text}` is not a valid address: {why}"));
+    let bad = |why: Arg| (Code::InvalidDirectAddress, msg!(InvalidAddress, text = text, why = why));
     let rest = text.strip_prefix('%').unwrap_or(text);
     let mut chars = rest.chars();
     let area = match chars.next().map(|c| c.to_ascii_uppercase()) {
         Some('I') => AddressArea::Input,
         Some('Q') => AddressArea::Output,
         Some('M') => AddressArea::Memory,
-        _ => return Err(bad("it must start with `%I`, `%Q` or `%M`")),
+        _ => return Err(bad(phrase!(WhyItMustStartWithIQ).into())),
     };
     let rest = &rest[1..];
     let (size, rest) = match rest.chars().next().map(|c| c.to_ascii_uppercase()) {
@@ -471,7 +446,7 @@ pub(crate) fn parse_direct_address(text: &str) -> LitResult<ParsedAddress> {
         Some('D') => (AddressSize::DWord, &rest[1..]),
         Some('L') => (AddressSize::LWord, &rest[1..]),
         Some(c) if c.is_ascii_digit() || c == '*' => (AddressSize::Bit, rest),
-        _ => return Err(bad("the size letter must be X, B, W, D or L")),
+        _ => return Err(bad(phrase!(WhySizeLetterMustBeXB).into())),
     };
     if rest == "*" {
         return Ok((area, size, Vec::new()));
@@ -479,9 +454,9 @@ pub(crate) fn parse_direct_address(text: &str) -> LitResult<ParsedAddress> {
     let mut path = Vec::new();
     for part in rest.split('.') {
         if part.is_empty() || !part.chars().all(|c| c.is_ascii_digit()) {
-            return Err(bad("write numbers separated by dots after the letters, e.g. `%IX0.3`"));
+            return Err(bad(phrase!(WhyWriteNumbersSeparatedByDotsAfter).into()));
         }
-        path.push(part.parse::<u32>().map_err(|_| bad("a number is too large"))?);
+        path.push(part.parse::<u32>().map_err(|_| bad(phrase!(WhyNumberIsTooLarge2).into()))?);
     }
     Ok((area, size, path))
 }
@@ -549,22 +524,23 @@ pub(crate) fn apply_prefix(
     class: PrefixClass,
     value: LiteralValue,
 ) -> LitResult<LiteralValue> {
-    let mismatch =
-        |what: &str| (Code::InvalidTypedLiteral, format!("`{prefix}#` needs {what} after it"));
+    let mismatch = |what: Arg| {
+        (Code::InvalidTypedLiteral, msg!(TypedLiteralNeeds, prefix = prefix, what = what))
+    };
     match (class, value) {
         (PrefixClass::Integer, v @ LiteralValue::Int(_)) => Ok(v),
-        (PrefixClass::Integer, _) => Err(mismatch("an integer")),
+        (PrefixClass::Integer, _) => Err(mismatch(phrase!(WhatInteger).into())),
         (PrefixClass::Real, v @ LiteralValue::Real(_)) => Ok(v),
         (PrefixClass::Real, LiteralValue::Int(i)) => Ok(LiteralValue::Real(i as f64)),
-        (PrefixClass::Real, _) => Err(mismatch("a number")),
+        (PrefixClass::Real, _) => Err(mismatch(phrase!(WhatNumber).into())),
         (PrefixClass::Bool, v @ LiteralValue::Bool(_)) => Ok(v),
         (PrefixClass::Bool, LiteralValue::Int(0)) => Ok(LiteralValue::Bool(false)),
         (PrefixClass::Bool, LiteralValue::Int(1)) => Ok(LiteralValue::Bool(true)),
-        (PrefixClass::Bool, _) => Err(mismatch("`TRUE`, `FALSE`, `0` or `1`")),
+        (PrefixClass::Bool, _) => Err(mismatch(phrase!(WhatTrueFalse0Or1).into())),
         (PrefixClass::String, v @ LiteralValue::String(_)) => Ok(v),
-        (PrefixClass::String, _) => Err(mismatch("a string in single quotes '…'")),
+        (PrefixClass::String, _) => Err(mismatch(phrase!(WhatStringInSingleQuotes).into())),
         (PrefixClass::WString, v @ LiteralValue::WString(_)) => Ok(v),
-        (PrefixClass::WString, _) => Err(mismatch("a string in double quotes \"…\"")),
+        (PrefixClass::WString, _) => Err(mismatch(phrase!(WhatStringInDoubleQuotes).into())),
     }
 }
 

@@ -413,7 +413,7 @@ pub fn Editor() -> impl IntoView {
                 let Some((line, ..)) = d.st() else { continue };
                 let li = info.entry(line as usize).or_default();
                 li.diag = Some(li.diag.unwrap_or(false) || d.error);
-                li.messages.push(format!("{}  {}", d.code, d.message));
+                li.messages.push(format!("{}  {}", d.code, d.message()));
             }
         });
         let marked = state.marked_line.get().map(|l| l as usize);

@@ -121,7 +121,7 @@ pub fn Problems() -> impl IntoView {
             <ul class="ed-problems" aria-label=t(K::editor_problems)>
                 {ds.into_iter().map(|d| {
                     let class = if d.error { "ed-problem ed-problem-err" } else { "ed-problem ed-problem-warn" };
-                    let label = format!("{}  {}  {}", d.place_label(), d.code, d.message);
+                    let label = format!("{}  {}  {}", d.place_label(), d.code, d.message());
                     let site = d.site.clone();
                     let fixes = fixes(state, &d);
                     let help = format!("problems.html#{}", d.code);
@@ -175,7 +175,7 @@ fn fixes(state: AppState, d: &DiagView) -> Vec<Fix> {
                 out.push(Fix::StReplace { span: *span, name: name.clone(), with: with.clone() });
             }
             // Only a name that is simply not declared (not a value two enumerations share).
-            let undeclared = d.message.starts_with(&format!("`{name}` is not declared"));
+            let undeclared = d.english.starts_with(&format!("`{name}` is not declared"));
             if d.code == "E0100" && undeclared && declarable_at(state, *span) {
                 let ty = d.implied_type.clone().unwrap_or_else(|| "BOOL".to_string());
                 out.push(Fix::StDeclare { span: *span, name, ty });
@@ -183,7 +183,7 @@ fn fixes(state: AppState, d: &DiagView) -> Vec<Fix> {
         }
         Site::Ladder { pou, cell: Some((r, row, col)) } if d.code == "E0418" => {
             let at = CellRef::new(*r, *row, *col);
-            let Some(name) = d.message.split('`').nth(1).map(str::to_string) else { return out };
+            let Some(name) = d.english.split('`').nth(1).map(str::to_string) else { return out };
             state.project.with_untracked(|p| {
                 let Some(lp) = p.ladder.iter().find(|l| l.name.eq_ignore_ascii_case(pou)) else {
                     return;

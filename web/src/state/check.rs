@@ -17,8 +17,11 @@ pub struct DiagView {
     pub error: bool,
     /// Stable code (`E0100`).
     pub code: String,
-    /// The message (without its location).
-    pub message: String,
+    /// The message in English (without its location): [`DiagView::message`] shows it in
+    /// the page's language.
+    pub english: String,
+    /// The message as data, when the stage that found it has made it so.
+    pub msg: Option<Box<plc_core::diagnostics::Message>>,
     /// Where the problem is.
     pub site: Site,
     /// The declared name an unknown one probably misspells (`Replace with NAME`).
@@ -32,10 +35,19 @@ impl DiagView {
         DiagView {
             error: d.severity == Severity::Error,
             code: d.code.as_str().to_string(),
-            message: d.message.clone(),
+            english: d.message.clone(),
+            msg: d.msg.clone(),
             site: d.site.clone(),
             suggestion: d.suggestion().map(str::to_string),
             implied_type: d.implied_type().map(str::to_string),
+        }
+    }
+
+    /// The message in the language shown (English where it is not data yet).
+    pub fn message(&self) -> String {
+        match &self.msg {
+            Some(m) => crate::i18n::message_text(m, self.suggestion.as_deref(), &self.english),
+            None => self.english.clone(),
         }
     }
 

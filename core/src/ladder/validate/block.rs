@@ -44,7 +44,11 @@ struct Sink<'a> {
 
 impl Sink<'_> {
     /// An undeclared operand's error, with `did you mean NAME?` when there is a guess.
-    fn undeclared(&mut self, message: String, suggestion: Option<String>) {
+    fn undeclared(
+        &mut self,
+        message: impl Into<crate::diagnostics::Said>,
+        suggestion: Option<String>,
+    ) {
         let At { rung, row, col } = self.at;
         let mut d = LadderDiagnostic::error(Code::LadderUndeclaredOperand, rung, row, col, message);
         if let Some(s) = suggestion {
@@ -54,12 +58,12 @@ impl Sink<'_> {
         self.out.push(d);
     }
 
-    fn error(&mut self, code: Code, message: String) {
+    fn error(&mut self, code: Code, message: impl Into<crate::diagnostics::Said>) {
         let At { rung, row, col } = self.at;
         self.out.push(LadderDiagnostic::error(code, rung, row, col, message));
     }
 
-    fn error_at(&mut self, code: Code, row: usize, message: String) {
+    fn error_at(&mut self, code: Code, row: usize, message: impl Into<crate::diagnostics::Said>) {
         let At { rung, col, .. } = self.at;
         self.out.push(LadderDiagnostic::error(code, rung, row, col, message));
     }
@@ -136,7 +140,7 @@ pub(crate) fn validate_block(
     let mut sink = Sink { at, out };
     let name = b.type_name.trim();
     if name.is_empty() {
-        sink.error(Code::LadderMissingOperand, "this block has no type".into());
+        sink.error(Code::LadderMissingOperand, crate::msg!(BlockHasNoType));
         return;
     }
     let std_fb = standard_fb_power(name).is_some();
@@ -163,10 +167,18 @@ pub(crate) fn validate_block(
     match b.instance.as_deref().map(str::trim) {
         Some(i) if !i.is_empty() => {
             if !is_operand(i) {
-                let msg = format!("the instance `{i}` of this {name} is not a variable name");
+                let msg = crate::msg!(
+                    InstanceNotVariableName,
+                    i = i.to_string(),
+                    name = name.to_string()
+                );
                 sink.error(Code::LadderBadOperand, msg);
             } else if is_function && ctx.is_some() {
-                let msg = format!("{name} is a FUNCTION: it has no instance, remove `{i}`");
+                let msg = crate::msg!(
+                    FunctionHasNoInstanceRemove,
+                    name = name.to_string(),
+                    i = i.to_string()
+                );
                 sink.error(Code::LadderInstanceType, msg);
             } else if let Some(c) = ctx {
                 if !undeclared(c, i, &format!("the instance of this {name}"), &mut sink) {
@@ -214,20 +226,22 @@ fn check_pins(
     for p in &b.inputs {
         let pin = p.name.trim();
         if pin.is_empty() {
-            sink.error(Code::LadderMissingOperand, format!("an input of this {name} has no name"));
+            sink.error(
+                Code::LadderMissingOperand,
+                crate::msg!(InputHasNoName, name = name.to_string()),
+            );
             continue;
         }
         if seen.iter().any(|s| s.eq_ignore_ascii_case(pin)) {
             sink.error(
                 Code::LadderUnknownPin,
-                format!("input {pin} of this {name} is given twice"),
+                crate::msg!(InputGivenTwice, pin = pin.to_string(), name = name.to_string()),
             );
         }
         seen.push(pin.to_string());
         if pin.eq_ignore_ascii_case(power_in) {
-            let msg = format!(
-                "input {pin} of this {name} takes the rung's power; it cannot also be a pin"
-            );
+            let msg =
+                crate::msg!(InputTakesRungSPower, pin = pin.to_string(), name = name.to_string());
             sink.error(Code::LadderUnknownPin, msg);
             continue;
         }
@@ -251,7 +265,12 @@ fn check_pins(
                     (None, Some((fixed, _))) => fixed.iter().map(|s| s.to_string()).collect(),
                     _ => Vec::new(),
                 };
-                let msg = format!("{name} has no input {pin} (its inputs: {})", list.join(", "));
+                let msg = crate::msg!(
+                    HasNoInputInputs,
+                    name = name.to_string(),
+                    pin = pin.to_string(),
+                    join = (list.join(", ")).to_string()
+                );
                 sink.error(Code::LadderUnknownPin, msg);
                 continue;
             }
@@ -262,23 +281,38 @@ fn check_pins(
                 let row = sink.at.row + w as usize;
                 let report_row = if row < rows { row } else { sink.at.row };
                 if w == 0 || w >= height || row >= rows {
-                    let msg = format!(
-                        "input {pin} of this {name} is wired to block row {w}, but the block has rows 1 to {} below its top",
-                        height - 1
+                    let msg = crate::msg!(
+                        InputWiredBlockRowBut,
+                        pin = pin.to_string(),
+                        name = name.to_string(),
+                        w = w.to_string(),
+                        height = (height - 1).to_string()
                     );
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 } else if wired_rows.contains(&w) {
-                    let msg = format!(
-                        "input {pin} of this {name} shares block row {w} with another wired input"
+                    let msg = crate::msg!(
+                        InputSharesBlockRowAnother,
+                        pin = pin.to_string(),
+                        name = name.to_string(),
+                        w = w.to_string()
                     );
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 } else if !p.operand.trim().is_empty() {
-                    let msg = format!("input {pin} of this {name} is wired to a contact network and also has the operand `{}`", p.operand.trim());
+                    let msg = crate::msg!(
+                        InputWiredContactNetworkAlso,
+                        pin = pin.to_string(),
+                        name = name.to_string(),
+                        trim = (p.operand.trim()).to_string()
+                    );
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 } else if ty.as_ref().is_some_and(|t| !t.is_bool()) {
-                    let msg = format!(
-                        "input {pin} of this {name} is {}: only a BOOL input can be wired to contacts",
-                        article(&ty.as_ref().map(ToString::to_string).unwrap_or_default())
+                    let msg = crate::msg!(
+                        InputOnlyBoolInputCan,
+                        pin = pin.to_string(),
+                        name = name.to_string(),
+                        article =
+                            (article(&ty.as_ref().map(ToString::to_string).unwrap_or_default()))
+                                .to_string()
                     );
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 }
@@ -300,7 +334,12 @@ fn check_pins(
                     (Some(t), _) => t.outputs.iter().map(|p| p.name.clone()).collect(),
                     _ => vec!["OUT".to_string()],
                 };
-                let msg = format!("{name} has no output {pin} (its outputs: {})", list.join(", "));
+                let msg = crate::msg!(
+                    HasNoOutputOutputs,
+                    name = name.to_string(),
+                    pin = pin.to_string(),
+                    join = (list.join(", ")).to_string()
+                );
                 sink.error(Code::LadderUnknownPin, msg);
                 continue;
             }
@@ -322,7 +361,12 @@ fn check_pins(
             let list: Vec<String> = typed
                 .map(|t| t.in_outs.iter().map(|p| p.name.clone()).collect())
                 .unwrap_or_default();
-            let msg = format!("{name} has no in-out {pin} (its in-outs: {})", list.join(", "));
+            let msg = crate::msg!(
+                HasNoOutOuts,
+                name = name.to_string(),
+                pin = pin.to_string(),
+                join = (list.join(", ")).to_string()
+            );
             sink.error(Code::LadderUnknownPin, msg);
             continue;
         }
@@ -347,7 +391,10 @@ fn check_pins(
             let given = f.eq_ignore_ascii_case(power_in)
                 || b.inputs.iter().any(|p| p.name.trim().eq_ignore_ascii_case(f));
             if !given {
-                sink.error(Code::LadderMissingPin, format!("input {f} of this {name} is missing"));
+                sink.error(
+                    Code::LadderMissingPin,
+                    crate::msg!(InputMissing, f = f.to_string(), name = name.to_string()),
+                );
             }
         }
     }
@@ -366,14 +413,26 @@ fn operand_declared<'c>(
     let pin = p.name.trim();
     let operand = p.operand.trim();
     if operand.is_empty() {
-        let msg = format!("{what} {pin} of this {name} has no operand");
+        let msg = crate::msg!(
+            HasNoOperand2,
+            what = what.to_string(),
+            pin = pin.to_string(),
+            name = name.to_string()
+        );
         sink.error(Code::LadderMissingOperand, msg);
         return None;
     }
     let (ok, kind) =
         if place { (is_operand(operand), "variable") } else { (is_value(operand), "value") };
     if !ok {
-        let msg = format!("{what} {pin} of this {name}: `{operand}` is not a {kind}");
+        let msg = crate::msg!(
+            Not,
+            what = what.to_string(),
+            pin = pin.to_string(),
+            name = name.to_string(),
+            operand = operand.to_string(),
+            kind = kind.to_string()
+        );
         sink.error(Code::LadderBadOperand, msg);
         return None;
     }
@@ -398,10 +457,14 @@ fn check_value(
     let Some(c) = operand_declared(p, what, name, false, ctx, sink) else { return };
     if let Some(t) = ty {
         if let Some((false, found)) = c.catalog.value_fits(&c.scope, operand, t) {
-            let msg = format!(
-                "{what} {pin} of this {name} needs {}, but `{operand}` is {}",
-                article(&t.to_string()),
-                article(&found)
+            let msg = crate::msg!(
+                NeedsBut,
+                what = what.to_string(),
+                pin = pin.to_string(),
+                name = name.to_string(),
+                article = (article(&t.to_string())).to_string(),
+                operand = operand.to_string(),
+                article2 = (article(&found)).to_string()
             );
             sink.error(Code::LadderPinType, msg);
         }
@@ -424,10 +487,14 @@ fn check_place(
     let (Some(t), Some(v)) = (ty, c.catalog.place_type(&c.scope, operand)) else { return };
     let ok = if exact { t == v } else { crate::ladder::catalog::fits(&t, &v) };
     if !ok {
-        let msg = format!(
-            "{what} {pin} of this {name} is {}, but `{operand}` is {}",
-            article(&t.to_string()),
-            article(&v.to_string())
+        let msg = crate::msg!(
+            But,
+            what = what.to_string(),
+            pin = pin.to_string(),
+            name = name.to_string(),
+            article = (article(&t.to_string())).to_string(),
+            operand = operand.to_string(),
+            article2 = (article(&v.to_string())).to_string()
         );
         sink.error(Code::LadderPinType, msg);
     }
@@ -457,9 +524,7 @@ fn check_power_pins(
     let po = b.power_output();
     let enable = b.has_enable();
     if po.eq_ignore_ascii_case("ENO") && !enable {
-        let msg = format!(
-            "ENO carries power only when power enters at EN; name the BOOL output of this {name} that carries power instead"
-        );
+        let msg = crate::msg!(EnoCarriesPowerOnlyWhen, name = name.to_string());
         sink.error(Code::LadderBadPowerPin, msg);
         return;
     }
@@ -469,9 +534,11 @@ fn check_power_pins(
         && standard_fb_power(name).is_some_and(|(i, _)| !i.eq_ignore_ascii_case(pi))
     {
         // A standard FB may take power at EN instead of its own input, but nowhere else.
-        let msg = format!(
-            "the power of a {name} enters at {} or EN, not at {pi}",
-            standard_fb_power(name).map_or("", |(i, _)| i)
+        let msg = crate::msg!(
+            PowerEntersEnNot,
+            name = name.to_string(),
+            standard_fb_power = (standard_fb_power(name).map_or("", |(i, _)| i)).to_string(),
+            pi = pi.to_string()
         );
         sink.error(Code::LadderBadPowerPin, msg);
     }

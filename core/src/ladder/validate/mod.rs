@@ -20,8 +20,11 @@ use block::{validate_block, At, Context};
 pub struct LadderDiagnostic {
     /// The stable problem code.
     pub code: Code,
-    /// A message a student understands.
+    /// A message a student understands (English).
     pub message: String,
+    /// The message as data, to be shown in any language.
+    #[serde(skip)]
+    pub msg: crate::diagnostics::Message,
     /// 0-based rung index.
     pub rung: usize,
     /// 0-based row.
@@ -37,14 +40,28 @@ pub struct LadderDiagnostic {
 }
 
 impl LadderDiagnostic {
-    fn error(code: Code, rung: usize, row: usize, column: usize, message: String) -> Self {
+    fn error(
+        code: Code,
+        rung: usize,
+        row: usize,
+        column: usize,
+        message: impl Into<crate::diagnostics::Said>,
+    ) -> Self {
         let severity = Severity::Error;
-        LadderDiagnostic { code, message, rung, row, column, severity, suggestion: None }
+        let crate::diagnostics::Said { message: msg, english: message } = message.into();
+        LadderDiagnostic { code, message, msg, rung, row, column, severity, suggestion: None }
     }
 
-    fn warning(code: Code, rung: usize, row: usize, column: usize, message: String) -> Self {
+    fn warning(
+        code: Code,
+        rung: usize,
+        row: usize,
+        column: usize,
+        message: impl Into<crate::diagnostics::Said>,
+    ) -> Self {
         let severity = Severity::Warning;
-        LadderDiagnostic { code, message, rung, row, column, severity, suggestion: None }
+        let crate::diagnostics::Said { message: msg, english: message } = message.into();
+        LadderDiagnostic { code, message, msg, rung, row, column, severity, suggestion: None }
     }
 
     /// Whether this is an error.
@@ -132,7 +149,12 @@ fn validate_rung(
                 ri,
                 r,
                 0,
-                format!("row {} has {} cells but the rung has {cols} columns", r + 1, row.len()),
+                crate::msg!(
+                    RowHasCellsButRung,
+                    r = (r + 1).to_string(),
+                    row = (row.len()).to_string(),
+                    cols = cols.to_string()
+                ),
             ));
             return;
         }
@@ -150,7 +172,7 @@ fn validate_rung(
                     ri,
                     r,
                     c,
-                    "nothing may follow a coil, jump or return in its row".into(),
+                    crate::msg!(NothingMayFollowCoilJump),
                 ));
                 continue;
             }
@@ -164,7 +186,7 @@ fn validate_rung(
                             ri,
                             r,
                             c,
-                            format!("this {what} has no operand"),
+                            crate::msg!(HasNoOperand, what = what.to_string()),
                         ));
                     } else if !is_operand(operand) {
                         out.push(LadderDiagnostic::error(
@@ -172,8 +194,9 @@ fn validate_rung(
                             ri,
                             r,
                             c,
-                            format!(
-                                "`{operand}` is not a variable, member, element or direct address"
+                            crate::msg!(
+                                NotVariableMemberElementDirect,
+                                operand = operand.to_string()
                             ),
                         ));
                     } else if let Some(ctx) = ctx {
@@ -200,12 +223,12 @@ fn validate_rung(
                                     ri,
                                     r,
                                     c,
-                                    format!(
-                                        "`{}` is already written by the coil at rung {}, row {}, column {}",
-                                        operand.trim(),
-                                        pr + 1,
-                                        prow + 1,
-                                        pcol + 1
+                                    crate::msg!(
+                                        AlreadyWrittenCoilRungRow,
+                                        trim = (operand.trim()).to_string(),
+                                        pr = (pr + 1).to_string(),
+                                        prow = (prow + 1).to_string(),
+                                        pcol = (pcol + 1).to_string()
                                     ),
                                 ));
                             } else if !key.is_empty() {
@@ -224,7 +247,11 @@ fn validate_rung(
                             ri,
                             r,
                             c,
-                            format!("this {} is {h} rows high and leaves the grid", b.type_name),
+                            crate::msg!(
+                                RowsHighLeavesGrid,
+                                type_name = b.type_name.to_string(),
+                                h = h.to_string()
+                            ),
                         ));
                     }
                 }
@@ -241,8 +268,7 @@ fn validate_rung(
                             ri,
                             r,
                             c,
-                            "this cell is marked as part of a block, but no block above covers it"
-                                .into(),
+                            crate::msg!(CellMarkedPartBlockBut),
                         ));
                     }
                 }
@@ -280,7 +306,7 @@ fn validate_rung(
                 ri,
                 r,
                 c,
-                "an edge coil must be the only coil of its rung".into(),
+                crate::msg!(EdgeCoilMustOnlyCoil),
             ));
         }
     }
@@ -291,17 +317,11 @@ fn validate_rung(
         if !net.powered[e.input] {
             open = true;
             let what = match e.element {
-                Element::Coil { .. } => "this coil is not reached from the left rail",
-                Element::Block(_) => "this block is not reached from the left rail",
-                _ => "open circuit: no power path from the left rail reaches this element",
+                Element::Coil { .. } => crate::msg!(CoilNotReached),
+                Element::Block(_) => crate::msg!(BlockNotReached),
+                _ => crate::msg!(OpenCircuit),
             };
-            out.push(LadderDiagnostic::error(
-                Code::LadderOpenCircuit,
-                ri,
-                e.row,
-                e.col,
-                what.into(),
-            ));
+            out.push(LadderDiagnostic::error(Code::LadderOpenCircuit, ri, e.row, e.col, what));
             continue;
         }
         match e.element {
@@ -312,7 +332,7 @@ fn validate_rung(
                     ri,
                     e.row,
                     e.col,
-                    "open circuit: this element leads nowhere (end the row with a coil)".into(),
+                    crate::msg!(OpenCircuitElementLeadsNowhere),
                 ));
             }
             Element::Coil { .. } if !net.conditioned[e.input] => out.push(LadderDiagnostic::error(
@@ -320,15 +340,14 @@ fn validate_rung(
                 ri,
                 e.row,
                 e.col,
-                "this coil has no condition before it: put a contact between the rail and the coil"
-                    .into(),
+                crate::msg!(CoilHasNoCondition),
             )),
             Element::Block(b) if !net.conditioned[e.input] => out.push(LadderDiagnostic::warning(
                 Code::LadderEnableFromRail,
                 ri,
                 e.row,
                 e.col,
-                format!("the enable of this {} is tied straight to the rail", b.type_name),
+                crate::msg!(EnableTiedStraightRail, type_name = b.type_name.to_string()),
             )),
             _ => {}
         }
@@ -343,9 +362,10 @@ fn validate_rung(
                 ri,
                 p.row,
                 p.col,
-                format!(
-                    "input {pin} of this {} is wired to this row, but no power path from the left rail reaches it",
-                    b.type_name
+                crate::msg!(
+                    InputWiredRowButNo,
+                    pin = pin.to_string(),
+                    type_name = b.type_name.to_string()
                 ),
             ));
         } else if !net.conditioned[p.node] {
@@ -354,9 +374,10 @@ fn validate_rung(
                 ri,
                 p.row,
                 p.col,
-                format!(
-                    "input {pin} of this {} is tied straight to the rail, so it is always TRUE",
-                    b.type_name
+                crate::msg!(
+                    InputTiedStraightRailSo,
+                    pin = pin.to_string(),
+                    type_name = b.type_name.to_string()
                 ),
             ));
         }
@@ -371,7 +392,7 @@ fn validate_rung(
                 ri,
                 r,
                 c,
-                "this branch starts or ends inside another branch: the network is ambiguous".into(),
+                crate::msg!(BranchStartsEndsInsideAnother),
             ));
         }
     }

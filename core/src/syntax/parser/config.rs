@@ -8,6 +8,7 @@
 
 use super::{Fail, PResult, Parser};
 use crate::diagnostics::Code;
+use crate::phrase;
 use crate::syntax::ast::*;
 use crate::syntax::lexer::{Token, TokenKind};
 
@@ -237,7 +238,7 @@ impl Parser<'_> {
             path.push(self.name("a name after `.`")?);
         }
         let location = if self.eat(TokenKind::At).is_some() {
-            let tok = self.expect(TokenKind::Direct, "an address such as `%QX0.3` after AT")?;
+            let tok = self.expect(TokenKind::Direct, phrase!(ExpectAddressQx03AfterAt))?;
             Some(self.direct_address(tok).ok_or(Fail)?)
         } else {
             None
@@ -253,7 +254,7 @@ impl Parser<'_> {
             Some(_) => Some(self.parse_initializer()?),
             None => None,
         };
-        self.expect(TokenKind::Semicolon, "`;` after the entry")?;
+        self.expect(TokenKind::Semicolon, phrase!(ExpectSemicolonAfterEntry))?;
         Ok(ConfigVar { path, location, ty, init, span: start.to(self.prev_span()) })
     }
 
@@ -280,10 +281,10 @@ impl Parser<'_> {
         let start = self.bump().span;
         let name = self.name("the task's name after `TASK`")?;
         let mut task = TaskDecl { name, single: None, interval: None, priority: None, span: start };
-        self.expect(TokenKind::LParen, "`(` and the task's INTERVAL, PRIORITY or SINGLE")?;
+        self.expect(TokenKind::LParen, phrase!(ExpectParenAndTaskSIntervalPriorityOr))?;
         loop {
             let key = self.name("`INTERVAL`, `PRIORITY` or `SINGLE`")?;
-            self.expect(TokenKind::Assign, "`:=`")?;
+            self.expect(TokenKind::Assign, phrase!(ExpectAssign))?;
             let value = self.parse_expr()?;
             let slot = match key.key().as_str() {
                 "SINGLE" => &mut task.single,
@@ -310,8 +311,8 @@ impl Parser<'_> {
                 break;
             }
         }
-        self.expect(TokenKind::RParen, "`,` or `)`")?;
-        self.expect(TokenKind::Semicolon, "`;` after the task")?;
+        self.expect(TokenKind::RParen, phrase!(ExpectCommaOrCloseParen))?;
+        self.expect(TokenKind::Semicolon, phrase!(ExpectSemicolonAfterTask))?;
         task.span = start.to(self.prev_span());
         Ok(task)
     }
@@ -329,7 +330,7 @@ impl Parser<'_> {
         } else {
             None
         };
-        self.expect(TokenKind::Colon, "`:` and the PROGRAM type")?;
+        self.expect(TokenKind::Colon, phrase!(ExpectColonAndProgramType))?;
         let type_name = self.name("the PROGRAM type")?;
         let mut connections = Vec::new();
         if self.eat(TokenKind::LParen).is_some() && self.eat(TokenKind::RParen).is_none() {
@@ -338,7 +339,7 @@ impl Parser<'_> {
                 let output = match self.peek() {
                     TokenKind::Assign => false,
                     TokenKind::Arrow => true,
-                    _ => return Err(self.expected("`:=` or `=>`")),
+                    _ => return Err(self.expected(phrase!(ExpectAssignOrArrow))),
                 };
                 self.bump();
                 let variable = self.parse_expr()?;
@@ -348,9 +349,9 @@ impl Parser<'_> {
                     break;
                 }
             }
-            self.expect(TokenKind::RParen, "`,` or `)`")?;
+            self.expect(TokenKind::RParen, phrase!(ExpectCommaOrCloseParen))?;
         }
-        self.expect(TokenKind::Semicolon, "`;` after the program instance")?;
+        self.expect(TokenKind::Semicolon, phrase!(ExpectSemicolonAfterProgramInstance))?;
         Ok(ProgramDecl { name, task, type_name, connections, span: start.to(self.prev_span()) })
     }
 }

@@ -5,6 +5,7 @@
 
 use super::{is_block_end, is_var_keyword, Fail, PResult, Parser};
 use crate::diagnostics::{Code, Span};
+use crate::phrase;
 use crate::syntax::ast::*;
 use crate::syntax::lexer::{Token, TokenKind};
 
@@ -60,7 +61,7 @@ impl Parser<'_> {
                     break;
                 }
                 _ => {
-                    self.expected("a variable declaration such as `x : INT;` or `END_VAR`");
+                    self.expected(phrase!(ExpectVariableDeclarationXIntOrEndVar));
                     self.skip_declaration(TokenKind::EndVar);
                 }
             }
@@ -106,7 +107,7 @@ impl Parser<'_> {
         let mut names = Vec::new();
         if self.at(TokenKind::Ident) {
             loop {
-                let t = self.expect(TokenKind::Ident, "a variable name")?;
+                let t = self.expect(TokenKind::Ident, phrase!(ExpectVariableName))?;
                 names.push(self.ident(t));
                 if self.eat(TokenKind::Comma).is_none() {
                     break;
@@ -125,10 +126,10 @@ impl Parser<'_> {
         }
         let mut location = None;
         if self.eat(TokenKind::At).is_some() {
-            let tok = self.expect(TokenKind::Direct, "an address such as `%IX0.0` after AT")?;
+            let tok = self.expect(TokenKind::Direct, phrase!(ExpectAddressIx00AfterAt))?;
             location = self.direct_address(tok);
         }
-        self.expect(TokenKind::Colon, "`:` and a type after the name")?;
+        self.expect(TokenKind::Colon, phrase!(ExpectColonAndTypeAfterName))?;
         let ty = self.parse_type_spec()?;
         let init = if self.eat(TokenKind::Assign).is_some() {
             Some(self.parse_initializer()?)
@@ -196,9 +197,10 @@ impl Parser<'_> {
                 }
                 self.bump();
                 let low = self.parse_expr()?;
-                self.expect(TokenKind::DotDot, "`..` between the limits of the subrange")?;
+                self.expect(TokenKind::DotDot, phrase!(ExpectDotdotBetweenLimitsOfSubrange))?;
                 let high = self.parse_expr()?;
-                let close = self.expect(TokenKind::RParen, "`)` after the subrange")?;
+                let close =
+                    self.expect(TokenKind::RParen, phrase!(ExpectCloseParenAfterSubrange))?;
                 Ok(TypeRef::Subrange {
                     base: name,
                     low: Box::new(low),
@@ -206,7 +208,7 @@ impl Parser<'_> {
                     span: tok.span.to(close.span),
                 })
             }
-            _ => Err(self.expected("a type name")),
+            _ => Err(self.expected(phrase!(ExpectTypeName))),
         }
     }
 
@@ -219,7 +221,7 @@ impl Parser<'_> {
         self.bump();
         let length = self.parse_expr()?;
         let what = if close_kind == TokenKind::RBracket { "`]`" } else { "`)`" };
-        let close = self.expect(close_kind, &format!("{what} after the string length"))?;
+        let close = self.expect(close_kind, format!("{what} after the string length"))?;
         Ok(TypeRef::String { wide, length: Some(Box::new(length)), span: tok.span.to(close.span) })
     }
 
@@ -227,21 +229,21 @@ impl Parser<'_> {
     fn parse_array_type(&mut self) -> PResult<TypeRef> {
         let opener = self.bump();
         let mut ranges = Vec::new();
-        self.expect(TokenKind::LBracket, "`[` and the index range after ARRAY")?;
+        self.expect(TokenKind::LBracket, phrase!(ExpectBracketAndIndexRangeAfterArray))?;
         loop {
             let low = self.parse_expr()?;
-            self.expect(TokenKind::DotDot, "`..` between the array bounds")?;
+            self.expect(TokenKind::DotDot, phrase!(ExpectDotdotBetweenArrayBounds))?;
             let high = self.parse_expr()?;
             ranges.push((low, high));
             if self.eat(TokenKind::Comma).is_some() {
                 continue;
             }
-            self.expect(TokenKind::RBracket, "`,` or `]` after the array bounds")?;
+            self.expect(TokenKind::RBracket, phrase!(ExpectCommaOrCloseBracketAfterArrayBounds))?;
             if self.eat(TokenKind::LBracket).is_none() {
                 break;
             }
         }
-        self.expect(TokenKind::Of, "`OF` and the element type after the array bounds")?;
+        self.expect(TokenKind::Of, phrase!(ExpectOfAndElementTypeAfterArrayBounds))?;
         let element = self.parse_type_spec()?;
         let span = opener.span.to(element.span());
         Ok(TypeRef::Array { ranges, element: Box::new(element), span })
@@ -267,7 +269,7 @@ impl Parser<'_> {
                     break;
                 }
                 _ => {
-                    self.expected("a field declaration such as `x : INT;` or `END_STRUCT`");
+                    self.expected(phrase!(ExpectFieldDeclarationXIntOrEndStruct));
                     self.skip_declaration(TokenKind::EndStruct);
                 }
             }
@@ -280,10 +282,10 @@ impl Parser<'_> {
 
     /// `(A, B := 5, C)` — returns the values and the span of `)`.
     fn parse_enum_values(&mut self) -> PResult<(Vec<Enumerator>, Span)> {
-        self.expect(TokenKind::LParen, "`(`")?;
+        self.expect(TokenKind::LParen, phrase!(ExpectParen))?;
         let mut values = Vec::new();
         loop {
-            let t = self.expect(TokenKind::Ident, "the name of an enumeration value")?;
+            let t = self.expect(TokenKind::Ident, phrase!(ExpectNameOfEnumerationValue))?;
             let value =
                 if self.eat(TokenKind::Assign).is_some() { Some(self.parse_expr()?) } else { None };
             values.push((self.ident(t), value));
@@ -291,7 +293,8 @@ impl Parser<'_> {
                 break;
             }
         }
-        let close = self.expect(TokenKind::RParen, "`,` or `)` in the enumeration")?;
+        let close =
+            self.expect(TokenKind::RParen, phrase!(ExpectCommaOrCloseParenInEnumeration))?;
         Ok((values, close.span))
     }
 
@@ -313,8 +316,8 @@ impl Parser<'_> {
                     }
                 }
             }
-            let close =
-                self.expect(TokenKind::RBracket, "`,` or `]` in the array's initial values")?;
+            let close = self
+                .expect(TokenKind::RBracket, phrase!(ExpectCommaOrCloseBracketInArraySInitial))?;
             return Ok(Initializer::Array { elements, span: tok.span.to(close.span) });
         }
         if tok.kind == TokenKind::LParen
@@ -324,16 +327,16 @@ impl Parser<'_> {
             self.bump();
             let mut fields = Vec::new();
             loop {
-                let name = self.expect(TokenKind::Ident, "a field name")?;
-                self.expect(TokenKind::Assign, "`:=` after the field name")?;
+                let name = self.expect(TokenKind::Ident, phrase!(ExpectFieldName))?;
+                self.expect(TokenKind::Assign, phrase!(ExpectAssignAfterFieldName))?;
                 let value = self.parse_initializer()?;
                 fields.push((self.ident(name), value));
                 if self.eat(TokenKind::Comma).is_none() {
                     break;
                 }
             }
-            let close =
-                self.expect(TokenKind::RParen, "`,` or `)` in the structure's initial values")?;
+            let close = self
+                .expect(TokenKind::RParen, phrase!(ExpectCommaOrCloseParenInStructureSInitial))?;
             return Ok(Initializer::Struct { fields, span: tok.span.to(close.span) });
         }
         Ok(Initializer::Expr(self.parse_expr()?))
@@ -350,7 +353,8 @@ impl Parser<'_> {
             } else {
                 Some(Box::new(self.parse_initializer()?))
             };
-            let close = self.expect(TokenKind::RParen, "`)` after the repeated value")?;
+            let close =
+                self.expect(TokenKind::RParen, phrase!(ExpectCloseParenAfterRepeatedValue))?;
             return Ok(ArrayInitElement::Repeat { count, value, span: tok.span.to(close.span) });
         }
         Ok(ArrayInitElement::Single(self.parse_initializer()?))
@@ -394,7 +398,7 @@ impl Parser<'_> {
                     break;
                 }
                 _ => {
-                    self.expected("a type definition such as `Speed : INT;` or `END_TYPE`");
+                    self.expected(phrase!(ExpectTypeDefinitionSpeedIntOrEndType));
                     self.skip_declaration(TokenKind::EndType);
                 }
             }
@@ -408,7 +412,7 @@ impl Parser<'_> {
     fn parse_type_def(&mut self) -> PResult<TypeDef> {
         let name_tok = self.bump();
         let name = self.ident(name_tok);
-        self.expect(TokenKind::Colon, &format!("`:` and a type after `{}`", name.name))?;
+        self.expect(TokenKind::Colon, format!("`:` and a type after `{}`", name.name))?;
         let ty = self.parse_type_spec()?;
         let init = if self.eat(TokenKind::Assign).is_some() {
             Some(self.parse_initializer()?)

@@ -3,6 +3,7 @@
 
 use super::{Fail, PResult, Parser};
 use crate::diagnostics::Code;
+use crate::phrase;
 use crate::syntax::ast::*;
 use crate::syntax::lexer::{Token, TokenKind};
 use crate::syntax::literal;
@@ -92,7 +93,8 @@ impl Parser<'_> {
                 TokenKind::LParen => {
                     self.bump();
                     let args = self.parse_args()?;
-                    let close = self.expect(TokenKind::RParen, "`,` or `)` in the call")?;
+                    let close =
+                        self.expect(TokenKind::RParen, phrase!(ExpectCommaOrCloseParenInCall))?;
                     let span = e.span.to(close.span);
                     e = Expr { kind: ExprKind::Call { callee: Box::new(e), args }, span };
                 }
@@ -102,7 +104,10 @@ impl Parser<'_> {
                     while self.eat(TokenKind::Comma).is_some() {
                         indices.push(self.parse_expr()?);
                     }
-                    let close = self.expect(TokenKind::RBracket, "`,` or `]` after the index")?;
+                    let close = self.expect(
+                        TokenKind::RBracket,
+                        phrase!(ExpectCommaOrCloseBracketAfterIndex),
+                    )?;
                     let span = e.span.to(close.span);
                     e = Expr { kind: ExprKind::Index(Box::new(e), indices), span };
                 }
@@ -136,7 +141,7 @@ impl Parser<'_> {
                     ExprKind::Bit(Box::new(base), bit)
                 }
             },
-            _ => return Err(self.expected("a member name or a bit number after `.`")),
+            _ => return Err(self.expected(phrase!(ExpectMemberNameOrBitNumberAfterDot))),
         };
         self.bump();
         Ok(Expr { kind, span })
@@ -211,7 +216,8 @@ impl Parser<'_> {
             TokenKind::LParen => {
                 self.bump();
                 let inner = Box::new(self.parse_expr()?);
-                let close = self.expect(TokenKind::RParen, "`)` to close the parenthesis")?;
+                let close =
+                    self.expect(TokenKind::RParen, phrase!(ExpectCloseParenToCloseParenthesis))?;
                 Ok(Expr { kind: ExprKind::Paren(inner), span: span.to(close.span) })
             }
             TokenKind::Ident if self.peek_at(1) == TokenKind::Hash => self.parse_hash_prefixed(),
@@ -228,7 +234,7 @@ impl Parser<'_> {
             }
             _ => match self.literal_token(tok) {
                 Some(e) => Ok(e),
-                None => Err(self.expected("an expression")),
+                None => Err(self.expected(phrase!(ExpectExpression))),
             },
         }
     }
@@ -304,7 +310,7 @@ impl Parser<'_> {
         let prefix = self.ident(prefix_tok);
         let Some(class) = literal::prefix_class(&prefix.name) else {
             let value_tok =
-                self.expect(TokenKind::Ident, &format!("an enumerator after `{}#`", prefix.name))?;
+                self.expect(TokenKind::Ident, format!("an enumerator after `{}#`", prefix.name))?;
             let value = self.ident(value_tok);
             let span = prefix_tok.span.to(value_tok.span);
             return Ok(Expr { kind: ExprKind::EnumValue { type_name: prefix, value }, span });
@@ -337,7 +343,7 @@ impl Parser<'_> {
             }
             TokenKind::True if !negative => LiteralValue::Bool(true),
             TokenKind::False if !negative => LiteralValue::Bool(false),
-            _ => return Err(self.expected(&format!("a value after `{}#`", prefix.name))),
+            _ => return Err(self.expected(format!("a value after `{}#`", prefix.name))),
         };
         self.bump();
         let value = match (negative, value) {

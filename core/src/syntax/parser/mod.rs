@@ -23,7 +23,8 @@ mod stmt;
 use super::ast::sfc::{SfcBody, SfcElement};
 use super::ast::*;
 use super::lexer::{lex, Comment, Token, TokenKind};
-use crate::diagnostics::{Code, Diagnostic, Span};
+use crate::diagnostics::{Arg as MsgArg, Code, Diagnostic, Span};
+use crate::{msg, phrase};
 
 /// Marks a failed parse whose diagnostic has already been reported.
 #[derive(Debug, Clone, Copy)]
@@ -53,7 +54,7 @@ pub(crate) fn parse_single_expression(source: &str) -> Result<Expr, Vec<Diagnost
         p.error(
             Code::UnexpectedToken,
             tok.span,
-            format!("expected the end of the expression, found {found}"),
+            msg!(ExpectedFound, what = phrase!(ExpectEndOfExpression), found = found),
         );
     }
     let diags = p.finish();
@@ -150,17 +151,17 @@ impl<'a> Parser<'a> {
     }
 
     /// A token as shown in a message: `` `END_IF` `` or "the end of the text".
-    pub(super) fn describe(&self, tok: Token) -> String {
+    pub(super) fn describe(&self, tok: Token) -> MsgArg {
         if tok.kind == TokenKind::Eof {
-            return "the end of the text".to_string();
+            return MsgArg::Msg(phrase!(EndOfText));
         }
         let text = self.text(tok);
-        if text.chars().count() > 40 {
+        MsgArg::Text(if text.chars().count() > 40 {
             let short: String = text.chars().take(40).collect();
             format!("`{short}…`")
         } else {
             format!("`{text}`")
-        }
+        })
     }
 
     pub(super) fn ident(&self, tok: Token) -> Ident {
@@ -170,7 +171,12 @@ impl<'a> Parser<'a> {
     // ---- diagnostics ----
 
     /// Reports a problem, unless one is already reported at the same place.
-    pub(super) fn error(&mut self, code: Code, span: Span, msg: impl Into<String>) {
+    pub(super) fn error(
+        &mut self,
+        code: Code,
+        span: Span,
+        msg: impl Into<crate::diagnostics::Said>,
+    ) {
         if self.diags.iter().any(|d| d.span.start == span.start) {
             return;
         }
@@ -178,15 +184,19 @@ impl<'a> Parser<'a> {
     }
 
     /// Reports "expected WHAT, found …" at the current token and fails.
-    pub(super) fn expected(&mut self, what: &str) -> Fail {
+    pub(super) fn expected(&mut self, what: impl Into<MsgArg>) -> Fail {
         let tok = self.tok();
         let found = self.describe(tok);
-        self.error(Code::UnexpectedToken, tok.span, format!("expected {what}, found {found}"));
+        self.error(
+            Code::UnexpectedToken,
+            tok.span,
+            msg!(ExpectedFound, what = what.into(), found = found),
+        );
         Fail
     }
 
     /// Consumes a token of `kind` or reports "expected WHAT".
-    pub(super) fn expect(&mut self, kind: TokenKind, what: &str) -> PResult<Token> {
+    pub(super) fn expect(&mut self, kind: TokenKind, what: impl Into<MsgArg>) -> PResult<Token> {
         match self.eat(kind) {
             Some(t) => Ok(t),
             None => Err(self.expected(what)),
@@ -272,9 +282,7 @@ impl<'a> Parser<'a> {
                     let _ = self.parse_var_block();
                 }
                 _ => {
-                    self.expected(
-                        "`PROGRAM`, `FUNCTION`, `FUNCTION_BLOCK`, `TYPE` or `VAR_GLOBAL`",
-                    );
+                    self.expected(phrase!(ExpectProgramFunctionFunctionBlockTypeOrVarGlobal));
                     while !is_top_level_start(self.peek()) {
                         self.bump();
                     }
@@ -316,7 +324,7 @@ impl<'a> Parser<'a> {
         let name = match self.eat(TokenKind::Ident) {
             Some(t) => self.ident(t),
             None => {
-                self.expected(&format!("a name after `{kw_text}`"));
+                self.expected(format!("a name after `{kw_text}`"));
                 Ident { name: String::new(), span: self.tok().span }
             }
         };
@@ -370,9 +378,12 @@ impl<'a> Parser<'a> {
                     self.error(
                         Code::UnexpectedToken,
                         tok.span,
-                        format!(
-                            "expected `{end_name}` to close {kw_text} `{}`, found {found}",
-                            name.name
+                        msg!(
+                            ExpectedEndToClose,
+                            end = end_name,
+                            kind = kw_text,
+                            name = &name.name,
+                            found = found
                         ),
                     );
                     self.bump();
@@ -380,22 +391,14 @@ impl<'a> Parser<'a> {
                     break;
                 }
                 k if is_var_keyword(k) => {
-                    self.error(
-                        Code::UnexpectedToken,
-                        tok.span,
-                        "declarations (`VAR` … `END_VAR`) must come before the first statement",
-                    );
+                    self.error(Code::UnexpectedToken, tok.span, msg!(DeclarationsAfterStatements));
                     if let Some(b) = self.parse_var_block() {
                         var_blocks.push(b);
                     }
                 }
                 k if is_stray_end(k) => {
                     let found = self.text(tok);
-                    self.error(
-                        Code::UnexpectedToken,
-                        tok.span,
-                        format!("`{found}` has no matching opening statement here"),
-                    );
+                    self.error(Code::UnexpectedToken, tok.span, msg!(StrayEnd, found = found));
                     self.bump();
                 }
                 _ => {
@@ -403,9 +406,12 @@ impl<'a> Parser<'a> {
                     self.error(
                         Code::MissingEnd,
                         opener.span,
-                        format!(
-                            "`{end_name}` is missing for {kw_text} `{}` (found {found})",
-                            name.name
+                        msg!(
+                            EndMissing,
+                            end = end_name,
+                            kind = kw_text,
+                            name = &name.name,
+                            found = found
                         ),
                     );
                     break;

@@ -10,6 +10,7 @@
 
 use super::{is_block_end, Fail, PResult, Parser};
 use crate::diagnostics::{Code, Span};
+use crate::phrase;
 use crate::syntax::ast::sfc::*;
 use crate::syntax::ast::*;
 use crate::syntax::lexer::{Token, TokenKind};
@@ -104,7 +105,7 @@ impl Parser<'_> {
         };
         let header = opener.span.to(name.span);
         if self.eat(TokenKind::Colon).is_none() {
-            self.expected(&format!("`:` after the step name `{}`", name.name));
+            self.expected(format!("`:` after the step name `{}`", name.name));
         }
         let mut associations = Vec::new();
         while !self.at(TokenKind::EndStep)
@@ -146,7 +147,7 @@ impl Parser<'_> {
         let action = self.sfc_name("an action association such as `Fill(N);` or `END_STEP`")?;
         if self.eat(TokenKind::LParen).is_none() {
             let name = action.name.clone();
-            return Err(self.expected(&format!(
+            return Err(self.expected(format!(
                 "`(` and a qualifier after the action name, as in `{name}(N);`"
             )));
         }
@@ -187,10 +188,10 @@ impl Parser<'_> {
                     format!("qualifier `{name}` takes no duration; only L, D, SD, DS and SL do"),
                 );
             } else {
-                return Err(self.expected("an indicator variable name"));
+                return Err(self.expected(phrase!(ExpectIndicatorVariableName)));
             }
         }
-        self.expect(TokenKind::RParen, "`,` or `)` in the action association")?;
+        self.expect(TokenKind::RParen, phrase!(ExpectCommaOrCloseParenInActionAssociation))?;
         if qualifier.is_timed() && duration.is_none() {
             let name = qualifier.name();
             self.error(
@@ -213,7 +214,7 @@ impl Parser<'_> {
             while self.eat(TokenKind::Comma).is_some() {
                 names.push(self.sfc_name(what)?);
             }
-            self.expect(TokenKind::RParen, "`,` or `)` in the list of steps")?;
+            self.expect(TokenKind::RParen, phrase!(ExpectCommaOrCloseParenInListOfSteps))?;
             Ok(names)
         } else {
             Ok(vec![self.sfc_name(what)?])
@@ -224,12 +225,12 @@ impl Parser<'_> {
     fn parse_priority(&mut self) -> PResult<(u32, Span)> {
         let open = self.bump();
         if !self.word_at(0, "PRIORITY") {
-            return Err(self.expected("`PRIORITY := n`"));
+            return Err(self.expected(phrase!(ExpectPriorityN)));
         }
         self.bump();
-        self.expect(TokenKind::Assign, "`:=` after PRIORITY")?;
+        self.expect(TokenKind::Assign, phrase!(ExpectAssignAfterPriority))?;
         let value = self.parse_expr()?;
-        let close = self.expect(TokenKind::RParen, "`)` after the priority")?;
+        let close = self.expect(TokenKind::RParen, phrase!(ExpectCloseParenAfterPriority))?;
         let n = match &value.kind {
             ExprKind::Literal(Literal { value: LiteralValue::Int(n), type_prefix: None }) => {
                 u32::try_from(*n).ok()
@@ -294,11 +295,11 @@ impl Parser<'_> {
         let priority = if self.at(TokenKind::LParen) { Some(self.parse_priority()?) } else { None };
         if !self.word_at(0, "FROM") {
             let kw = self.text(opener).to_string();
-            return Err(self.expected(&format!("`FROM` and the steps this {kw} leaves")));
+            return Err(self.expected(format!("`FROM` and the steps this {kw} leaves")));
         }
         self.bump();
         let from = self.step_list("a step name after FROM")?;
-        self.expect(TokenKind::To, "`TO` and the steps this transition activates")?;
+        self.expect(TokenKind::To, phrase!(ExpectToAndStepsThisTransitionActivates))?;
         let to = self.step_list("a step name after TO")?;
         Ok((name, priority, from, to))
     }
@@ -328,7 +329,7 @@ impl Parser<'_> {
         } else if self.eat(TokenKind::Colon).is_some() {
             TransitionCondition::Body(self.parse_stmts(false))
         } else {
-            self.expected("`:=` and the transition condition");
+            self.expected(phrase!(ExpectAssignAndTransitionCondition));
             TransitionCondition::Body(Vec::new())
         }
     }
@@ -341,7 +342,7 @@ impl Parser<'_> {
         };
         let header = opener.span.to(name.span);
         if self.eat(TokenKind::Colon).is_none() {
-            self.expected(&format!("`:` after the action name `{}`", name.name));
+            self.expected(format!("`:` after the action name `{}`", name.name));
         }
         let body = self.parse_stmts(false);
         let what = format!("action `{}`", name.name);

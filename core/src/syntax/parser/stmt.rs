@@ -6,6 +6,7 @@
 
 use super::{is_block_end, Fail, PResult, Parser};
 use crate::diagnostics::{Code, Span};
+use crate::phrase;
 use crate::syntax::ast::*;
 use crate::syntax::lexer::{Token, TokenKind};
 
@@ -97,7 +98,7 @@ impl Parser<'_> {
     /// Consumes keyword `kind` (named `name`) or reports it missing without skipping.
     fn expect_keyword(&mut self, kind: TokenKind, name: &str, context: &str) {
         if self.eat(kind).is_none() {
-            self.expected(&format!("`{name}` {context}"));
+            self.expected(format!("`{name}` {context}"));
         }
     }
 
@@ -141,7 +142,7 @@ impl Parser<'_> {
             TokenKind::Ident | TokenKind::Direct | TokenKind::LParen => {
                 return self.parse_assign_or_call()
             }
-            _ => return Err(self.expected("a statement")),
+            _ => return Err(self.expected(phrase!(ExpectStatement))),
         };
         self.bump();
         let span = self.end_statement(start);
@@ -168,7 +169,7 @@ impl Parser<'_> {
             let what =
                 self.src.get(target.span.start as usize..target.span.end as usize).unwrap_or("");
             let what: String = what.chars().take(40).collect();
-            return Err(self.expected(&format!("`:=` or a call `(…)` after `{what}`")));
+            return Err(self.expected(format!("`:=` or a call `(…)` after `{what}`")));
         };
         let span = self.end_statement(start);
         Ok(Stmt { kind, span })
@@ -278,7 +279,7 @@ impl Parser<'_> {
                 break;
             }
         }
-        let colon = self.expect(TokenKind::Colon, "`:` after the CASE label")?;
+        let colon = self.expect(TokenKind::Colon, phrase!(ExpectColonAfterCaseLabel))?;
         let body = self.body(TokenKind::EndCase, true);
         Ok(CaseArm { labels, body, span: start.to(colon.span) })
     }
@@ -302,7 +303,7 @@ impl Parser<'_> {
         let var = match self.eat(TokenKind::Ident) {
             Some(t) => self.ident(t),
             None => {
-                self.expected("the name of the loop variable after FOR");
+                self.expected(phrase!(ExpectNameOfLoopVariableAfterFor));
                 Ident { name: String::new(), span: self.tok().span }
             }
         };
@@ -310,7 +311,7 @@ impl Parser<'_> {
         let from = if self.eat(TokenKind::Assign).is_some() {
             self.header_expr(&stops, LiteralValue::Int(0))
         } else {
-            self.expected("`:=` and the start value after the loop variable");
+            self.expected(phrase!(ExpectAssignAndStartValueAfterLoopVariable));
             let span = self.tok().span;
             self.skip_to(&stops);
             placeholder(LiteralValue::Int(0), span)

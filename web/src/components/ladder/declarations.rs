@@ -31,7 +31,7 @@ pub fn DeclarationsEditor(
             ds.iter()
                 .filter_map(|d| match &d.site {
                     Site::Declarations { pou, line, column } if pou.eq_ignore_ascii_case(&name) => {
-                        Some((*line, *column, d.error, format!("{}  {}", d.code, d.message)))
+                        Some((*line, *column, d.error, format!("{}  {}", d.code, d.message())))
                     }
                     _ => None,
                 })

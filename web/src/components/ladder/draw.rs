@@ -335,7 +335,7 @@ fn marks(ctx: RungCtx, geo: &RungGeometry, pou: &str) -> impl IntoView {
                     Site::Ladder { pou: p, cell: Some((r, row, col)) }
                         if p.eq_ignore_ascii_case(&pou_diag) && *r == ctx.rung =>
                     {
-                        Some((*row, *col, d.error, format!("{} {}", d.code, d.message)))
+                        Some((*row, *col, d.error, format!("{} {}", d.code, d.message())))
                     }
                     _ => None,
                 })

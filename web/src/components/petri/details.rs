@@ -64,7 +64,7 @@ pub fn ElementDetails(pou: Memo<Option<PetriPou>>, name: StoredValue<String>) ->
         let problems: Vec<String> = state.diagnostics.with(|ds| {
             ds.iter()
                 .filter(|d| matches!(&d.site, Site::Petri { pou: q, element: Some(e), .. } if q.eq_ignore_ascii_case(&p) && *e == element))
-                .map(|d| format!("{}  {}", d.code, d.message))
+                .map(|d| format!("{}  {}", d.code, d.message()))
                 .collect()
         });
         let shown =

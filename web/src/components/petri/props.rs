@@ -44,7 +44,7 @@ fn text_problems(
                 Site::Petri { pou: p, element: Some(e), at: Some(at) }
                     if p.eq_ignore_ascii_case(pou) && e == element && at.part == part =>
                 {
-                    Some((at.line, at.column, d.error, format!("{}  {}", d.code, d.message)))
+                    Some((at.line, at.column, d.error, format!("{}  {}", d.code, d.message())))
                 }
                 _ => None,
             })
