@@ -106,9 +106,17 @@ impl Said {
     /// `key` with `args`, its English text made from `en` (the key's English template).
     /// One function for every message made (not inlined): a diagnostic's place in the code
     /// costs only its arguments' addresses.
+    /// `names` and `args` go in pairs (a static list of names: a place costs one address
+    /// per argument and one for the names).
     #[inline(never)]
-    pub fn new(key: Msg, en: &'static str, args: &[(&'static str, &dyn ToArg)]) -> Said {
-        let args: Vec<(&'static str, Arg)> = args.iter().map(|(n, a)| (*n, a.to_arg())).collect();
+    pub fn new(
+        key: Msg,
+        en: &'static str,
+        names: &'static [&'static str],
+        args: &[&dyn ToArg],
+    ) -> Said {
+        let args: Vec<(&'static str, Arg)> =
+            names.iter().zip(args).map(|(n, a)| (*n, a.to_arg())).collect();
         let english = fill(en, |name| args.iter().find(|(n, _)| *n == name).map(|(_, a)| a.en()));
         Said { message: Message { key, args }, english }
     }
@@ -288,7 +296,8 @@ macro_rules! msg {
         $crate::diagnostics::Said::new(
             $crate::diagnostics::Msg::$key,
             $crate::diagnostics::msg_en!($key),
-            &[$( (stringify!($name), &$val as &dyn $crate::diagnostics::ToArg) ),*],
+            &[$( stringify!($name) ),*],
+            &[$( &$val as &dyn $crate::diagnostics::ToArg ),*],
         )
     };
 }
