@@ -184,3 +184,29 @@ fn a_misspelled_name_in_a_guard_gets_did_you_mean_at_the_transition() {
         d.located_message()
     );
 }
+
+#[test]
+fn a_net_problem_of_a_project_is_shown_in_polish_and_czech() {
+    use plc_core::i18n::Lang;
+    let mut project = looping("", "x");
+    project.petri[0].net.places[1].tokens = 1;
+    let build = plc_core::build::build_project(&project);
+    let d = &build.diagnostics[0];
+    assert_eq!(
+        d.message,
+        "no sequential process (state-machine component) covers place(s) A, B; the CASE OF \
+         method needs every place inside a process holding one token"
+    );
+    assert_eq!(d.render(Lang::En), d.message);
+    assert_eq!(
+        d.render(Lang::Pl),
+        "żaden proces sekwencyjny (komponent automatowy) nie obejmuje miejsc: A, B; metoda CASE \
+         OF wymaga, by każde miejsce należało do procesu z jednym znacznikiem"
+    );
+    // A guard that does not parse carries the parser's message, translated too.
+    let build = plc_core::build::build_project(&looping("", "x +"));
+    let d = &build.diagnostics[0];
+    assert_eq!(d.code.as_str(), "E0503");
+    assert_eq!(d.render(Lang::En), d.message);
+    assert_ne!(d.render(Lang::Cs), d.message, "{}", d.message);
+}

@@ -397,7 +397,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
         .cloned()
         .map(|(pou, d)| ProjectDiagnostic {
             severity: d.severity,
-            msg: None,
+            msg: Some(Box::new(d.msg)),
             code: d.code,
             message: d.message,
             site: Site::Petri { pou, element: Some(d.element), at: d.at },

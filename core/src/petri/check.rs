@@ -8,7 +8,7 @@
 use super::diagnostic::{NetElement, PetriDiagnostic, TextPart, TextPosition};
 use super::model::PetriPou;
 use super::net::PtNet;
-use crate::diagnostics::{Code, Diagnostic, LineIndex};
+use crate::diagnostics::{Code, Diagnostic, LineIndex, Said};
 use crate::syntax::{self, Item};
 
 pub use crate::syntax::is_identifier;
@@ -27,8 +27,8 @@ fn located(
     shift: u32,
 ) -> PetriDiagnostic {
     let offset = d.span.start.saturating_sub(shift);
-    PetriDiagnostic::error(code, element.clone(), d.message.clone())
-        .at(position(text, offset, part))
+    let said = Said { message: d.msg.clone(), english: d.message.clone() };
+    PetriDiagnostic::error(code, element.clone(), said).at(position(text, offset, part))
 }
 
 /// Checks that `text` is one ST expression; problems are located inside it.
@@ -64,14 +64,12 @@ pub fn check_statements(text: &str, element: &NetElement, part: TextPart) -> Vec
         .filter_map(|i| if let Item::Pou(p) = i { Some(p) } else { None })
         .collect();
     let problem = if file.items.len() != 1 || pous.len() != 1 {
-        Some((text.len() as u32, "the text ends the POU early: write statements only".to_string()))
+        Some((text.len() as u32, crate::msg!(PetriTextEndsPouEarly)))
     } else {
-        pous[0].var_blocks.first().map(|b| {
-            (
-                b.span.start.saturating_sub(shift),
-                "declare variables in the POU's declarations, not here".to_string(),
-            )
-        })
+        pous[0]
+            .var_blocks
+            .first()
+            .map(|b| (b.span.start.saturating_sub(shift), crate::msg!(PetriDeclareInDeclarations)))
     };
     problem
         .map(|(offset, message)| {
@@ -89,19 +87,21 @@ pub fn check_pou(pou: &PetriPou, net: &PtNet) -> Vec<PetriDiagnostic> {
         diags.push(PetriDiagnostic::error(
             Code::PetriBadName,
             NetElement::Pou,
-            format!(
-                "`{}` is not a valid POU name (letters, digits and single underscores)",
-                pou.name
-            ),
+            crate::msg!(PetriBadPouName, name = pou.name),
         ));
     }
     for proc in &pou.net.processes {
-        for (what, name) in [("process name", &proc.name), ("step variable", &proc.step_variable)] {
+        for (step, name) in [(false, &proc.name), (true, &proc.step_variable)] {
             if !is_identifier(name.trim()) {
+                let said = if step {
+                    crate::msg!(PetriBadStepVariable, name = name)
+                } else {
+                    crate::msg!(PetriBadProcessName, name = name)
+                };
                 diags.push(PetriDiagnostic::error(
                     Code::PetriBadName,
                     NetElement::Process(proc.name.clone()),
-                    format!("`{name}` is not a valid {what}"),
+                    said,
                 ));
             }
         }
@@ -112,10 +112,7 @@ pub fn check_pou(pou: &PetriPou, net: &PtNet) -> Vec<PetriDiagnostic> {
             diags.push(PetriDiagnostic::error(
                 Code::PetriLabelRange,
                 here.clone(),
-                format!(
-                    "CASE label {} does not fit an INT step variable (-32768..32767)",
-                    place.label
-                ),
+                crate::msg!(PetriLabelRange, label = place.label),
             ));
         }
         diags.extend(check_statements(&place.actions, &here, TextPart::Actions));
@@ -127,8 +124,7 @@ pub fn check_pou(pou: &PetriPou, net: &PtNet) -> Vec<PetriDiagnostic> {
             diags.push(PetriDiagnostic::error(
                 Code::PetriSourceTransition,
                 here,
-                "the transition has no input place, so it would fire on every scan: \
-                 give it an input place",
+                crate::msg!(PetriSourceTransition),
             ));
         }
     }
@@ -139,14 +135,14 @@ pub fn check_pou(pou: &PetriPou, net: &PtNet) -> Vec<PetriDiagnostic> {
             diags.push(PetriDiagnostic::error(
                 Code::PetriBadEmergency,
                 NetElement::Emergency,
-                format!("the emergency place `{}` is not a place of the net", e.place),
+                crate::msg!(PetriEmergencyNotPlace, place = e.place),
             ));
         }
         if e.condition.trim().is_empty() {
             diags.push(PetriDiagnostic::error(
                 Code::PetriBadGuard,
                 NetElement::Emergency,
-                "the emergency condition is empty",
+                crate::msg!(PetriEmergencyConditionEmpty),
             ));
         }
         diags.extend(check_expression(&e.condition, &NetElement::Emergency, TextPart::Condition));

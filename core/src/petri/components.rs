@@ -81,11 +81,7 @@ pub fn plan_processes(
         diags.push(PetriDiagnostic::error(
             Code::PetriNotCovered,
             NetElement::Pou,
-            format!(
-                "no sequential process (state-machine component) covers place(s) {}; \
-                 the CASE OF method needs every place inside a process holding one token",
-                names.join(", ")
-            ),
+            crate::msg!(PetriNotCovered, names = names.join(", ")),
         ));
     }
     for plan in &plans {
@@ -96,9 +92,11 @@ pub fn plan_processes(
                 diags.push(PetriDiagnostic::error(
                     Code::PetriDuplicateLabel,
                     NetElement::Place(model.places[p].id.clone()),
-                    format!(
-                        "CASE label {label} is already used by place {} of process {}",
-                        model.places[q].id, plan.name
+                    crate::msg!(
+                        PetriDuplicateLabel,
+                        label = label,
+                        other = model.places[q].id,
+                        process = plan.name
                     ),
                 ));
             }
@@ -160,7 +158,7 @@ fn declared(model: &Net, net: &PtNet) -> Result<Vec<ProcessPlan>, Vec<PetriDiagn
                 None => diags.push(PetriDiagnostic::error(
                     Code::PetriBadProcess,
                     here.clone(),
-                    format!("`{id}` is not a place of the net"),
+                    crate::msg!(PetriNotAPlace, id = id),
                 )),
             }
         }
@@ -171,7 +169,7 @@ fn declared(model: &Net, net: &PtNet) -> Result<Vec<ProcessPlan>, Vec<PetriDiagn
             diags.push(PetriDiagnostic::error(
                 Code::PetriBadProcess,
                 here.clone(),
-                "the process has no places",
+                crate::msg!(PetriProcessNoPlaces),
             ));
         } else if !super::semiflows::is_semiflow(&c, &y) {
             let leaks: Vec<&str> = (0..net.transitions())
@@ -181,28 +179,19 @@ fn declared(model: &Net, net: &PtNet) -> Result<Vec<ProcessPlan>, Vec<PetriDiagn
             diags.push(PetriDiagnostic::error(
                 Code::PetriBadProcess,
                 here.clone(),
-                format!(
-                    "its places are not a state-machine component: transition(s) {} change the \
-                     number of tokens in them",
-                    leaks.join(", ")
-                ),
+                crate::msg!(PetriNotStateMachine, leaks = leaks.join(", ")),
             ));
         } else if !is_state_machine(net, &support) {
             diags.push(PetriDiagnostic::error(
                 Code::PetriArcWeight,
                 here.clone(),
-                "a transition touching its places has more than one input or output among \
-                 them, or an arc of weight other than 1",
+                crate::msg!(PetriProcessArcWeight),
             ));
         } else if tokens(net, &places) != 1 {
             diags.push(PetriDiagnostic::error(
                 Code::PetriProcessTokens,
                 here.clone(),
-                format!(
-                    "its places hold {} token(s) initially; a process needs exactly one \
-                     (its step variable names the one marked place)",
-                    tokens(net, &places)
-                ),
+                crate::msg!(PetriProcessTokens, n = tokens(net, &places)),
             ));
         }
         plans.push(ProcessPlan {

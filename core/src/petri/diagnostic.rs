@@ -5,7 +5,7 @@ use std::fmt;
 
 use serde::Serialize;
 
-use crate::diagnostics::{Code, Severity};
+use crate::diagnostics::{Code, Message, Said, Severity};
 
 /// The element of a Petri net POU a problem or a generated line belongs to.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize)]
@@ -65,8 +65,11 @@ pub struct PetriDiagnostic {
     pub code: Code,
     /// Error or warning.
     pub severity: Severity,
-    /// A message a student understands.
+    /// A message a student understands (English).
     pub message: String,
+    /// The message as data, to be shown in any language.
+    #[serde(skip)]
+    pub msg: Message,
     /// The element it is about.
     pub element: NetElement,
     /// Where inside the element's ST text, when the problem is in a guard or actions.
@@ -75,25 +78,15 @@ pub struct PetriDiagnostic {
 
 impl PetriDiagnostic {
     /// An error about `element`.
-    pub fn error(code: Code, element: NetElement, message: impl Into<String>) -> Self {
-        PetriDiagnostic {
-            code,
-            severity: Severity::Error,
-            message: message.into(),
-            element,
-            at: None,
-        }
+    pub fn error(code: Code, element: NetElement, message: impl Into<Said>) -> Self {
+        let Said { message: msg, english: message } = message.into();
+        PetriDiagnostic { code, severity: Severity::Error, message, msg, element, at: None }
     }
 
     /// A warning about `element`.
-    pub fn warning(code: Code, element: NetElement, message: impl Into<String>) -> Self {
-        PetriDiagnostic {
-            code,
-            severity: Severity::Warning,
-            message: message.into(),
-            element,
-            at: None,
-        }
+    pub fn warning(code: Code, element: NetElement, message: impl Into<Said>) -> Self {
+        let Said { message: msg, english: message } = message.into();
+        PetriDiagnostic { code, severity: Severity::Warning, message, msg, element, at: None }
     }
 
     /// The same diagnostic at a position inside the element's text.

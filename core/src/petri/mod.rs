@@ -108,24 +108,24 @@ fn warnings_of(
             out.push(PetriDiagnostic::warning(
                 Code::PetriPriorityIgnored,
                 NetElement::Transition(b.id.clone()),
-                format!(
-                    "{} and {} both take the token of place {} but are decided by different \
-                     processes (or from different places), so their priorities cannot choose: \
-                     {} is tested first; list the process holding place {} first, or make the \
-                     guards exclusive",
-                    a.id, b.id, pou.net.places[c.place].id, first.id, pou.net.places[c.place].id
+                crate::msg!(
+                    PetriPriorityIgnored,
+                    a = a.id,
+                    b = b.id,
+                    place = pou.net.places[c.place].id,
+                    first = first.id
                 ),
             ));
         } else if a.priority == b.priority && !c.exclusive {
             out.push(PetriDiagnostic::warning(
                 Code::PetriGuardConflict,
                 NetElement::Transition(b.id.clone()),
-                format!(
-                    "{} and {} both take the token of place {}, have priority {} and guards \
-                     that may both hold: the order of the transitions (or of the processes \
-                     deciding them) picks one; give them different priorities or exclusive \
-                     guards",
-                    a.id, b.id, pou.net.places[c.place].id, a.priority
+                crate::msg!(
+                    PetriGuardConflict,
+                    a = a.id,
+                    b = b.id,
+                    place = pou.net.places[c.place].id,
+                    priority = a.priority
                 ),
             ));
         }
@@ -137,28 +137,21 @@ fn warnings_of(
         out.push(PetriDiagnostic::warning(
             Code::PetriDeadlock,
             NetElement::Pou,
-            format!(
-                "the net can stop (guards ignored): after firing [{}] no transition is enabled",
-                path.join(", ")
-            ),
+            crate::msg!(PetriDeadlock, path = path.join(", ")),
         ));
     }
     for &t in a.dead_transitions.iter().flatten() {
         out.push(PetriDiagnostic::warning(
             Code::PetriDeadTransition,
             NetElement::Transition(pou.net.transitions[t].id.clone()),
-            "this transition can never fire: no reachable marking enables it (guards ignored)",
+            crate::msg!(PetriDeadTransition),
         ));
     }
     if !a.complete {
         out.push(PetriDiagnostic::warning(
             Code::PetriAnalysisIncomplete,
             NetElement::Pou,
-            format!(
-                "the net has more than {budget} reachable markings (the most checked when \
-                 compiling a net of {} places); run `plc petri analyze` with a larger budget",
-                net.places()
-            ),
+            crate::msg!(PetriAnalysisIncomplete, budget = budget, places = net.places()),
         ));
     }
     out

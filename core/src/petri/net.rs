@@ -130,7 +130,7 @@ pub fn build(net: &Net) -> Result<PtNet, Vec<PetriDiagnostic>> {
         diags.push(PetriDiagnostic::error(
             Code::PetriEmptyNet,
             NetElement::Pou,
-            "the net has no places: draw at least one place holding a token",
+            crate::msg!(PetriEmptyNet),
         ));
     }
     // Ids are unique across places, transitions and macro-places.
@@ -150,14 +150,16 @@ pub fn build(net: &Net) -> Result<PtNet, Vec<PetriDiagnostic>> {
             diags.push(PetriDiagnostic::error(
                 Code::PetriDuplicateId,
                 element,
-                "an element needs an id",
+                crate::msg!(PetriElementNeedsId),
             ));
         } else if let Some(first) = ids.get(id) {
-            diags.push(PetriDiagnostic::error(
-                Code::PetriDuplicateId,
-                element,
-                format!("the id `{id}` is already used by {first}"),
-            ));
+            // The element first holding the id has it too: `place P1`.
+            let said = match first {
+                NetElement::Place(_) => crate::msg!(PetriIdUsedByPlace, id = id),
+                NetElement::Transition(_) => crate::msg!(PetriIdUsedByTransition, id = id),
+                _ => crate::msg!(PetriIdUsedByMacroPlace, id = id),
+            };
+            diags.push(PetriDiagnostic::error(Code::PetriDuplicateId, element, said));
         } else {
             ids.insert(id, element);
         }
@@ -174,7 +176,7 @@ pub fn build(net: &Net) -> Result<PtNet, Vec<PetriDiagnostic>> {
             diags.push(PetriDiagnostic::error(
                 Code::PetriBadArc,
                 here.clone(),
-                format!("the arc {} → {} has weight 0; weights start at 1", arc.from, arc.to),
+                crate::msg!(PetriArcWeightZero, from = arc.from, to = arc.to),
             ));
             continue;
         }
@@ -195,10 +197,7 @@ pub fn build(net: &Net) -> Result<PtNet, Vec<PetriDiagnostic>> {
             diags.push(PetriDiagnostic::error(
                 Code::PetriDuplicateArc,
                 here,
-                format!(
-                    "a second arc {} → {}: give the first one a weight instead",
-                    arc.from, arc.to
-                ),
+                crate::msg!(PetriSecondArc, from = arc.from, to = arc.to),
             ));
             continue;
         }
@@ -223,24 +222,24 @@ pub fn build(net: &Net) -> Result<PtNet, Vec<PetriDiagnostic>> {
     })
 }
 
-fn arc_problem(net: &Net, arc: &super::model::Arc) -> String {
+fn arc_problem(net: &Net, arc: &super::model::Arc) -> crate::diagnostics::Said {
     let kind = |id: &str| {
         if net.place(id).is_some() {
-            "a place"
+            crate::phrase!(PetriArcEndPlace)
         } else if net.transition(id).is_some() {
-            "a transition"
+            crate::phrase!(PetriArcEndTransition)
         } else if net.macro_places.iter().any(|m| m.id == id) {
-            "a macro-place (connect the arc to a place inside it)"
+            crate::phrase!(PetriArcEndMacroPlace)
         } else {
-            "nothing in the net"
+            crate::phrase!(PetriArcEndNothing)
         }
     };
-    format!(
-        "an arc must join a place and a transition, but `{}` is {} and `{}` is {}",
-        arc.from,
-        kind(&arc.from),
-        arc.to,
-        kind(&arc.to)
+    crate::msg!(
+        PetriArcMustJoin,
+        from = arc.from,
+        from_kind = kind(&arc.from),
+        to = arc.to,
+        to_kind = kind(&arc.to)
     )
 }
 
@@ -257,13 +256,13 @@ fn check_macro_places(
                 diags.push(PetriDiagnostic::error(
                     Code::PetriBadMacroPlace,
                     here.clone(),
-                    format!("`{id}` is not a place of the net"),
+                    crate::msg!(PetriNotAPlace, id = id),
                 ));
             } else if let Some(other) = owner.insert(id, &m.id) {
                 diags.push(PetriDiagnostic::error(
                     Code::PetriBadMacroPlace,
                     here.clone(),
-                    format!("place `{id}` is already inside macro-place `{other}`"),
+                    crate::msg!(PetriPlaceInTwoMacroPlaces, id = id, other = other),
                 ));
             }
         }

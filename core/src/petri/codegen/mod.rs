@@ -240,12 +240,11 @@ pub fn generate(
                     diags.push(PetriDiagnostic::error(
                         Code::PetriFlagsAmbiguous,
                         NetElement::Place(pou.net.places[pair[0].0].id.clone()),
-                        format!(
-                            "process {} waits here for two shared transitions ({} and {}); one \
-                             _Start flag cannot tell them apart: use the step-variable style",
-                            plans[c].name,
-                            pou.net.transitions[pair[0].1].id,
-                            pou.net.transitions[pair[1].1].id
+                        crate::msg!(
+                            PetriFlagsAmbiguous,
+                            process = plans[c].name,
+                            first = pou.net.transitions[pair[0].1].id,
+                            second = pou.net.transitions[pair[1].1].id
                         ),
                     ));
                 }

@@ -363,3 +363,48 @@ fn deadlocks_and_dead_transitions_warn() {
     assert!(w[0].message.contains("[T1]"), "{}", w[0].message);
     assert_eq!(w[1].element, NetElement::Transition("T2".into()));
 }
+
+#[test]
+fn diagnostics_are_data_shown_in_polish_and_czech() {
+    use crate::i18n::Lang;
+    let mut p = two_step();
+    p.net.arcs.push(Arc::new("T1", "nowhere"));
+    let err = compile(&p).unwrap_err();
+    let d = &err[0];
+    assert_eq!(
+        d.message,
+        "an arc must join a place and a transition, but `T1` is a transition and `nowhere` is \
+         nothing in the net"
+    );
+    assert_eq!(d.msg.render(Lang::En), d.message);
+    assert_eq!(
+        d.msg.render(Lang::Pl),
+        "łuk musi łączyć miejsce z przejściem, tymczasem `T1` to przejście, a `nowhere` to coś, \
+         czego nie ma w sieci"
+    );
+    assert_eq!(
+        d.msg.render(Lang::Cs),
+        "hrana musí spojovat místo a přechod, ale `T1` je přechod a `nowhere` je něco, co v síti \
+         není"
+    );
+    // A warning, its list of transitions being program text.
+    let p = pou(
+        net(
+            &[("P1", 1), ("P2", 0), ("P3", 0)],
+            &[("T1", &["P1"], &["P2"]), ("T2", &["P3"], &["P1"])],
+        ),
+        0,
+    );
+    let w = compile(&p).unwrap().warnings;
+    assert_eq!(w[0].msg.render(Lang::En), w[0].message);
+    assert_eq!(
+        w[0].msg.render(Lang::Pl),
+        "sieć może się zatrzymać (warunki przejść pominięte): po odpaleniu [T1] żadne przejście \
+         nie jest aktywne"
+    );
+    assert_eq!(
+        w[0].msg.render(Lang::Cs),
+        "síť se může zastavit (podmínky přechodů pominuty): po provedení [T1] není povolen žádný \
+         přechod"
+    );
+}

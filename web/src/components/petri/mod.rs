@@ -724,7 +724,7 @@ pub fn PetriView(name: String) -> impl IntoView {
                     format!(
                         "{}: {} [{}]",
                         place.strip_prefix("POU ").unwrap_or(&place),
-                        d.message,
+                        crate::i18n::message_text(&d.msg, None, &d.message),
                         d.code
                     )
                 })
