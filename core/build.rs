@@ -7,6 +7,12 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+/// The package's folder, as cargo gives it when the script runs (not when it was compiled:
+/// a build script compiled once may serve another checkout of the same package).
+fn manifest_dir() -> std::path::PathBuf {
+    std::path::PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").unwrap_or_default())
+}
+
 /// `undeclared_name` → `UndeclaredName`, `expect.type_name` → `ExpectTypeName`.
 fn variant(key: &str) -> String {
     key.split(['_', '.'])
@@ -18,7 +24,7 @@ fn variant(key: &str) -> String {
 }
 
 fn main() {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("i18n/messages.en.json");
+    let file = manifest_dir().join("i18n/messages.en.json");
     println!("cargo:rerun-if-changed={}", file.display());
     let text = std::fs::read_to_string(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
     let map: serde_json::Map<String, serde_json::Value> =

@@ -26,6 +26,12 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+/// The package's folder, as cargo gives it when the script runs (not when it was compiled:
+/// a build script compiled once may serve another checkout of the same package).
+fn manifest_dir() -> std::path::PathBuf {
+    std::path::PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").unwrap_or_default())
+}
+
 mod naming {
     include!("src/examples/naming.rs");
 }
@@ -95,7 +101,7 @@ impl Entry {
 
 /// Writes the exercise catalogue and files (see the module's doc).
 fn exercises(out: &Path) {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../exercises");
+    let dir = manifest_dir().join("../exercises");
     println!("cargo:rerun-if-changed={}", dir.display());
     for file in ["statement.rs", "built_form.rs"] {
         println!("cargo:rerun-if-changed=../core/src/exercise/{file}");
@@ -219,7 +225,7 @@ fn part_files(dir: &Path) -> Vec<String> {
 /// The page's words: the key enum and English texts, the translations checked and written
 /// as arrays in key order.
 fn i18n(out_dir: &Path) {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("i18n");
+    let dir = manifest_dir().join("i18n");
     println!("cargo:rerun-if-changed={}", dir.display());
     let mut problems = Vec::new();
     // English, part by part: every key starts with its part's name and a dot.
@@ -251,7 +257,7 @@ fn i18n(out_dir: &Path) {
     // `diag` (keys `diag.KEY`), after every part of the page so that `K::diag_*` are in
     // `plc_core::diagnostics::Msg` order (key order) from `DIAG_START` on: the page finds a
     // message's translation at `DIAG_START + Msg::index`. ----
-    let core_i18n = Path::new(env!("CARGO_MANIFEST_DIR")).join("../core/i18n");
+    let core_i18n = manifest_dir().join("../core/i18n");
     let diag_file = |lang: &str| core_i18n.join(format!("messages.{lang}.json"));
     if parts.iter().any(|p| p == "diag") {
         problems.push("en/diag.json: the part `diag` is the diagnostics' (core/i18n/)".into());
@@ -367,7 +373,7 @@ fn main() {
     let out_dir = std::env::var("OUT_DIR").unwrap_or_else(|_| ".".into());
     exercises(Path::new(&out_dir));
     i18n(Path::new(&out_dir));
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples");
+    let dir = manifest_dir().join("../examples");
     println!("cargo:rerun-if-changed={}", dir.display());
     let files: Vec<String> = std::fs::read_dir(&dir)
         .map(|entries| {

@@ -156,7 +156,7 @@ impl<T: Typing> Lowering<'_, T> {
                     self.error(
                         Code::IlNoCurrentResult,
                         at.span,
-                        crate::msg!(NeedsCurrentResultButNone, name = at.operator.name.to_string()),
+                        crate::msg!(NeedsCurrentResultButNone, name = at.operator.name),
                     );
                 }
                 self.poisoned = true;
@@ -218,7 +218,7 @@ impl<T: Typing> Lowering<'_, T> {
                 self.error(
                     Code::IlResultType,
                     at,
-                    crate::msg!(CurrentResultHereIlKeeps, shown = shown.to_string()),
+                    crate::msg!(CurrentResultHereIlKeeps, shown = shown),
                 );
                 None
             }
@@ -341,7 +341,7 @@ impl<T: Typing> Lowering<'_, T> {
                     at,
                     crate::msg!(
                         CurrentResultReachesHereBut,
-                        label = label.to_string(),
+                        label = label,
                         here = (b.name.trim_start_matches("IL__CR_")).to_string(),
                         there = (a.name.trim_start_matches("IL__CR_")).to_string()
                     ),
@@ -377,7 +377,7 @@ impl<T: Typing> Lowering<'_, T> {
                 self.error(
                     Code::IlUndefinedLabel,
                     label.span,
-                    crate::msg!(LabelNotDefinedBody, name = label.name.to_string()),
+                    crate::msg!(LabelNotDefinedBody, name = label.name),
                 );
                 None
             }
@@ -403,7 +403,7 @@ impl<T: Typing> Lowering<'_, T> {
             self.error(
                 Code::IlBadInstruction,
                 at,
-                crate::msg!(CannotStandInsideParenthesesOnly, name = ins.operator.name.to_string()),
+                crate::msg!(CannotStandInsideParenthesesOnly, name = ins.operator.name),
             );
             return true;
         }
@@ -454,7 +454,7 @@ impl<T: Typing> Lowering<'_, T> {
                         self.error(
                             Code::TooComplex,
                             at,
-                            crate::msg!(MoreThanOpenOnce, MAX_DEFERRED = MAX_DEFERRED.to_string()),
+                            crate::msg!(MoreThanOpenOnce, MAX_DEFERRED = MAX_DEFERRED),
                         );
                         self.poisoned = true;
                         self.cr = None;

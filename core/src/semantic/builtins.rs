@@ -158,7 +158,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAnOutput,
                         p.span,
-                        crate::msg!(HasNoOutputsUseResult, name = name.name.to_string()),
+                        crate::msg!(HasNoOutputsUseResult, name = name.name),
                     );
                     return None;
                 }
@@ -175,8 +175,8 @@ impl<'a> Checker<'a> {
             let want = if variadic { "at least 2".to_string() } else { params.len().to_string() };
             let msg = crate::msg!(
                 TakesArgumentSGiven,
-                name = name.name.to_string(),
-                want = want.to_string(),
+                name = name.name,
+                want = want,
                 given = (given.len()).to_string()
             );
             self.error(Code::WrongArgumentCount, span, msg);
@@ -215,7 +215,7 @@ impl<'a> Checker<'a> {
                         other => {
                             let msg = crate::msg!(
                                 AllInputsMustStringsFound,
-                                what = what.to_string(),
+                                what = what,
                                 other = (self.tname(other)).to_string()
                             );
                             self.error(Code::TypeMismatch, t.e.span, msg);
@@ -236,7 +236,7 @@ impl<'a> Checker<'a> {
                     let Some(el) = el else {
                         let msg = crate::msg!(
                             InputsTypesDoNotMix,
-                            what = what.to_string(),
+                            what = what,
                             ty = (self.tname(acc.e.ty)).to_string(),
                             ty2 = (self.tname(t.e.ty)).to_string()
                         );
@@ -262,7 +262,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::TypeMismatch,
                         span,
-                        crate::msg!(AllInputsMustHaveSame, what = what.to_string()),
+                        crate::msg!(AllInputsMustHaveSame, what = what),
                     );
                     return None;
                 }
@@ -444,7 +444,7 @@ impl<'a> Checker<'a> {
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
                     let msg = crate::msg!(
                         NeedsBitStringIntegerNot,
-                        key = key.to_string(),
+                        key = key,
                         ty = (self.tname(t.e.ty)).to_string()
                     );
                     self.error(Code::TypeMismatch, a[0].span, msg);
@@ -473,7 +473,7 @@ impl<'a> Checker<'a> {
             "MAX" | "MIN" | "LIMIT" => {
                 let items = a.iter().map(|e| self.expr(e, hint)).collect::<Option<Vec<_>>>()?;
                 if let Some(r) = items.iter().find(|t| t.e.ty.is_ref()) {
-                    let msg = crate::msg!(ComparesInputsReferencesHaveNo, key = key.to_string());
+                    let msg = crate::msg!(ComparesInputsReferencesHaveNo, key = key);
                     self.error(Code::OperatorTypeMismatch, r.e.span, msg);
                     return None;
                 }
@@ -591,7 +591,7 @@ impl<'a> Checker<'a> {
                 if !t.e.ty.elem().is_some_and(|e| e.is_integral()) {
                     let msg = crate::msg!(
                         NeedsBitStringHoldingBcd,
-                        name = name.name.to_string(),
+                        name = name.name,
                         ty = (self.tname(t.e.ty)).to_string()
                     );
                     self.error(Code::TypeMismatch, arg.span, msg);
@@ -633,7 +633,7 @@ impl<'a> Checker<'a> {
                 other => {
                     let msg = crate::msg!(
                         CannotConvertValueType,
-                        name = name.name.to_string(),
+                        name = name.name,
                         other = (self.tname(other)).to_string()
                     );
                     self.error(Code::TypeMismatch, arg.span, msg);
@@ -653,7 +653,7 @@ impl<'a> Checker<'a> {
                 other => {
                     let msg = crate::msg!(
                         CannotConvertValueType,
-                        name = name.name.to_string(),
+                        name = name.name,
                         other = (self.tname(other)).to_string()
                     );
                     self.error(Code::TypeMismatch, arg.span, msg);

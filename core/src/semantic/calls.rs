@@ -44,16 +44,12 @@ impl<'a> Checker<'a> {
                     return match self.pous[pou as usize].kind {
                         PouKind::Function => Some(Callee::Function(pou)),
                         PouKind::FunctionBlock => {
-                            let msg = crate::msg!(
-                                FunctionBlockTypeDeclareInstance,
-                                name = id.name.to_string()
-                            );
+                            let msg = crate::msg!(FunctionBlockTypeDeclareInstance, name = id.name);
                             self.error(Code::UnknownFunction, callee.span, msg);
                             None
                         }
                         PouKind::Program => {
-                            let msg =
-                                crate::msg!(ProgramProgramsAreRunPlc, name = id.name.to_string());
+                            let msg = crate::msg!(ProgramProgramsAreRunPlc, name = id.name);
                             self.error(Code::ProgramCalled, callee.span, msg);
                             None
                         }
@@ -116,7 +112,7 @@ impl<'a> Checker<'a> {
                 let ty = self.pous[pou as usize].result_type();
                 if ty == Type::Void {
                     let name = self.pous[pou as usize].name.clone();
-                    let msg = crate::msg!(HasNoResultTypeSo, name = name.to_string());
+                    let msg = crate::msg!(HasNoResultTypeSo, name = name);
                     self.error(Code::NoReturnValue, span, msg);
                     return None;
                 }
@@ -208,7 +204,7 @@ impl<'a> Checker<'a> {
                     let Some(&i) = params.get(next_positional) else {
                         let msg = crate::msg!(
                             TakesArgumentSMoreWere,
-                            name = callee.name.to_string(),
+                            name = callee.name,
                             params = (params.len()).to_string()
                         );
                         self.error(Code::WrongArgumentCount, e.span, msg);
@@ -255,11 +251,8 @@ impl<'a> Checker<'a> {
                         continue;
                     };
                     if callee.vars[i as usize].section != VarSection::Output {
-                        let msg = crate::msg!(
-                            NotOutputUseInputs,
-                            name = name.name.to_string(),
-                            name2 = callee.name.to_string()
-                        );
+                        let msg =
+                            crate::msg!(NotOutputUseInputs, name = name.name, name2 = callee.name);
                         self.error(Code::NotAnOutput, name.span, msg);
                         ok = false;
                         continue;
@@ -282,8 +275,7 @@ impl<'a> Checker<'a> {
                     continue;
                 };
                 if matches!(place, Place::Bit(..) | Place::Slice(..)) {
-                    let msg =
-                        crate::msg!(OutputWrittenWholeVariableNot, name = param.name.to_string());
+                    let msg = crate::msg!(OutputWrittenWholeVariableNot, name = param.name);
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -323,7 +315,7 @@ impl<'a> Checker<'a> {
                         | ast::ExprKind::Deref(_)
                 );
                 if !is_place {
-                    let msg = crate::msg!(VarOutPassVariableNot, name = param.name.to_string());
+                    let msg = crate::msg!(VarOutPassVariableNot, name = param.name);
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -333,7 +325,7 @@ impl<'a> Checker<'a> {
                     continue;
                 };
                 if matches!(place, Place::Bit(..) | Place::Slice(..)) {
-                    let msg = crate::msg!(VarOutBitLocatedVariable, name = param.name.to_string());
+                    let msg = crate::msg!(VarOutBitLocatedVariable, name = param.name);
                     self.error(Code::InOutNotVariable, value_expr.span, msg);
                     ok = false;
                     continue;
@@ -343,7 +335,7 @@ impl<'a> Checker<'a> {
                 {
                     let msg = crate::msg!(
                         VarOutNeedsVariableType,
-                        name = param.name.to_string(),
+                        name = param.name,
                         ty = (self.tname(param.ty)).to_string(),
                         ty2 = (self.tname(ty)).to_string()
                     );
@@ -370,11 +362,7 @@ impl<'a> Checker<'a> {
         for &i in &params {
             let p = &callee.vars[i as usize];
             if p.section == VarSection::InOut && !given.contains(&i) {
-                let msg = crate::msg!(
-                    VarOutMustGivenEvery,
-                    name = p.name.to_string(),
-                    name2 = callee.name.to_string()
-                );
+                let msg = crate::msg!(VarOutMustGivenEvery, name = p.name, name2 = callee.name);
                 self.error(Code::MissingInOut, span, msg);
                 ok = false;
             }

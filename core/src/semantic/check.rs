@@ -198,7 +198,7 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::DuplicateDeclaration,
                                 def.name.span,
-                                crate::msg!(TypeAlreadyDeclared, name = def.name.name.to_string()),
+                                crate::msg!(TypeAlreadyDeclared, name = def.name.name),
                             );
                             continue;
                         }
@@ -218,11 +218,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::DuplicateDeclaration,
                             pou.name.span,
-                            crate::msg!(
-                                ChooseAnotherName,
-                                name = pou.name.name.to_string(),
-                                what = what.to_string()
-                            ),
+                            crate::msg!(ChooseAnotherName, name = pou.name.name, what = what),
                         );
                         continue;
                     }
@@ -268,7 +264,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::DuplicateDeclaration,
                     var.span,
-                    crate::msg!(GlobalVariableAlreadyDeclared, name = var.name.to_string()),
+                    crate::msg!(GlobalVariableAlreadyDeclared, name = var.name),
                 );
                 continue;
             }
@@ -301,7 +297,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::RecursiveCall,
                         span,
-                        crate::msg!(CallsItselfDirectlyThroughOther, name = name.to_string()),
+                        crate::msg!(CallsItselfDirectlyThroughOther, name = name),
                     );
                     break;
                 }

@@ -38,8 +38,8 @@ impl Checker<'_> {
                 other.name.span,
                 crate::msg!(
                     ProgramHasOneConfigurationSecond,
-                    name = other.name.name.to_string(),
-                    name2 = first.name.name.to_string()
+                    name = other.name.name,
+                    name2 = first.name.name
                 ),
             );
         }
@@ -67,10 +67,7 @@ impl Checker<'_> {
                     self.error(
                         Code::DuplicateDeclaration,
                         p.name.span,
-                        crate::msg!(
-                            AlreadyGlobalVariableNameProgram,
-                            name = p.name.name.to_string()
-                        ),
+                        crate::msg!(AlreadyGlobalVariableNameProgram, name = p.name.name),
                     );
                     continue;
                 }
@@ -123,11 +120,7 @@ impl Checker<'_> {
         what: &'n str,
     ) -> bool {
         if let Some(other) = names.get(&name.key()) {
-            let msg = crate::msg!(
-                AlreadyNamesConfiguration,
-                name = name.name.to_string(),
-                other = other.to_string()
-            );
+            let msg = crate::msg!(AlreadyNamesConfiguration, name = name.name, other = other);
             self.error(Code::DuplicateDeclaration, name.span, msg);
             return true;
         }
@@ -159,7 +152,7 @@ impl Checker<'_> {
                 Some(_) => self.error(
                     Code::BadTaskSetting,
                     e.span,
-                    crate::msg!(IntervalTaskMustConstantTime, name = t.name.name.to_string()),
+                    crate::msg!(IntervalTaskMustConstantTime, name = t.name.name),
                 ),
             }
         }
@@ -180,7 +173,7 @@ impl Checker<'_> {
                 None => self.error(
                     Code::BadTaskSetting,
                     e.span,
-                    crate::msg!(SingleTaskMustBoolGlobal, name = t.name.name.to_string()),
+                    crate::msg!(SingleTaskMustBoolGlobal, name = t.name.name),
                 ),
             }
         }
@@ -214,11 +207,7 @@ impl Checker<'_> {
                 self.error(
                     Code::NotAProgramType,
                     p.type_name.span,
-                    crate::msg!(
-                        ProgramInstanceNamesProgram,
-                        name = p.type_name.name.to_string(),
-                        what = what.to_string()
-                    ),
+                    crate::msg!(ProgramInstanceNamesProgram, name = p.type_name.name, what = what),
                 );
                 return None;
             }
@@ -231,11 +220,7 @@ impl Checker<'_> {
                     self.error(
                         Code::UnknownTask,
                         t.span,
-                        crate::msg!(
-                            ResourceDeclaresNoTask,
-                            resource = resource.to_string(),
-                            name = t.name.to_string()
-                        ),
+                        crate::msg!(ResourceDeclaresNoTask, resource = resource, name = t.name),
                     );
                     return None;
                 }
@@ -266,12 +251,8 @@ impl Checker<'_> {
             .map(|v| (v.name.clone(), v.ty));
         let Some((param, ty)) = param else {
             let what = if conn.output { "VAR_OUTPUT (`=>`)" } else { "VAR_INPUT (`:=`)" };
-            let msg = crate::msg!(
-                NotProgram,
-                name = conn.param.name.to_string(),
-                what = what.to_string(),
-                name2 = prog.name.to_string()
-            );
+            let msg =
+                crate::msg!(NotProgram, name = conn.param.name, what = what, name2 = prog.name);
             self.error(Code::BadProgramConnection, conn.param.span, msg);
             return;
         };
@@ -314,7 +295,7 @@ impl Checker<'_> {
             if ty != var.ty {
                 let msg = crate::msg!(
                     DeclaredVarConfigEntryGives,
-                    name = var.name.to_string(),
+                    name = var.name,
                     ty = (self.tname(var.ty)).to_string(),
                     ty2 = (self.tname(ty)).to_string()
                 );
@@ -416,11 +397,7 @@ impl Checker<'_> {
         };
         if let Some(why) = refused {
             let name = v.path.last().map_or(v.span, |n| n.span);
-            let msg = crate::msg!(
-                CannotTakeInitialValueFrom,
-                name = var.name.to_string(),
-                why = why.to_string()
-            );
+            let msg = crate::msg!(CannotTakeInitialValueFrom, name = var.name, why = why);
             self.error(Code::BadConfigVar, name, msg);
             return false;
         }
@@ -485,15 +462,15 @@ impl Checker<'_> {
     ) -> Option<(String, crate::syntax::DirectAddress)> {
         let incomplete = var.location.as_ref().filter(|l| l.path.is_empty());
         let Some(decl) = incomplete else {
-            let msg = crate::msg!(NotDeclaredIncompleteAddressQ, name = var.name.to_string());
+            let msg = crate::msg!(NotDeclaredIncompleteAddressQ, name = var.name);
             self.error(Code::BadConfigVar, v.span, msg);
             return None;
         };
         if decl.area != loc.area || decl.size != loc.size || loc.path.is_empty() {
             let msg = crate::msg!(
                 DeclaredGiveCompleteAddressArea,
-                name = var.name.to_string(),
-                text = decl.text.to_string(),
+                name = var.name,
+                text = decl.text,
                 ty = (self.tname(var.ty)).to_string()
             );
             self.error(Code::BadConfigVar, loc.span, msg);

@@ -18,11 +18,7 @@ impl<'a> Checker<'a> {
             Some(TypeSlot::Failed) | None => return None,
             Some(TypeSlot::Resolving(span)) => {
                 let span = *span;
-                self.error(
-                    Code::RecursiveType,
-                    span,
-                    crate::msg!(TypeContainsItself, key = key.to_string()),
-                );
+                self.error(Code::RecursiveType, span, crate::msg!(TypeContainsItself, key = key));
                 self.type_slots.insert(key.to_string(), TypeSlot::Failed);
                 return None;
             }
@@ -54,8 +50,8 @@ impl<'a> Checker<'a> {
         if self.resolve_depth >= MAX_TYPE_NESTING {
             let message = crate::msg!(
                 TypeBuiltFromTypesNested,
-                owner = owner.to_string(),
-                MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string()
+                owner = owner,
+                MAX_TYPE_NESTING = MAX_TYPE_NESTING
             );
             self.error(Code::TooComplex, tr.span(), message);
             return None;
@@ -91,7 +87,7 @@ impl<'a> Checker<'a> {
                         id.span,
                         crate::msg!(
                             NotType,
-                            name = id.name.to_string(),
+                            name = id.name,
                             kind_name = (kind_name(self.pous[pou as usize].kind)).to_string()
                         ),
                     );
@@ -120,8 +116,8 @@ impl<'a> Checker<'a> {
                         *span,
                         crate::msg!(
                             StringLengthMustBetween1,
-                            MAX_STRING_LEN = MAX_STRING_LEN.to_string(),
-                            len = len.to_string()
+                            MAX_STRING_LEN = MAX_STRING_LEN,
+                            len = len
                         ),
                     );
                     return None;
@@ -136,11 +132,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::InvalidRange,
                             lo.span.to(hi.span),
-                            crate::msg!(
-                                ArrayBoundsLowerBoundAbove,
-                                l = l.to_string(),
-                                h = h.to_string()
-                            ),
+                            crate::msg!(ArrayBoundsLowerBoundAbove, l = l, h = h),
                         );
                         return None;
                     }
@@ -161,7 +153,7 @@ impl<'a> Checker<'a> {
                         *span,
                         crate::msg!(
                             ArraysMayHoldMostElements,
-                            MAX_ARRAY_ELEMENTS = MAX_ARRAY_ELEMENTS.to_string()
+                            MAX_ARRAY_ELEMENTS = MAX_ARRAY_ELEMENTS
                         ),
                     );
                     return None;
@@ -174,7 +166,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::TypeMismatch,
                         base.span,
-                        crate::msg!(SubrangeNeedsIntegerBaseType, name = base.name.to_string()),
+                        crate::msg!(SubrangeNeedsIntegerBaseType, name = base.name),
                     );
                     return None;
                 };
@@ -186,8 +178,8 @@ impl<'a> Checker<'a> {
                         *span,
                         crate::msg!(
                             SubrangeEmptyDoesNotFit,
-                            l = l.to_string(),
-                            h = h.to_string(),
+                            l = l,
+                            h = h,
                             name = (elem.name()).to_string()
                         ),
                     );
@@ -210,7 +202,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::DuplicateEnumerator,
                             name.span,
-                            crate::msg!(AppearsTwiceEnumeration, name = name.name.to_string()),
+                            crate::msg!(AppearsTwiceEnumeration, name = name.name),
                         );
                         continue;
                     }
@@ -242,7 +234,7 @@ impl<'a> Checker<'a> {
                             self.error(
                                 Code::DuplicateDeclaration,
                                 name.span,
-                                crate::msg!(FieldDeclaredTwice, name = name.name.to_string()),
+                                crate::msg!(FieldDeclaredTwice, name = name.name),
                             );
                             continue;
                         }
@@ -294,12 +286,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::SubrangeViolation,
                             e.span,
-                            crate::msg!(
-                                InitialValueOutsideSubrange,
-                                n = n.to_string(),
-                                lo = lo.to_string(),
-                                hi = hi.to_string()
-                            ),
+                            crate::msg!(InitialValueOutsideSubrange, n = n, lo = lo, hi = hi),
                         );
                     }
                 }
@@ -321,7 +308,7 @@ impl<'a> Checker<'a> {
                                     *span,
                                     crate::msg!(
                                         RepeatCountDoesNotFit,
-                                        n = n.to_string(),
+                                        n = n,
                                         def = (def.len()).to_string()
                                     ),
                                 );
@@ -395,7 +382,7 @@ impl<'a> Checker<'a> {
                     other.span(),
                     crate::msg!(
                         CannotInitialiseValueType,
-                        what = what.to_string(),
+                        what = what,
                         ty = (self.tname(ty)).to_string()
                     ),
                 );
@@ -447,7 +434,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::DuplicateDeclaration,
                         name.span,
-                        crate::msg!(AlreadyDeclaredPou, name = name.name.to_string()),
+                        crate::msg!(AlreadyDeclaredPou, name = name.name),
                     );
                     continue;
                 }
@@ -472,18 +459,14 @@ impl<'a> Checker<'a> {
             None => self.error(
                 Code::ExternalWithoutGlobal,
                 name.span,
-                crate::msg!(VarExternalHasNoMatching, name = name.name.to_string()),
+                crate::msg!(VarExternalHasNoMatching, name = name.name),
             ),
             Some(&g) if self.globals[g as usize].ty != ty => {
                 let want = self.tname(self.globals[g as usize].ty);
                 self.error(
                     Code::ExternalWithoutGlobal,
                     name.span,
-                    crate::msg!(
-                        VarExternalMustHaveType,
-                        name = name.name.to_string(),
-                        want = want.to_string()
-                    ),
+                    crate::msg!(VarExternalMustHaveType, name = name.name, want = want),
                 );
             }
             Some(_) => {}
@@ -503,7 +486,7 @@ impl<'a> Checker<'a> {
                 loc.span,
                 crate::msg!(
                     CanOnlyHoldElementaryValue,
-                    text = loc.text.to_string(),
+                    text = loc.text,
                     ty = (self.tname(ty)).to_string()
                 ),
             );
@@ -520,11 +503,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::InvalidLocation,
                 loc.span,
-                crate::msg!(
-                    DoesNotFitVariableType,
-                    text = loc.text.to_string(),
-                    name = (e.name()).to_string()
-                ),
+                crate::msg!(DoesNotFitVariableType, text = loc.text, name = (e.name()).to_string()),
             );
         }
     }

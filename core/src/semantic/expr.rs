@@ -182,11 +182,7 @@ impl<'a> Checker<'a> {
                 Some(Typed::fixed(Expr { kind: ExprKind::Sys(s), ty: s.ty(), span }))
             }
             NameRef::Pou => {
-                self.error(
-                    Code::NotAVariable,
-                    span,
-                    crate::msg!(PouNotValueCall, name = id.name.to_string()),
-                );
+                self.error(Code::NotAVariable, span, crate::msg!(PouNotValueCall, name = id.name));
                 None
             }
         }
@@ -223,7 +219,7 @@ impl<'a> Checker<'a> {
             let msg = crate::msg!(
                 PartialAccessNeedsBitString,
                 part_letter = (part_letter(part)).to_string(),
-                index = index.to_string(),
+                index = index,
                 base = (self.tname(base)).to_string()
             );
             self.error(Code::NotAStruct, span, msg);
@@ -300,7 +296,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::TypeMismatch,
                 span,
-                crate::msg!(FunctionBlockInstanceUseOne, name = var.name.to_string()),
+                crate::msg!(FunctionBlockInstanceUseOne, name = var.name),
             );
             return None;
         }
@@ -320,7 +316,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::InvalidTypedLiteral,
                             p.span,
-                            crate::msg!(UnknownTypePrefix, name = p.name.to_string()),
+                            crate::msg!(UnknownTypePrefix, name = p.name),
                         );
                         return None;
                     }
@@ -332,7 +328,7 @@ impl<'a> Checker<'a> {
                 c.error(
                     Code::InvalidTypedLiteral,
                     span,
-                    crate::msg!(DoesNotFitLiteral, name = p.name.to_string()),
+                    crate::msg!(DoesNotFitLiteral, name = p.name),
                 );
             }
         };
@@ -348,7 +344,7 @@ impl<'a> Checker<'a> {
                         self.error(
                             Code::IntegerLiteralTooLarge,
                             span,
-                            crate::msg!(TooLargeAnyIntegerType, v = v.to_string()),
+                            crate::msg!(TooLargeAnyIntegerType, v = v),
                         );
                         return None;
                     };
@@ -366,10 +362,10 @@ impl<'a> Checker<'a> {
                             span,
                             crate::msg!(
                                 DoesNotFit,
-                                v = v.to_string(),
+                                v = v,
                                 name = (el.name()).to_string(),
-                                lo = lo.to_string(),
-                                hi = hi.to_string()
+                                lo = lo,
+                                hi = hi
                             ),
                         );
                         return None;
@@ -441,7 +437,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::TypeMismatch,
                 type_name.span,
-                crate::msg!(NotEnumeration, name = type_name.name.to_string()),
+                crate::msg!(NotEnumeration, name = type_name.name),
             );
             return None;
         };
@@ -475,10 +471,10 @@ impl<'a> Checker<'a> {
         let &(_, value) = def.values.iter().find(|(n, _)| n.eq_ignore_ascii_case(&id.name))?;
         let message = crate::msg!(
             BothVariableValueReadValue,
-            name = id.name.to_string(),
-            name2 = var.name.to_string(),
+            name = id.name,
+            name2 = var.name,
             ty = (self.tname(var.ty)).to_string(),
-            name3 = def.name.to_string()
+            name3 = def.name
         );
         self.warning(Code::VariableShadowsEnumValue, id.span, message);
         Some(NameRef::Enumerator(Type::Enum(eid), value))
@@ -540,12 +536,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::UndeclaredName,
                     id.span,
-                    crate::msg!(
-                        ValueBothWrite,
-                        name = id.name.to_string(),
-                        a = a.to_string(),
-                        b = b.to_string()
-                    ),
+                    crate::msg!(ValueBothWrite, name = id.name, a = a, b = b),
                 );
                 return None;
             }
@@ -652,7 +643,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::NotAVariable,
                         e.span,
-                        crate::msg!(SystemVariableNotPlaceMemory, name = id.name.to_string()),
+                        crate::msg!(SystemVariableNotPlaceMemory, name = id.name),
                     );
                     None
                 }
@@ -699,8 +690,8 @@ impl<'a> Checker<'a> {
                         if write && !matches!(var.section, VarSection::Input) {
                             let msg = crate::msg!(
                                 NotInputOnlyInputsMay,
-                                name = field.name.to_string(),
-                                name2 = pou.name.to_string()
+                                name = field.name,
+                                name2 = pou.name
                             );
                             self.error(Code::NotAssignable, e.span, msg);
                             return None;
@@ -710,7 +701,7 @@ impl<'a> Checker<'a> {
                     other => {
                         let msg = crate::msg!(
                             ValueTypeHasNoMembers,
-                            name = field.name.to_string(),
+                            name = field.name,
                             other = (self.tname(other)).to_string()
                         );
                         self.error(Code::NotAStruct, field.span, msg);
@@ -723,7 +714,7 @@ impl<'a> Checker<'a> {
                 let Some(el) = bty.elem().filter(|e| e.is_integral()) else {
                     let msg = crate::msg!(
                         BitAccessNeedsIntegerBit,
-                        n = n.to_string(),
+                        n = n,
                         bty = (self.tname(bty)).to_string()
                     );
                     self.error(Code::NotAStruct, e.span, msg);
@@ -734,7 +725,7 @@ impl<'a> Checker<'a> {
                         HasBits0ThereNo,
                         name = (el.name()).to_string(),
                         bits = (el.bits() - 1).to_string(),
-                        n = n.to_string()
+                        n = n
                     );
                     self.error(Code::BitOutOfRange, e.span, msg);
                     return None;
@@ -774,12 +765,7 @@ impl<'a> Checker<'a> {
                     }
                     if let Some(v) = super::consts::int_value(&t.e) {
                         if v < *lo || v > *hi {
-                            let msg = crate::msg!(
-                                IndexOutsideArrayBounds,
-                                v = v.to_string(),
-                                lo = lo.to_string(),
-                                hi = hi.to_string()
-                            );
+                            let msg = crate::msg!(IndexOutsideArrayBounds, v = v, lo = lo, hi = hi);
                             self.error(Code::ConstantIndexOutOfRange, ix.span, msg);
                             return None;
                         }
@@ -795,7 +781,7 @@ impl<'a> Checker<'a> {
                 self.error(
                     Code::NotAssignable,
                     e.span,
-                    crate::msg!(ExpressionCannotNotVariable, what = what.to_string()),
+                    crate::msg!(ExpressionCannotNotVariable, what = what),
                 );
                 None
             }
@@ -1037,10 +1023,10 @@ impl<'a> Checker<'a> {
                                 span,
                                 crate::msg!(
                                     DoesNotFit,
-                                    v = v.to_string(),
+                                    v = v,
                                     name = (te.name()).to_string(),
-                                    lo = lo.to_string(),
-                                    hi = hi.to_string()
+                                    lo = lo,
+                                    hi = hi
                                 ),
                             );
                             return None;

@@ -98,8 +98,8 @@ impl Checker<'_> {
         for (span, name) in found {
             let message = crate::msg!(
                 TypeNestsFbInstancesStructs,
-                name = name.to_string(),
-                MAX_TYPE_NESTING = MAX_TYPE_NESTING.to_string()
+                name = name,
+                MAX_TYPE_NESTING = MAX_TYPE_NESTING
             );
             self.error(Code::TooComplex, span, message);
         }

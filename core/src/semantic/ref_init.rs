@@ -75,7 +75,7 @@ impl Checker<'_> {
         match self.static_path(place, p.scope.pou) {
             Ok(path) => Some(path),
             Err(why) => {
-                let msg = crate::msg!(ReferenceSInitialValueMust, why = why.to_string());
+                let msg = crate::msg!(ReferenceSInitialValueMust, why = why);
                 self.error(Code::RefNotAVariable, span, msg);
                 None
             }

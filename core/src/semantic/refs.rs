@@ -71,7 +71,7 @@ impl Checker<'_> {
         };
         if let ast::Arg::Input { name, .. } = &args[0] {
             if !name.name.eq_ignore_ascii_case("IN") {
-                let msg = crate::msg!(RefHasOneParameterNot, name = name.name.to_string());
+                let msg = crate::msg!(RefHasOneParameterNot, name = name.name);
                 self.error(Code::NoSuchParameter, name.span, msg);
                 return None;
             }
@@ -86,7 +86,7 @@ impl Checker<'_> {
             _ => None,
         };
         if let Some(why) = refused {
-            let msg = crate::msg!(RefNeedsWholeVariableElement, why = why.to_string());
+            let msg = crate::msg!(RefNeedsWholeVariableElement, why = why);
             self.error(Code::RefNotAVariable, arg.span, msg);
             return None;
         }
@@ -129,7 +129,7 @@ impl Checker<'_> {
                     }
                 }
                 Some(_) => {
-                    let msg = crate::msg!(TypeRefersItselfOnlyStruct, name = name.name.to_string());
+                    let msg = crate::msg!(TypeRefersItselfOnlyStruct, name = name.name);
                     self.error(Code::RecursiveType, name.span, msg);
                 }
                 None => {}

@@ -20,7 +20,7 @@ impl<'a> Checker<'a> {
                     K::Exit => "the EXIT before it always leaves the loop",
                     _ => "the CONTINUE before it always goes on with the loop's next pass",
                 };
-                let msg = crate::msg!(StatementCanNeverRun, why = why.to_string());
+                let msg = crate::msg!(StatementCanNeverRun, why = why);
                 self.warning(Code::UnreachableCode, next.span, msg);
             }
         }
@@ -47,7 +47,7 @@ impl<'a> Checker<'a> {
         if !t.e.ty.is_bool() {
             let msg = crate::msg!(
                 ConditionMustBoolNot,
-                what = what.to_string(),
+                what = what,
                 ty = (self.tname(t.e.ty)).to_string()
             );
             self.error(Code::ConditionNotBool, e.span, msg);
@@ -122,7 +122,7 @@ impl<'a> Checker<'a> {
                 let ty = place.as_ref().map(|p| p.1);
                 let el = ty.and_then(Type::elem).filter(|e| e.is_int());
                 if place.is_some() && el.is_none() {
-                    let msg = crate::msg!(VariableMustIntegerVariable, name = var.name.to_string());
+                    let msg = crate::msg!(VariableMustIntegerVariable, name = var.name);
                     self.error(Code::ForVariableNotInteger, var.span, msg);
                 }
                 let vty = el.map(Type::Elem);
@@ -173,7 +173,7 @@ impl<'a> Checker<'a> {
                     self.error(
                         Code::ExitOutsideLoop,
                         span,
-                        crate::msg!(CanOnlyUsedInsideWhile, kw = kw.to_string()),
+                        crate::msg!(CanOnlyUsedInsideWhile, kw = kw),
                     );
                     return None;
                 }
@@ -264,12 +264,7 @@ impl<'a> Checker<'a> {
             self.error(
                 Code::SubrangeViolation,
                 value.span,
-                crate::msg!(
-                    OutsideSubrangeVariable,
-                    v = v.to_string(),
-                    lo = lo.to_string(),
-                    hi = hi.to_string()
-                ),
+                crate::msg!(OutsideSubrangeVariable, v = v, lo = lo, hi = hi),
             );
         }
     }
@@ -312,11 +307,7 @@ impl<'a> Checker<'a> {
                 };
                 let span = lo_e.span.to(hi_e.span);
                 if lo > hi {
-                    self.error(
-                        Code::InvalidRange,
-                        span,
-                        crate::msg!(RangeEmpty, lo = lo.to_string(), hi = hi.to_string()),
-                    );
+                    self.error(Code::InvalidRange, span, crate::msg!(RangeEmpty, lo = lo, hi = hi));
                     continue;
                 }
                 if seen.range(..=hi).next_back().is_some_and(|(_, &end)| end >= lo) {
@@ -369,11 +360,8 @@ impl<'a> Checker<'a> {
         if let (Some(v), Some(el)) = (value, sel.elem()) {
             let (lo, hi) = el.int_range();
             if (v as i128) < lo || (v as i128) > hi {
-                let msg = crate::msg!(
-                    LabelCanNeverMatchSelector,
-                    v = v.to_string(),
-                    name = (el.name()).to_string()
-                );
+                let msg =
+                    crate::msg!(LabelCanNeverMatchSelector, v = v, name = (el.name()).to_string());
                 self.warning(Code::CaseWithoutMatch, e.span, msg);
             }
         }

@@ -125,10 +125,10 @@ pub(super) fn resolve<'a>(
         if let Some((other, first)) = names.get(&key) {
             let msg = crate::msg!(
                 AlreadyNameChartGiveAnother,
-                name = id.name.to_string(),
-                other = other.to_string(),
-                name2 = first.name.to_string(),
-                what = what.to_string()
+                name = id.name,
+                other = other,
+                name2 = first.name,
+                what = what
             );
             diags.push(Diagnostic::error(Code::SfcDuplicateName, id.span, msg));
             return false;
@@ -141,9 +141,9 @@ pub(super) fn resolve<'a>(
             };
             let msg = crate::msg!(
                 CannotAlsoNameStepsTransitions,
-                name = id.name.to_string(),
-                whose = whose.to_string(),
-                what = what.to_string()
+                name = id.name,
+                whose = whose,
+                what = what
             );
             diags.push(Diagnostic::error(Code::SfcDuplicateName, id.span, msg));
             return false;
@@ -221,16 +221,12 @@ pub(super) fn resolve<'a>(
                     let span = assoc.action.span;
                     let d = match &hint {
                         Some(_) => {
-                            let msg =
-                                crate::msg!(NeitherActionChartNorVariable, name = name.to_string());
+                            let msg = crate::msg!(NeitherActionChartNorVariable, name = name);
                             Diagnostic::error(Code::SfcUnknownAction, span, msg)
                                 .suggesting(hint.as_deref())
                         }
                         None => {
-                            let msg = crate::msg!(
-                                NeitherActionChartNorVariable2,
-                                name = name.to_string()
-                            );
+                            let msg = crate::msg!(NeitherActionChartNorVariable2, name = name);
                             Diagnostic::error(Code::SfcUnknownAction, span, msg)
                         }
                     };
@@ -242,13 +238,13 @@ pub(super) fn resolve<'a>(
         }
     }
     if chart.steps.is_empty() {
-        let msg = crate::msg!(SfcBodyHasNoInitial, name = pou.name.name.to_string());
+        let msg = crate::msg!(SfcBodyHasNoInitial, name = pou.name.name);
         diags.push(Diagnostic::error(Code::SfcNoInitialStep, pou.name.span, msg));
     }
     check_networks(&chart, diags);
     for a in &chart.actions {
         if let (ActionKind::Declared(decl), true) = (&a.kind, a.uses.is_empty()) {
-            let msg = crate::msg!(NoStepUsesActionSo, name = a.name.name.to_string());
+            let msg = crate::msg!(NoStepUsesActionSo, name = a.name.name);
             diags.push(Diagnostic::warning(Code::SfcUnusedAction, decl.header, msg));
         }
     }
@@ -279,11 +275,7 @@ fn step_list(
     for id in ids {
         match index.get(&id.key()) {
             Some(&i) if out.contains(&i) => {
-                let msg = crate::msg!(
-                    StepListedTwiceAfter,
-                    name = id.name.to_string(),
-                    which = which.to_string()
-                );
+                let msg = crate::msg!(StepListedTwiceAfter, name = id.name, which = which);
                 diags.push(Diagnostic::error(Code::SfcStepListedTwice, id.span, msg));
                 ok = false;
             }
@@ -382,7 +374,7 @@ fn check_priorities(chart: &Chart, diags: &mut Vec<Diagnostic>) {
             let msg = crate::msg!(
                 HasSamePriorityLeavesSame,
                 describe = (t.describe()).to_string(),
-                p = p.to_string(),
+                p = p,
                 describe2 = (u.describe()).to_string()
             );
             diags.push(Diagnostic::warning(Code::SfcSamePriority, span, msg));

@@ -118,7 +118,7 @@ pub fn desugar(file: &mut SourceFile) -> Desugared {
         let Item::Pou(pou) = item else { continue };
         let Some(body) = &pou.sfc else { continue };
         if pou.kind == PouKind::Function {
-            let msg = crate::msg!(FunctionCannotHaveSfcBody, name = pou.name.name.to_string());
+            let msg = crate::msg!(FunctionCannotHaveSfcBody, name = pou.name.name);
             out.diagnostics.push(Diagnostic::error(Code::SfcNotAllowedHere, pou.name.span, msg));
             continue;
         }
@@ -168,7 +168,7 @@ fn check_reserved(file: &SourceFile, diags: &mut Vec<Diagnostic>) -> bool {
     let mut report = |name: &crate::syntax::ast::Ident| {
         if name.name.eq_ignore_ascii_case(STEP_TYPE) {
             clash = true;
-            let msg = crate::msg!(TypeSfcStepsFileSfc, name = name.name.to_string());
+            let msg = crate::msg!(TypeSfcStepsFileSfc, name = name.name);
             diags.push(Diagnostic::error(Code::SfcReservedName, name.span, msg));
         }
     };
@@ -221,7 +221,7 @@ fn check_statements(
     let no_return =
         |stmts: &[crate::syntax::ast::Stmt], what: &str, diags: &mut Vec<Diagnostic>| {
             if let Some(span) = walk::first_return(stmts) {
-                let msg = crate::msg!(ReturnCannotUsedWouldLeave, what = what.to_string());
+                let msg = crate::msg!(ReturnCannotUsedWouldLeave, what = what);
                 diags.push(Diagnostic::error(Code::SfcReturnInAction, span, msg));
             }
         };
@@ -246,10 +246,7 @@ fn check_statements(
                             ));
                         }
                         Some(name) if !walk::assigns(stmts, name) => {
-                            let msg = crate::msg!(
-                                BodyTransitionNeverAssignsSo,
-                                name = name.name.to_string()
-                            );
+                            let msg = crate::msg!(BodyTransitionNeverAssignsSo, name = name.name);
                             diags.push(Diagnostic::warning(
                                 Code::SfcTransitionNotAssigned,
                                 name.span,

@@ -83,7 +83,7 @@ pub(super) fn check(chart: &Chart, diags: &mut Vec<Diagnostic>) {
                         CanActivateStepWhileAlready,
                         describe = (tr.describe()).to_string(),
                         name = (chart.steps[s].name.name).to_string(),
-                        path = path.to_string()
+                        path = path
                     );
                     diags.push(Diagnostic::warning(Code::SfcUnsafe, tr.ast.header, msg));
                 }
@@ -106,7 +106,7 @@ pub(super) fn check(chart: &Chart, diags: &mut Vec<Diagnostic>) {
     }
     for (i, s) in chart.steps.iter().enumerate() {
         if !reached[i] {
-            let msg = crate::msg!(StepCanNeverBecomeActive, name = s.name.name.to_string());
+            let msg = crate::msg!(StepCanNeverBecomeActive, name = s.name.name);
             diags.push(Diagnostic::warning(Code::SfcUnreachableStep, s.header, msg));
         }
     }

@@ -167,18 +167,10 @@ pub(crate) fn validate_block(
     match b.instance.as_deref().map(str::trim) {
         Some(i) if !i.is_empty() => {
             if !is_operand(i) {
-                let msg = crate::msg!(
-                    InstanceNotVariableName,
-                    i = i.to_string(),
-                    name = name.to_string()
-                );
+                let msg = crate::msg!(InstanceNotVariableName, i = i, name = name);
                 sink.error(Code::LadderBadOperand, msg);
             } else if is_function && ctx.is_some() {
-                let msg = crate::msg!(
-                    FunctionHasNoInstanceRemove,
-                    name = name.to_string(),
-                    i = i.to_string()
-                );
+                let msg = crate::msg!(FunctionHasNoInstanceRemove, name = name, i = i);
                 sink.error(Code::LadderInstanceType, msg);
             } else if let Some(c) = ctx {
                 if !undeclared(c, i, &format!("the instance of this {name}"), &mut sink) {
@@ -226,22 +218,18 @@ fn check_pins(
     for p in &b.inputs {
         let pin = p.name.trim();
         if pin.is_empty() {
-            sink.error(
-                Code::LadderMissingOperand,
-                crate::msg!(InputHasNoName, name = name.to_string()),
-            );
+            sink.error(Code::LadderMissingOperand, crate::msg!(InputHasNoName, name = name));
             continue;
         }
         if seen.iter().any(|s| s.eq_ignore_ascii_case(pin)) {
             sink.error(
                 Code::LadderUnknownPin,
-                crate::msg!(InputGivenTwice, pin = pin.to_string(), name = name.to_string()),
+                crate::msg!(InputGivenTwice, pin = pin, name = name),
             );
         }
         seen.push(pin.to_string());
         if pin.eq_ignore_ascii_case(power_in) {
-            let msg =
-                crate::msg!(InputTakesRungSPower, pin = pin.to_string(), name = name.to_string());
+            let msg = crate::msg!(InputTakesRungSPower, pin = pin, name = name);
             sink.error(Code::LadderUnknownPin, msg);
             continue;
         }
@@ -267,8 +255,8 @@ fn check_pins(
                 };
                 let msg = crate::msg!(
                     HasNoInputInputs,
-                    name = name.to_string(),
-                    pin = pin.to_string(),
+                    name = name,
+                    pin = pin,
                     join = (list.join(", ")).to_string()
                 );
                 sink.error(Code::LadderUnknownPin, msg);
@@ -283,33 +271,29 @@ fn check_pins(
                 if w == 0 || w >= height || row >= rows {
                     let msg = crate::msg!(
                         InputWiredBlockRowBut,
-                        pin = pin.to_string(),
-                        name = name.to_string(),
-                        w = w.to_string(),
+                        pin = pin,
+                        name = name,
+                        w = w,
                         height = (height - 1).to_string()
                     );
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 } else if wired_rows.contains(&w) {
-                    let msg = crate::msg!(
-                        InputSharesBlockRowAnother,
-                        pin = pin.to_string(),
-                        name = name.to_string(),
-                        w = w.to_string()
-                    );
+                    let msg =
+                        crate::msg!(InputSharesBlockRowAnother, pin = pin, name = name, w = w);
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 } else if !p.operand.trim().is_empty() {
                     let msg = crate::msg!(
                         InputWiredContactNetworkAlso,
-                        pin = pin.to_string(),
-                        name = name.to_string(),
+                        pin = pin,
+                        name = name,
                         trim = (p.operand.trim()).to_string()
                     );
                     sink.error_at(Code::LadderBadWiredPin, report_row, msg);
                 } else if ty.as_ref().is_some_and(|t| !t.is_bool()) {
                     let msg = crate::msg!(
                         InputOnlyBoolInputCan,
-                        pin = pin.to_string(),
-                        name = name.to_string(),
+                        pin = pin,
+                        name = name,
                         article =
                             (article(&ty.as_ref().map(ToString::to_string).unwrap_or_default()))
                                 .to_string()
@@ -336,8 +320,8 @@ fn check_pins(
                 };
                 let msg = crate::msg!(
                     HasNoOutputOutputs,
-                    name = name.to_string(),
-                    pin = pin.to_string(),
+                    name = name,
+                    pin = pin,
                     join = (list.join(", ")).to_string()
                 );
                 sink.error(Code::LadderUnknownPin, msg);
@@ -363,8 +347,8 @@ fn check_pins(
                 .unwrap_or_default();
             let msg = crate::msg!(
                 HasNoOutOuts,
-                name = name.to_string(),
-                pin = pin.to_string(),
+                name = name,
+                pin = pin,
                 join = (list.join(", ")).to_string()
             );
             sink.error(Code::LadderUnknownPin, msg);
@@ -391,10 +375,7 @@ fn check_pins(
             let given = f.eq_ignore_ascii_case(power_in)
                 || b.inputs.iter().any(|p| p.name.trim().eq_ignore_ascii_case(f));
             if !given {
-                sink.error(
-                    Code::LadderMissingPin,
-                    crate::msg!(InputMissing, f = f.to_string(), name = name.to_string()),
-                );
+                sink.error(Code::LadderMissingPin, crate::msg!(InputMissing, f = f, name = name));
             }
         }
     }
@@ -413,26 +394,15 @@ fn operand_declared<'c>(
     let pin = p.name.trim();
     let operand = p.operand.trim();
     if operand.is_empty() {
-        let msg = crate::msg!(
-            HasNoOperand2,
-            what = what.to_string(),
-            pin = pin.to_string(),
-            name = name.to_string()
-        );
+        let msg = crate::msg!(HasNoOperand2, what = what, pin = pin, name = name);
         sink.error(Code::LadderMissingOperand, msg);
         return None;
     }
     let (ok, kind) =
         if place { (is_operand(operand), "variable") } else { (is_value(operand), "value") };
     if !ok {
-        let msg = crate::msg!(
-            Not,
-            what = what.to_string(),
-            pin = pin.to_string(),
-            name = name.to_string(),
-            operand = operand.to_string(),
-            kind = kind.to_string()
-        );
+        let msg =
+            crate::msg!(Not, what = what, pin = pin, name = name, operand = operand, kind = kind);
         sink.error(Code::LadderBadOperand, msg);
         return None;
     }
@@ -459,11 +429,11 @@ fn check_value(
         if let Some((false, found)) = c.catalog.value_fits(&c.scope, operand, t) {
             let msg = crate::msg!(
                 NeedsBut,
-                what = what.to_string(),
-                pin = pin.to_string(),
-                name = name.to_string(),
+                what = what,
+                pin = pin,
+                name = name,
                 article = (article(&t.to_string())).to_string(),
-                operand = operand.to_string(),
+                operand = operand,
                 article2 = (article(&found)).to_string()
             );
             sink.error(Code::LadderPinType, msg);
@@ -489,11 +459,11 @@ fn check_place(
     if !ok {
         let msg = crate::msg!(
             But,
-            what = what.to_string(),
-            pin = pin.to_string(),
-            name = name.to_string(),
+            what = what,
+            pin = pin,
+            name = name,
             article = (article(&t.to_string())).to_string(),
-            operand = operand.to_string(),
+            operand = operand,
             article2 = (article(&v.to_string())).to_string()
         );
         sink.error(Code::LadderPinType, msg);
@@ -524,7 +494,7 @@ fn check_power_pins(
     let po = b.power_output();
     let enable = b.has_enable();
     if po.eq_ignore_ascii_case("ENO") && !enable {
-        let msg = crate::msg!(EnoCarriesPowerOnlyWhen, name = name.to_string());
+        let msg = crate::msg!(EnoCarriesPowerOnlyWhen, name = name);
         sink.error(Code::LadderBadPowerPin, msg);
         return;
     }
@@ -536,9 +506,9 @@ fn check_power_pins(
         // A standard FB may take power at EN instead of its own input, but nowhere else.
         let msg = crate::msg!(
             PowerEntersEnNot,
-            name = name.to_string(),
+            name = name,
             standard_fb_power = (standard_fb_power(name).map_or("", |(i, _)| i)).to_string(),
-            pi = pi.to_string()
+            pi = pi
         );
         sink.error(Code::LadderBadPowerPin, msg);
     }

@@ -153,7 +153,7 @@ fn validate_rung(
                     RowHasCellsButRung,
                     r = (r + 1).to_string(),
                     row = (row.len()).to_string(),
-                    cols = cols.to_string()
+                    cols = cols
                 ),
             ));
             return;
@@ -186,7 +186,7 @@ fn validate_rung(
                             ri,
                             r,
                             c,
-                            crate::msg!(HasNoOperand, what = what.to_string()),
+                            crate::msg!(HasNoOperand, what = what),
                         ));
                     } else if !is_operand(operand) {
                         out.push(LadderDiagnostic::error(
@@ -194,10 +194,7 @@ fn validate_rung(
                             ri,
                             r,
                             c,
-                            crate::msg!(
-                                NotVariableMemberElementDirect,
-                                operand = operand.to_string()
-                            ),
+                            crate::msg!(NotVariableMemberElementDirect, operand = operand),
                         ));
                     } else if let Some(ctx) = ctx {
                         if let Some((code, message, suggestion)) =
@@ -247,11 +244,7 @@ fn validate_rung(
                             ri,
                             r,
                             c,
-                            crate::msg!(
-                                RowsHighLeavesGrid,
-                                type_name = b.type_name.to_string(),
-                                h = h.to_string()
-                            ),
+                            crate::msg!(RowsHighLeavesGrid, type_name = b.type_name, h = h),
                         ));
                     }
                 }
@@ -347,7 +340,7 @@ fn validate_rung(
                 ri,
                 e.row,
                 e.col,
-                crate::msg!(EnableTiedStraightRail, type_name = b.type_name.to_string()),
+                crate::msg!(EnableTiedStraightRail, type_name = b.type_name),
             )),
             _ => {}
         }
@@ -362,11 +355,7 @@ fn validate_rung(
                 ri,
                 p.row,
                 p.col,
-                crate::msg!(
-                    InputWiredRowButNo,
-                    pin = pin.to_string(),
-                    type_name = b.type_name.to_string()
-                ),
+                crate::msg!(InputWiredRowButNo, pin = pin, type_name = b.type_name),
             ));
         } else if !net.conditioned[p.node] {
             out.push(LadderDiagnostic::warning(
@@ -374,11 +363,7 @@ fn validate_rung(
                 ri,
                 p.row,
                 p.col,
-                crate::msg!(
-                    InputTiedStraightRailSo,
-                    pin = pin.to_string(),
-                    type_name = b.type_name.to_string()
-                ),
+                crate::msg!(InputTiedStraightRailSo, pin = pin, type_name = b.type_name),
             ));
         }
     }
