@@ -394,11 +394,33 @@ fn main() {
         list.push((f, title, rank));
     }
     list.sort_by(|a, b| a.2.cmp(&b.2).then_with(|| a.1.cmp(&b.1)));
+    // Each example's title is a text of the page's catalogue (`examples.STEM`, translated
+    // like every other), whose English is the title the file gives.
+    let titles = catalogue(&manifest_dir().join("i18n/en/examples.json")).unwrap_or_default();
+    let mut problems = Vec::new();
     let mut out = String::from(
-        "/// The shipped examples in menu order: (file name, title, rank).\npub const EXAMPLES: &[(&str, &str, u8)] = &[\n",
+        "/// The shipped examples in menu order: (file name, English title, rank, title's key).\npub const EXAMPLES: &[(&str, &str, u8, crate::i18n::K)] = &[\n",
     );
     for (f, title, rank) in &list {
-        let _ = writeln!(out, "    ({f:?}, {title:?}, {rank}),");
+        let key = format!("examples.{}", naming::stem(f).replace('-', "_"));
+        match titles.iter().find(|(k, _)| *k == key) {
+            Some((_, en)) if en == title => {}
+            Some((_, en)) => problems.push(format!(
+                "web/i18n/en/examples.json: `{key}` is “{en}”, the example {f} is titled “{title}”"
+            )),
+            None => problems.push(format!(
+                "web/i18n/en/examples.json: no `{key}` (“{title}”) for the example {f}"
+            )),
+        }
+        let _ = writeln!(out, "    ({f:?}, {title:?}, {rank}, crate::i18n::K::{}),", key.replace('.', "_"));
+    }
+    for (key, _) in &titles {
+        if !list.iter().any(|(f, _, _)| format!("examples.{}", naming::stem(f).replace('-', "_")) == *key) {
+            problems.push(format!("web/i18n/en/examples.json: `{key}` is no example's title"));
+        }
+    }
+    if !problems.is_empty() {
+        panic!("the examples' titles:\n{}", problems.join("\n"));
     }
     out.push_str("];\n");
     let target =

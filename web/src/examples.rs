@@ -7,7 +7,7 @@ use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
-use crate::i18n::{tf, K};
+use crate::i18n::{shown_lang, t, tf, K};
 
 mod naming {
     #![allow(dead_code)]
@@ -22,13 +22,15 @@ mod list {
 pub struct Example {
     /// Its file name in `examples/`.
     pub file: &'static str,
-    /// What the menu shows.
+    /// Its title in English (the project's name in the file, or the file's name).
     pub title: &'static str,
+    /// Its title in the page's catalogue: what the menu shows, in the language shown.
+    pub key: K,
 }
 
 /// Every shipped example, in menu order (ladder projects, ST, then Petri nets).
 pub fn examples() -> Vec<Example> {
-    list::EXAMPLES.iter().map(|&(file, title, _)| Example { file, title }).collect()
+    list::EXAMPLES.iter().map(|&(file, title, _, key)| Example { file, title, key }).collect()
 }
 
 /// The example `file` (its text) as a new project.
@@ -44,11 +46,12 @@ pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
     Ok(project)
 }
 
-/// Fetches the example `file` from the site and opens it as a new project.
+/// Fetches the example `file` from the site and opens it as a new project, named with
+/// its title in the language shown.
 pub async fn open(file: &str) -> Result<Project, String> {
-    if !list::EXAMPLES.iter().any(|(f, _, _)| *f == file) {
+    let Some(&(_, _, _, key)) = list::EXAMPLES.iter().find(|(f, _, _, _)| *f == file) else {
         return Err(tf(K::state_example_missing, &[("file", file)]));
-    }
+    };
     let fail = |_| tf(K::state_example_unreachable, &[("file", file)]);
     let window = web_sys::window().ok_or("no window")?;
     let response: web_sys::Response =
@@ -64,7 +67,11 @@ pub async fn open(file: &str) -> Result<Project, String> {
         ));
     }
     let text = JsFuture::from(response.text().map_err(fail)?).await.map_err(fail)?;
-    project_of(file, &text.as_string().unwrap_or_default())
+    let mut project = project_of(file, &text.as_string().unwrap_or_default())?;
+    if shown_lang() != plc_core::i18n::Lang::En {
+        project.name = t(key).to_string();
+    }
+    Ok(project)
 }
 
 #[cfg(test)]
