@@ -8,6 +8,7 @@ mod grade;
 mod handin;
 mod interface;
 mod link;
+mod localise;
 mod random;
 mod scorm;
 mod starter;
