@@ -33,12 +33,12 @@ pub const MAX_CYCLE_MS: u64 = 60_000;
 
 /// A scan cycle given in milliseconds (a project setting, `plc run --cycle-ms`, the page's
 /// cycle time) as nanoseconds for the simulator, or why it cannot be one.
-pub fn cycle_ns(ms: u64) -> Result<i64, String> {
+pub fn cycle_ns(ms: u64) -> Result<i64, crate::diagnostics::Said> {
     if (MIN_CYCLE_MS..=MAX_CYCLE_MS).contains(&ms) {
         // At most 6e13 ns: far inside i64.
         Ok(ms as i64 * 1_000_000)
     } else {
-        Err(format!("a scan cycle is {MIN_CYCLE_MS} to {MAX_CYCLE_MS} ms, not {ms} ms"))
+        Err(crate::msg!(ScanCycleRange, min = MIN_CYCLE_MS, max = MAX_CYCLE_MS, ms = ms))
     }
 }
 

@@ -187,8 +187,11 @@ fn diagnostic_report(index: &LineIndex<'_>, d: &Diagnostic) -> DiagnosticReport 
     }
 }
 
-fn option_error(code: Code, message: String) -> DiagnosticReport {
-    DiagnosticReport::new(Severity::Error, code, message, 0, 0)
+fn option_error(code: Code, message: impl Into<crate::diagnostics::Said>) -> DiagnosticReport {
+    let said = message.into();
+    let mut report = DiagnosticReport::new(Severity::Error, code, said.english, 0, 0);
+    report.msg = Some(said.message);
+    report
 }
 
 /// The program instance's variables as JSON, without the generated ones.
@@ -225,11 +228,17 @@ fn set_one(sim: &mut Simulator, name: &str, value: &str) -> Result<(), SimError>
 }
 
 fn set_error(flag: &str, name: &str, value: &str, e: &SimError) -> DiagnosticReport {
-    let code = match e {
-        SimError::UnknownVariable(_) => Code::UnknownSetVariable,
-        _ => Code::BadSetValue,
+    let (code, detail) = match e {
+        SimError::UnknownVariable(_) => (Code::UnknownSetVariable, e.said()),
+        SimError::BadValue { path, message } => {
+            (Code::BadSetValue, crate::msg!(ValueOfPath, path = path, detail = message))
+        }
+        _ => (Code::BadSetValue, e.said()),
     };
-    option_error(code, format!("{flag} {name}={value}: {e}"))
+    option_error(
+        code,
+        crate::msg!(SetOption, flag = flag, name = name, value = value, detail = detail),
+    )
 }
 
 /// Runs `options.cycles` scans, applying `options.set_at` before the scans they name;
@@ -288,14 +297,22 @@ fn run_checked(
     };
     match crate::limits::cycle_ns(options.cycle_ms) {
         Ok(ns) => sim.set_cycle_ns(ns),
-        Err(message) => {
+        Err(_) => {
+            let (min, max) = (crate::limits::MIN_CYCLE_MS, crate::limits::MAX_CYCLE_MS);
+            let message = crate::msg!(ScanCycleRange, min = min, max = max, ms = options.cycle_ms);
             report.diagnostics.push(option_error(Code::BadCycleTime, message));
             return (report, Some(sim));
         }
     }
     if options.record {
         if let Err(e) = sim.set_recording(true) {
-            report.diagnostics.push(option_error(Code::ProgramTooLarge, e.to_string()));
+            let message = match e {
+                crate::sim::RecordError::TooLarge { bytes } => {
+                    crate::msg!(MemoryTooLargeToRecord, kb = bytes / 1024)
+                }
+                other => other.to_string().into(),
+            };
+            report.diagnostics.push(option_error(Code::ProgramTooLarge, message));
         }
     }
     for (name, value) in &options.set {
@@ -312,7 +329,7 @@ fn run_checked(
         let paths: Vec<&str> = options.trace.iter().map(String::as_str).collect();
         let capacity = usize::try_from(options.cycles).unwrap_or(usize::MAX).saturating_add(1);
         if let Err(e) = sim.set_trace(&paths, capacity) {
-            let message = format!("--trace: {e}");
+            let message = crate::msg!(OptionDetail, flag = "--trace", detail = e.said());
             report.diagnostics.push(option_error(Code::UnknownSetVariable, message));
         }
     }
@@ -427,7 +444,10 @@ pub fn project_simulator(
     build.simulator_with_plant(program, project.settings.plant.as_deref()).map_err(|d| {
         let mut reports: Vec<DiagnosticReport> =
             build.diagnostics.iter().map(project_report).collect();
-        reports.push(option_error(d.code, d.message));
+        let message =
+            d.msg.map_or_else(|| crate::diagnostics::Message::text(d.message.clone()), |m| *m);
+        reports
+            .push(option_error(d.code, crate::diagnostics::Said { message, english: d.message }));
         reports
     })
 }

@@ -207,3 +207,28 @@ fn plc_check_prints_the_messages_in_the_language_asked_for() {
     assert!(czech.contains("`Motr` není deklarováno; neměli jste na mysli Motor?"), "{czech}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn an_sfc_condition_and_a_wrapped_checker_message_in_polish_and_czech() {
+    let src = "PROGRAM Main\nVAR n : INT; END_VAR\nINITIAL_STEP A : END_STEP\nTRANSITION FROM A TO B := n; END_TRANSITION\nSTEP B : END_STEP\nEND_PROGRAM\n";
+    let d = first(src, "E0558");
+    assert_eq!(d.message, "the condition of transition `FROM A TO B` must be BOOL, not INT");
+    assert_eq!(d.render(Lang::En), d.message);
+    assert_eq!(d.render(Lang::Pl), "warunek przejścia `FROM A TO B` musi być typu BOOL, a nie INT");
+    assert_eq!(d.render(Lang::Cs), "podmínka přechodu `FROM A TO B` musí být typu BOOL, ne INT");
+
+    // A boolean action that is not a BOOL variable: the SFC sentence with the checker's own
+    // words in parentheses, both translated.
+    let src = "PROGRAM Main\nVAR n : INT; END_VAR\nINITIAL_STEP A : n(N); END_STEP\nEND_PROGRAM\n";
+    let d = analyze(src)
+        .diagnostics
+        .into_iter()
+        .find(|d| d.message.starts_with("`n` cannot be a boolean action"))
+        .expect("a boolean action that is not BOOL");
+    assert_eq!(d.render(Lang::En), d.message);
+    let (outer, inner) = d.message.split_once(" (").expect("the checker's words in parentheses");
+    assert_eq!(outer, "`n` cannot be a boolean action: it is not a BOOL variable");
+    let polish = d.render(Lang::Pl);
+    assert!(polish.starts_with("`n` nie może być akcją logiczną: nie jest zmienną typu BOOL ("));
+    assert!(!polish.contains(inner.trim_end_matches(')')), "{polish}");
+}

@@ -7,7 +7,7 @@
 //! then ladder errors (from [`project_source`]), then the ST checker runs on
 //! the combined text. Nothing here runs a scan.
 
-use crate::diagnostics::{Code, LineIndex, Severity, Span};
+use crate::diagnostics::{Code, LineIndex, Said, Severity, Span};
 use crate::petri::{NetElement, TextPosition};
 use crate::project::Project;
 use crate::semantic::{self, PouId, Program};
@@ -268,32 +268,30 @@ pub fn simulator_for(
     program: Program,
     name: Option<&str>,
     plant: Option<&str>,
-) -> Result<Simulator, (Code, String)> {
+) -> Result<Simulator, (Code, Said)> {
     let main = find_program(&program, name)?;
     let plant = match plant {
         Some(p) => find_program(&program, Some(p)).map_err(|(code, message)| {
-            (code, format!("the plant named in the settings: {message}"))
+            (code, crate::msg!(PlantNamedInSettings, detail = message))
         })?,
         None => main,
     };
     if plant == main {
-        Simulator::new(program, main).map_err(|e| (Code::ProgramTooLarge, e.to_string()))
+        Simulator::new(program, main).map_err(|e| (Code::ProgramTooLarge, e.said()))
     } else {
-        Simulator::with_plant(program, main, plant)
-            .map_err(|e| (Code::PlantMismatch, e.to_string()))
+        Simulator::with_plant(program, main, plant).map_err(|e| (Code::PlantMismatch, e.said()))
     }
 }
 
 /// Finds PROGRAM `name` (or, without a name, the CONFIGURATION when there is one, else the
 /// first PROGRAM of the user) in a checked
 /// program; the error is the code and message `plc run` reports.
-pub fn find_program(program: &Program, name: Option<&str>) -> Result<PouId, (Code, String)> {
+pub fn find_program(program: &Program, name: Option<&str>) -> Result<PouId, (Code, Said)> {
     match name {
-        Some(name) => {
-            program.find_pou(name).filter(|&p| program.pou(p).kind == PouKind::Program).ok_or_else(
-                || (Code::UnknownProgram, format!("there is no PROGRAM `{name}` in the source")),
-            )
-        }
+        Some(name) => program
+            .find_pou(name)
+            .filter(|&p| program.pou(p).kind == PouKind::Program)
+            .ok_or_else(|| (Code::UnknownProgram, crate::msg!(NoProgramNamed, name = name))),
         None => program
             .config
             .as_ref()
@@ -301,7 +299,7 @@ pub fn find_program(program: &Program, name: Option<&str>) -> Result<PouId, (Cod
             .into_iter()
             .chain(program.programs())
             .find(|&p| !program.pou(p).library)
-            .ok_or_else(|| (Code::NoProgram, "the source holds no PROGRAM to run".to_string())),
+            .ok_or_else(|| (Code::NoProgram, crate::msg!(SourceHoldsNoProgram))),
     }
 }
 
@@ -338,16 +336,16 @@ impl ProjectBuild {
         name: Option<&str>,
         plant: Option<&str>,
     ) -> Result<Simulator, ProjectDiagnostic> {
-        let error = |code, message| ProjectDiagnostic {
+        let error = |code, said: Said| ProjectDiagnostic {
             severity: Severity::Error,
-            msg: None,
+            msg: Some(Box::new(said.message)),
             code,
-            message,
+            message: said.english,
             site: Site::Project,
             hint: None,
         };
         let Some(program) = &self.program else {
-            return Err(error(Code::NoProgram, "the project has errors".to_string()));
+            return Err(error(Code::NoProgram, crate::msg!(ProjectHasErrors)));
         };
         simulator_for(program.clone(), name, plant).map_err(|(code, message)| error(code, message))
     }
@@ -489,13 +487,12 @@ fn scene_diagnostics(
         .bindings()
         .into_iter()
         .filter(|(_, path)| !known(path))
-        .map(|(label, path)| ProjectDiagnostic {
+        .map(|(label, path)| crate::msg!(SceneWidgetUnknownVariable, label = label, path = path))
+        .map(|said| ProjectDiagnostic {
             severity: Severity::Warning,
-            msg: None,
+            msg: Some(Box::new(said.message)),
             code: Code::SceneUnknownVariable,
-            message: format!(
-                "the scene's widget “{label}” is bound to `{path}`, which the program does not have"
-            ),
+            message: said.english,
             site: Site::Project,
             hint: None,
         })

@@ -23,16 +23,20 @@ pub enum CompileError {
 
 impl fmt::Display for CompileError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.said().english)
+    }
+}
+
+impl CompileError {
+    /// The error as a message, with its English text (what it displays as).
+    pub fn said(&self) -> crate::diagnostics::Said {
         match self {
-            CompileError::MemoryTooLarge { cells } => write!(
-                f,
-                "the program needs {cells} memory cells, more than the limit of {MAX_CELLS}"
-            ),
-            CompileError::NotAProgram(id) => write!(f, "POU #{id} is not a PROGRAM"),
-            CompileError::RecursiveLayout(name) => {
-                write!(f, "the layout of `{name}` contains itself")
+            CompileError::MemoryTooLarge { cells } => {
+                crate::msg!(ProgramNeedsMemoryCells, cells = cells, max = MAX_CELLS)
             }
-            CompileError::Unsupported(what) => write!(f, "not supported by the compiler: {what}"),
+            CompileError::NotAProgram(id) => crate::msg!(PouNotProgram, id = id),
+            CompileError::RecursiveLayout(name) => crate::msg!(LayoutContainsItself, name = name),
+            CompileError::Unsupported(what) => crate::msg!(NotSupportedByCompiler, what = what),
         }
     }
 }

@@ -36,6 +36,9 @@ pub enum Arg {
     Text(String),
     /// A phrase, translated with the message (rendered with no arguments of its own).
     Msg(Phrase),
+    /// A whole message with arguments of its own, translated with the message (the
+    /// checker's words that an SFC sentence puts in parentheses).
+    Said(Box<Said>),
 }
 
 impl Arg {
@@ -44,6 +47,7 @@ impl Arg {
         match self {
             Arg::Text(s) => s,
             Arg::Msg(p) => p.en,
+            Arg::Said(s) => &s.english,
         }
     }
 }
@@ -141,6 +145,11 @@ impl ToArg for String {
 impl ToArg for Phrase {
     fn to_arg(&self) -> Arg {
         Arg::Msg(*self)
+    }
+}
+impl ToArg for Said {
+    fn to_arg(&self) -> Arg {
+        Arg::Said(Box::new(self.clone()))
     }
 }
 impl ToArg for Arg {
@@ -278,11 +287,27 @@ impl Message {
     /// `None` when it has none for the message itself. A phrase argument it lacks stays
     /// English; program text is put in as it is.
     pub fn render_from<'a>(&self, template: impl Fn(Msg) -> Option<&'a str>) -> Option<String> {
+        self.render_by(&template)
+    }
+
+    fn render_by<'a>(&self, template: &dyn Fn(Msg) -> Option<&'a str>) -> Option<String> {
         let own = template(self.key)?;
+        let nested: Vec<Option<String>> = self
+            .args
+            .iter()
+            .map(|(_, a)| match a {
+                Arg::Said(s) => {
+                    Some(s.message.render_by(template).unwrap_or_else(|| s.english.clone()))
+                }
+                _ => None,
+            })
+            .collect();
         Some(fill(own, |name| {
-            self.args.iter().find(|(n, _)| *n == name).map(|(_, a)| match a {
+            let i = self.args.iter().position(|(n, _)| *n == name)?;
+            Some(match &self.args[i].1 {
                 Arg::Text(s) => s.as_str(),
                 Arg::Msg(p) => template(p.key).unwrap_or(p.en),
+                Arg::Said(_) => nested[i].as_deref().unwrap_or_default(),
             })
         }))
     }

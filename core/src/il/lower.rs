@@ -574,10 +574,7 @@ impl<T: Typing> Lowering<'_, T> {
     fn function(&mut self, ins: &IlInstruction, f: &Ident, args: &[Arg], formal: bool) {
         let at = ins.span;
         let Some(standard) = self.typer.function(&f.name) else {
-            let msg = format!(
-                "`{}` is neither an IL operator (LD, ST, AND, JMP, CAL, …) nor a function",
-                f.name
-            );
+            let msg = crate::msg!(NeitherIlOperatorNorFunction, name = &f.name);
             let hint =
                 crate::diagnostics::suggest::closest(&f.name, crate::syntax::il_operator_names());
             self.diags

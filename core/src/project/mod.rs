@@ -155,7 +155,7 @@ impl Project {
         let mut project: Project =
             serde_json::from_str(text).map_err(|e| ProjectError::Invalid(e.to_string()))?;
         crate::limits::cycle_ns(project.settings.cycle_ms)
-            .map_err(|e| ProjectError::Invalid(format!("settings.cycle_ms: {e}")))?;
+            .map_err(|e| ProjectError::Invalid(format!("settings.cycle_ms: {}", e.english)))?;
         project.schema = SCHEMA_VERSION;
         Ok(project)
     }

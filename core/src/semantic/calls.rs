@@ -68,7 +68,7 @@ impl<'a> Checker<'a> {
         match ty {
             Type::Fb(fb) => {
                 if in_expression {
-                    let msg = "a function block call is a statement of its own; call it, then read its outputs (e.g. `t.Q`)";
+                    let msg = crate::msg!(FbCallIsStatement);
                     self.error(Code::FbCalledAsFunction, callee.span, msg);
                     return None;
                 }

@@ -343,9 +343,8 @@ impl<'a> Checker<'a> {
                     let Some(i) =
                         def.fields.iter().position(|f| f.name.eq_ignore_ascii_case(&name.name))
                     else {
-                        let msg = format!("`{}` has no field `{}`", def.name, name.name);
                         let fields = def.fields.iter().map(|f| f.name.clone()).collect();
-                        self.no_member(name, msg, fields);
+                        self.no_member(name, &def.name, true, fields);
                         continue;
                     };
                     let f = &def.fields[i];
@@ -359,9 +358,8 @@ impl<'a> Checker<'a> {
                 for (name, value) in fields {
                     let Some(i) = self.pous[pou as usize].find_var(&name.name) else {
                         let fb = self.pous[pou as usize].name.clone();
-                        let msg = format!("`{fb}` has no member `{}`", name.name);
                         let members = super::check::interface_names(&self.pous[pou as usize]);
-                        self.no_member(name, msg, members);
+                        self.no_member(name, &fb, false, members);
                         continue;
                     };
                     let (vty, vrange) = {

@@ -670,9 +670,9 @@ impl<'a> Checker<'a> {
                                 Some((Place::Field(Box::new(bp), i as u32), ty))
                             }
                             None => {
-                                let msg = format!("`{}` has no field `{}`", def.name, field.name);
                                 let fields = def.fields.iter().map(|f| f.name.clone()).collect();
-                                self.no_member(field, msg, fields);
+                                let owner = def.name.clone();
+                                self.no_member(field, &owner, true, fields);
                                 None
                             }
                         }
@@ -680,9 +680,9 @@ impl<'a> Checker<'a> {
                     Type::Fb(fb) => {
                         let pou = &self.pous[fb as usize];
                         let Some(i) = pou.find_var(&field.name) else {
-                            let msg = format!("`{}` has no member `{}`", pou.name, field.name);
+                            let owner = pou.name.clone();
                             let members = super::check::interface_names(pou);
-                            self.no_member(field, msg, members);
+                            self.no_member(field, &owner, false, members);
                             return None;
                         };
                         let var = &pou.vars[i as usize];
@@ -788,21 +788,33 @@ impl<'a> Checker<'a> {
         }
     }
 
-    /// E0104 for `.field`: `did you mean NAME?` when a member is close to it, else the
-    /// members there are (the first ten).
-    pub(super) fn no_member(&mut self, field: &ast::Ident, message: String, members: Vec<String>) {
+    /// E0104 for `.field` of `owner` (a structure's field when `of_struct`, else a function
+    /// block's member): `did you mean NAME?` when a member is close to it, else the members
+    /// there are (the first ten).
+    pub(super) fn no_member(
+        &mut self,
+        field: &ast::Ident,
+        owner: &str,
+        of_struct: bool,
+        members: Vec<String>,
+    ) {
+        let suggestion =
+            crate::diagnostics::suggest::closest(&field.name, members.iter().map(String::as_str));
         let listed = match members.len() {
-            0 => String::new(),
-            1..=10 => format!("; it has {}", members.join(", ")),
-            _ => format!("; it has {}, …", members[..10].join(", ")),
+            _ if suggestion.is_some() => None,
+            0 => None,
+            1..=10 => Some(members.join(", ")),
+            _ => Some(format!("{}, …", members[..10].join(", "))),
         };
-        let span = field.span;
-        if !self.error_suggesting(Code::NoSuchMember, span, message, &field.name, members) {
-            if let Some(d) = self.diags.last_mut() {
-                d.message.push_str(&listed);
-                d.msg = crate::diagnostics::Message::text(d.message.clone());
-            }
-        }
+        let name = &field.name;
+        let msg = match (of_struct, listed) {
+            (true, None) => msg!(HasNoField, owner = owner, name = name),
+            (true, Some(list)) => msg!(HasNoFieldItHas, owner = owner, name = name, list = list),
+            (false, None) => msg!(HasNoMember, owner = owner, name = name),
+            (false, Some(list)) => msg!(HasNoMemberItHas, owner = owner, name = name, list = list),
+        };
+        let d = Diagnostic::error(Code::NoSuchMember, field.span, msg).suggesting(suggestion);
+        self.diags.push(d);
     }
 
     fn check_writable(&mut self, var: &Var, span: Span) -> Option<()> {

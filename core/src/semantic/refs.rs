@@ -46,11 +46,9 @@ impl Checker<'_> {
             Some(target) => Some((Place::Deref(Box::new(t.e)), target)),
             None => {
                 let msg = if t.e.ty == Type::Ref(NULL_REF) {
-                    "NULL points to no variable and cannot be dereferenced".to_string()
+                    crate::msg!(NullCannotBeDereferenced)
                 } else {
-                    format!("`^` needs a reference (REF_TO …), not a value of type {}", {
-                        self.tname(t.e.ty)
-                    })
+                    crate::msg!(DerefNeedsReference, ty = self.tname(t.e.ty))
                 };
                 self.error(Code::NotAReference, span, msg);
                 None

@@ -284,11 +284,8 @@ fn step_list(
             None => {
                 let hint = closest(&id.name, steps.names);
                 let msg = match hint {
-                    Some(_) => format!("there is no step `{}` in this chart", id.name),
-                    None => format!(
-                        "there is no step `{}` in this chart; declare it with `STEP {} : END_STEP`",
-                        id.name, id.name
-                    ),
+                    Some(_) => crate::msg!(NoStepInChart, name = &id.name),
+                    None => crate::msg!(NoStepInChartDeclare, name = &id.name),
                 };
                 let d = Diagnostic::error(Code::SfcUnknownStep, id.span, msg);
                 diags.push(d.suggesting(hint.as_deref()));
@@ -349,11 +346,11 @@ fn check_networks(chart: &Chart, diags: &mut Vec<Diagnostic>) {
             }
             Some((&first, rest)) => {
                 for &extra in rest {
-                    let msg = format!(
-                        "`{}` is already the initial step of this SFC network; a network starts in exactly one step (start parallel branches with `TRANSITION FROM {} TO (a, b)`)",
-                        chart.steps[first].name.name, chart.steps[first].name.name
-                    );
                     let step = chart.steps[extra];
+                    let msg = crate::msg!(
+                        AlreadyInitialStepNetwork,
+                        name = &chart.steps[first].name.name
+                    );
                     diags.push(Diagnostic::error(Code::SfcSecondInitialStep, step.header, msg));
                 }
             }

@@ -101,10 +101,7 @@ pub(super) fn lower(chart: &Chart, rewrites: &mut Vec<Rewrite>) -> Lowered {
                     span: first.assoc.action.span,
                     codes: &[Code::TypeMismatch],
                     code: Code::SfcBooleanActionNotBool,
-                    reword: Reword::Wrap(format!(
-                        "`{}` cannot be a boolean action: it is not a BOOL variable",
-                        a.name.name
-                    )),
+                    reword: Reword::Wrap(crate::msg!(NotBooleanAction, name = &a.name.name)),
                 });
             }
         }
@@ -359,10 +356,10 @@ impl ActionControl {
                     span: duration.span,
                     codes: &[Code::TypeMismatch, Code::ConstantOutOfRange],
                     code: Code::SfcDurationNotTime,
-                    reword: Reword::Wrap(format!(
-                        "the duration in `{}({}, …)` must be a TIME such as T#5s, or a TIME variable",
-                        use_.assoc.action.name,
-                        q.name()
+                    reword: Reword::Wrap(crate::msg!(
+                        DurationMustBeTime,
+                        action = &use_.assoc.action.name,
+                        q = q.name()
                     )),
                 });
             }

@@ -54,7 +54,7 @@ enum Reword {
     /// A transition condition that is not BOOL; holds how to name the transition.
     Condition(String),
     /// Any other: this sentence, then the checker's message in parentheses.
-    Wrap(String),
+    Wrap(crate::diagnostics::Said),
 }
 
 /// A checker diagnostic to reword: one of `codes` at exactly `span` becomes `code`.
@@ -85,17 +85,38 @@ impl Desugared {
                     self.rewrites.iter().find(|r| r.span == d.span && r.codes.contains(&d.code));
                 if let Some(r) = found {
                     d.code = r.code;
-                    d.message = match &r.reword {
-                        Reword::Condition(what) => match d.message.split_once("must be BOOL, not ")
-                        {
-                            Some((_, ty)) => {
-                                format!("the condition of {what} must be BOOL, not {ty}")
-                            }
-                            None => format!("the condition of {what} must be BOOL ({})", d.message),
-                        },
-                        Reword::Wrap(sentence) => format!("{sentence} ({})", d.message),
+                    // The checker's own words, translated with the sentence around them.
+                    let detail = crate::diagnostics::Said {
+                        message: std::mem::replace(
+                            &mut d.msg,
+                            crate::diagnostics::Message::text(String::new()),
+                        ),
+                        english: std::mem::take(&mut d.message),
                     };
-                    d.msg = crate::diagnostics::Message::text(d.message.clone());
+                    let ty = (detail.message.key == crate::diagnostics::Msg::ConditionMustBoolNot)
+                        .then(|| detail.message.args.iter().find(|(n, _)| *n == "ty"))
+                        .flatten()
+                        .map(|(_, ty)| ty.clone());
+                    let said = match (r.code, &r.reword, ty) {
+                        // `what` is `transition NAME` (chart::Transition::describe).
+                        (Code::SfcConditionNotBool, Reword::Condition(what), Some(ty)) => {
+                            crate::msg!(
+                                TransitionConditionMustBool,
+                                name = what.strip_prefix("transition ").unwrap_or(what),
+                                ty = ty
+                            )
+                        }
+                        (_, Reword::Condition(what), _) => crate::msg!(
+                            TransitionConditionMustBoolDetail,
+                            name = what.strip_prefix("transition ").unwrap_or(what),
+                            detail = detail
+                        ),
+                        (_, Reword::Wrap(sentence), _) => {
+                            crate::msg!(SentenceWithDetail, sentence = sentence, detail = detail)
+                        }
+                    };
+                    d.message = said.english;
+                    d.msg = said.message;
                 }
                 d
             })
@@ -238,7 +259,7 @@ fn check_statements(
                     no_return(stmts, "a transition body", diags);
                     match &t.name {
                         None => {
-                            let msg = "a transition written with statements needs a name to assign: `TRANSITION T1 FROM a TO b : T1 := …; END_TRANSITION` (or write `:= condition;`)";
+                            let msg = crate::msg!(TransitionBodyNeedsName);
                             diags.push(Diagnostic::error(
                                 Code::SfcUnnamedTransitionBody,
                                 t.header,

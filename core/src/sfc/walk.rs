@@ -111,15 +111,9 @@ pub(super) fn check_writes(
         let Some(id) = root(target) else { return };
         if let Some(what) = protected.get(&id.key()) {
             let msg = if *what == "step" {
-                format!(
-                    "step `{}` is read-only: `{0}.X` and `{0}.T` change only when transitions fire",
-                    id.name
-                )
+                crate::msg!(StepReadOnly, name = &id.name)
             } else {
-                format!(
-                    "the control of action `{}` is read-only: `{0}.Q` and `{0}.A` follow the steps that use it",
-                    id.name
-                )
+                crate::msg!(ActionControlReadOnly, name = &id.name)
             };
             diags.push(Diagnostic::error(Code::SfcReadOnly, target.span, msg));
         }

@@ -94,7 +94,7 @@ pub enum SimError {
     /// No breakpoint with that id.
     UnknownBreakpoint(BreakpointId),
     /// The plant cannot be run with this controller.
-    Plant(String),
+    Plant(Box<crate::diagnostics::Said>),
     /// The variable is an array, structure or FB instance: the timeline records single
     /// values.
     NotTraceable(String),
@@ -104,18 +104,29 @@ impl fmt::Display for SimError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             SimError::Compile(e) => write!(f, "{e}"),
-            SimError::UnknownVariable(p) => write!(f, "the program has no variable `{p}`"),
+            SimError::UnknownVariable(_) | SimError::Plant(_) | SimError::NotTraceable(_) => {
+                f.write_str(&self.said().english)
+            }
             SimError::BadValue { path, message } => write!(f, "`{path}`: {message}"),
             SimError::BadCondition(d) => {
                 let first = d.first().map_or("invalid condition", |d| d.message.as_str());
                 write!(f, "breakpoint condition: {first}")
             }
             SimError::UnknownBreakpoint(id) => write!(f, "no breakpoint #{}", id.0),
-            SimError::Plant(m) => write!(f, "plant: {m}"),
-            SimError::NotTraceable(p) => write!(
-                f,
-                "`{p}` is not a single value: the timeline records single values, so choose its elements or members (e.g. `{p}[1]` or `{p}.x`)"
-            ),
+        }
+    }
+}
+
+impl SimError {
+    /// The error as a message, with its English text (what it displays as); an error still
+    /// worded in English only is that text.
+    pub fn said(&self) -> crate::diagnostics::Said {
+        match self {
+            SimError::Compile(e) => e.said(),
+            SimError::UnknownVariable(p) => crate::msg!(NoVariable, name = p),
+            SimError::Plant(m) => crate::msg!(PlantDetail, detail = **m),
+            SimError::NotTraceable(p) => crate::msg!(NotSingleValue, name = p),
+            _ => self.to_string().into(),
         }
     }
 }
@@ -240,7 +251,7 @@ impl Simulator {
     /// variables are read as `Plant.Name`.
     pub fn with_plant(program: Program, main: PouId, plant: PouId) -> Result<Self, SimError> {
         if plant == main {
-            return Err(SimError::Plant("the plant is the PROGRAM being run".into()));
+            return Err(SimError::Plant(Box::new(crate::msg!(PlantIsProgramRun))));
         }
         let exe =
             compile::compile_with_programs(&program, main, &[plant]).map_err(SimError::Compile)?;
@@ -257,10 +268,12 @@ impl Simulator {
             let Some(k) = main_pou.find_var(&v.name.to_ascii_uppercase()) else { continue };
             let c = &main_pou.vars[k as usize];
             if c.ty != v.ty || !matches!(v.ty, Type::Elem(_) | Type::Enum(_)) {
-                return Err(SimError::Plant(format!(
-                    "{} of the plant {} and of the controller {} must be of one elementary type",
-                    v.name, plant_pou.name, main_pou.name
-                )));
+                return Err(SimError::Plant(Box::new(crate::msg!(
+                    PlantControllerOneType,
+                    name = &v.name,
+                    plant = &plant_pou.name,
+                    controller = &main_pou.name
+                ))));
             }
             let ctrl =
                 exe.locate(&c.name).ok_or_else(|| SimError::UnknownVariable(c.name.clone()))?;

@@ -380,11 +380,10 @@ impl std::fmt::Display for RecordError {
                 f,
                 "scan {scan} is not recorded: the recording holds scans {first} to {last}"
             ),
-            RecordError::TooLarge { bytes } => write!(
-                f,
-                "the program's memory ({} KB) is too large to record its history",
-                bytes / 1024
-            ),
+            RecordError::TooLarge { bytes } => {
+                let kb = bytes / 1024;
+                f.write_str(&crate::msg!(MemoryTooLargeToRecord, kb = kb).english)
+            }
             RecordError::Replay(m) => write!(f, "the scan could not be replayed: {m}"),
         }
     }

@@ -438,8 +438,9 @@ impl AppState {
                 self.with_sim_mut(|s| s.set_cycle_ns(ns));
                 self.save();
             }
-            Err(message) => {
-                self.error(tf(K::state_cycle_unchanged, &[("message", &message.to_string())]))
+            Err(said) => {
+                let message = crate::i18n::message_text(&said.message, None, &said.english);
+                self.error(tf(K::state_cycle_unchanged, &[("message", &message)]))
             }
         }
     }

@@ -85,15 +85,34 @@ fn root_name(text: &str) -> Option<String> {
     root(&syntax::parse_expression(text).ok()?)
 }
 
-/// Reports an operand naming an undeclared variable; true when it did.
-fn undeclared(ctx: &Context<'_>, text: &str, what: &str, sink: &mut Sink<'_>) -> bool {
+/// Reports an operand naming an undeclared variable; true when it did. `pin` is the pin's
+/// kind and name (`input`, `IN`) for a pin's operand, `None` for the instance of `block`.
+fn undeclared(
+    ctx: &Context<'_>,
+    text: &str,
+    pin: Option<(&str, &str)>,
+    block: &str,
+    sink: &mut Sink<'_>,
+) -> bool {
     let Some(name) = root_name(text) else { return false };
     let key = name.to_ascii_uppercase();
     let known = ctx.scope.contains_key(&key)
         || ctx.catalog.is_enumerator(&name)
         || crate::semantic::SysVar::from_name(&key).is_some();
     if !known {
-        sink.undeclared(format!("{what}: `{name}` is not declared"), ctx.closest(&name));
+        let msg = match pin {
+            Some((what, pin)) => {
+                crate::msg!(
+                    PinOperandNotDeclared,
+                    what = what,
+                    pin = pin,
+                    block = block,
+                    name = &name
+                )
+            }
+            None => crate::msg!(InstanceOperandNotDeclared, block = block, name = &name),
+        };
+        sink.undeclared(msg, ctx.closest(&name));
     }
     !known
 }
@@ -104,15 +123,12 @@ pub(crate) fn check_bool_operand(
     ctx: &Context<'_>,
     operand: &str,
     what: &str,
-) -> Option<(Code, String, Option<String>)> {
+) -> Option<(Code, crate::diagnostics::Said, Option<String>)> {
     let name = root_name(operand)?;
     let key = name.to_ascii_uppercase();
     if !ctx.scope.contains_key(&key) && crate::semantic::SysVar::from_name(&key).is_none() {
         let suggestion = ctx.closest(&name);
-        let message = format!(
-            "this {what}'s operand `{name}` is not declared{}",
-            crate::diagnostics::suggest::hint(suggestion.as_deref())
-        );
+        let message = crate::msg!(OperandNotDeclared, what = what, name = &name);
         return Some((Code::LadderUndeclaredOperand, message, suggestion));
     }
     match ctx.catalog.place_type(&ctx.scope, operand) {
@@ -122,7 +138,8 @@ pub(crate) fn check_bool_operand(
                 "this {what} needs a BOOL, but `{}` is {}",
                 operand.trim(),
                 article(&t.to_string())
-            ),
+            )
+            .into(),
             None,
         )),
         _ => None,
@@ -156,10 +173,10 @@ pub(crate) fn validate_block(
         let hint = ctx
             .and_then(|c| c.catalog.closest_block(name))
             .or_else(|| crate::diagnostics::suggest::closest(name, functions));
-        let msg = format!(
-            "`{name}` is neither a standard block nor a FUNCTION_BLOCK or FUNCTION of the project{}",
-            crate::diagnostics::suggest::hint(hint)
-        );
+        let msg = match hint {
+            Some(hint) => crate::msg!(UnknownBlockDidYouMean, name = name, hint = hint),
+            None => crate::msg!(UnknownBlock, name = name),
+        };
         sink.error(Code::LadderUnknownBlock, msg);
     }
     let is_function = std_fn || user.is_some_and(|t| t.kind == BlockKind::Function);
@@ -173,7 +190,7 @@ pub(crate) fn validate_block(
                 let msg = crate::msg!(FunctionHasNoInstanceRemove, name = name, i = i);
                 sink.error(Code::LadderInstanceType, msg);
             } else if let Some(c) = ctx {
-                if !undeclared(c, i, &format!("the instance of this {name}"), &mut sink) {
+                if !undeclared(c, i, None, name, &mut sink) {
                     let want = TypeKey::Named(name.to_ascii_uppercase());
                     match c.catalog.place_type(&c.scope, i) {
                         Some(t) if t != want && known => sink.error(
@@ -185,10 +202,9 @@ pub(crate) fn validate_block(
                 }
             }
         }
-        _ if needs_instance => sink.error(
-            Code::LadderMissingInstance,
-            format!("this {name} needs an instance variable (declare e.g. `T1 : {name};`)"),
-        ),
+        _ if needs_instance => {
+            sink.error(Code::LadderMissingInstance, crate::msg!(BlockNeedsInstance, name = name))
+        }
         _ => {}
     }
     check_pins(b, name, rows, ctx, user, &mut sink);
@@ -407,7 +423,7 @@ fn operand_declared<'c>(
         return None;
     }
     let c = ctx?;
-    if undeclared(c, operand, &format!("{what} {pin} of this {name}"), sink) {
+    if undeclared(c, operand, Some((what, pin)), name, sink) {
         return None;
     }
     Some(c)

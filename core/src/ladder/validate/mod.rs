@@ -201,6 +201,8 @@ fn validate_rung(
                             block::check_bool_operand(ctx, operand, what)
                         {
                             let mut d = LadderDiagnostic::error(code, ri, r, c, message);
+                            let hint = crate::diagnostics::suggest::hint(suggestion.as_deref());
+                            d.message.push_str(&hint);
                             d.suggestion = suggestion;
                             out.push(d);
                         }

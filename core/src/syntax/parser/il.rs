@@ -257,7 +257,7 @@ impl<'a> Parser<'a> {
                 self.error(
                     Code::IlUnknownOperator,
                     op_tok.span,
-                    format!("expected an IL operator (LD, ST, AND, JMP, CAL, …) or a function name, found {found}"),
+                    crate::msg!(ExpectedIlOperatorFound, found = found),
                 );
                 return Err(super::Fail);
             }
@@ -331,7 +331,7 @@ impl<'a> Parser<'a> {
             self.error(
                 Code::IlUnknownOperator,
                 operator.span,
-                format!("`{}` is not an IL operator", operator.name),
+                crate::msg!(NotIlOperator, name = &operator.name),
             );
             return Err(super::Fail);
         }

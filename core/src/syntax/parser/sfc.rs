@@ -166,7 +166,7 @@ impl Parser<'_> {
                     self.error(
                         Code::SfcUnknownQualifier,
                         tok.span,
-                        format!("`{text}` is not an action qualifier; write one of N, R, S, P, P1, P0, L, D, SD, DS, SL"),
+                        crate::msg!(NotActionQualifier, name = text),
                     );
                 }
             }
@@ -185,7 +185,7 @@ impl Parser<'_> {
                 self.error(
                     Code::SfcUnexpectedDuration,
                     tok.span,
-                    format!("qualifier `{name}` takes no duration; only L, D, SD, DS and SL do"),
+                    crate::msg!(QualifierTakesNoDuration, name = name),
                 );
             } else {
                 return Err(self.expected(phrase!(ExpectIndicatorVariableName)));
@@ -197,10 +197,7 @@ impl Parser<'_> {
             self.error(
                 Code::SfcMissingDuration,
                 qualifier_span,
-                format!(
-                    "qualifier `{name}` needs a duration: write `{}({name}, T#5s);` or name a TIME variable",
-                    action.name
-                ),
+                crate::msg!(QualifierNeedsDuration, name = name, action = &action.name),
             );
         }
         let span = self.end_statement(action.span);
