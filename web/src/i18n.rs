@@ -221,9 +221,8 @@ pub fn message_text(
     english: &str,
 ) -> String {
     let Some(texts) = SHOWN.with(Cell::get) else { return english.to_string() };
-    let template = |m: plc_core::diagnostics::Msg| {
-        texts.get(DIAG_START + m.index()).map(String::as_str)
-    };
+    let template =
+        |m: plc_core::diagnostics::Msg| texts.get(DIAG_START + m.index()).map(String::as_str);
     let Some(mut text) = message.render_from(template) else { return english.to_string() };
     if let Some(name) = suggests {
         text.push_str("; ");

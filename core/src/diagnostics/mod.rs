@@ -18,8 +18,8 @@ pub use codes::Code;
 pub use explain::{Example, Explanation, EXPLANATIONS};
 pub(crate) use message::msg_en;
 pub use message::{
-    catalogue_source, english_catalogue, fill, placeholders, Arg, Message, Msg, Phrase, Said, ToArg,
-    MSG_COUNT,
+    catalogue_source, english_catalogue, fill, placeholders, Arg, Message, Msg, Phrase, Said,
+    ToArg, MSG_COUNT,
 };
 pub use pages::{
     explain_text, explain_text_in, problems_html, problems_html_in, problems_markdown,
