@@ -91,6 +91,27 @@ impl ScenarioReport {
     pub fn passed(&self) -> bool {
         self.failure.is_none()
     }
+
+    /// A failed scenario as `plc grade` prints it, in `lang`: `FAIL Start: expected Motor
+    /// is TRUE at 0.2 s; Motor was FALSE at 0.2 s (scan 20)`.
+    pub fn fail_line(&self, lang: crate::i18n::Lang) -> Option<String> {
+        let f = self.failure.as_ref()?;
+        let text =
+            |s: &Option<Sentence>, en: &String| s.as_ref().map_or(en.clone(), |s| s.render(lang));
+        let said = crate::msg!(
+            GradeFailLine,
+            name = self.name,
+            expected = text(&f.expected_msg, &f.expected),
+            actual = text(&f.actual_msg, &f.actual)
+        );
+        Some(said.message.render(lang))
+    }
+
+    /// Its hint as `plc grade` prints it, in `lang`: `hint: …`.
+    pub fn hint_line(&self, lang: crate::i18n::Lang) -> Option<String> {
+        let hint = self.hint.as_ref()?;
+        Some(crate::msg!(GradeHintLine, hint = hint).message.render(lang))
+    }
 }
 
 /// A submission's grade.
@@ -120,6 +141,11 @@ impl Report {
     /// What was graded, the report's first line: `Checked PROGRAM Latch (ladder)`.
     pub fn checked_line(&self) -> Option<String> {
         self.checked().map(|s| s.english)
+    }
+
+    /// Why nothing could run, in `lang`.
+    pub fn error_in(&self, lang: crate::i18n::Lang) -> Option<String> {
+        self.error_msg.as_ref().map(|s| s.render(lang)).or_else(|| self.error.clone())
     }
 
     /// [`Report::checked_line`] as a message (the language's name translated).
