@@ -352,6 +352,15 @@ fn grade_writes_one_row_per_submission_and_never_stops_the_batch() {
         .unwrap();
     let plain = String::from_utf8_lossy(&plain.stdout).into_owned();
     assert!(plain.contains("b-wrong.st: 1/3 — checked PROGRAM Main (ST)"), "{plain}");
+    assert!(plain.contains("  FAIL Start, release, stop: expected Motor stays TRUE from 0.21 s to 0.49 s; Motor was FALSE at 0.21 s (scan 21)\n"), "{plain}");
+    // `--lang pl`: the report's sentences in Polish, program text as it is.
+    let polish = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["grade", &exercise, &dir.join("b-wrong.st").to_string_lossy(), "--lang", "pl"])
+        .output()
+        .unwrap();
+    let polish = String::from_utf8_lossy(&polish.stdout).into_owned();
+    assert!(polish.contains("b-wrong.st: 1/3 — sprawdzono PROGRAM Main (ST)"), "{polish}");
+    assert!(polish.contains("oczekiwano: Motor ma wartość TRUE bez przerwy od 0.21 s do 0.49 s; rzeczywiście: Motor miało wartość FALSE w chwili 0.21 s (cykl 21)"), "{polish}");
     let json = std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
         .args(["grade", &exercise, &dir.join("b-wrong.st").to_string_lossy(), "--format", "json"])
         .output()

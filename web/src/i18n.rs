@@ -231,6 +231,18 @@ pub fn message_text(
     text
 }
 
+/// A grading report's sentence in the language shown: `english` (the report's own text)
+/// while the page is in English or the sentence is not data, else rendered from the fetched
+/// translation with its parts (the place, the FAULT) translated.
+pub fn sentence_text(sentence: Option<&plc_core::exercise::Sentence>, english: &str) -> String {
+    let (Some(texts), Some(sentence)) = (SHOWN.with(Cell::get), sentence) else {
+        return english.to_string();
+    };
+    sentence
+        .render_by(&|m| texts.get(DIAG_START + m.index()).map(String::as_str))
+        .unwrap_or_else(|| english.to_string())
+}
+
 /// The key of a count's words in the form `n` takes in the language shown: `one` for 1;
 /// `few` for 2–4 (in Polish not 12–14, and also 22–24, 32–34 …); else `many`. English has
 /// the same text for `few` and `many`.

@@ -166,6 +166,9 @@ enum Command {
         /// How many submissions are graded at once (default: the cores).
         #[arg(long)]
         jobs: Option<usize>,
+        /// The language of the text report: en (the default), pl or cs.
+        #[arg(long, default_value = "en")]
+        lang: plc_core::i18n::Lang,
     },
     /// Exercises: validate one (reference, starter, mutants), write a skeleton, a link or a
     /// SCORM package.
@@ -671,8 +674,8 @@ fn main() -> ExitCode {
         Command::Bench { json, quick, only } => bench(json, quick, &only),
         Command::Petri { command } => petri::run(command),
         Command::Exercise { command } => grade::exercise(command),
-        Command::Grade { exercise, submissions, scenarios, format, jobs } => {
-            grade::run(&exercise, &submissions, scenarios.as_deref(), format, jobs)
+        Command::Grade { exercise, submissions, scenarios, format, jobs, lang } => {
+            grade::run(&exercise, &submissions, scenarios.as_deref(), format, jobs, lang)
         }
         Command::Import { file } => import(&file),
         Command::Export { plcopen: _, project } => export(&project),

@@ -317,17 +317,28 @@ impl Expectation {
 
     /// How a report says it (`Lamp becomes TRUE between 1.9 s and 2.1 s`).
     pub fn describe(&self) -> String {
+        self.said().english
+    }
+
+    /// [`Expectation::describe`] as a message (the report's `expected`, translated).
+    pub fn said(&self) -> crate::diagnostics::Said {
         let t = |ns: &i64| time_text(*ns);
         match self {
-            Expectation::At { condition, at } => format!("{condition} is TRUE at {}", t(at)),
+            Expectation::At { condition, at } => {
+                crate::msg!(GradeExpectAt, condition = condition, at = t(at))
+            }
             Expectation::Becomes { condition, from, to } => {
-                format!("{condition} becomes TRUE between {} and {}", t(from), t(to))
+                crate::msg!(GradeExpectBecomes, condition = condition, from = t(from), to = t(to))
             }
             Expectation::Holds { condition, from, to } => {
-                format!("{condition} stays TRUE from {} to {}", t(from), t(to))
+                crate::msg!(GradeExpectHolds, condition = condition, from = t(from), to = t(to))
             }
-            Expectation::Never { condition } => format!("{condition} is never TRUE"),
-            Expectation::Always { condition } => format!("{condition} is always TRUE"),
+            Expectation::Never { condition } => {
+                crate::msg!(GradeExpectNever, condition = condition)
+            }
+            Expectation::Always { condition } => {
+                crate::msg!(GradeExpectAlways, condition = condition)
+            }
         }
     }
 }

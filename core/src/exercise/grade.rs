@@ -18,6 +18,8 @@ use crate::vm::Value;
 
 use super::format::{time_text, Direction, Exercise, ExerciseError, Expectation, Scenario};
 use super::random::RESTART;
+use super::sentence::Sentence;
+use crate::diagnostics::{Arg, Said};
 
 /// How much a report tells.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -63,6 +65,12 @@ pub struct Failure {
     pub time_ns: i64,
     /// The interface around it.
     pub window: Vec<Sample>,
+    /// `expected` as data, to be shown in another language.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub expected_msg: Option<Sentence>,
+    /// `actual` as data.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub actual_msg: Option<Sentence>,
 }
 
 /// One scenario's result.
@@ -83,6 +91,27 @@ impl ScenarioReport {
     pub fn passed(&self) -> bool {
         self.failure.is_none()
     }
+
+    /// A failed scenario as `plc grade` prints it, in `lang`: `FAIL Start: expected Motor
+    /// is TRUE at 0.2 s; Motor was FALSE at 0.2 s (scan 20)`.
+    pub fn fail_line(&self, lang: crate::i18n::Lang) -> Option<String> {
+        let f = self.failure.as_ref()?;
+        let text =
+            |s: &Option<Sentence>, en: &String| s.as_ref().map_or(en.clone(), |s| s.render(lang));
+        let said = crate::msg!(
+            GradeFailLine,
+            name = self.name,
+            expected = text(&f.expected_msg, &f.expected),
+            actual = text(&f.actual_msg, &f.actual)
+        );
+        Some(said.message.render(lang))
+    }
+
+    /// Its hint as `plc grade` prints it, in `lang`: `hint: …`.
+    pub fn hint_line(&self, lang: crate::i18n::Lang) -> Option<String> {
+        let hint = self.hint.as_ref()?;
+        Some(crate::msg!(GradeHintLine, hint = hint).message.render(lang))
+    }
 }
 
 /// A submission's grade.
@@ -97,6 +126,9 @@ pub struct Report {
     pub language: Option<String>,
     /// Why nothing could run (the project does not build, has no PROGRAM …), located.
     pub error: Option<String>,
+    /// `error` as data, to be shown in another language.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub error_msg: Option<Sentence>,
     /// Per scenario.
     pub scenarios: Vec<ScenarioReport>,
     /// The weights of the passed scenarios.
@@ -108,10 +140,28 @@ pub struct Report {
 impl Report {
     /// What was graded, the report's first line: `Checked PROGRAM Latch (ladder)`.
     pub fn checked_line(&self) -> Option<String> {
+        self.checked().map(|s| s.english)
+    }
+
+    /// Why nothing could run, in `lang`.
+    pub fn error_in(&self, lang: crate::i18n::Lang) -> Option<String> {
+        self.error_msg.as_ref().map(|s| s.render(lang)).or_else(|| self.error.clone())
+    }
+
+    /// [`Report::checked_line`] as a message (the language's name translated).
+    pub fn checked(&self) -> Option<Said> {
         let program = self.program.as_deref()?;
         Some(match self.language.as_deref() {
-            Some(language) => format!("Checked PROGRAM {program} ({language})"),
-            None => format!("Checked PROGRAM {program}"),
+            Some(language) => {
+                let language = match language {
+                    "ladder" => Arg::Msg(crate::phrase!(GradeLanguageLadder)),
+                    "Petri net" => Arg::Msg(crate::phrase!(GradeLanguagePetriNet)),
+                    "network" => Arg::Msg(crate::phrase!(GradeLanguageNetwork)),
+                    other => Arg::Text(other.to_string()),
+                };
+                crate::msg!(GradeCheckedIn, program = program, language = language)
+            }
+            None => crate::msg!(GradeChecked, program = program),
         })
     }
 
@@ -120,30 +170,44 @@ impl Report {
     /// point each)` when they do not; just `Score 3 of 3` with every scenario passed or
     /// a single scenario.
     pub fn score_line(&self) -> String {
-        let score = format!("Score {} of {}", self.score, self.total);
+        self.score_said().english
+    }
+
+    /// [`Report::score_line`] as a message.
+    pub fn score_said(&self) -> Said {
+        let (score, total) = (self.score, self.total);
         let weights: Vec<u32> = self.scenarios.iter().map(|s| s.weight).collect();
-        if self.score == self.total || weights.len() < 2 {
-            return score;
+        if score == total || weights.len() < 2 {
+            return crate::msg!(GradeScore, score = score, total = total);
         }
+        let count = weights.len();
         if weights.iter().all(|w| *w == weights[0]) {
-            let each = if weights[0] == 1 {
-                "1 point".to_string()
+            if weights[0] == 1 {
+                crate::msg!(GradeScoreEachPoint, score = score, total = total, count = count)
             } else {
-                format!("{} points", weights[0])
-            };
-            format!("{score} ({} scenarios, {each} each)", weights.len())
+                crate::msg!(
+                    GradeScoreEachPoints,
+                    score = score,
+                    total = total,
+                    count = count,
+                    points = weights[0]
+                )
+            }
         } else {
             let list: Vec<String> = weights.iter().map(u32::to_string).collect();
-            format!("{score} (scenario weights: {})", list.join(" + "))
+            crate::msg!(GradeScoreWeights, score = score, total = total, weights = list.join(" + "))
         }
     }
 }
 
 /// Where a site is, for a report.
-fn place(site: &Site) -> String {
+fn place(site: &Site) -> Said {
     match site {
-        Site::St { line, column, .. } => format!("line {line}, column {column}"),
-        other => other.describe().unwrap_or_else(|| "the project".into()),
+        Site::St { line, column, .. } => crate::msg!(GradeLineColumn, line = line, column = column),
+        other => match other.describe() {
+            Some(place) => Said::from(place),
+            None => crate::msg!(GradeTheProject),
+        },
     }
 }
 
@@ -168,7 +232,7 @@ fn direction_of(var: &crate::semantic::ir::Var) -> Option<Direction> {
 /// Why the program's declarations do not match the exercise's interface: every interface
 /// variable must be declared by the running PROGRAM with its direction (VAR_INPUT or a
 /// VAR at `%I…` for an input, VAR_OUTPUT or a VAR at `%Q…` for an output) and its type.
-fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<String> {
+fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<Said> {
     let exe = sim.executable();
     exercise.interface.iter().find_map(|v| {
         let (keyword, area) = match v.direction {
@@ -179,18 +243,20 @@ fn interface_problem(exercise: &Exercise, sim: &Simulator) -> Option<String> {
         let Some(entry) =
             exe.main_vars().iter().find(|e| !e.global && e.var.name.eq_ignore_ascii_case(&v.name))
         else {
-            return Some(format!("the program does not declare {} ({asked})", v.name));
+            return Some(crate::msg!(GradeNotDeclared, name = v.name, asked = asked));
         };
         if direction_of(&entry.var) != Some(v.direction) {
-            return Some(format!(
-                "the program declares {} in another section than the exercise asks ({asked}, or VAR {} AT {area}… : {})",
-                v.name, v.name, v.ty
+            return Some(crate::msg!(
+                GradeOtherSection,
+                name = v.name,
+                asked = asked,
+                area = area,
+                ty = v.ty
             ));
         }
         let ty = exe.type_table().display(entry.var.ty).to_string();
-        (!ty.eq_ignore_ascii_case(v.ty.trim())).then(|| {
-            format!("the program declares {} as {ty}, but the exercise asks for {asked}", v.name)
-        })
+        (!ty.eq_ignore_ascii_case(v.ty.trim()))
+            .then(|| crate::msg!(GradeDeclaredAs, name = v.name, ty = ty, asked = asked))
     })
 }
 
@@ -230,29 +296,45 @@ pub fn grade_by(
     let build = build_project_by(project, lowerings);
     let program = graded.as_ref().map(|g| g.name.clone());
     let language = graded.as_ref().map(|g| g.language.label().to_string());
-    let not_run = |message: String| Report {
+    let not_run = |said: Said, sentence: Sentence| Report {
         program: program.clone(),
         language: language.clone(),
-        error: Some(message),
+        error: Some(said.english),
+        error_msg: Some(sentence),
         scenarios: Vec::new(),
         score: 0,
         total,
     };
     if let Some(d) = build.diagnostics.iter().find(|d| d.is_error()) {
-        return Ok(not_run(format!(
-            "the program does not build: {}: {} [{}]",
-            place(&d.site),
-            d.message,
-            d.code.as_str()
-        )));
+        let at = place(&d.site);
+        let said = crate::msg!(
+            GradeDoesNotBuild,
+            place = at.english,
+            message = d.message,
+            code = d.code.as_str()
+        );
+        let mut sentence = Sentence::from(said.message.clone()).with("place", at);
+        // A message with its `did you mean` stays English (the part is the message alone).
+        if let (Some(m), None) = (&d.msg, d.suggestion()) {
+            sentence = sentence.with("message", (**m).clone());
+        }
+        return Ok(not_run(said, sentence));
     }
     let chosen = project.settings.program.clone();
     let sim = match build.simulator_with_plant(chosen.as_deref(), plant) {
         Ok(sim) => sim,
-        Err(d) => return Ok(not_run(format!("the program cannot run: {}", d.message))),
+        Err(d) => {
+            let said = crate::msg!(GradeCannotRun, message = d.message);
+            let mut sentence = Sentence::from(said.message.clone());
+            if let Some(m) = &d.msg {
+                sentence = sentence.with("message", (**m).clone());
+            }
+            return Ok(not_run(said, sentence));
+        }
     };
     if let Some(problem) = interface_problem(exercise, &sim) {
-        return Ok(not_run(problem));
+        let sentence = Sentence::from(problem.message.clone());
+        return Ok(not_run(problem, sentence));
     }
     let mut scenarios = Vec::new();
     for s in &exercise.scenarios {
@@ -266,7 +348,7 @@ pub fn grade_by(
         });
     }
     let score = scenarios.iter().filter(|s| s.passed()).map(|s| s.weight).sum();
-    Ok(Report { program, language, error: None, scenarios, score, total })
+    Ok(Report { program, language, error: None, error_msg: None, scenarios, score, total })
 }
 
 use super::random::Event;
@@ -310,11 +392,18 @@ impl Run<'_> {
                 .iter()
                 .map(|(t, name, value)| format!("{} {name} := {value}", time_text(*t)))
                 .collect();
-            failure.actual = format!(
-                "{} — random run with seed {seed} (replay: random = {{ runs = 1, seed = {seed} }}); shortest failing events: {}",
-                failure.actual,
-                if list.is_empty() { "none".to_string() } else { list.join(", ") }
-            );
+            let events = if list.is_empty() {
+                Arg::Msg(crate::phrase!(GradeNoEvents))
+            } else {
+                Arg::Text(list.join(", "))
+            };
+            let said =
+                crate::msg!(GradeRandomRun, actual = failure.actual, seed = seed, events = events);
+            failure.actual = said.english;
+            failure.actual_msg = failure
+                .actual_msg
+                .take()
+                .map(|actual| Sentence::from(said.message).with("actual", actual));
             return Ok(Some(failure));
         }
         Ok(None)
@@ -336,14 +425,18 @@ impl Run<'_> {
             match sim.add_probe(e.condition()) {
                 Ok(p) => probes.push(p),
                 Err(err) => {
+                    let expected = e.said();
+                    let actual = crate::msg!(GradeConditionDoesNotCheck, error = err.to_string());
                     return Ok(Some(Failure {
                         condition: Some(e.condition().to_string()),
-                        expected: e.describe(),
-                        actual: format!("the condition does not check against the program: {err}"),
+                        expected: expected.english,
+                        actual: actual.english,
                         scan: 0,
                         time_ns: 0,
                         window: Vec::new(),
-                    }))
+                        expected_msg: Some(expected.message.into()),
+                        actual_msg: Some(actual.message.into()),
+                    }));
                 }
             }
         }
@@ -390,18 +483,27 @@ impl Run<'_> {
             if let ScanOutcome::Fault(info) = sim.scan() {
                 let at = place(&self.build.site_of(info.span));
                 let (scan, time_ns) = (base_scans + info.scan, base_ns + info.time_ns);
-                let actual = format!(
-                    "the program stopped with a FAULT at {at} on scan {scan} ({}): {}",
-                    time_text(time_ns),
-                    info.fault
+                let actual = crate::msg!(
+                    GradeStoppedWithFault,
+                    place = at.english,
+                    scan = scan,
+                    time = time_text(time_ns),
+                    fault = info.fault.to_string()
                 );
+                let expected = crate::msg!(GradeExpectNoFault);
                 let failure_here = Failure {
                     condition: None,
-                    expected: "no FAULT".into(),
-                    actual,
+                    expected: expected.english,
+                    actual: actual.english,
                     scan,
                     time_ns,
                     window: Vec::new(),
+                    expected_msg: Some(expected.message.into()),
+                    actual_msg: Some(
+                        Sentence::from(actual.message)
+                            .with("place", at)
+                            .with("fault", info.fault.message()),
+                    ),
                 };
                 failure = Some((None, failure_here));
                 break;
@@ -438,20 +540,23 @@ impl Run<'_> {
                 };
                 prev[i] = Some(value);
                 if wrong {
-                    let actual = format!(
-                        "{} was {} at {} (scan {})",
-                        e.condition(),
-                        if value { "TRUE" } else { "FALSE" },
-                        time_text(now),
-                        here.scan
+                    let actual = crate::msg!(
+                        GradeWas,
+                        condition = e.condition(),
+                        value = if value { "TRUE" } else { "FALSE" },
+                        time = time_text(now),
+                        scan = here.scan
                     );
+                    let expected = e.said();
                     let failure_here = Failure {
                         condition: Some(e.condition().to_string()),
-                        expected: e.describe(),
-                        actual,
+                        expected: expected.english,
+                        actual: actual.english,
                         scan: here.scan,
                         time_ns: now,
                         window: Vec::new(),
+                        expected_msg: Some(expected.message.into()),
+                        actual_msg: Some(actual.message.into()),
                     };
                     failure = Some((Some(i), failure_here));
                     break;

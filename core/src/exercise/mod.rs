@@ -11,6 +11,7 @@ mod link;
 mod localise;
 mod random;
 mod scorm;
+mod sentence;
 mod starter;
 mod statement;
 mod translation;
@@ -31,6 +32,7 @@ pub use scorm::{
     scorm_files, scorm_launch, scorm_manifest, scorm_package, PackageFile, ScormVersion,
     SCORM_12_SUSPEND_LIMIT, SCORM_EXERCISE_DIR, SITE_FILE_LIST,
 };
+pub use sentence::Sentence;
 pub use starter::{graded_program, Language};
 pub use statement::{next_to, statement_html};
 pub use translation::{ScenarioTranslation, Translation, TRANSLATED};

@@ -644,3 +644,60 @@ fn the_built_form_and_the_view_carry_the_translations() {
     assert_eq!(r.scenarios[failed].hint.as_deref(), Some("Czy Motor podtrzymuje się sam?"));
     assert_eq!(view.localised_report(Lang::Cs, report.clone()), report);
 }
+
+/// The report's sentences are data beside their English (issue 33): English as the text,
+/// Polish and Czech from the message catalogue, the same after the trip to the page as JSON.
+#[test]
+fn a_reports_sentences_in_english_polish_and_czech_survive_json() {
+    let e = Exercise::from_toml(LATCH).unwrap();
+    let r = grade(&e, &project(&GOOD.replace("(Start OR Motor)", "Start"))).unwrap();
+    let json = serde_json::to_string(&r).unwrap();
+    let back: Report = serde_json::from_str(&json).unwrap();
+    assert_eq!(back, r);
+    let f = back.scenarios[0].failure.as_ref().unwrap();
+    let (expected, actual) = (f.expected_msg.as_ref().unwrap(), f.actual_msg.as_ref().unwrap());
+    assert_eq!(expected.render(Lang::En), f.expected);
+    assert_eq!(actual.render(Lang::En), f.actual);
+    assert_eq!(actual.render(Lang::Pl), "Motor miało wartość FALSE w chwili 0.21 s (cykl 21)");
+    assert_eq!(
+        expected.render(Lang::Cs),
+        "Motor má hodnotu TRUE bez přerušení od 0.21 s do 0.49 s"
+    );
+    assert_eq!(r.score_said().message.render(Lang::Pl), "Wynik 1 z 3 (wagi scenariuszy: 2 + 1)");
+    assert_eq!(r.checked().unwrap().message.render(Lang::Cs), "Zkontrolován PROGRAM Main (ST)");
+
+    // A FAULT: its place and the fault's own message are parts, translated too.
+    let faulting = "PROGRAM Main
+VAR_INPUT Start, Stop : BOOL; END_VAR
+VAR_OUTPUT Motor : BOOL; END_VAR
+VAR a : ARRAY[1..2] OF INT; i : INT; END_VAR
+IF Start THEN i := 3; a[i] := 1; END_IF;
+END_PROGRAM
+";
+    let r = grade(&e, &project(faulting)).unwrap();
+    let back: Report = serde_json::from_str(&serde_json::to_string(&r).unwrap()).unwrap();
+    let f = back.scenarios[0].failure.as_ref().unwrap();
+    let actual = f.actual_msg.as_ref().unwrap();
+    assert_eq!(actual.render(Lang::En), f.actual);
+    let polish = actual.render(Lang::Pl);
+    assert!(
+        polish.starts_with("program zatrzymał się z AWARIĄ (FAULT): wiersz 5, kolumna "),
+        "{polish}"
+    );
+    assert!(polish.ends_with(": indeks tablicy 3 jest poza zakresem 1..2"), "{polish}");
+    assert_eq!(f.expected_msg.as_ref().unwrap().render(Lang::Cs), "žádná PORUCHA (FAULT)");
+
+    // Nothing ran: the error, with the build error's own message translated.
+    let broken = grade(&e, &project(&GOOD.replace("NOT Stop", "NOT Stopp"))).unwrap();
+    let error = broken.error_msg.as_ref().unwrap();
+    assert_eq!(error.render(Lang::En), broken.error.clone().unwrap());
+    assert!(error
+        .render(Lang::Pl)
+        .starts_with("programu nie da się zbudować: wiersz 4, kolumna 35: "));
+    let local = GOOD.replace("VAR_OUTPUT Motor : BOOL; END_VAR", "VAR Motor : BOOL; END_VAR");
+    let r = grade(&e, &project(&local)).unwrap();
+    assert_eq!(
+        r.error_msg.unwrap().render(Lang::Cs),
+        "program deklaruje Motor v jiné sekci, než cvičení požaduje (VAR_OUTPUT Motor : BOOL, nebo VAR Motor AT %Q… : BOOL)"
+    );
+}

@@ -89,3 +89,67 @@ impl fmt::Display for Fault {
 }
 
 impl std::error::Error for Fault {}
+
+impl Fault {
+    /// The fault as a message (`fault.*` of the message catalogue), to be shown in the
+    /// language asked for; its English text is the fault's `Display`.
+    pub fn message(&self) -> crate::diagnostics::Message {
+        let said = match self {
+            Fault::DivisionByZero => crate::msg!(FaultDivisionByZero),
+            Fault::IndexOutOfRange { index, low, high } => {
+                crate::msg!(FaultIndexOutOfRange, index = index, low = low, high = high)
+            }
+            Fault::StringPosition { function, position, length } => crate::msg!(
+                FaultStringPosition,
+                function = function,
+                position = position,
+                length = length
+            ),
+            Fault::SubrangeViolation { value, low, high } => {
+                crate::msg!(FaultSubrangeViolation, value = value, low = low, high = high)
+            }
+            Fault::NullReference => crate::msg!(FaultNullReference),
+            Fault::ForStepZero => crate::msg!(FaultForStepZero),
+            Fault::Watchdog { budget } => crate::msg!(FaultWatchdog, budget = budget),
+            Fault::CallDepth => crate::msg!(FaultCallDepth),
+            Fault::BadConversion { text, target } => {
+                crate::msg!(FaultBadConversion, text = text, target = target)
+            }
+            Fault::Internal(what) => crate::msg!(FaultInternal, what = what),
+        };
+        said.message
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Fault;
+    use crate::i18n::Lang;
+
+    #[test]
+    fn every_fault_says_in_english_what_it_displays_and_is_translated() {
+        let all = [
+            Fault::DivisionByZero,
+            Fault::IndexOutOfRange { index: 6, low: 1, high: 5 },
+            Fault::StringPosition { function: "MID", position: 9, length: 3 },
+            Fault::SubrangeViolation { value: 101, low: 0, high: 100 },
+            Fault::ForStepZero,
+            Fault::NullReference,
+            Fault::Watchdog { budget: 1_000_000 },
+            Fault::CallDepth,
+            Fault::BadConversion { text: "abc".into(), target: "INT" },
+            Fault::Internal("no frame"),
+        ];
+        for fault in &all {
+            let message = fault.message();
+            assert_eq!(message.render(Lang::En), fault.to_string(), "{fault:?}");
+            for lang in [Lang::Pl, Lang::Cs] {
+                assert_ne!(message.render(lang), fault.to_string(), "{fault:?} in {lang}");
+            }
+        }
+        assert_eq!(
+            Fault::IndexOutOfRange { index: 6, low: 1, high: 5 }.message().render(Lang::Pl),
+            "indeks tablicy 6 jest poza zakresem 1..5"
+        );
+    }
+}

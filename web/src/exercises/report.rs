@@ -8,7 +8,7 @@ use leptos::prelude::*;
 use plc_core::exercise::{time_text, Failure, Sample};
 
 use super::Exercises;
-use crate::i18n::{t, tf, K};
+use crate::i18n::{message_text, sentence_text, t, tf, K};
 
 /// Width of the labels on the left of the timeline.
 const LABEL_W: f64 = 170.0;
@@ -30,13 +30,16 @@ pub fn ReportView() -> impl IntoView {
             let r = ex.open.with(|o| o.as_ref().map(|o| o.opened.view.localised_report(lang, r.clone()))).unwrap_or(r);
             let all = r.error.is_none() && r.score == r.total;
             let summary = match &r.error {
-                Some(e) => tf(K::exercise_not_graded, &[("error", e)]),
+                Some(e) => tf(K::exercise_not_graded, &[("error", &sentence_text(r.error_msg.as_ref(), e))]),
                 None if all => tf(K::exercise_all_pass, &[("score", &r.score.to_string()), ("total", &r.total.to_string())]),
-                None => r.score_line(),
+                None => {
+                    let said = r.score_said();
+                    message_text(&said.message, None, &said.english)
+                }
             };
             view! {
                 <section class="exercise-report" aria-label=t(K::exercise_report) aria-live="polite">
-                    {r.checked_line().map(|line| view! { <p class="report-program">{line}</p> })}
+                    {r.checked().map(|s| view! { <p class="report-program">{message_text(&s.message, None, &s.english)}</p> })}
                     <p class="report-score" class:report-pass=all class:report-fail=!all>{summary}</p>
                     <ul class="report-scenarios">
                         {r.scenarios.into_iter().map(|s| {
@@ -49,8 +52,8 @@ pub fn ReportView() -> impl IntoView {
                                     <span class="report-verdict">" "{if passed { t(K::exercise_scenario_passed) } else { t(K::exercise_scenario_failed) }}</span>
                                     {s.failure.map(|f| view! {
                                         <div class="report-failure">
-                                            <p><strong>{t(K::exercise_expected)}" "</strong>{f.expected.clone()}</p>
-                                            <p class="report-actual"><strong>{t(K::exercise_actual)}" "</strong>{f.actual.clone()}</p>
+                                            <p><strong>{t(K::exercise_expected)}" "</strong>{sentence_text(f.expected_msg.as_ref(), &f.expected)}</p>
+                                            <p class="report-actual"><strong>{t(K::exercise_actual)}" "</strong>{sentence_text(f.actual_msg.as_ref(), &f.actual)}</p>
                                             {s.hint.clone().map(|h| view! { <p class="report-hint"><strong>{t(K::exercise_hint)}" "</strong>{h}</p> })}
                                             <FailureTimeline scenario=name.clone() failure=f/>
                                         </div>

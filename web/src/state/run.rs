@@ -94,7 +94,14 @@ impl AppState {
                         K::state_fault,
                         &[
                             ("scan", &info.scan.to_string()),
-                            ("fault", &info.fault.to_string()),
+                            (
+                                "fault",
+                                &crate::i18n::message_text(
+                                    &info.fault.message(),
+                                    None,
+                                    &info.fault.to_string(),
+                                ),
+                            ),
                             ("place", &place),
                         ],
                     ),

@@ -106,6 +106,7 @@ pub fn run(
     hidden: Option<&Path>,
     format: Format,
     jobs: Option<usize>,
+    lang: plc_core::i18n::Lang,
 ) -> ExitCode {
     let mut ex = match read(exercise).and_then(|t| {
         Exercise::from_toml(&t).map_err(|e| format!("plc: {}: {e}", exercise.display()))
@@ -126,6 +127,10 @@ pub fn run(
                 return ExitCode::from(2);
             }
         }
+    }
+    // The scenarios' names and hints as the exercise translates them (text only).
+    if format == Format::Text {
+        ex = ex.localised(lang);
     }
     let files = expand(submissions);
     let jobs = jobs
@@ -152,7 +157,7 @@ pub fn run(
     let rows = rows.into_inner().unwrap_or_default();
     let rows: Vec<Row> = rows.into_iter().flatten().collect();
     match format {
-        Format::Text => print_text(&rows),
+        Format::Text => print_text(&rows, lang),
         Format::Json => println!("{}", json(&rows)),
         Format::Csv => print!("{}", csv(&rows)),
         Format::Html => print!("{}", super::class_report::html(&ex, &rows)),
@@ -170,30 +175,35 @@ impl Row {
     }
 }
 
-fn print_text(rows: &[Row]) {
+fn print_text(rows: &[Row], lang: plc_core::i18n::Lang) {
     for row in rows {
         match &row.result {
             Err(e) => println!("{}: cannot be graded: {e}", row.label()),
             Ok(r) => {
-                match r.checked_line() {
-                    Some(line) => println!(
-                        "{}: {}/{} — {}",
-                        row.label(),
-                        r.score,
-                        r.total,
-                        line.replacen("Checked", "checked", 1)
-                    ),
+                match r.checked().map(|s| s.message.render(lang)) {
+                    Some(line) => {
+                        let mut chars = line.chars();
+                        let first = chars.next().map(|c| c.to_lowercase().to_string());
+                        println!(
+                            "{}: {}/{} — {}{}",
+                            row.label(),
+                            r.score,
+                            r.total,
+                            first.unwrap_or_default(),
+                            chars.as_str()
+                        )
+                    }
                     None => println!("{}: {}/{}", row.label(), r.score, r.total),
                 }
-                if let Some(e) = &r.error {
+                if let Some(e) = r.error_in(lang) {
                     println!("  {e}");
                 }
                 for s in r.scenarios.iter().filter(|s| !s.passed()) {
-                    if let Some(f) = &s.failure {
-                        println!("  FAIL {}: expected {}; {}", s.name, f.expected, f.actual);
+                    if let Some(line) = s.fail_line(lang) {
+                        println!("  {line}");
                     }
-                    if let Some(h) = &s.hint {
-                        println!("    hint: {h}");
+                    if let Some(line) = s.hint_line(lang) {
+                        println!("    {line}");
                     }
                 }
             }
