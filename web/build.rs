@@ -412,10 +412,17 @@ fn main() {
                 "web/i18n/en/examples.json: no `{key}` (“{title}”) for the example {f}"
             )),
         }
-        let _ = writeln!(out, "    ({f:?}, {title:?}, {rank}, crate::i18n::K::{}),", key.replace('.', "_"));
+        let _ = writeln!(
+            out,
+            "    ({f:?}, {title:?}, {rank}, crate::i18n::K::{}),",
+            key.replace('.', "_")
+        );
     }
     for (key, _) in &titles {
-        if !list.iter().any(|(f, _, _)| format!("examples.{}", naming::stem(f).replace('-', "_")) == *key) {
+        if !list
+            .iter()
+            .any(|(f, _, _)| format!("examples.{}", naming::stem(f).replace('-', "_")) == *key)
+        {
             problems.push(format!("web/i18n/en/examples.json: `{key}` is no example's title"));
         }
     }

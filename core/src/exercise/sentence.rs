@@ -82,22 +82,28 @@ enum Value {
 
 impl From<Sentence> for Data {
     fn from(s: Sentence) -> Self {
-        Data {
-            key: s.message.key.index(),
-            args: s
-                .message
-                .args
-                .into_iter()
-                .map(|(n, a)| {
-                    let value = match a {
-                        Arg::Text(t) => Value::Text(t),
-                        Arg::Msg(p) => Value::Phrase(p.key.index()),
-                    };
-                    (n.to_string(), value)
-                })
-                .collect(),
-            parts: s.parts.into_iter().map(|(n, p)| (n.to_string(), p)).collect(),
-        }
+        let mut parts: Vec<(String, Sentence)> =
+            s.parts.into_iter().map(|(n, p)| (n.to_string(), p)).collect();
+        let args = s
+            .message
+            .args
+            .into_iter()
+            .map(|(n, a)| {
+                let value = match a {
+                    Arg::Text(t) => Value::Text(t),
+                    Arg::Msg(p) => Value::Phrase(p.key.index()),
+                    // A message inside the message: its English as the argument, the
+                    // message itself as a part (rendered first, in the language asked).
+                    Arg::Said(said) => {
+                        let english = said.english.clone();
+                        parts.push((n.to_string(), Sentence::from(*said)));
+                        Value::Text(english)
+                    }
+                };
+                (n.to_string(), value)
+            })
+            .collect();
+        Data { key: s.message.key.index(), args, parts }
     }
 }
 
