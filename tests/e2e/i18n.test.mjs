@@ -160,6 +160,12 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     await page.getByRole('button', { name: L(lang, 'New ladder POU') }).waitFor();
     await page.reload();
     await page.getByRole('button', { name: L(lang, 'New ladder POU') }).waitFor();
+
+    // The examples' menu in the language, and an example opened is named in it.
+    const title = TR[lang]['examples.latch_ladder'];
+    const examples = page.getByRole('combobox', { name: L(lang, 'Open example', 'header.open_example') });
+    await examples.selectOption({ label: title });
+    await page.locator('.project-name', { hasText: title }).waitFor();
     assert.deepEqual(errors, []);
     await context.close();
   });
