@@ -261,6 +261,18 @@ pub fn open_exercise(
     Ok(Box::pin(ex.open_how(state, how)))
 }
 
+/// Fetches the shipped example `file` and opens it as a new project (reading an ST file
+/// or a project file): fetched the first time an example is opened.
+#[wasm_split(examples, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn open_example(
+    file: String,
+) -> Result<
+    std::pin::Pin<Box<dyn Future<Output = Result<plc_core::project::Project, String>>>>,
+    LoadFailed,
+> {
+    Ok(Box::pin(async move { crate::examples::open(&file).await }))
+}
+
 /// Imports the file the student chose as a new project (reading it, asking the import
 /// worker, the banner's words): fetched the first time a file is imported.
 #[wasm_split(import_ui, wasm_split_path = ::leptos::wasm_split, fallible)]
@@ -366,9 +378,21 @@ pub fn scene_view() -> Result<AnyView, LoadFailed> {
     Ok(view! { <ScenePanel/> }.into_any())
 }
 
+/// The simulator watches a network PROGRAM needs for its function outputs
+/// (`plc_core::network::live::function_watches`).
+pub type NetworkWatches = fn(&plc_core::network::NetworkPou) -> Vec<((String, String), String)>;
+
 thread_local! {
     /// The passes for diagram POUs loaded so far (`plc_core::build::Lowerings`).
     static PASSES: Cell<Lowerings> = const { Cell::new(Lowerings::NONE) };
+    /// The network watches, loaded with the network pass.
+    static WATCHES: Cell<Option<NetworkWatches>> = const { Cell::new(None) };
+}
+
+/// The network watches, once the network pass is loaded (it is before a project with a
+/// network POU is built).
+pub fn network_watches() -> Option<NetworkWatches> {
+    WATCHES.with(Cell::get)
 }
 
 /// The passes for diagram POUs the page has loaded: a project is built with these
@@ -396,7 +420,11 @@ pub async fn load_lowerings(kinds: &[&str]) -> Result<(), LoadFailed> {
         let mut passes = lowerings();
         match *kind {
             "ladder" => passes.ladder = Some(ladder_pass().await?),
-            "network" => passes.network = Some(network_pass().await?),
+            "network" => {
+                passes.network = Some(network_pass().await?);
+                let watches = network_watches_pass().await?;
+                WATCHES.with(|w| w.set(Some(watches)));
+            }
             "petri" => passes.petri = Some(petri_pass().await?),
             "sfc" => passes.text.sfc = Some(sfc_pass().await?),
             "il" => passes.text.il = Some(il_pass().await?),
@@ -417,6 +445,12 @@ fn ladder_pass() -> Result<LadderLowering, LoadFailed> {
 #[wasm_split(network_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn network_pass() -> Result<NetworkPass, LoadFailed> {
     Ok(plc_core::network::NetworkPou::to_st)
+}
+
+/// What the simulator watches for a network PROGRAM's function outputs.
+#[wasm_split(network_pass, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn network_watches_pass() -> Result<NetworkWatches, LoadFailed> {
+    Ok(plc_core::network::live::function_watches)
 }
 
 /// Textual SFC bodies (typed, or generated for an SFC network chart) lowered to

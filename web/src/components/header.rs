@@ -337,7 +337,11 @@ pub fn Header() -> impl IntoView {
                                 return;
                             }
                             leptos::task::spawn_local(async move {
-                                match examples::open(&file).await {
+                                let opened = match crate::lazy::open_example(file).await {
+                                    Ok(opening) => opening.await,
+                                    Err(_) => Err(t(K::lazy_load_failed).to_string()),
+                                };
+                                match opened {
                                     Ok(p) => {
                                         let title = p.name.clone();
                                         if state.add_and_open(p) {

@@ -163,10 +163,10 @@ impl AppState {
                 let _ = sim.set_recording(true);
                 // A network PROGRAM's function outputs have no variables: the simulator
                 // watches their expressions so the network view can show them.
-                if let Some(net) =
-                    project.networks.iter().find(|n| n.name.eq_ignore_ascii_case(&chosen))
-                {
-                    for (_, text) in plc_core::network::live::function_watches(net) {
+                // (The code that finds them comes with the network pass.)
+                let net = project.networks.iter().find(|n| n.name.eq_ignore_ascii_case(&chosen));
+                if let (Some(net), Some(watches)) = (net, crate::lazy::network_watches()) {
+                    for (_, text) in watches(net) {
                         let _ = sim.add_watch(&text);
                     }
                 }
