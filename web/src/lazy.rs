@@ -344,14 +344,12 @@ pub fn explanation_view() -> Result<AnyView, LoadFailed> {
     Ok(view! { <Explanation/> }.into_any())
 }
 
-/// Recorded scan `scan` rebuilt by replaying from the nearest snapshot (issue 36); `None`
-/// without a program. The replay comes with the first step back.
+/// Shows recorded scan `scan`, rebuilt by replaying from the nearest snapshot (issue 36):
+/// the replay comes with the first step back.
 #[wasm_split(past, wasm_split_path = ::leptos::wasm_split, fallible)]
-pub fn scan_view(
-    state: crate::state::AppState,
-    scan: u64,
-) -> Result<Option<Result<plc_core::sim::ScanView, plc_core::sim::RecordError>>, LoadFailed> {
-    Ok(state.sim.with_value(|s| s.as_ref().map(|s| s.view_at(scan))))
+pub fn show_scan(state: crate::state::AppState, scan: u64) -> Result<(), LoadFailed> {
+    state.show_scan_now(scan);
+    Ok(())
 }
 
 /// The `Recorded scan` slider and the banner of a past scan.
@@ -361,14 +359,11 @@ pub fn recorded_view() -> Result<AnyView, LoadFailed> {
     Ok(view! { <Recorded/> }.into_any())
 }
 
-/// Makes recorded scan `scan` the present, dropping the later ones; `None` without a
-/// program.
+/// Makes recorded scan `scan` the present, dropping the later ones up to `last`.
 #[wasm_split(past, wasm_split_path = ::leptos::wasm_split, fallible)]
-pub fn rewind(
-    state: crate::state::AppState,
-    scan: u64,
-) -> Result<Option<Result<(), plc_core::sim::RecordError>>, LoadFailed> {
-    Ok(state.sim.try_update_value(|s| s.as_mut().map(|s| s.rewind_to(scan))).flatten())
+pub fn rewind(state: crate::state::AppState, scan: u64, last: u64) -> Result<(), LoadFailed> {
+    state.rewind_now(scan, last);
+    Ok(())
 }
 
 /// The plant's scene (its widgets drawn and its buttons and switches).

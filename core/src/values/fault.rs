@@ -61,30 +61,7 @@ pub enum Fault {
 
 impl fmt::Display for Fault {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Fault::DivisionByZero => f.write_str("division by zero"),
-            Fault::IndexOutOfRange { index, low, high } => {
-                write!(f, "array index {index} is out of range {low}..{high}")
-            }
-            Fault::StringPosition { function, position, length } => write!(
-                f,
-                "{function}: position or length {position} is outside the string of length {length}"
-            ),
-            Fault::SubrangeViolation { value, low, high } => {
-                write!(f, "{value} is outside the subrange {low}..{high} of the variable it is stored in")
-            }
-            Fault::NullReference => f.write_str("dereference of a NULL reference"),
-            Fault::ForStepZero => f.write_str("FOR loop step is zero: the loop would never end"),
-            Fault::Watchdog { budget } => write!(
-                f,
-                "watchdog: the scan did more than {budget} units of work (an instruction, 8 array cells or 8 string bytes each): an endless loop?"
-            ),
-            Fault::CallDepth => f.write_str("calls are nested too deeply"),
-            Fault::BadConversion { text, target } => {
-                write!(f, "cannot convert '{text}' to {target}")
-            }
-            Fault::Internal(what) => write!(f, "internal error in the VM: {what}"),
-        }
+        f.write_str(&self.said().english)
     }
 }
 
@@ -94,7 +71,12 @@ impl Fault {
     /// The fault as a message (`fault.*` of the message catalogue), to be shown in the
     /// language asked for; its English text is the fault's `Display`.
     pub fn message(&self) -> crate::diagnostics::Message {
-        let said = match self {
+        self.said().message
+    }
+
+    /// The fault's message with its English text.
+    fn said(&self) -> crate::diagnostics::Said {
+        match self {
             Fault::DivisionByZero => crate::msg!(FaultDivisionByZero),
             Fault::IndexOutOfRange { index, low, high } => {
                 crate::msg!(FaultIndexOutOfRange, index = index, low = low, high = high)
@@ -116,8 +98,7 @@ impl Fault {
                 crate::msg!(FaultBadConversion, text = text, target = target)
             }
             Fault::Internal(what) => crate::msg!(FaultInternal, what = what),
-        };
-        said.message
+        }
     }
 }
 

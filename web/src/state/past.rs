@@ -101,7 +101,7 @@ impl AppState {
     }
 
     /// Shows recorded scan `scan` (the present when it is the last one). Pauses a run.
-    /// The replay that rebuilds it is a chunk of its own (`lazy::scan_view`), fetched the
+    /// The replay that rebuilds it is a chunk of its own (`lazy::show_scan`), fetched the
     /// first time the page goes back.
     pub fn show_scan(&self, scan: u64) {
         let Some((first, last)) = self.sim.with_value(|s| s.as_ref()?.recorded_range()) else {
@@ -119,23 +119,29 @@ impl AppState {
         }
         let state = *self;
         leptos::task::spawn_local(async move {
-            let view = crate::lazy::scan_view(state, scan).await;
-            // A later request (another click) wins.
-            if state.going_to.try_get_value() != Some(Some(scan)) {
-                return;
-            }
-            state.going_to.set_value(None);
-            match view {
-                Ok(Some(Ok(view))) => {
-                    state.shown_view.set_value(Some(view));
-                    state.shown.set(Some(scan));
-                    state.bump();
-                }
-                Ok(Some(Err(e))) => state.error(cannot(K::state_cannot_show, scan, &e)),
-                Ok(None) => {}
-                Err(e) => state.error(cannot(K::state_cannot_show, scan, &e)),
+            if let Err(e) = crate::lazy::show_scan(state, scan).await {
+                state.going_to.set_value(None);
+                state.error(cannot(K::state_cannot_show, scan, &e));
             }
         });
+    }
+
+    /// The scan `scan` shown, once the replay is here (`lazy::show_scan`), unless a later
+    /// request (another click) came meanwhile.
+    pub(crate) fn show_scan_now(self, scan: u64) {
+        if self.going_to.try_get_value() != Some(Some(scan)) {
+            return;
+        }
+        self.going_to.set_value(None);
+        match self.sim.with_value(|s| s.as_ref().map(|s| s.view_at(scan))) {
+            Some(Ok(view)) => {
+                self.shown_view.set_value(Some(view));
+                self.shown.set(Some(scan));
+                self.bump();
+            }
+            Some(Err(e)) => self.error(cannot(K::state_cannot_show, scan, &e)),
+            None => {}
+        }
     }
 
     /// Shows the present again.
@@ -201,18 +207,29 @@ impl AppState {
         self.going_to.set_value(None);
         let state = *self;
         leptos::task::spawn_local(async move {
-            let rewound = crate::lazy::rewind(state, scan).await;
-            state.shown.set(None);
-            state.shown_view.set_value(None);
-            state.bump();
-            match rewound {
-                Ok(Some(Ok(()))) => state.info(words::dropped(scan, last)),
-                Ok(Some(Err(e))) => state.error(cannot(K::state_cannot_continue, scan, &e)),
-                Ok(None) => {}
-                Err(e) => state.error(cannot(K::state_cannot_continue, scan, &e)),
+            if let Err(e) = crate::lazy::rewind(state, scan, last).await {
+                state.shown.set(None);
+                state.shown_view.set_value(None);
+                state.bump();
+                state.error(cannot(K::state_cannot_continue, scan, &e));
             }
             then();
         });
+    }
+
+    /// Recorded scan `scan` made the present (`lazy::rewind`), the banner saying which
+    /// scans up to `last` were dropped.
+    pub(crate) fn rewind_now(self, scan: u64, last: u64) {
+        let rewound =
+            self.sim.try_update_value(|s| s.as_mut().map(|s| s.rewind_to(scan))).flatten();
+        self.shown.set(None);
+        self.shown_view.set_value(None);
+        self.bump();
+        match rewound {
+            Some(Ok(())) => self.info(words::dropped(scan, last)),
+            Some(Err(e)) => self.error(cannot(K::state_cannot_continue, scan, &e)),
+            None => {}
+        }
     }
 
     /// Forgets the scan shown (a new simulator, a restart).
