@@ -255,8 +255,18 @@ fn ChartSvg(chart: Memo<Chart>, view: View) -> impl IntoView {
         let Some(el) = svg_ref.get() else { return };
         let el: web_sys::Element = el.into();
         let measured = el.clone();
+        // The new width is taken in the next frame, and only when it changed: the chart's
+        // height follows it, and a size changed inside the observer's own notification
+        // is an error in WebKit ("ResizeObserver loop completed with undelivered
+        // notifications").
         let on_resize = wasm_bindgen::closure::Closure::<dyn Fn()>::new(move || {
-            px.set(measured.get_bounding_client_rect().width());
+            let measured = measured.clone();
+            request_animation_frame(move || {
+                let width = measured.get_bounding_client_rect().width();
+                if px.try_get_untracked().is_some_and(|old| (old - width).abs() > 0.5) {
+                    px.set(width);
+                }
+            });
         });
         if let Ok(observer) = web_sys::ResizeObserver::new(on_resize.as_ref().unchecked_ref()) {
             observer.observe(&el);
