@@ -125,6 +125,11 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     await page.getByText(undeclared).first().waitFor();
     assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES, comments), [], 'the ST editor and the panels');
     await page.screenshot({ path: path.join(shots, `i18n-${lang}-st.png`) });
+    // The same diagnostic in English as soon as the page is (it is data, not a sentence).
+    await select.selectOption('en');
+    await page.getByText('`Stopp` is not declared; did you mean Stop?').first().waitFor();
+    await select.selectOption(lang);
+    await page.getByText(undeclared).first().waitFor();
 
     // The ladder editor.
     await page.getByRole('button', { name: L(lang, 'New ladder POU') }).click();
@@ -153,7 +158,6 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     assert.ok(pous.join(' ').includes('Latch') && pous.join(' ').includes('Cycle'), `the new POUs are kept: ${pous}`);
     await page.locator('.pou-tab').first().click();
     assert.equal(await page.getByRole('textbox', { name: 'ST source' }).inputValue(), LATCH_ERROR, 'the unsaved ST edit is kept');
-    await page.getByText('`Stopp` is not declared; did you mean Stop?').first().waitFor();
 
     // And back to the language, kept across a reload.
     await select.selectOption(lang);
