@@ -426,7 +426,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
             .iter()
             .map(|(pou, e)| ProjectDiagnostic {
                 severity: Severity::Error,
-                msg: None,
+                msg: Some(Box::new(e.msg.clone())),
                 code: Code::NetworkNotRunnable,
                 message: e.message.clone(),
                 site: Site::Network { pou: pou.clone(), element: Some(e.element.clone()) },
