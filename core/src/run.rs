@@ -381,13 +381,12 @@ fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticRep
         line,
         column,
         suggestion: d.suggestion().map(str::to_string),
-        msg: d.msg.as_deref().and_then(|m| match (&d.site, d.site.message()) {
-            (Site::St { .. }, _) => Some(m.clone()),
-            (_, Some(place)) => {
+        msg: d.msg.as_deref().map(|m| match d.site.message() {
+            Some(place) => {
                 let said = Said { message: m.clone(), english: d.message.clone() };
-                Some(crate::msg!(PlaceLocated, place = place, message = said).message)
+                crate::msg!(PlaceLocated, place = place, message = said).message
             }
-            (_, None) => Some(m.clone()),
+            None => m.clone(),
         }),
     }
 }
