@@ -6,7 +6,7 @@ use serde::Serialize;
 use serde_json::Value as Json;
 
 use crate::build::{build_project, FileMap, ProjectDiagnostic, Site};
-use crate::diagnostics::{Code, Diagnostic, LineIndex, Severity};
+use crate::diagnostics::{Code, Diagnostic, LineIndex, Said, Severity};
 use crate::semantic;
 use crate::sim::{ScanOutcome, SimError, Simulator};
 
@@ -112,8 +112,8 @@ pub struct DiagnosticReport {
     /// mean NAME?`); absent when there is none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub suggestion: Option<String>,
-    /// The message as data (`None` while it is English only, or when the message has a
-    /// place in front of it): [`DiagnosticReport::render`] shows it in any language.
+    /// The message as data, with the place in front when it has one (`None` while it is
+    /// English only): [`DiagnosticReport::render`] shows it in any language.
     #[serde(skip)]
     pub msg: Option<crate::diagnostics::Message>,
 }
@@ -381,7 +381,13 @@ fn project_report_in(d: &ProjectDiagnostic, file_map: &FileMap) -> DiagnosticRep
         line,
         column,
         suggestion: d.suggestion().map(str::to_string),
-        msg: d.msg.as_deref().filter(|_| matches!(d.site, Site::St { .. })).cloned(),
+        msg: d.msg.as_deref().map(|m| match d.site.message() {
+            Some(place) => {
+                let said = Said { message: m.clone(), english: d.message.clone() };
+                crate::msg!(PlaceLocated, place = place, message = said).message
+            }
+            None => m.clone(),
+        }),
     }
 }
 

@@ -95,6 +95,37 @@ impl Site {
         }
     }
 
+    /// [`Site::describe`] as data, shown in any language (`POU {pou}, {place}`).
+    pub fn message(&self) -> Option<Said> {
+        let pou = self.pou()?;
+        Some(match self.detail() {
+            Some(place) => crate::msg!(PlaceInPou, pou = pou, place = place),
+            None => crate::msg!(PlacePou, pou = pou),
+        })
+    }
+
+    /// Where inside its POU the site is, as data (`rung 1, row 1, column 2`, `transition
+    /// T1 (guard line 1, column 2)`); `None` for a POU as a whole or outside a POU.
+    pub fn detail(&self) -> Option<Said> {
+        match self {
+            Site::Project | Site::St { .. } => None,
+            Site::Ladder { cell: Some((r, row, c)), .. } => {
+                Some(crate::msg!(PlaceRung, rung = r + 1, row = row + 1, column = c + 1))
+            }
+            Site::Ladder { cell: None, .. }
+            | Site::Petri { element: None, .. }
+            | Site::Network { element: None, .. } => None,
+            Site::Network { element: Some(id), .. } => Some(crate::msg!(PlaceElement, id = id)),
+            Site::Declarations { line, column, .. } => {
+                Some(crate::msg!(PlaceDeclarations, line = line, column = column))
+            }
+            Site::Petri { element: Some(e), at, .. } => Some(match at {
+                Some(at) => crate::msg!(PlaceElementAt, element = e.said(), at = at.said()),
+                None => e.said(),
+            }),
+        }
+    }
+
     /// The POU a site belongs to (ladder and Petri net sites).
     pub fn pou(&self) -> Option<&str> {
         match self {
@@ -426,7 +457,7 @@ pub fn build_project_by(project: &Project, lowerings: &Lowerings) -> ProjectBuil
             .iter()
             .map(|(pou, e)| ProjectDiagnostic {
                 severity: Severity::Error,
-                msg: None,
+                msg: Some(Box::new(e.msg.clone())),
                 code: Code::NetworkNotRunnable,
                 message: e.message.clone(),
                 site: Site::Network { pou: pou.clone(), element: Some(e.element.clone()) },

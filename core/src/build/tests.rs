@@ -218,3 +218,73 @@ fn textual_sfc_and_il_bodies_name_the_text_passes_they_lack() {
         assert!(by.program.is_some());
     }
 }
+
+#[test]
+fn a_sites_message_is_its_english_place_and_is_translated() {
+    use crate::i18n::Lang;
+    use crate::petri::{TextPart, TextPosition};
+    let pou = || "Latch".to_string();
+    let at = |part| Some(TextPosition { part, line: 1, column: 2 });
+    let mut sites = vec![
+        Site::Ladder { pou: pou(), cell: Some((0, 0, 1)) },
+        Site::Ladder { pou: pou(), cell: None },
+        Site::Declarations { pou: pou(), line: 3, column: 8 },
+        Site::Network { pou: pou(), element: Some("7".into()) },
+        Site::Network { pou: pou(), element: None },
+        Site::Petri { pou: pou(), element: None, at: None },
+    ];
+    let elements = [
+        NetElement::Pou,
+        NetElement::Declarations,
+        NetElement::Prologue,
+        NetElement::Epilogue,
+        NetElement::Place("P1".into()),
+        NetElement::Transition("T1".into()),
+        NetElement::Arc(1),
+        NetElement::MacroPlace("M".into()),
+        NetElement::Process("Mix".into()),
+        NetElement::Emergency,
+    ];
+    for e in elements {
+        sites.push(Site::Petri { pou: pou(), element: Some(e.clone()), at: None });
+        for part in [TextPart::Guard, TextPart::Actions, TextPart::Condition, TextPart::Text] {
+            sites.push(Site::Petri { pou: pou(), element: Some(e.clone()), at: at(part) });
+        }
+    }
+    for site in &sites {
+        let said = site.message().unwrap();
+        assert_eq!(Some(said.english.clone()), site.describe(), "{site:?}");
+        assert_eq!(said.message.render(Lang::En), said.english, "{site:?}");
+        assert!(said.message.render(Lang::Pl).starts_with("POU Latch"), "{site:?}");
+    }
+    assert_eq!(Site::Project.message(), None);
+    let rung = Site::Ladder { pou: pou(), cell: Some((0, 0, 1)) }.message().unwrap();
+    assert_eq!(rung.message.render(Lang::Pl), "POU Latch, szczebel 1, wiersz 1, kolumna 2");
+    assert_eq!(rung.message.render(Lang::Cs), "POU Latch, příčka 1, řádek 1, sloupec 2");
+    let guard = Site::Petri {
+        pou: pou(),
+        element: Some(NetElement::Transition("T1".into())),
+        at: at(TextPart::Guard),
+    };
+    assert_eq!(
+        guard.detail().unwrap().message.render(Lang::Cs),
+        "přechod T1 (podmínka přechodu, řádek 1, sloupec 2)"
+    );
+}
+
+#[test]
+fn a_reported_problem_with_a_place_renders_place_and_message_in_the_language_asked_for() {
+    use crate::i18n::Lang;
+    let mut p = project("");
+    p.ladder.push(ladder("Latch", "", DECLS));
+    let options = crate::run::RunOptions { cycles: 0, ..Default::default() };
+    let report = crate::run::run_project(&p, &options);
+    let d = report.diagnostics.iter().find(|d| d.message.starts_with("POU Latch")).unwrap();
+    assert!(d.message.starts_with("POU Latch, rung 1, row 1, column 2: "), "{d:?}");
+    assert_eq!(d.render(Lang::En), d.message);
+    let pl = d.render(Lang::Pl);
+    assert!(pl.starts_with("POU Latch, szczebel 1, wiersz 1, kolumna 2: "), "{pl}");
+    assert_ne!(pl, d.message);
+    let cs = d.render(Lang::Cs);
+    assert!(cs.starts_with("POU Latch, příčka 1, řádek 1, sloupec 2: "), "{cs}");
+}

@@ -17,6 +17,7 @@ use std::collections::{BTreeSet, HashMap};
 use super::logical::Conn;
 use super::model::{NetElement, NetKind, NetworkPou, SfcActionBody, SfcCondition};
 use super::NetError;
+use crate::diagnostics::Said;
 
 /// The action that runs the body's network every scan (Beremiz's name for it).
 pub const NETWORK_ACTION: &str = "COMPUTE_FUNCTION_BLOCKS";
@@ -68,13 +69,17 @@ pub fn chart_text(pou: &NetworkPou) -> Result<ChartText, NetError> {
                 if !QUALIFIERS.contains(&q.as_str()) {
                     return Err(chart.err(
                         &block.id,
-                        format!("action {target} has the unknown qualifier {:?}", action.qualifier),
+                        crate::msg!(
+                            NetUnknownQualifier,
+                            name = &target,
+                            q = format!("{:?}", action.qualifier)
+                        ),
                     ));
                 }
                 let mut args = vec![q.clone()];
                 if matches!(q.as_str(), "L" | "D" | "SD" | "DS" | "SL") {
                     let duration = action.duration.as_deref().ok_or_else(|| {
-                        chart.err(&block.id, format!("action {target} ({q}) has no duration"))
+                        chart.err(&block.id, crate::msg!(NetNoDuration, name = &target, q = &q))
                     })?;
                     args.push(duration.to_string());
                 }
@@ -94,10 +99,7 @@ pub fn chart_text(pou: &NetworkPou) -> Result<ChartText, NetError> {
         out.lines.push(("END_STEP\n".into(), at));
     }
     if !network_done {
-        return Err(NetError {
-            element: String::new(),
-            message: "the SFC body has blocks but no initial step to run them".into(),
-        });
+        return Err(NetError::new(String::new(), crate::msg!(NetNoInitialStep)));
     }
 
     for t in &pou.elements {
@@ -122,8 +124,7 @@ pub fn chart_text(pou: &NetworkPou) -> Result<ChartText, NetError> {
             Condition::Expr(e) if *negated => format!("{head} := NOT ({e});\nEND_TRANSITION\n"),
             Condition::Expr(e) => format!("{head} := {e};\nEND_TRANSITION\n"),
             Condition::Body(tname, _) if *negated => {
-                return Err(chart
-                    .err(&t.id, format!("the negated transition {tname} has a statement body")))
+                return Err(chart.err(&t.id, crate::msg!(NetNegatedBody, name = &tname)))
             }
             Condition::Body(tname, body) => {
                 let head = head.replacen("TRANSITION", &format!("TRANSITION {tname}"), 1);
@@ -179,7 +180,7 @@ fn condition_of(
     condition: &SfcCondition,
     pou: &NetworkPou,
     wires: &super::lower::Lower<'_>,
-) -> Result<Condition, String> {
+) -> Result<Condition, Said> {
     match condition {
         SfcCondition::Wired => {
             let conns: Vec<Conn> = t
@@ -190,20 +191,20 @@ fn condition_of(
                 .map(|w| Conn { from: w.from.clone(), param: w.param.clone() })
                 .collect();
             if conns.is_empty() {
-                return Err("the condition's input is not wired".into());
+                return Err(crate::msg!(NetConditionNotWired));
             }
-            wires.joined(&conns).map(Condition::Expr).map_err(|e| e.to_string())
+            wires
+                .joined(&conns)
+                .map(Condition::Expr)
+                .map_err(|e| crate::msg!(NetElementSays, element = &e.element, message = e.said()))
         }
         SfcCondition::Inline { st } => Ok(Condition::Expr(expression(st)?)),
         SfcCondition::Reference { name } => {
-            let named =
-                pou.transitions.iter().find(|n| n.name.eq_ignore_ascii_case(name)).ok_or_else(
-                    || {
-                        format!(
-                        "the condition names the transition {name}, which the POU does not have"
-                    )
-                    },
-                )?;
+            let named = pou
+                .transitions
+                .iter()
+                .find(|n| n.name.eq_ignore_ascii_case(name))
+                .ok_or_else(|| crate::msg!(NetNoSuchTransition, name = name))?;
             let text = named.st.replace("\r\n", "\n");
             if text.contains(":=") && !text.trim_start().starts_with(":=") {
                 Ok(Condition::Body(named.name.clone(), text))
@@ -215,12 +216,12 @@ fn condition_of(
 }
 
 /// An expression written as a condition's text (`:= x;`, `x;`, `x`).
-fn expression(text: &str) -> Result<String, String> {
+fn expression(text: &str) -> Result<String, Said> {
     let e = text.trim();
     let e = e.strip_prefix(":=").unwrap_or(e).trim();
     let e = e.strip_suffix(';').unwrap_or(e).trim();
     if e.is_empty() {
-        return Err("an empty condition".into());
+        return Err(crate::msg!(NetEmptyCondition));
     }
     Ok(format!("({e})"))
 }
@@ -239,10 +240,7 @@ impl<'a> Chart<'a> {
         let mut followers: HashMap<&str, Vec<&NetElement>> = HashMap::new();
         for n in &chart {
             if by_id.insert(n.id.as_str(), *n).is_some() {
-                return Err(NetError {
-                    element: n.id.clone(),
-                    message: format!("two elements have localId {}", n.id),
-                });
+                return Err(NetError::new(n.id.clone(), crate::msg!(NetSameLocalId, id = &n.id)));
             }
         }
         for n in &chart {
@@ -255,8 +253,8 @@ impl<'a> Chart<'a> {
         Ok(Chart { by_id, followers })
     }
 
-    fn err(&self, id: &str, message: String) -> NetError {
-        NetError { element: id.to_string(), message }
+    fn err(&self, id: &str, said: Said) -> NetError {
+        NetError::new(id.to_string(), said)
     }
 
     /// The action blocks wired to step `id`.
@@ -278,13 +276,7 @@ impl<'a> Chart<'a> {
         for pin in n.inputs.iter().filter(|p| p.name != "condition") {
             for w in &pin.wires {
                 let src = self.by_id.get(w.from.as_str()).ok_or_else(|| {
-                    self.err(
-                        &n.id,
-                        format!(
-                            "a wire comes from localId {}, which is not a chart element",
-                            w.from
-                        ),
-                    )
+                    self.err(&n.id, crate::msg!(NetWireFromNotChart, id = &w.from))
                 })?;
                 out.push(*src);
             }
@@ -301,7 +293,7 @@ impl<'a> Chart<'a> {
         while let Some(n) = todo.pop() {
             seen += 1;
             if seen > self.by_id.len() + 1 {
-                return Err(self.err(&t.id, "the wires before this transition form a loop".into()));
+                return Err(self.err(&t.id, crate::msg!(NetLoopBefore)));
             }
             match &n.kind {
                 NetKind::Step { name, .. } => {
@@ -313,10 +305,9 @@ impl<'a> Chart<'a> {
                     todo.extend(self.inputs(n)?)
                 }
                 _ => {
-                    return Err(self.err(
-                        &t.id,
-                        format!("a transition after a {} (not supported yet)", describe(&n.kind)),
-                    ))
+                    return Err(
+                        self.err(&t.id, crate::msg!(NetTransitionAfter, kind = describe(&n.kind)))
+                    )
                 }
             }
         }
@@ -335,7 +326,7 @@ impl<'a> Chart<'a> {
         while let Some(n) = todo.pop() {
             seen += 1;
             if seen > self.by_id.len() + 1 {
-                return Err(self.err(&t.id, "the wires after this transition form a loop".into()));
+                return Err(self.err(&t.id, crate::msg!(NetLoopAfter)));
             }
             let name = match &n.kind {
                 NetKind::Step { name, .. } => name.clone(),
@@ -347,9 +338,8 @@ impl<'a> Chart<'a> {
                     continue;
                 }
                 other => {
-                    return Err(
-                        self.err(&t.id, format!("a transition followed by a {}", describe(other)))
-                    )
+                    return Err(self
+                        .err(&t.id, crate::msg!(NetTransitionFollowedBy, kind = describe(other))))
                 }
             };
             if steps.insert(name.to_ascii_uppercase()) {
@@ -361,16 +351,16 @@ impl<'a> Chart<'a> {
 }
 
 /// What a chart element is, in words.
-fn describe(kind: &NetKind) -> &'static str {
+fn describe(kind: &NetKind) -> crate::diagnostics::Phrase {
     match kind {
-        NetKind::Transition { .. } => "transition",
-        NetKind::SelectionDivergence => "selection divergence",
-        NetKind::SelectionConvergence => "selection convergence",
-        NetKind::SimultaneousDivergence => "simultaneous divergence",
-        NetKind::SimultaneousConvergence => "simultaneous convergence",
-        NetKind::ActionBlock { .. } => "action block",
-        NetKind::JumpStep { .. } => "jump",
-        NetKind::Step { .. } => "step",
-        _ => "element that is not part of a chart",
+        NetKind::Transition { .. } => crate::phrase!(NetKindTransition),
+        NetKind::SelectionDivergence => crate::phrase!(NetKindSelectionDivergence),
+        NetKind::SelectionConvergence => crate::phrase!(NetKindSelectionConvergence),
+        NetKind::SimultaneousDivergence => crate::phrase!(NetKindSimultaneousDivergence),
+        NetKind::SimultaneousConvergence => crate::phrase!(NetKindSimultaneousConvergence),
+        NetKind::ActionBlock { .. } => crate::phrase!(NetKindActionBlock),
+        NetKind::JumpStep { .. } => crate::phrase!(NetKindJump),
+        NetKind::Step { .. } => crate::phrase!(NetKindStep),
+        _ => crate::phrase!(NetKindOther),
     }
 }

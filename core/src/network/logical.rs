@@ -84,7 +84,7 @@ pub fn logical(elements: &[NetElement]) -> Result<Vec<El>, NetError> {
     // Continuations by localId: (name in upper case, name as written).
     let mut continuations: HashMap<String, (String, String)> = HashMap::new();
     for n in elements {
-        let err = |message: String| NetError { element: n.id.clone(), message };
+        let err = |said: crate::diagnostics::Said| NetError::new(n.id.clone(), said);
         let all_in: Vec<Conn> = n.inputs.iter().flat_map(|p| conns(&p.wires)).collect();
         let kind = match &n.kind {
             NetKind::LeftRail => Kind::LeftRail,
@@ -123,7 +123,7 @@ pub fn logical(elements: &[NetElement]) -> Result<Vec<El>, NetError> {
             NetKind::Return => Kind::Leaf(Element::Return),
             NetKind::Connector { name } => {
                 if connectors.insert(name.to_ascii_uppercase(), all_in).is_some() {
-                    return Err(err(format!("two connectors are named {name}")));
+                    return Err(err(crate::msg!(NetTwoConnectors, name = name)));
                 }
                 continue;
             }
@@ -147,7 +147,7 @@ pub fn logical(elements: &[NetElement]) -> Result<Vec<El>, NetError> {
     if !continuations.is_empty() {
         let resolve = |list: &mut Vec<Conn>, at: &str| -> Result<(), NetError> {
             resolve_continuations(list, &connectors, &continuations)
-                .map_err(|message| NetError { element: at.to_string(), message })
+                .map_err(|said| NetError::new(at.to_string(), said))
         };
         for e in &mut els {
             resolve(&mut e.conns, &e.id)?;
@@ -166,7 +166,7 @@ fn resolve_continuations(
     list: &mut Vec<Conn>,
     connectors: &HashMap<String, Vec<Conn>>,
     continuations: &HashMap<String, (String, String)>,
-) -> Result<(), String> {
+) -> Result<(), crate::diagnostics::Said> {
     for _ in 0..64 {
         if !list.iter().any(|c| continuations.contains_key(&c.from)) {
             return Ok(());
@@ -176,17 +176,12 @@ fn resolve_continuations(
             match continuations.get(&c.from) {
                 Some((key, name)) => match connectors.get(key) {
                     Some(src) => next.extend(src.iter().cloned()),
-                    None => {
-                        return Err(format!(
-                            "continuation {name} (localId {}) has no connector of that name",
-                            c.from
-                        ))
-                    }
+                    None => return Err(crate::msg!(NetNoConnector, name = name, id = &c.from)),
                 },
                 None => next.push(c),
             }
         }
         *list = next;
     }
-    Err("connectors and continuations form a loop".into())
+    Err(crate::msg!(NetConnectorLoop))
 }

@@ -121,10 +121,7 @@ pub fn lower(els: &[El], pou: &str) -> Result<Lowered, NetError> {
                 text.push((format!("{edge}(CLK := {});\n", operand.trim()), at));
             }
             Kind::Leaf(Element::Jump { .. } | Element::Return) => {
-                return Err(lower.err(
-                    s,
-                    "jumps and returns outside the rung grid are not supported yet".into(),
-                ))
+                return Err(lower.err(s, crate::msg!(NetJumpOutsideGrid)))
             }
             _ => {}
         }
@@ -211,17 +208,15 @@ impl<'a> Lower<'a> {
         })
     }
 
-    fn err(&self, i: usize, message: String) -> NetError {
-        NetError {
-            element: self.els.get(i).map_or_else(|| "?".to_string(), |e| e.id.clone()),
-            message,
-        }
+    fn err(&self, i: usize, said: crate::diagnostics::Said) -> NetError {
+        NetError::new(self.els.get(i).map_or_else(|| "?".to_string(), |e| e.id.clone()), said)
     }
 
     fn source(&self, conn: &Conn, from: usize) -> Result<usize, NetError> {
-        self.index.get(conn.from.as_str()).copied().ok_or_else(|| {
-            self.err(from, format!("a wire comes from localId {}, which does not exist", conn.from))
-        })
+        self.index
+            .get(conn.from.as_str())
+            .copied()
+            .ok_or_else(|| self.err(from, crate::msg!(NetWireFromMissing, id = &conn.from)))
     }
 
     /// The ST expression a wire carries. `path` holds the functions and contacts being
@@ -237,7 +232,7 @@ impl<'a> Lower<'a> {
                 if conn.param.as_deref().is_some_and(|p| p.eq_ignore_ascii_case("ENO")) =>
             {
                 if path.contains(&i) {
-                    return Err(self.err(i, "a block's ENO wired back to its own EN".into()));
+                    return Err(self.err(i, crate::msg!(NetEnoToOwnEn)));
                 }
                 path.push(i);
                 let en = self.enable_in(b, path);
@@ -247,26 +242,15 @@ impl<'a> Lower<'a> {
             Kind::Block(b) => match &b.instance {
                 Some(inst) => match &conn.param {
                     Some(p) => Ok(format!("{inst}.{p}")),
-                    None => {
-                        Err(self.err(i, format!("a wire from instance {inst} names no output")))
-                    }
+                    None => Err(self.err(i, crate::msg!(NetWireNamesNoOutput, name = inst))),
                 },
                 None => {
                     if path.contains(&i) {
-                        return Err(self.err(
-                            i,
-                            "functions wired in a loop with no function block to hold a value"
-                                .into(),
-                        ));
+                        return Err(self.err(i, crate::msg!(NetFunctionLoop)));
                     }
                     if path.len() > crate::limits::MAX_EXPR_HEIGHT {
-                        return Err(self.err(
-                            i,
-                            format!(
-                                "more than {} functions and contacts feed each other in a row",
-                                crate::limits::MAX_EXPR_HEIGHT
-                            ),
-                        ));
+                        return Err(self
+                            .err(i, crate::msg!(NetTooDeep, n = crate::limits::MAX_EXPR_HEIGHT)));
                     }
                     path.push(i);
                     let mut args = Vec::new();
@@ -280,12 +264,9 @@ impl<'a> Lower<'a> {
                             None => false,
                             Some(PinModifier::Negated) => true,
                             Some(_) => {
-                                return Err(self.err(
-                                    i,
-                                    format!(
-                                        "an edge on input {pin} of a function (not supported yet)"
-                                    ),
-                                ))
+                                return Err(
+                                    self.err(i, crate::msg!(NetEdgeOnFunctionInput, pin = pin))
+                                )
                             }
                         };
                         let at = args.len();
@@ -294,7 +275,7 @@ impl<'a> Lower<'a> {
                             [] => {
                                 return Err(self.err(
                                     i,
-                                    format!("input {pin} of {} is not wired", b.type_name),
+                                    crate::msg!(NetInputNotWired, pin = pin, ty = &b.type_name),
                                 ))
                             }
                             several => {
@@ -323,12 +304,12 @@ impl<'a> Lower<'a> {
                         None => format!("{}({})", b.type_name, args.join(", ")),
                     };
                     if text.len() > crate::limits::MAX_PROJECT_BYTES {
-                        return Err(self.err(i, "this network is too large when written as ST (a function's output feeds too many others)".into()));
+                        return Err(self.err(i, crate::msg!(NetTooLargeFanout)));
                     }
                     Ok(text)
                 }
             },
-            _ => Err(self.err(i, "this element gives no value to a wire".into())),
+            _ => Err(self.err(i, crate::msg!(NetNoValue))),
         }
     }
 
@@ -340,10 +321,10 @@ impl<'a> Lower<'a> {
         path: &mut Vec<usize>,
     ) -> Result<String, NetError> {
         if path.contains(&i) {
-            return Err(self.err(i, "contacts wired in a loop".into()));
+            return Err(self.err(i, crate::msg!(NetContactLoop)));
         }
         if path.len() > crate::limits::MAX_EXPR_HEIGHT {
-            return Err(self.err(i, "too many contacts in one series".into()));
+            return Err(self.err(i, crate::msg!(NetTooManyContacts)));
         }
         path.push(i);
         let power = self.power_along(i, path);
@@ -356,11 +337,11 @@ impl<'a> Lower<'a> {
             }
             Element::Contact { .. } => format!("{}.Q", edge_instance(&self.els[i]).0),
             Element::Coil { .. } => return Ok(power),
-            _ => return Err(self.err(i, "this element gives no value to a wire".into())),
+            _ => return Err(self.err(i, crate::msg!(NetNoValue))),
         };
         let text = if power == "TRUE" { term } else { format!("{power} AND {term}") };
         if text.len() > crate::limits::MAX_PROJECT_BYTES {
-            return Err(self.err(i, "this network is too large when written as ST".into()));
+            return Err(self.err(i, crate::msg!(NetTooLarge)));
         }
         Ok(text)
     }
@@ -452,7 +433,7 @@ impl<'a> Lower<'a> {
                     && seen.insert(i)
                 {
                     if seen.len() > crate::limits::MAX_EXPR_HEIGHT * 100 {
-                        return Err(self.err(i, "too many functions in one network".into()));
+                        return Err(self.err(i, crate::msg!(NetTooManyFunctions)));
                     }
                     todo.push(i);
                 }

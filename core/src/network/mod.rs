@@ -29,8 +29,22 @@ use std::fmt;
 pub struct NetError {
     /// The element's `localId`.
     pub element: String,
-    /// What is wrong.
+    /// What is wrong (English).
     pub message: String,
+    /// What is wrong, as data to be shown in any language.
+    pub msg: crate::diagnostics::Message,
+}
+
+impl NetError {
+    /// A problem with the element of `localId` `element`.
+    pub fn new(element: String, said: crate::diagnostics::Said) -> NetError {
+        NetError { element, message: said.english, msg: said.message }
+    }
+
+    /// The message with its English text.
+    pub fn said(&self) -> crate::diagnostics::Said {
+        crate::diagnostics::Said { message: self.msg.clone(), english: self.message.clone() }
+    }
 }
 
 impl fmt::Display for NetError {

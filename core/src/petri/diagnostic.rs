@@ -101,6 +101,37 @@ impl PetriDiagnostic {
     }
 }
 
+impl NetElement {
+    /// The element as data, its English text its `Display` (`transition T1`, `arc #2`).
+    pub fn said(&self) -> Said {
+        match self {
+            NetElement::Pou => crate::msg!(PlaceNet),
+            NetElement::Declarations => crate::msg!(PlaceDeclarationsPart),
+            NetElement::Prologue => crate::msg!(PlacePrologue),
+            NetElement::Epilogue => crate::msg!(PlaceEpilogue),
+            NetElement::Place(id) => crate::msg!(PlacePlace, id = id),
+            NetElement::Transition(id) => crate::msg!(PlaceTransition, id = id),
+            NetElement::Arc(i) => crate::msg!(PlaceArc, n = i + 1),
+            NetElement::MacroPlace(id) => crate::msg!(PlaceMacroPlace, id = id),
+            NetElement::Process(name) => crate::msg!(PlaceProcess, name = name),
+            NetElement::Emergency => crate::msg!(PlaceEmergency),
+        }
+    }
+}
+
+impl TextPosition {
+    /// The position as data, its English text its `Display` (`guard line 1, column 2`).
+    pub fn said(&self) -> Said {
+        let (line, column) = (self.line, self.column);
+        match self.part {
+            TextPart::Guard => crate::msg!(PlaceGuard, line = line, column = column),
+            TextPart::Actions => crate::msg!(PlaceActions, line = line, column = column),
+            TextPart::Condition => crate::msg!(PlaceCondition, line = line, column = column),
+            TextPart::Text => crate::msg!(PlaceText, line = line, column = column),
+        }
+    }
+}
+
 impl fmt::Display for NetElement {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

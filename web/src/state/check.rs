@@ -59,16 +59,20 @@ impl DiagView {
         }
     }
 
-    /// Where the problem is, as the problem list shows it (`12:5`, `Latch, rung 1, row 1,
-    /// column 2`, `Weighing, transition T5 (guard line 1, column 3)`).
+    /// Where the problem is, as the problem list shows it in the language shown (`12:5`,
+    /// `Latch, rung 1, row 1, column 2`, `Weighing, transition T5 (guard line 1, column 3)`):
+    /// the POU's name, then its place inside the POU ([`Site::detail`]).
     pub fn place_label(&self) -> String {
         match &self.site {
             Site::Project => t(K::state_place_project).to_string(),
             Site::St { line, column, .. } => format!("{line}:{column}"),
-            site => site
-                .describe()
-                .map(|d| d.strip_prefix("POU ").unwrap_or(&d).to_string())
-                .unwrap_or_default(),
+            site => match (site.pou(), site.detail()) {
+                (Some(pou), Some(d)) => {
+                    format!("{pou}, {}", crate::i18n::message_text(&d.message, None, &d.english))
+                }
+                (Some(pou), None) => pou.to_string(),
+                (None, _) => String::new(),
+            },
         }
     }
 }

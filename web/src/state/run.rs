@@ -85,7 +85,10 @@ impl AppState {
                         self.marked_line.set(Some(*line));
                         tf(K::state_fault_line, &[("line", &line.to_string())])
                     }
-                    other => other.describe().unwrap_or_default(),
+                    other => other
+                        .message()
+                        .map(|p| crate::i18n::message_text(&p.message, None, &p.english))
+                        .unwrap_or_default(),
                 };
                 self.fault_site.set(Some(site.clone()));
                 self.notice.set(Some(Notice {
