@@ -33,7 +33,7 @@ node --test tests/e2e/
 # engine's suite takes a few minutes (the README says how long).
 # language.test.mjs joins the list once the Language switch (issue 33) is in the app; from
 # then on it must pass.
-engine_flows=(student ladder petri exercise offline)
+engine_flows=(student ladder petri exercise offline language)
 # A test that hangs (an engine that stops answering its driver) fails after 5 minutes
 # instead of holding CI until its own limit.
 engine_timeout=--test-timeout=300000
