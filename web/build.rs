@@ -395,11 +395,12 @@ fn main() {
     }
     list.sort_by(|a, b| a.2.cmp(&b.2).then_with(|| a.1.cmp(&b.1)));
     // Each example's title is a text of the page's catalogue (`examples.STEM`, translated
-    // like every other), whose English is the title the file gives.
+    // like every other), whose English is the title the file gives; its description is
+    // `examples.STEM_about`.
     let titles = catalogue(&manifest_dir().join("i18n/en/examples.json")).unwrap_or_default();
     let mut problems = Vec::new();
     let mut out = String::from(
-        "/// The shipped examples in menu order: (file name, English title, rank, title's key).\npub const EXAMPLES: &[(&str, &str, u8, crate::i18n::K)] = &[\n",
+        "/// The shipped examples in menu order: (file name, English title, rank, title's key,\n/// description's key).\npub const EXAMPLES: &[(&str, &str, u8, crate::i18n::K, crate::i18n::K)] = &[\n",
     );
     for (f, title, rank) in &list {
         let key = format!("examples.{}", naming::stem(f).replace('-', "_"));
@@ -412,18 +413,27 @@ fn main() {
                 "web/i18n/en/examples.json: no `{key}` (“{title}”) for the example {f}"
             )),
         }
+        // Its description (`examples.STEM_about`): the menu entry's tooltip.
+        let about = format!("{key}_about");
+        if !titles.iter().any(|(k, _)| *k == about) {
+            problems.push(format!(
+                "web/i18n/en/examples.json: no `{about}` (a one-line description) for the example {f}"
+            ));
+        }
         let _ = writeln!(
             out,
-            "    ({f:?}, {title:?}, {rank}, crate::i18n::K::{}),",
-            key.replace('.', "_")
+            "    ({f:?}, {title:?}, {rank}, crate::i18n::K::{}, crate::i18n::K::{}),",
+            key.replace('.', "_"),
+            about.replace('.', "_")
         );
     }
     for (key, _) in &titles {
+        let stem = key.strip_suffix("_about").unwrap_or(key);
         if !list
             .iter()
-            .any(|(f, _, _)| format!("examples.{}", naming::stem(f).replace('-', "_")) == *key)
+            .any(|(f, _, _)| format!("examples.{}", naming::stem(f).replace('-', "_")) == stem)
         {
-            problems.push(format!("web/i18n/en/examples.json: `{key}` is no example's title"));
+            problems.push(format!("web/i18n/en/examples.json: `{key}` belongs to no example"));
         }
     }
     if !problems.is_empty() {

@@ -165,9 +165,11 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     await page.reload();
     await page.getByRole('button', { name: L(lang, 'New ladder POU') }).waitFor();
 
-    // The examples' menu in the language, and an example opened is named in it.
+    // The examples' menu in the language (titles and descriptions), and an example opened is named in it.
     const title = TR[lang]['examples.latch_ladder'];
     const examples = page.getByRole('combobox', { name: L(lang, 'Open example', 'header.open_example') });
+    const option = examples.locator('option', { hasText: title });
+    assert.equal(await option.getAttribute('title'), TR[lang]['examples.latch_ladder_about'], 'its description');
     await examples.selectOption({ label: title });
     await page.locator('.project-name', { hasText: title }).waitFor();
     assert.deepEqual(errors, []);

@@ -26,11 +26,16 @@ pub struct Example {
     pub title: &'static str,
     /// Its title in the page's catalogue: what the menu shows, in the language shown.
     pub key: K,
+    /// Its one-line description in the page's catalogue (the menu entry's tooltip).
+    pub about: K,
 }
 
 /// Every shipped example, in menu order (ladder projects, ST, then Petri nets).
 pub fn examples() -> Vec<Example> {
-    list::EXAMPLES.iter().map(|&(file, title, _, key)| Example { file, title, key }).collect()
+    list::EXAMPLES
+        .iter()
+        .map(|&(file, title, _, key, about)| Example { file, title, key, about })
+        .collect()
 }
 
 /// The example `file` (its text) as a new project.
@@ -49,7 +54,7 @@ pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
 /// Fetches the example `file` from the site and opens it as a new project, named with
 /// its title in the language shown.
 pub async fn open(file: &str) -> Result<Project, String> {
-    let Some(&(_, _, _, key)) = list::EXAMPLES.iter().find(|(f, _, _, _)| *f == file) else {
+    let Some(&(_, _, _, key, _)) = list::EXAMPLES.iter().find(|(f, _, _, _, _)| *f == file) else {
         return Err(tf(K::state_example_missing, &[("file", file)]));
     };
     let fail = |_| tf(K::state_example_unreachable, &[("file", file)]);

@@ -354,7 +354,7 @@ pub fn Header() -> impl IntoView {
                         }>
                         <option value="" selected=true>{t(K::header_open_example_choose)}</option>
                         {examples::examples().into_iter().map(|e| view! {
-                            <option value=e.file>{t(e.key)}</option>
+                            <option value=e.file title=t(e.about)>{t(e.key)}</option>
                         }).collect_view()}
                     </select>
                 </label>
