@@ -261,15 +261,14 @@ pub fn open_exercise(
     Ok(Box::pin(ex.open_how(state, how)))
 }
 
+/// An example being opened: the project, or why it could not be opened.
+pub type OpeningExample =
+    std::pin::Pin<Box<dyn Future<Output = Result<plc_core::project::Project, String>>>>;
+
 /// Fetches the shipped example `file` and opens it as a new project (reading an ST file
 /// or a project file): fetched the first time an example is opened.
 #[wasm_split(examples, wasm_split_path = ::leptos::wasm_split, fallible)]
-pub fn open_example(
-    file: String,
-) -> Result<
-    std::pin::Pin<Box<dyn Future<Output = Result<plc_core::project::Project, String>>>>,
-    LoadFailed,
-> {
+pub fn open_example(file: String) -> Result<OpeningExample, LoadFailed> {
     Ok(Box::pin(async move { crate::examples::open(&file).await }))
 }
 

@@ -609,10 +609,10 @@ impl<'a> Emitter<'a> {
             Type::Enum(_) => Ok(Elem::LInt),
             // A reference is compared (`=`, `<>`) and moved as the bits of its cell.
             Type::Ref(_) => Ok(Elem::LWord),
-            _ => Err(CompileError::Unsupported(format!(
-                "a value of type {} where a scalar is needed",
-                self.p.types.display(ty)
-            ))),
+            _ => Err(CompileError::Unsupported(Box::new(crate::msg!(
+                CompileScalarNeeded,
+                ty = self.p.types.display(ty).to_string()
+            )))),
         }
     }
 }

@@ -17,8 +17,9 @@ pub enum CompileError {
     NotAProgram(PouId),
     /// FB types contain each other (or a function frame contains an FB that calls it).
     RecursiveLayout(String),
-    /// A construct the compiler does not support (a checker/compiler mismatch).
-    Unsupported(String),
+    /// A construct the compiler does not support (a checker/compiler mismatch), said as a
+    /// message so it reads in every language.
+    Unsupported(Box<crate::diagnostics::Said>),
 }
 
 impl fmt::Display for CompileError {
@@ -36,7 +37,7 @@ impl CompileError {
             }
             CompileError::NotAProgram(id) => crate::msg!(PouNotProgram, id = id),
             CompileError::RecursiveLayout(name) => crate::msg!(LayoutContainsItself, name = name),
-            CompileError::Unsupported(what) => crate::msg!(NotSupportedByCompiler, what = what),
+            CompileError::Unsupported(what) => crate::msg!(NotSupportedByCompiler, what = &**what),
         }
     }
 }
@@ -60,5 +61,5 @@ pub(crate) fn add(a: u32, b: u64) -> Result<u32, CompileError> {
 
 /// A compiler-invariant failure described as an unsupported construct.
 pub(crate) fn bad(what: &str) -> CompileError {
-    CompileError::Unsupported(format!("invalid {what} in the IR"))
+    CompileError::Unsupported(Box::new(crate::msg!(CompileInvalidInIr, what = what)))
 }

@@ -199,7 +199,10 @@ impl Emitter<'_> {
             let rb = self.expr(b, None)?;
             let dst = self.dst(hint)?;
             if !is_cmp(op) {
-                return Err(CompileError::Unsupported(format!("{op:?} on strings")));
+                return Err(CompileError::Unsupported(Box::new(crate::msg!(
+                    CompileOperatorOnStrings,
+                    op = format!("{op:?}")
+                ))));
             }
             self.emit(Op::StrCmp { op, dst, a: ra, b: rb });
             return Ok(dst);
