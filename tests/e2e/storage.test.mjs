@@ -216,6 +216,9 @@ test('a share link opened with no usable storage shows the shared project and ke
     });
   });
   const { page, errors } = await openApp(context, link);
+  // The link's reader is a chunk fetched for links only: the shared project opens when it
+  // has come, and the banner says so.
+  await banner(page).filter({ hasText: 'Opened the shared project' }).waitFor();
   assert.equal(await editorText(page), THEIRS, 'the shared project is the one shown');
   const text = await banner(page).innerText();
   assert.match(text, /Opened the shared project/);
@@ -258,6 +261,7 @@ test('a project or share link that stopped the page while opening is not opened 
   // (Here the page is stopped after the shared project was checked and stored; one that
   // stops the page while it is checked is never stored, as the link is only cleared after.)
   ({ page } = await openApp(context, link));
+  await banner(page).filter({ hasText: 'Opened the shared project' }).waitFor();
   await crash(page);
   ({ page, errors } = await openApp(context, link));
   await banner(page).filter({ hasText: 'stopped the page the last time' }).waitFor();
