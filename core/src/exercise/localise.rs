@@ -19,27 +19,20 @@ impl Exercise {
     pub fn localised(&self, lang: Lang) -> Exercise {
         let mut e = self.clone();
         let Some(t) = self.translation(lang) else { return e };
-        if let Some(title) = &t.title {
-            e.title = title.clone();
-        }
         if let Some(statement) = &t.statement {
             e.statement = statement.clone();
         }
-        for v in &mut e.interface {
-            if let Some(m) = t.meaning.get(&v.name) {
-                v.meaning = m.clone();
-            }
-        }
+        // Hints first: they are found by the scenario's English name.
         for s in &mut e.scenarios {
-            if let Some(st) = t.scenario.get(&s.name) {
-                if let Some(hint) = &st.hint {
-                    s.hint = Some(hint.clone());
-                }
-                if let Some(name) = &st.name {
-                    s.name = name.clone();
-                }
+            if let Some(hint) = t.scenario.get(&s.name).and_then(|st| st.hint.as_ref()) {
+                s.hint = Some(hint.clone());
             }
         }
+        t.put_names(
+            &mut e.title,
+            e.interface.iter_mut().map(|v| (v.name.as_str(), &mut v.meaning)),
+            e.scenarios.iter_mut().map(|s| &mut s.name),
+        );
         e
     }
 

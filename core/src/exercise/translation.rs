@@ -44,3 +44,29 @@ pub struct ScenarioTranslation {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hint: Option<String>,
 }
+
+impl Translation {
+    /// Puts this translation's title, interface meanings (each by its variable's name) and
+    /// scenario names (each by its English name) over the English ones, where it has
+    /// them: what every view of a translated exercise shares.
+    pub fn put_names<'a>(
+        &self,
+        title: &mut String,
+        meanings: impl Iterator<Item = (&'a str, &'a mut String)>,
+        scenario_names: impl Iterator<Item = &'a mut String>,
+    ) {
+        if let Some(t) = &self.title {
+            title.clone_from(t);
+        }
+        for (name, meaning) in meanings {
+            if let Some(m) = self.meaning.get(name) {
+                meaning.clone_from(m);
+            }
+        }
+        for name in scenario_names {
+            if let Some(n) = self.scenario.get(name.as_str()).and_then(|s| s.name.as_ref()) {
+                name.clone_from(n);
+            }
+        }
+    }
+}

@@ -97,22 +97,14 @@ impl ExerciseView {
     pub fn localised(&self, lang: Lang) -> ExerciseView {
         let mut v = self.clone();
         let Some(t) = self.translations.get(lang.tag()) else { return v };
-        if let Some(title) = &t.title {
-            v.title = title.clone();
-        }
         if let Some(html) = &t.statement_html {
             v.statement_html = html.clone();
         }
-        for i in &mut v.interface {
-            if let Some(m) = t.meaning.get(&i.name) {
-                i.meaning = m.clone();
-            }
-        }
-        for s in &mut v.scenarios {
-            if let Some(name) = t.scenario.get(&s.name).and_then(|st| st.name.clone()) {
-                s.name = name;
-            }
-        }
+        t.put_names(
+            &mut v.title,
+            v.interface.iter_mut().map(|i| (i.name.as_str(), &mut i.meaning)),
+            v.scenarios.iter_mut().map(|s| &mut s.name),
+        );
         v
     }
 
