@@ -120,14 +120,6 @@ impl Pane {
     }
 }
 
-/// The element with `id`, as an HTML element.
-fn element(id: &str) -> Option<web_sys::HtmlElement> {
-    web_sys::window()
-        .and_then(|w| w.document())
-        .and_then(|d| d.get_element_by_id(id))
-        .and_then(|e| wasm_bindgen::JsCast::dyn_into::<web_sys::HtmlElement>(e).ok())
-}
-
 /// The tab bar of a small screen (hidden on a wide one): a tab per pane, the arrow keys,
 /// Home and End move among them as in every tab bar.
 fn pane_tabs(pane: RwSignal<Pane>, shown: Memo<Pane>, has_exercise: Memo<bool>) -> impl IntoView {
@@ -154,7 +146,9 @@ fn pane_tabs(pane: RwSignal<Pane>, shown: Memo<Pane>, has_exercise: Memo<bool>) 
         };
         ev.prevent_default();
         pane.set(all[next]);
-        if let Some(tab) = element(&format!("tab-{}", all[next].id())) {
+        if let Some(tab) =
+            crate::dom::by_id::<web_sys::HtmlElement>(&format!("tab-{}", all[next].id()))
+        {
             let _ = tab.focus();
         }
     };
@@ -174,7 +168,7 @@ fn skip_to_simulation(ev: leptos::ev::MouseEvent, pane: RwSignal<Pane>) {
     ev.prevent_default();
     pane.set(Pane::Simulation);
     let focus = || {
-        let pane = element("simulation")?;
+        let pane = crate::dom::by_id::<web_sys::HtmlElement>("simulation")?;
         let _ = pane.focus();
         let active = web_sys::window()?.document()?.active_element()?;
         Some(active == *pane.as_ref())

@@ -2,6 +2,7 @@
 
 mod app;
 mod components;
+mod dom;
 mod download;
 mod examples;
 mod exercises;

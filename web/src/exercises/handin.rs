@@ -13,6 +13,8 @@ use plc_core::exercise::HandIn;
 use plc_core::project::{Project, StorageBackend};
 use wasm_bindgen::{JsCast, JsValue};
 
+use crate::dom::by_id;
+
 use super::protocol::{Reply, Request};
 use super::Exercises;
 use crate::download::{download, download_parts};
@@ -39,11 +41,6 @@ fn dialog_html() -> String {
         t(K::exercise_download_hand_in),
         t(K::exercise_cancel),
     )
-}
-
-/// An element of the page by its id.
-fn by_id<T: JsCast>(id: &str) -> Option<T> {
-    web_sys::window()?.document()?.get_element_by_id(id)?.dyn_into().ok()
 }
 
 fn stored_name() -> Option<String> {

@@ -30,8 +30,7 @@ use zoom::{SideToggle, ViewPrefs, ZoomControls};
 
 /// Scrolls the element with `id` into view.
 pub(crate) fn scroll_to(id: &str) {
-    let el = web_sys::window().and_then(|w| w.document()).and_then(|d| d.get_element_by_id(id));
-    if let Some(el) = el {
+    if let Some(el) = crate::dom::by_id::<web_sys::Element>(id) {
         el.scroll_into_view_with_bool(false);
     }
 }

@@ -236,12 +236,7 @@ impl NetEditor {
         let Some(Selection::Element(id)) = self.selected.get_untracked() else { return };
         let dom = self.element_dom_id(&id);
         request_animation_frame(move || {
-            use wasm_bindgen::JsCast;
-            let el = web_sys::window()
-                .and_then(|w| w.document())
-                .and_then(|d| d.get_element_by_id(&dom))
-                .and_then(|e| e.dyn_into::<web_sys::SvgElement>().ok());
-            if let Some(el) = el {
+            if let Some(el) = crate::dom::by_id::<web_sys::SvgElement>(&dom) {
                 let _ = el.focus();
             }
         });
@@ -255,7 +250,7 @@ impl NetEditor {
 
     /// The point of the net under client pixel `(x, y)`.
     pub fn net_point(&self, x: f64, y: f64) -> Option<Point> {
-        let svg = web_sys::window()?.document()?.get_element_by_id(&self.canvas_id())?;
+        let svg: web_sys::Element = crate::dom::by_id(&self.canvas_id())?;
         let rect = svg.get_bounding_client_rect();
         let vb = svg.get_attribute("viewBox")?;
         let v: Vec<f64> = vb.split_whitespace().filter_map(|s| s.parse().ok()).collect();
@@ -336,7 +331,7 @@ impl NetEditor {
     }
 
     fn scroller(&self) -> Option<web_sys::Element> {
-        let svg = web_sys::window()?.document()?.get_element_by_id(&self.canvas_id())?;
+        let svg: web_sys::Element = crate::dom::by_id(&self.canvas_id())?;
         svg.closest(".pn-net").ok().flatten()
     }
 

@@ -871,10 +871,7 @@ fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
     };
     let zoom_by = move |f: f64| editor.zoom.update(|z| *z = (*z * f).clamp(0.25, 4.0));
     let fit = move |_| {
-        let svg = web_sys::window()
-            .and_then(|w| w.document())
-            .and_then(|d| d.get_element_by_id(&editor.canvas_id()));
-        let Some(svg) = svg else { return };
+        let Some(svg) = crate::dom::by_id::<web_sys::Element>(&editor.canvas_id()) else { return };
         let Some(holder) = svg.closest(".pn-net").ok().flatten() else { return };
         let vb: Vec<f64> = svg
             .get_attribute("viewBox")
