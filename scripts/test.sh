@@ -31,8 +31,6 @@ node --test tests/e2e/
 # Firefox ESR through puppeteer-core over WebDriver BiDi, and WebKitGTK's MiniBrowser
 # through WebKitWebDriver, under a virtual X display (it has no headless mode). Each
 # engine's suite takes a few minutes (the README says how long).
-# language.test.mjs joins the list once the Language switch (issue 33) is in the app; from
-# then on it must pass.
 engine_flows=(student ladder petri exercise offline language)
 # A test that hangs (an engine that stops answering its driver) fails after 5 minutes
 # instead of holding CI until its own limit.

@@ -2,8 +2,7 @@
 // Čeština; the page's words and its `lang` follow the choice, which a reload keeps, and the
 // simulator works whatever the language.
 //
-// Not in scripts/test.sh's run list until the switch is in the app (issue 33); from then on
-// it is, and a missing or broken switch fails here.
+// In scripts/test.sh's run list: a missing or broken switch fails here.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { suite, openApp, withSession, writeProgram, noErrors, shot } from './harness.mjs';
