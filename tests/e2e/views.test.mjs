@@ -112,6 +112,34 @@ test('the sequential weighing net: Start moves the token from P1 to P31 and ligh
   await context.close();
 });
 
+test('a Petri net shows its generated code beside it from 1100 px wide, below it on a tablet', async () => {
+  const { context, page, errors } = await openApp();
+  await openExample(page, 'Weighing (sequential Petri net)');
+  const view = page.getByRole('region', { name: 'Petri net Weighing' });
+  await view.waitFor();
+  const boxes = async () => ({
+    net: await view.locator('.pn-net').boundingBox(),
+    code: await view.locator('.pn-code').boundingBox(),
+  });
+  for (const width of [1100, 1180, 1259, 1260, 1280, 1440, 1920]) {
+    await page.setViewportSize({ width, height: 900 });
+    await page.waitForTimeout(100);
+    const { net, code } = await boxes();
+    assert.ok(Math.abs(code.y - net.y) < 2 && code.x >= net.x + net.width, `at ${width} px the code is beside the net: ${JSON.stringify({ net, code })}`);
+    assert.ok(code.width >= 280, `at ${width} px the code has room: ${code.width}`);
+    // The simulation stays on the page: beside the program, or below it.
+    assert.ok(await page.getByRole('button', { name: 'Run', exact: true }).isVisible());
+    assert.equal(await page.evaluate(() => document.documentElement.scrollWidth <= window.innerWidth), true, `no sideways scroll at ${width} px`);
+  }
+  // A tablet in portrait: the code below the net, both the full width.
+  await page.setViewportSize({ width: 768, height: 1024 });
+  await page.waitForTimeout(100);
+  const { net, code } = await boxes();
+  assert.ok(code.y >= net.y + net.height, `at 768 px the code is below the net: ${JSON.stringify({ net, code })}`);
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a ladder problem is listed at its rung, row and column, and clicking it shows the cell', async () => {
   const { context, page, errors } = await openApp();
   const project = JSON.parse(readFileSync(path.join(root, 'examples/latch-ladder.plcproj.json'), 'utf8'));
