@@ -10,6 +10,7 @@ pub mod ladder;
 pub mod network;
 pub mod new_pou;
 pub mod petri;
+pub mod pinch;
 pub mod pou_actions;
 pub mod pou_pane;
 pub mod problems;

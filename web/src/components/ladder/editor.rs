@@ -190,6 +190,8 @@ pub struct LadderEditor {
     clipboard: StoredValue<Option<Rung>>,
     /// The drag in progress.
     pub drag: RwSignal<Option<Drag>>,
+    /// Two fingers on the rungs zoom them.
+    pub pinch: crate::components::pinch::Pinch,
     /// Whether the block picker (`b` on a cell) is open.
     pub picker_open: RwSignal<bool>,
 }
@@ -208,6 +210,7 @@ impl LadderEditor {
             version: RwSignal::new(0),
             clipboard: StoredValue::new(None),
             drag: RwSignal::new(None),
+            pinch: crate::components::pinch::Pinch::new(),
             picker_open: RwSignal::new(false),
         }
     }
@@ -567,6 +570,11 @@ impl LadderEditor {
 
     /// A pointer went down on a palette tool or a placed element: a drag may start.
     pub fn press(&self, source: DragSource, ev: &web_sys::PointerEvent) {
+        // A second finger pinches: the first one's drag ends.
+        if self.pinch.down(ev) {
+            self.drag.set(None);
+            return;
+        }
         if ev.button() != 0 {
             return;
         }

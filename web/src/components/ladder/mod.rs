@@ -418,18 +418,24 @@ pub fn LadderView(name: String) -> impl IntoView {
     }));
     // Drags follow the pointer anywhere in the window and drop on the cell under it.
     let moves = window_event_listener(leptos::ev::pointermove, move |ev| {
-        if editor.drag.with_untracked(Option::is_some) {
+        if let Some(zoom) = editor.pinch.moved(&ev, prefs.zoom.get_untracked()) {
+            prefs.set_zoom(zoom);
+        } else if editor.drag.with_untracked(Option::is_some) {
             editor.pointer_move(f64::from(ev.client_x()), f64::from(ev.client_y()));
         }
     });
     let ups = window_event_listener(leptos::ev::pointerup, move |ev| {
+        editor.pinch.up(&ev);
         editor.release(
             f64::from(ev.client_x()),
             f64::from(ev.client_y()),
             ev.ctrl_key() || ev.alt_key(),
         );
     });
-    let cancels = window_event_listener(leptos::ev::pointercancel, move |_| editor.drag.set(None));
+    let cancels = window_event_listener(leptos::ev::pointercancel, move |ev| {
+        editor.pinch.up(&ev);
+        editor.drag.set(None)
+    });
     on_cleanup(move || {
         moves.remove();
         ups.remove();

@@ -91,6 +91,8 @@ pub struct NetEditor {
     pub drag: RwSignal<Option<NetDrag>>,
     /// The drawing's scale (1 = one net unit per CSS pixel).
     pub zoom: RwSignal<f64>,
+    /// Two fingers on the canvas zoom it.
+    pub pinch: crate::components::pinch::Pinch,
     history: StoredValue<History<Snapshot>>,
     /// Bumped on every edit, undo and redo.
     pub version: RwSignal<u64>,
@@ -107,6 +109,7 @@ impl NetEditor {
             arc_from: RwSignal::new(None),
             drag: RwSignal::new(None),
             zoom: RwSignal::new(1.0),
+            pinch: crate::components::pinch::Pinch::new(),
             history: StoredValue::new(History::default()),
             version: RwSignal::new(0),
         }
@@ -294,6 +297,11 @@ impl NetEditor {
     /// A pointer went down on the canvas: on element `id` (its centre `centre`), or on the
     /// empty canvas (`None`).
     pub fn press(&self, id: Option<String>, centre: Option<Point>, ev: &web_sys::PointerEvent) {
+        // A second finger pinches: the first one's drag or pan ends.
+        if self.pinch.down(ev) {
+            self.drag.set(None);
+            return;
+        }
         if ev.button() != 0 {
             return;
         }

@@ -650,14 +650,20 @@ pub fn PetriView(name: String) -> impl IntoView {
     });
     // Drags follow the pointer anywhere in the window.
     let moves = window_event_listener(leptos::ev::pointermove, move |ev| {
-        if editor.drag.with_untracked(Option::is_some) {
+        if let Some(zoom) = editor.pinch.moved(&ev, editor.zoom.get_untracked()) {
+            editor.zoom.set(zoom.clamp(0.25, 4.0));
+        } else if editor.drag.with_untracked(Option::is_some) {
             editor.pointer_move(f64::from(ev.client_x()), f64::from(ev.client_y()));
         }
     });
     let ups = window_event_listener(leptos::ev::pointerup, move |ev| {
+        editor.pinch.up(&ev);
         editor.release(f64::from(ev.client_x()), f64::from(ev.client_y()));
     });
-    let cancels = window_event_listener(leptos::ev::pointercancel, move |_| editor.drag.set(None));
+    let cancels = window_event_listener(leptos::ev::pointercancel, move |ev| {
+        editor.pinch.up(&ev);
+        editor.drag.set(None)
+    });
     on_cleanup(move || {
         moves.remove();
         ups.remove();
