@@ -1,7 +1,8 @@
 // The colour theme (issue 34): `System` follows the browser's colour scheme, the header's
 // `Theme` switch picks Light or Dark at once (no reload) and keeps the choice in local
 // storage; the diagrams use the theme's colours. Screenshots of the ST, ladder and Petri
-// views in both themes on a laptop and a phone: docs/screenshots/theme-*.png.
+// views and of an exercise with a failed Check, in both themes, on a laptop (1280 px), a
+// tablet (768 px) and a phone (390 px): docs/screenshots/theme-*.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { fileURLToPath } from 'node:url';
@@ -121,9 +122,22 @@ test('Dark on a light system colours the editors, the diagrams and the timeline'
   await context.close();
 });
 
-const SIZES = { 1280: { width: 1280, height: 800 }, 390: { width: 390, height: 844 } };
+// A laptop, a tablet in portrait and a phone (the last two with touch).
+const SIZES = { 1280: { width: 1280, height: 800 }, 768: { width: 768, height: 1024 }, 390: { width: 390, height: 844 } };
 // Each view: how to reach it, and what the screenshot shows (scrolled to, as a person would).
-const SHOWN = { st: '.app-header', ladder: '.ld-rung', petri: '.pn-net' };
+const SHOWN = { st: '.app-header', ladder: '.ld-rung', petri: '.pn-net', exercise: '.report-scenario.failed' };
+/** The latch exercise's program with the hold contact missing: Check fails. */
+const NO_HOLD = `PROGRAM Latch
+VAR_INPUT
+    Start : BOOL;
+    Stop : BOOL;
+END_VAR
+VAR_OUTPUT
+    Motor : BOOL;
+END_VAR
+Motor := Start AND NOT Stop;
+END_PROGRAM
+`;
 const VIEWS = {
   st: async () => {},
   ladder: async (page) => {
@@ -145,13 +159,25 @@ const VIEWS = {
     await showPane(page, 'Program');
     await page.locator('.pn-place[data-tokens="1"]').first().waitFor();
   },
+  exercise: async (page) => {
+    await openMenu(page);
+    await page.getByRole('button', { name: 'Exercises', exact: true }).click();
+    await page.locator('.catalogue-item[data-exercise="latch"] button').first().click();
+    await page.getByRole('region', { name: 'Exercise' }).waitFor({ state: 'attached' });
+    await showPane(page, 'Program');
+    await page.getByRole('textbox', { name: 'ST source' }).fill(NO_HOLD);
+    await page.waitForTimeout(400);
+    await showPane(page, 'Exercise');
+    await page.getByRole('button', { name: 'Check', exact: true }).click();
+    await page.locator('.report-scenario.failed').first().waitFor();
+  },
 };
 
 for (const [width, viewport] of Object.entries(SIZES)) {
   for (const scheme of ['light', 'dark']) {
-    test(`screenshots: the ST, ladder and Petri views at ${width} px, ${scheme}`, async () => {
+    test(`screenshots: the ST, ladder and Petri views and an exercise at ${width} px, ${scheme}`, async () => {
       for (const [name, open] of Object.entries(VIEWS)) {
-        const context = await browser.newContext({ viewport, colorScheme: scheme, hasTouch: width === '390', isMobile: width === '390' });
+        const context = await browser.newContext({ viewport, colorScheme: scheme, hasTouch: width !== '1280', isMobile: width === '390' });
         const { page, errors } = await openApp(context);
         await open(page);
         await page.locator(SHOWN[name]).first().evaluate((el) => el.scrollIntoView({ block: 'start' }));

@@ -58,6 +58,11 @@ impl Pinch {
         let at = (f64::from(ev.client_x()), f64::from(ev.client_y()));
         let mut pinching = false;
         self.state.update_value(|f| {
+            // The first finger of a touch begins a new gesture: fingers left from an
+            // earlier one (a release the page did not see) do not count.
+            if ev.is_primary() {
+                *f = Fingers::default();
+            }
             f.down.retain(|(i, _, _)| *i != id);
             f.down.push((id, at.0, at.1));
             if f.down.len() >= 2 {
