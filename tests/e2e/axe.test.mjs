@@ -11,6 +11,7 @@ import path from 'node:path';
 import { readFileSync } from 'node:fs';
 import { startServer } from './server.mjs';
 import { launch } from './browser.mjs';
+import { NO_SEAL } from './setup.mjs';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const AXE = readFileSync(path.join(root, 'node_modules/axe-core/axe.min.js'), 'utf8');
@@ -90,18 +91,6 @@ const NETWORK = `<?xml version="1.0" encoding="utf-8"?>
     <task name="task0" priority="0" interval="T#20ms"><pouInstance name="inst0" typeName="Mixer"/></task>
   </resource></configuration></configurations></instances>
 </project>`;
-
-const NO_SEAL = `PROGRAM Main
-VAR_INPUT
-    Start : BOOL;
-    Stop : BOOL;
-END_VAR
-VAR_OUTPUT
-    Motor : BOOL;
-END_VAR
-Motor := Start AND NOT Stop;
-END_PROGRAM
-`;
 
 /** Each view: how a person reaches it from a fresh page. */
 const VIEWS = {

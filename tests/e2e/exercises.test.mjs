@@ -10,6 +10,7 @@ import { mkdtemp, writeFile, readFile } from 'node:fs/promises';
 import os from 'node:os';
 import { startServer } from './server.mjs';
 import { launch } from './browser.mjs';
+import { NO_SEAL } from './setup.mjs';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 let server;
@@ -28,17 +29,6 @@ after(async () => {
   await course?.close();
 });
 
-const NO_SEAL = `PROGRAM Main
-VAR_INPUT
-    Start : BOOL;
-    Stop : BOOL;
-END_VAR
-VAR_OUTPUT
-    Motor : BOOL;
-END_VAR
-Motor := Start AND NOT Stop;
-END_PROGRAM
-`;
 const RIGHT = NO_SEAL.replace('Motor := Start AND NOT Stop;', 'Motor := (Start OR Motor) AND NOT Stop;');
 
 async function fresh(errors) {

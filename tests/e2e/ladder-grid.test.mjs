@@ -5,15 +5,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { root, useApp, openPage, newLadderProgram, cell } from './setup.mjs';
+import { root, useApp, openPage, newLadderProgram, cell, centre, operand } from './setup.mjs';
 
 const app = useApp();
 const openApp = (context) => openPage(context, app.server.url);
-
-const centre = async (loc) => {
-  const b = await loc.boundingBox();
-  return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
-};
 
 const steps = (from, to, n = 8) => Array.from({ length: n }, (_, i) => ({
   x: from.x + ((to.x - from.x) * (i + 1)) / n,
@@ -37,13 +32,6 @@ async function touchDrag(cdp, from, to) {
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [a] });
   for (const p of steps(a, b)) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [p] });
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-}
-
-async function operand(view, text) {
-  const box = view.getByRole('textbox', { name: 'Operand' });
-  await box.fill(text);
-  await box.press('Enter');
-  await box.waitFor({ state: 'detached' });
 }
 
 const LATCH_DECLS = `VAR_INPUT

@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { useApp, openPage, root, cell } from './setup.mjs';
+import { useApp, openPage, root, cell, centre, operand, scrollsSideways } from './setup.mjs';
 
 const app = useApp();
 const shots = path.join(root, 'docs/screenshots');
@@ -15,12 +15,6 @@ const PHONE = { viewport: { width: 390, height: 844 }, hasTouch: true, isMobile:
 
 /** Scrolls `loc` to the middle of the screen, as a person brings what they touch into view. */
 const bringIntoView = (loc) => loc.evaluate((el) => el.scrollIntoView({ block: 'center', inline: 'nearest' }));
-
-const centre = async (loc) => {
-  const b = await loc.boundingBox();
-  assert.ok(b, 'it is shown');
-  return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
-};
 
 /** One finger from `a` to `b` (client pixels). */
 async function fingerDrag(cdp, a, b) {
@@ -42,10 +36,6 @@ async function pinch(cdp, at, gap, spread) {
   }
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
 }
-
-/** Whether the page scrolls sideways. */
-const scrollsSideways = (page) =>
-  page.evaluate(() => document.scrollingElement.scrollWidth > window.innerWidth);
 
 /** Whether `locator` is on the screen as it is now (no scrolling). */
 const onScreen = async (page, locator) => {
@@ -69,13 +59,6 @@ async function declare(view, text) {
   if (!(await decls.isVisible())) await view.getByText('Declarations', { exact: true }).first().tap();
   await decls.fill(text);
   await decls.press('Tab');
-}
-
-async function operand(view, text) {
-  const box = view.getByRole('textbox', { name: 'Operand' });
-  await box.fill(text);
-  await box.press('Enter');
-  await box.waitFor({ state: 'detached' });
 }
 
 /** Runs the program `name` on the Simulation tab: Run, then Start pressed and released. */

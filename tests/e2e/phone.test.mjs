@@ -9,7 +9,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
 import { mkdirSync } from 'node:fs';
-import { useApp, openPage, root } from './setup.mjs';
+import { useApp, openPage, root, scrollsSideways } from './setup.mjs';
 
 const app = useApp();
 const shots = path.join(root, 'docs/screenshots');
@@ -26,10 +26,6 @@ END_VAR
 Motor := (Start OR Motor) AND NOT Stop;
 END_PROGRAM
 `;
-
-/** Whether the page scrolls sideways. */
-const scrollsSideways = (page) =>
-  page.evaluate(() => document.scrollingElement.scrollWidth > window.innerWidth);
 
 /** The element's box, for its size and whether it is on the first screen. */
 const box = async (locator) => {

@@ -53,3 +53,35 @@ export async function newLadderProgram(page, name, declarations) {
 /** The rung grid's cell at rung, row and column (1-based), by its accessible name. */
 export const cell = (view, rung, row, col) =>
   view.getByRole('gridcell', { name: new RegExp(`^Rung ${rung}, row ${row}, column ${col}: `) });
+
+/** The middle of what `loc` shows, in client pixels (it must be shown). */
+export async function centre(loc) {
+  const b = await loc.boundingBox();
+  if (!b) throw new Error(`${loc} is not shown`);
+  return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
+}
+
+/** Types `text` into the ladder editor's Operand box and closes it with Enter. */
+export async function operand(view, text) {
+  const box = view.getByRole('textbox', { name: 'Operand' });
+  await box.fill(text);
+  await box.press('Enter');
+  await box.waitFor({ state: 'detached' });
+}
+
+/** Whether the page scrolls sideways. */
+export const scrollsSideways = (page) =>
+  page.evaluate(() => document.scrollingElement.scrollWidth > window.innerWidth);
+
+/** The latch exercise's program without its hold contact: Check fails. */
+export const NO_SEAL = `PROGRAM Main
+VAR_INPUT
+    Start : BOOL;
+    Stop : BOOL;
+END_VAR
+VAR_OUTPUT
+    Motor : BOOL;
+END_VAR
+Motor := Start AND NOT Stop;
+END_PROGRAM
+`;

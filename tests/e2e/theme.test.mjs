@@ -10,6 +10,7 @@ import path from 'node:path';
 import { mkdirSync } from 'node:fs';
 import { startServer } from './server.mjs';
 import { launch } from './browser.mjs';
+import { NO_SEAL } from './setup.mjs';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const shots = path.join(root, 'docs/screenshots');
@@ -126,18 +127,6 @@ test('Dark on a light system colours the editors, the diagrams and the timeline'
 const SIZES = { 1280: { width: 1280, height: 800 }, 768: { width: 768, height: 1024 }, 390: { width: 390, height: 844 } };
 // Each view: how to reach it, and what the screenshot shows (scrolled to, as a person would).
 const SHOWN = { st: '.app-header', ladder: '.ld-rung', petri: '.pn-net', exercise: '.report-scenario.failed' };
-/** The latch exercise's program with the hold contact missing: Check fails. */
-const NO_HOLD = `PROGRAM Latch
-VAR_INPUT
-    Start : BOOL;
-    Stop : BOOL;
-END_VAR
-VAR_OUTPUT
-    Motor : BOOL;
-END_VAR
-Motor := Start AND NOT Stop;
-END_PROGRAM
-`;
 const VIEWS = {
   st: async () => {},
   ladder: async (page) => {
@@ -165,7 +154,7 @@ const VIEWS = {
     await page.locator('.catalogue-item[data-exercise="latch"] button').first().click();
     await page.getByRole('region', { name: 'Exercise' }).waitFor({ state: 'attached' });
     await showPane(page, 'Program');
-    await page.getByRole('textbox', { name: 'ST source' }).fill(NO_HOLD);
+    await page.getByRole('textbox', { name: 'ST source' }).fill(NO_SEAL);
     await page.waitForTimeout(400);
     await showPane(page, 'Exercise');
     await page.getByRole('button', { name: 'Check', exact: true }).click();

@@ -121,6 +121,11 @@ impl NetEditor {
         self.state.project.with_untracked(|p| p.petri.iter().find(|n| n.name == name).cloned())
     }
 
+    /// Sets the drawing's scale, kept between a quarter and four times.
+    pub fn set_zoom(&self, zoom: f64) {
+        self.zoom.set(zoom.clamp(0.25, 4.0));
+    }
+
     /// The id of the SVG canvas in the page.
     pub fn canvas_id(&self) -> String {
         format!("pn-canvas-{}", self.name.get_value())

@@ -651,7 +651,7 @@ pub fn PetriView(name: String) -> impl IntoView {
     // Drags follow the pointer anywhere in the window.
     let moves = window_event_listener(leptos::ev::pointermove, move |ev| {
         if let Some(zoom) = editor.pinch.moved(&ev, editor.zoom.get_untracked()) {
-            editor.zoom.set(zoom.clamp(0.25, 4.0));
+            editor.set_zoom(zoom);
         } else if editor.drag.with_untracked(Option::is_some) {
             editor.pointer_move(f64::from(ev.client_x()), f64::from(ev.client_y()));
         }
@@ -816,7 +816,7 @@ pub fn PetriView(name: String) -> impl IntoView {
                     on:wheel=move |ev: leptos::ev::WheelEvent| {
                         ev.prevent_default();
                         let f = if ev.delta_y() > 0.0 { 0.8 } else { 1.25 };
-                        editor.zoom.update(|z| *z = (*z * f).clamp(0.25, 4.0));
+                        editor.set_zoom(editor.zoom.get_untracked() * f);
                     }
                     on:keydown=move |ev: leptos::ev::KeyboardEvent| {
                     // Keys the elements did not take (Escape, undo) on the canvas.
@@ -875,7 +875,7 @@ fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
             None => state.error(t(K::petri_export_not_drawn)),
         }
     };
-    let zoom_by = move |f: f64| editor.zoom.update(|z| *z = (*z * f).clamp(0.25, 4.0));
+    let zoom_by = move |f: f64| editor.set_zoom(editor.zoom.get_untracked() * f);
     let fit = move |_| {
         let Some(svg) = crate::dom::by_id::<web_sys::Element>(&editor.canvas_id()) else { return };
         let Some(holder) = svg.closest(".pn-net").ok().flatten() else { return };
@@ -888,7 +888,7 @@ fn NetToolbar(editor: NetEditor, pou: Memo<Option<PetriPou>>) -> impl IntoView {
         if let [_, _, w, h] = vb[..] {
             let fit = (f64::from(holder.client_width()) / w)
                 .min(f64::from(holder.client_height().max(200)) / h);
-            editor.zoom.set(fit.clamp(0.25, 4.0));
+            editor.set_zoom(fit);
         }
     };
     view! {
