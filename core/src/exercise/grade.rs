@@ -314,9 +314,16 @@ pub fn grade_by(
             code = d.code.as_str()
         );
         let mut sentence = Sentence::from(said.message.clone()).with("place", at);
-        // A message with its `did you mean` stays English (the part is the message alone).
-        if let (Some(m), None) = (&d.msg, d.suggestion()) {
-            sentence = sentence.with("message", (**m).clone());
+        if let Some(m) = &d.msg {
+            let part = match d.suggestion() {
+                None => Sentence::from((**m).clone()),
+                // `… ; did you mean NAME?`, both halves in the language asked.
+                Some(name) => {
+                    let hinted = crate::msg!(MessageDidYouMean, message = d.message, name = name);
+                    Sentence::from(hinted.message).with("message", (**m).clone())
+                }
+            };
+            sentence = sentence.with("message", part);
         }
         return Ok(not_run(said, sentence));
     }

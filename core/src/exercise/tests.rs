@@ -691,9 +691,11 @@ END_PROGRAM
     let broken = grade(&e, &project(&GOOD.replace("NOT Stop", "NOT Stopp"))).unwrap();
     let error = broken.error_msg.as_ref().unwrap();
     assert_eq!(error.render(Lang::En), broken.error.clone().unwrap());
-    assert!(error
-        .render(Lang::Pl)
-        .starts_with("programu nie da się zbudować: wiersz 4, kolumna 35: "));
+    let polish = error.render(Lang::Pl);
+    assert!(polish.starts_with("programu nie da się zbudować: wiersz 4, kolumna 35: "), "{polish}");
+    // The build error's message with its `did you mean` is translated too, the name kept.
+    assert!(polish.contains("; czy chodziło o Stop?"), "{polish}");
+    assert!(!polish.contains("did you mean"), "{polish}");
     let local = GOOD.replace("VAR_OUTPUT Motor : BOOL; END_VAR", "VAR Motor : BOOL; END_VAR");
     let r = grade(&e, &project(&local)).unwrap();
     assert_eq!(
