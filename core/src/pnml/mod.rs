@@ -19,7 +19,7 @@ pub use write::export;
 
 use std::fmt;
 
-use crate::diagnostics::LineIndex;
+use crate::diagnostics::{LineIndex, Said};
 
 /// The `tool` attribute of our `<toolspecific>` elements.
 pub const TOOL: &str = "plc-trainer";
@@ -27,8 +27,11 @@ pub const TOOL: &str = "plc-trainer";
 /// Why a PNML file could not be imported, with where (1-based line and column).
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct PnmlError {
-    /// What is wrong.
+    /// What is wrong (English: `said.english`).
     pub message: String,
+    /// What is wrong, as data to be shown in any language (without the place; the whole
+    /// error is [`PnmlError::said`]).
+    pub said: Said,
     /// 1-based line.
     pub line: u32,
     /// 1-based column.
@@ -36,15 +39,21 @@ pub struct PnmlError {
 }
 
 impl PnmlError {
-    fn at(index: &LineIndex<'_>, offset: usize, message: impl Into<String>) -> Self {
+    fn at(index: &LineIndex<'_>, offset: usize, said: Said) -> Self {
         let loc = index.location(offset as u32);
-        PnmlError { message: message.into(), line: loc.line, column: loc.column }
+        PnmlError { message: said.english.clone(), said, line: loc.line, column: loc.column }
+    }
+
+    /// The whole error with its place, as data; its English text is what the error
+    /// displays as (`line 3, column 7: malformed XML: … [E0516]`).
+    pub fn said(&self) -> Said {
+        crate::msg!(PnmlErrorAt, line = self.line, column = self.column, problem = self.said)
     }
 }
 
 impl fmt::Display for PnmlError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}, column {}: {} [E0516]", self.line, self.column, self.message)
+        f.write_str(&self.said().english)
     }
 }
 

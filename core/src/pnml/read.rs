@@ -4,25 +4,26 @@ use std::collections::HashMap;
 
 use super::tree::{parse, Element};
 use super::{PnmlError, TOOL};
-use crate::diagnostics::LineIndex;
+use crate::diagnostics::{LineIndex, Phrase, Said};
 use crate::petri::model::{
     Arc, Emergency, GenerationOptions, MacroPlace, Net, PetriPou, Place, Position, Process,
     SyncStyle, Transition,
 };
+use crate::{msg, phrase};
 
 struct Reader<'a> {
     index: LineIndex<'a>,
 }
 
 impl Reader<'_> {
-    fn err(&self, e: &Element, message: impl Into<String>) -> PnmlError {
-        PnmlError::at(&self.index, e.offset, message)
+    fn err(&self, e: &Element, said: Said) -> PnmlError {
+        PnmlError::at(&self.index, e.offset, said)
     }
 
     fn id(&self, e: &Element) -> Result<String, PnmlError> {
         match e.attr("id").map(str::trim) {
             Some(id) if !id.is_empty() => Ok(id.to_string()),
-            _ => Err(self.err(e, format!("<{}> has no id attribute", e.name))),
+            _ => Err(self.err(e, msg!(PnmlNoAttribute, element = e.name, attribute = "id"))),
         }
     }
 
@@ -30,11 +31,10 @@ impl Reader<'_> {
         &self,
         e: &Element,
         text: &str,
-        what: &str,
+        what: Phrase,
     ) -> Result<T, PnmlError> {
-        text.trim()
-            .parse()
-            .map_err(|_| self.err(e, format!("{what} `{}` is not a whole number", text.trim())))
+        let text = text.trim();
+        text.parse().map_err(|_| self.err(e, msg!(PnmlNotWholeNumber, what = what, text = text)))
     }
 
     fn position(&self, e: &Element) -> Result<Option<Position>, PnmlError> {
@@ -45,7 +45,7 @@ impl Reader<'_> {
             let v = pos.attr(name).unwrap_or("0");
             v.trim()
                 .parse()
-                .map_err(|_| self.err(pos, format!("position {name}=\"{v}\" is not a number")))
+                .map_err(|_| self.err(pos, msg!(PnmlPositionNotNumber, axis = name, value = v)))
         };
         Ok(Some(Position { x: coord("x")?, y: coord("y")? }))
     }
@@ -82,9 +82,9 @@ fn collect<'e>(
             "arc" => out.arcs.push(c),
             "page" => collect(r, c, out)?,
             "referencePlace" | "referenceTransition" => {
-                let target = c
-                    .attr("ref")
-                    .ok_or_else(|| r.err(c, format!("<{}> has no ref attribute", c.name)))?;
+                let target = c.attr("ref").ok_or_else(|| {
+                    r.err(c, msg!(PnmlNoAttribute, element = c.name, attribute = "ref"))
+                })?;
                 out.refs.push((c, target.to_string()));
             }
             _ => {}
@@ -125,15 +125,12 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
     let r = Reader { index: LineIndex::new(text) };
     let root = parse(text)?;
     if root.name != "pnml" {
-        return Err(r.err(
-            &root,
-            format!("this is not a PNML file: the root element is <{}>, not <pnml>", root.name),
-        ));
+        return Err(r.err(&root, msg!(PnmlNotPnml, element = root.name)));
     }
-    let net_el = root.child("net").ok_or_else(|| r.err(&root, "the PNML file holds no <net>"))?;
+    let net_el = root.child("net").ok_or_else(|| r.err(&root, msg!(PnmlNoNet, element = "net")))?;
     if let Some(ty) = net_el.attr("type") {
         if !ty.trim_end_matches('#').to_ascii_lowercase().ends_with("ptnet") {
-            return Err(r.err(net_el, format!("only place/transition nets (type …/ptnet) can be imported, this net's type is `{ty}`")));
+            return Err(r.err(net_el, msg!(PnmlNotPtnet, kind = ty)));
         }
     }
     let mut found = Collected::default();
@@ -157,14 +154,14 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
     for e in &found.places {
         let tool = ours(e);
         let tokens = match e.annotation("initialMarking") {
-            Some(t) => r.number(e, t, "the initial marking")?,
+            Some(t) => r.number(e, t, phrase!(PnmlWhatInitialMarking))?,
             None => 0,
         };
         let label_text = text_of(tool, "label");
         let label = if label_text.trim().is_empty() {
             i64::MIN
         } else {
-            r.number(e, &label_text, "the CASE label")?
+            r.number(e, &label_text, phrase!(PnmlWhatCaseLabel))?
         };
         net.places.push(Place {
             id: r.id(e)?,
@@ -173,7 +170,7 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
             tokens,
             capacity: match text_of(tool, "capacity") {
                 t if t.trim().is_empty() => None,
-                t => Some(r.number(e, &t, "the capacity")?),
+                t => Some(r.number(e, &t, phrase!(PnmlWhatCapacity))?),
             },
             actions: text_of(tool, "actions"),
             position: r.position(e)?,
@@ -187,7 +184,7 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
         let priority = if priority_text.trim().is_empty() {
             0
         } else {
-            r.number(e, &priority_text, "the priority")?
+            r.number(e, &priority_text, phrase!(PnmlWhatPriority))?
         };
         net.transitions.push(Transition {
             id: r.id(e)?,
@@ -200,27 +197,20 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
     }
     for e in &found.arcs {
         let end = |name: &str| -> Result<String, PnmlError> {
-            e.attr(name)
-                .map(resolve)
-                .ok_or_else(|| r.err(e, format!("the arc has no {name} attribute")))
+            e.attr(name).map(resolve).ok_or_else(|| r.err(e, msg!(PnmlArcNoEnd, end = name)))
         };
         let weight = match e.annotation("inscription") {
-            Some(t) => r.number(e, t, "the arc inscription")?,
+            Some(t) => r.number(e, t, phrase!(PnmlWhatArcInscription))?,
             None => 1,
         };
         if weight == 0 {
-            return Err(r.err(e, "an arc inscription must be at least 1"));
+            return Err(r.err(e, msg!(PnmlArcWeightZero)));
         }
         let (from, to) = (end("source")?, end("target")?);
         let known = |id: &str| net.place(id).is_some() || net.transition(id).is_some();
         for id in [&from, &to] {
             if !known(id) {
-                return Err(r.err(
-                    e,
-                    format!(
-                        "the arc refers to `{id}`, which is not a place or transition of the net"
-                    ),
-                ));
+                return Err(r.err(e, msg!(PnmlArcUnknownNode, id = id)));
             }
         }
         net.arcs.push(Arc { from, to, weight });
@@ -232,11 +222,7 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
         options.sync = match o.attr("sync") {
             Some("flags") => SyncStyle::Flags,
             Some("stepVariables") | None => SyncStyle::StepVariables,
-            Some(other) => {
-                return Err(
-                    r.err(o, format!("unknown sync style `{other}` (stepVariables or flags)"))
-                )
-            }
+            Some(other) => return Err(r.err(o, msg!(PnmlUnknownSync, style = other))),
         };
     }
     if let Some(t) = tool {
@@ -260,7 +246,9 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
             net.emergency = Some(Emergency {
                 place: e
                     .attr("place")
-                    .ok_or_else(|| r.err(e, "<emergency> has no place attribute"))?
+                    .ok_or_else(|| {
+                        r.err(e, msg!(PnmlNoAttribute, element = "emergency", attribute = "place"))
+                    })?
                     .to_string(),
                 condition: text_of(Some(e), "condition"),
             });
@@ -284,9 +272,9 @@ pub fn import(text: &str) -> Result<PetriPou, PnmlError> {
 fn refs_of(r: &Reader<'_>, e: &Element) -> Result<Vec<String>, PnmlError> {
     e.children_named("place")
         .map(|p| {
-            p.attr("ref")
-                .map(str::to_string)
-                .ok_or_else(|| r.err(p, "<place> inside needs a ref attribute"))
+            p.attr("ref").map(str::to_string).ok_or_else(|| {
+                r.err(p, msg!(PnmlInnerNoAttribute, element = "place", attribute = "ref"))
+            })
         })
         .collect()
 }

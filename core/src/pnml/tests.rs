@@ -116,6 +116,60 @@ fn bad_files_give_located_errors() {
 }
 
 #[test]
+fn an_error_is_data_and_reads_in_polish_and_czech_with_its_program_text() {
+    use crate::i18n::Lang;
+    let xml = "<pnml><net id=\"n\"><page id=\"p\"><place id=\"a\"/>\n  <arc id=\"x\" source=\"a\" target=\"b\"/></page></net></pnml>";
+    let e = error(xml);
+    let english = "line 2, column 3: the arc refers to `b`, which is not a place or transition of the net [E0516]";
+    assert_eq!(e.to_string(), english);
+    assert_eq!(e.said().english, english);
+    assert_eq!(e.said.english, e.message);
+    assert_eq!(e.said().message.render(Lang::En), english);
+    let polish = e.said().message.render(Lang::Pl);
+    assert_eq!(
+        polish,
+        "wiersz 2, kolumna 3: łuk wskazuje na `b`, który nie jest miejscem ani przejściem tej sieci [E0516]"
+    );
+    assert_eq!(
+        e.said().message.render(Lang::Cs),
+        "řádek 2, sloupec 3: hrana odkazuje na `b`, což není místo ani přechod této sítě [E0516]"
+    );
+
+    // The phrase naming the number is translated, the text read stays as written.
+    let xml = "<pnml><net id=\"n\"><page id=\"p\">\n<place id=\"a\"><initialMarking><text> two </text></initialMarking></place></page></net></pnml>";
+    let e = error(xml);
+    assert_eq!(
+        e.to_string(),
+        "line 2, column 1: the initial marking `two` is not a whole number [E0516]"
+    );
+    assert_eq!(
+        e.said.message.render(Lang::Pl),
+        "znakowanie początkowe `two` nie jest liczbą całkowitą"
+    );
+    assert_eq!(e.said.message.render(Lang::Cs), "počáteční značení `two` není celé číslo");
+
+    // Every error's English is its display, whatever made it.
+    for xml in [
+        "<pnml><net id=\"n\"><page id=\"p\"><place id=\"a\"></page></net></pnml>",
+        "<?xml version=\"1.0\"?>\n<project/>",
+        "<pnml>\n<net id=\"n\">",
+        "<pnml><net id=\"n\"><toolspecific tool=\"plc-trainer\"><emergency/></toolspecific></net></pnml>",
+        "<pnml><net id=\"n\"><toolspecific tool=\"plc-trainer\"><macroPlace id=\"m\"><place/></macroPlace></toolspecific></net></pnml>",
+        "<pnml><net id=\"n\"><toolspecific tool=\"plc-trainer\"><options sync=\"odd\"/></toolspecific></net></pnml>",
+        "<pnml a=\"1\" a=\"2\"/>",
+        "<pnml a=\"&bogus;\"/>",
+        "<pnml><net id=\"n\">&bogus;</net></pnml>",
+        "<pnml/><pnml/>",
+        "",
+    ] {
+        let e = error(xml);
+        assert_eq!(e.said().english, e.to_string());
+        assert_eq!(e.said().message.render(Lang::En), e.to_string());
+        assert_ne!(e.said().message.render(Lang::Pl), e.to_string(), "{e}");
+    }
+}
+
+#[test]
 fn pnml_is_recognised_by_its_root() {
     assert!(is_pnml(FOREIGN));
     assert!(is_pnml("<pnml/>"));

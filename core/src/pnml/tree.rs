@@ -8,6 +8,7 @@ use quick_xml::Reader;
 use super::PnmlError;
 use crate::diagnostics::LineIndex;
 use crate::limits::MAX_XML_DEPTH;
+use crate::msg;
 
 /// One XML element.
 #[derive(Debug, Clone, Default)]
@@ -48,13 +49,17 @@ fn start(e: &BytesStart<'_>, offset: usize, index: &LineIndex<'_>) -> Result<Ele
     let mut attrs = Vec::new();
     for a in e.attributes() {
         let a = a.map_err(|err| {
-            PnmlError::at(index, offset, format!("bad attribute in <{name}>: {err}"))
+            let error = err.to_string();
+            PnmlError::at(index, offset, msg!(PnmlBadAttribute, element = name, error = error))
         })?;
         let key = a.key.local_name().as_ref().to_string();
         let value = a
             .normalized_value(quick_xml::XmlVersion::Implicit1_0)
             .map_err(|err| {
-                PnmlError::at(index, offset, format!("bad value of `{key}` in <{name}>: {err}"))
+                let error = err.to_string();
+                let said =
+                    msg!(PnmlBadAttributeValue, attribute = key, element = name, error = error);
+                PnmlError::at(index, offset, said)
             })?
             .into_owned();
         attrs.push((key, value));
@@ -71,23 +76,24 @@ pub(super) fn parse(xml: &str) -> Result<Element, PnmlError> {
     loop {
         let offset = reader.buffer_position() as usize;
         let event = reader.read_event().map_err(|e| {
-            PnmlError::at(&index, reader.buffer_position() as usize, format!("malformed XML: {e}"))
+            let said = msg!(PnmlMalformedXml, error = e.to_string());
+            PnmlError::at(&index, reader.buffer_position() as usize, said)
         })?;
         let finished = match event {
             Event::Start(e) => {
                 if stack.len() >= MAX_XML_DEPTH {
-                    let message = format!("elements nested more than {MAX_XML_DEPTH} deep");
-                    return Err(PnmlError::at(&index, offset, message));
+                    let said = msg!(PnmlTooDeep, depth = MAX_XML_DEPTH);
+                    return Err(PnmlError::at(&index, offset, said));
                 }
                 stack.push(start(&e, offset, &index)?);
                 None
             }
             Event::Empty(e) => Some(start(&e, offset, &index)?),
-            Event::End(_) => {
-                Some(stack.pop().ok_or_else(|| {
-                    PnmlError::at(&index, offset, "an end tag without a start tag")
-                })?)
-            }
+            Event::End(_) => Some(
+                stack
+                    .pop()
+                    .ok_or_else(|| PnmlError::at(&index, offset, msg!(PnmlEndWithoutStart)))?,
+            ),
             Event::Text(t) => {
                 if let Some(top) = stack.last_mut() {
                     top.text.push_str(&t.xml10_content());
@@ -107,7 +113,7 @@ pub(super) fn parse(xml: &str) -> Result<Element, PnmlError> {
                         let name = r.into_inner().into_owned();
                         quick_xml::escape::resolve_predefined_entity(&name)
                             .ok_or_else(|| {
-                                PnmlError::at(&index, offset, format!("unknown entity &{name};"))
+                                PnmlError::at(&index, offset, msg!(PnmlUnknownEntity, name = name))
                             })?
                             .to_string()
                     }
@@ -124,12 +130,13 @@ pub(super) fn parse(xml: &str) -> Result<Element, PnmlError> {
             match stack.last_mut() {
                 Some(parent) => parent.children.push(node),
                 None if root.is_none() => root = Some(node),
-                None => return Err(PnmlError::at(&index, offset, "a second root element")),
+                None => return Err(PnmlError::at(&index, offset, msg!(PnmlSecondRoot))),
             }
         }
     }
     if let Some(open) = stack.last() {
-        return Err(PnmlError::at(&index, open.offset, format!("<{}> is never closed", open.name)));
+        let said = msg!(PnmlNeverClosed, element = open.name);
+        return Err(PnmlError::at(&index, open.offset, said));
     }
-    root.ok_or_else(|| PnmlError::at(&index, 0, "the file holds no XML element"))
+    root.ok_or_else(|| PnmlError::at(&index, 0, msg!(PnmlNoElement)))
 }

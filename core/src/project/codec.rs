@@ -6,6 +6,7 @@ use base64::Engine;
 use std::fmt;
 
 use super::{Project, ProjectError};
+use crate::diagnostics::Said;
 
 /// The fragment prefix of a share link: `#p=<data>`.
 pub const SHARE_PREFIX: &str = "p=";
@@ -26,15 +27,20 @@ pub enum ShareError {
     BadProject(ProjectError),
 }
 
+impl ShareError {
+    /// The error as a message, with its English text (what it displays as).
+    pub fn said(&self) -> Said {
+        match self {
+            ShareError::NotAShareLink => crate::msg!(ShareNotALink),
+            ShareError::BadEncoding | ShareError::BadCompression => crate::msg!(ShareDamaged),
+            ShareError::BadProject(e) => crate::msg!(ShareBadProject, error = e.said()),
+        }
+    }
+}
+
 impl fmt::Display for ShareError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ShareError::NotAShareLink => f.write_str("this link does not hold a project"),
-            ShareError::BadEncoding | ShareError::BadCompression => {
-                f.write_str("this share link is damaged (was it copied completely?)")
-            }
-            ShareError::BadProject(e) => write!(f, "this share link holds no valid project: {e}"),
-        }
+        f.write_str(&self.said().english)
     }
 }
 

@@ -21,6 +21,7 @@ pub use store::{
     MemoryBackend, Opened, ProjectStore, ProjectSummary, StorageBackend, StoreError, STORE_LAYOUT,
 };
 
+use crate::diagnostics::Said;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -152,10 +153,16 @@ impl Project {
         if schema > SCHEMA_VERSION as u64 {
             return Err(ProjectError::TooNew(schema));
         }
-        let mut project: Project =
-            serde_json::from_str(text).map_err(|e| ProjectError::Invalid(e.to_string()))?;
-        crate::limits::cycle_ns(project.settings.cycle_ms)
-            .map_err(|e| ProjectError::Invalid(format!("settings.cycle_ms: {}", e.english)))?;
+        // serde_json's own words (English, naming the field) are shown as they are.
+        let mut project: Project = serde_json::from_str(text)
+            .map_err(|e| ProjectError::Invalid(Said::from(e.to_string())))?;
+        crate::limits::cycle_ns(project.settings.cycle_ms).map_err(|e| {
+            ProjectError::Invalid(crate::msg!(
+                ProjectFieldProblem,
+                field = "settings.cycle_ms",
+                problem = e
+            ))
+        })?;
         project.schema = SCHEMA_VERSION;
         Ok(project)
     }
@@ -226,20 +233,26 @@ pub enum ProjectError {
     NotAProject,
     /// Written by a newer version of the trainer.
     TooNew(u64),
-    /// A project with missing or malformed fields.
-    Invalid(String),
+    /// A project with missing or malformed fields: why, as a message (serde_json's own
+    /// words are an untranslated text, [`Said::from`]).
+    Invalid(Said),
+}
+
+impl ProjectError {
+    /// The error as a message, with its English text (what it displays as).
+    pub fn said(&self) -> Said {
+        match self {
+            ProjectError::NotJson(e) => crate::msg!(ProjectNotJson, error = e),
+            ProjectError::NotAProject => crate::msg!(ProjectNotAProject),
+            ProjectError::TooNew(v) => crate::msg!(ProjectTooNew, schema = v),
+            ProjectError::Invalid(reason) => crate::msg!(ProjectDamaged, reason = reason),
+        }
+    }
 }
 
 impl fmt::Display for ProjectError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ProjectError::NotJson(e) => write!(f, "this is not a project file (not JSON: {e})"),
-            ProjectError::NotAProject => f.write_str("this JSON file is not a PLC trainer project"),
-            ProjectError::TooNew(v) => {
-                write!(f, "this project was saved by a newer trainer (schema {v}); update the page")
-            }
-            ProjectError::Invalid(e) => write!(f, "the project file is damaged: {e}"),
-        }
+        f.write_str(&self.said().english)
     }
 }
 

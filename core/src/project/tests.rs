@@ -24,6 +24,59 @@ fn bad_files_give_clear_errors() {
 }
 
 #[test]
+fn errors_are_data_whose_english_is_their_display() {
+    use crate::i18n::Lang;
+    let errors = [
+        Project::from_file("not json").unwrap_err(),
+        Project::from_file("{}").unwrap_err(),
+        Project::from_file(r#"{"schema": 99}"#).unwrap_err(),
+        Project::from_file(r#"{"schema": 1, "name": 3}"#).unwrap_err(),
+        Project::from_file(
+            r#"{"schema": 1, "name": "a", "source": "x", "settings": {"cycle_ms": 0}}"#,
+        )
+        .unwrap_err(),
+    ];
+    for e in &errors {
+        assert_eq!(e.said().english, e.to_string());
+        assert_eq!(e.said().message.render(Lang::En), e.to_string());
+        assert_ne!(e.said().message.render(Lang::Pl), e.to_string());
+        assert_ne!(e.said().message.render(Lang::Cs), e.to_string());
+    }
+    assert_eq!(
+        errors[2].said().message.render(Lang::Pl),
+        "ten projekt został zapisany przez nowszą wersję trenażera (wersja formatu 99); zaktualizuj stronę"
+    );
+    // serde_json's own words stay as they are; the field and the cycle check are ours.
+    assert_eq!(
+        errors[3].said().message.render(Lang::Cs),
+        "soubor projektu je poškozený: invalid type: integer `3`, expected a string at line 1 column 23"
+    );
+    assert_eq!(
+        errors[4].to_string(),
+        "the project file is damaged: settings.cycle_ms: a scan cycle is 1 to 60000 ms, not 0 ms"
+    );
+    assert_eq!(
+        errors[4].said().message.render(Lang::Pl),
+        "plik projektu jest uszkodzony: settings.cycle_ms: cykl programu trwa od 1 do 60000 ms, a nie 0 ms"
+    );
+
+    let shares = [
+        ShareError::NotAShareLink,
+        ShareError::BadEncoding,
+        ShareError::BadCompression,
+        ShareError::BadProject(ProjectError::NotAProject),
+    ];
+    for e in &shares {
+        assert_eq!(e.said().english, e.to_string());
+        assert_ne!(e.said().message.render(Lang::Pl), e.to_string());
+    }
+    assert_eq!(
+        shares[3].said().message.render(Lang::Pl),
+        "ten link do udostępnienia nie zawiera poprawnego projektu: ten plik JSON nie jest projektem trenażera PLC"
+    );
+}
+
+#[test]
 fn share_links_round_trip_and_reject_damage() {
     let p = Project::new("Shared latch");
     let link = encode_share(&p);

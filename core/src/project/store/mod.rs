@@ -24,6 +24,7 @@ pub use index::STORE_LAYOUT;
 pub use memory::MemoryBackend;
 
 use super::{Project, ProjectError};
+use crate::diagnostics::Said;
 use index::{project_key, Index, ReadIndex};
 
 /// The prefix of every key the trainer writes.
@@ -70,26 +71,25 @@ pub enum StoreError {
     TooNew(u32),
 }
 
+impl StoreError {
+    /// The error as a message, with its English text (what it displays as). The browser's
+    /// own words for an unusable storage ([`StoreError::Unavailable`]) stay as they are.
+    pub fn said(&self) -> Said {
+        match self {
+            StoreError::QuotaExceeded => crate::msg!(StoreFull),
+            StoreError::Unavailable(e) => crate::msg!(StoreUnavailable, error = e),
+            StoreError::NotFound(id) => crate::msg!(StoreNotFound, id = id),
+            StoreError::Damaged(e) => crate::msg!(StoreDamaged, error = e.said()),
+            StoreError::Conflict { stored: Some(_), .. } => crate::msg!(StoreChangedElsewhere),
+            StoreError::Conflict { stored: None, .. } => crate::msg!(StoreDeletedElsewhere),
+            StoreError::TooNew(v) => crate::msg!(StoreTooNew, layout = v),
+        }
+    }
+}
+
 impl fmt::Display for StoreError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            StoreError::QuotaExceeded => f.write_str(
-                "the browser's storage is full: export your project to a file, then delete old projects",
-            ),
-            StoreError::Unavailable(e) => write!(f, "the browser's storage cannot be used: {e}"),
-            StoreError::NotFound(id) => write!(f, "no project `{id}`"),
-            StoreError::Damaged(e) => write!(f, "a stored project is damaged: {e}"),
-            StoreError::Conflict { stored: Some(_), .. } => {
-                f.write_str("the project was changed in another tab since it was opened here")
-            }
-            StoreError::Conflict { stored: None, .. } => {
-                f.write_str("the project was deleted in another tab")
-            }
-            StoreError::TooNew(v) => write!(
-                f,
-                "the projects in this browser were saved by a newer trainer (storage layout {v}); reload the page to update it"
-            ),
-        }
+        f.write_str(&self.said().english)
     }
 }
 
@@ -150,16 +150,20 @@ impl<B: StorageBackend> ProjectStore<B> {
     }
 
     /// A message for the user when the index is damaged (the list was rebuilt from the
-    /// projects found) or written by a newer trainer; `None` when it is sound.
+    /// projects found) or written by a newer trainer; `None` when it is sound. In English:
+    /// [`ProjectStore::index_damage_said`] gives it in any language.
     pub fn index_damage(&self) -> Result<Option<String>, StoreError> {
+        Ok(self.index_damage_said()?.map(|said| said.english))
+    }
+
+    /// [`ProjectStore::index_damage`] as a message, to be shown in any language.
+    pub fn index_damage_said(&self) -> Result<Option<Said>, StoreError> {
         let read = self.read_index()?;
         Ok(if let Some(v) = read.too_new {
-            Some(StoreError::TooNew(v).to_string())
+            Some(StoreError::TooNew(v).said())
         } else if read.damaged_text.is_some() {
-            Some(format!(
-                "The project list in this browser was damaged. It was rebuilt from the {} projects found in storage; the damaged list is kept under the key “{DAMAGED_INDEX_KEY}”.",
-                read.index.projects.len()
-            ))
+            let count = read.index.projects.len();
+            Some(crate::msg!(StoreIndexRebuilt, count = count, key = DAMAGED_INDEX_KEY))
         } else {
             None
         })
@@ -203,8 +207,14 @@ impl<B: StorageBackend> ProjectStore<B> {
         Ok(self.read_index()?.index.projects.iter().find(|p| p.id == id).map(|p| p.rev))
     }
 
-    /// Every listed project that cannot be opened, with the reason.
+    /// Every listed project that cannot be opened, with the reason (in English:
+    /// [`ProjectStore::damaged_said`] gives it in any language).
     pub fn damaged(&self) -> Result<Vec<(String, String)>, StoreError> {
+        Ok(self.damaged_said()?.into_iter().map(|(id, said)| (id, said.english)).collect())
+    }
+
+    /// Every listed project that cannot be opened, with the reason as a message.
+    pub fn damaged_said(&self) -> Result<Vec<(String, Said)>, StoreError> {
         let mut out = Vec::new();
         for p in self.read_index()?.index.projects {
             let problem = match self.backend.get(&project_key(&p.id, p.rev))? {
@@ -212,7 +222,7 @@ impl<B: StorageBackend> ProjectStore<B> {
                 Some(text) => Project::from_file(&text).err().map(StoreError::Damaged),
             };
             if let Some(e) = problem {
-                out.push((p.id, e.to_string()));
+                out.push((p.id, e.said()));
             }
         }
         Ok(out)
@@ -326,9 +336,9 @@ impl<B: StorageBackend> ProjectStore<B> {
 
 /// The error for a listed project whose text is not in storage.
 fn missing_text(id: &str, rev: u64) -> StoreError {
-    StoreError::Damaged(ProjectError::Invalid(format!(
-        "the list names it but its text is missing from storage (key {})",
-        project_key(id, rev)
+    StoreError::Damaged(ProjectError::Invalid(crate::msg!(
+        StoreTextMissing,
+        key = project_key(id, rev)
     )))
 }
 

@@ -102,6 +102,12 @@ fn a_damaged_index_is_rebuilt_from_the_projects_and_kept() {
     assert_eq!(names, ["B", "A"], "ordered by the time in their ids");
     let message = store.index_damage().unwrap().unwrap();
     assert!(message.contains("rebuilt from the 2 projects"), "{message}");
+    let said = store.index_damage_said().unwrap().unwrap();
+    assert_eq!(said.english, message);
+    assert_eq!(
+        said.message.render(crate::i18n::Lang::Pl),
+        "Lista projektów w tej przeglądarce była uszkodzona. Odtworzono ją z projektów znalezionych w pamięci (liczba: 2); uszkodzona lista jest zachowana pod kluczem „plc-trainer/v1/index.damaged”."
+    );
     // Saving writes a sound index, keeping the damaged one first.
     store.save(&b, &named("B2"), Some(rev_b), 0x30).unwrap();
     assert_eq!(
@@ -137,6 +143,15 @@ fn a_damaged_project_is_listed_readable_and_deletable_but_never_opened() {
     let damaged = store.damaged().unwrap();
     assert_eq!(damaged.len(), 1);
     assert_eq!(damaged[0].0, b);
+    let said = store.damaged_said().unwrap();
+    assert_eq!(said[0].1.english, damaged[0].1);
+    assert!(
+        said[0].1.message.render(crate::i18n::Lang::Cs).starts_with(
+            "uložený projekt je poškozený: toto není soubor projektu (není to JSON: EOF while parsing"
+        ),
+        "{:?}",
+        said[0].1
+    );
     assert_eq!(store.raw(&b).unwrap(), "{\"schema\": 1, \"name\": ");
     assert!(store.rename(&b, "x", 3).is_err(), "not rewritten by a rename");
     assert_eq!(store.raw(&b).unwrap(), "{\"schema\": 1, \"name\": ");
@@ -153,6 +168,10 @@ fn a_listed_project_whose_text_is_missing_is_damaged() {
     store.backend.remove(&format!("plc-trainer/v1/project/{a}@{rev}")).unwrap();
     let e = store.open(&a).unwrap_err();
     assert!(e.to_string().contains("missing from storage"), "{e}");
+    assert_eq!(
+        e.said().message.render(crate::i18n::Lang::Pl),
+        format!("zapisany projekt jest uszkodzony: plik projektu jest uszkodzony: lista go wymienia, ale jego tekstu brak w pamięci (klucz plc-trainer/v1/project/{a}@{rev})")
+    );
     assert_eq!(store.damaged().unwrap().len(), 1);
     store.delete(&a).unwrap();
     assert!(store.list().unwrap().is_empty());
@@ -204,6 +223,31 @@ fn storage_written_by_a_newer_trainer_is_listed_but_not_written() {
     assert_eq!(store.save("p1", &named("x"), Some(4), 2), Err(StoreError::TooNew(3)));
     assert_eq!(store.add(&named("y"), 2), Err(StoreError::TooNew(3)));
     assert_eq!(store.backend().entries(), &before);
+}
+
+#[test]
+fn store_errors_are_data_whose_english_is_their_display() {
+    use crate::i18n::Lang;
+    let errors = [
+        StoreError::QuotaExceeded,
+        StoreError::Unavailable("local storage is disabled".into()),
+        StoreError::NotFound("p12".into()),
+        StoreError::Damaged(ProjectError::NotAProject),
+        StoreError::Conflict { id: "p1".into(), stored: Some(2) },
+        StoreError::Conflict { id: "p1".into(), stored: None },
+        StoreError::TooNew(3),
+    ];
+    for e in &errors {
+        assert_eq!(e.said().english, e.to_string());
+        assert_eq!(e.said().message.render(Lang::En), e.to_string());
+        assert_ne!(e.said().message.render(Lang::Pl), e.to_string());
+        assert_ne!(e.said().message.render(Lang::Cs), e.to_string());
+    }
+    assert_eq!(errors[2].said().message.render(Lang::Pl), "brak projektu `p12`");
+    assert_eq!(
+        errors[6].said().message.render(Lang::Cs),
+        "projekty v tomto prohlížeči uložil novější trenažér (uspořádání úložiště 3); načtěte stránku znovu, aby se aktualizovala"
+    );
 }
 
 #[test]
