@@ -31,20 +31,36 @@ pub enum PouError {
     NoSuchNetwork(String),
 }
 
+impl PouError {
+    /// The error as data: the page shows it in its language; `Display` is its English.
+    pub fn said(&self) -> crate::diagnostics::Said {
+        use crate::msg;
+        match self {
+            PouError::Empty => msg!(PouNameEmpty),
+            PouError::Reserved(n, what) => msg!(PouNameReserved, name = n, what = reserved_phrase(what)),
+            PouError::NotAName(n) => msg!(PouNotAName, name = n),
+            PouError::Taken(n) => msg!(PouNameTaken, name = n),
+            PouError::NoSuchPou(n) => msg!(PouNoLadder, name = n),
+            PouError::NoSuchNet(n) => msg!(PouNoPetri, name = n),
+            PouError::NoSuchNetwork(n) => msg!(PouNoNetwork, name = n),
+        }
+    }
+}
+
+/// What a reserved name is ([`reserved`]'s English) as a translated phrase.
+fn reserved_phrase(what: &str) -> crate::diagnostics::Phrase {
+    use crate::phrase;
+    match what {
+        "a keyword of ST" => phrase!(PouReservedKeyword),
+        "the name of a data type" => phrase!(PouReservedType),
+        "the name of a standard function block" => phrase!(PouReservedFb),
+        _ => phrase!(PouReservedFunction),
+    }
+}
+
 impl fmt::Display for PouError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            PouError::Empty => f.write_str("type a name for the POU"),
-            PouError::Reserved(n, what) => write!(f, "{n} is {what}: choose another name"),
-            PouError::NotAName(n) => write!(
-                f,
-                "“{n}” is not a name: use letters, digits and single underscores, starting with a letter"
-            ),
-            PouError::Taken(n) => write!(f, "the project already has a POU named {n}"),
-            PouError::NoSuchPou(n) => write!(f, "the project has no ladder POU named {n}"),
-            PouError::NoSuchNet(n) => write!(f, "the project has no Petri net POU named {n}"),
-            PouError::NoSuchNetwork(n) => write!(f, "the project has no network POU named {n}"),
-        }
+        f.write_str(&self.said().english)
     }
 }
 
