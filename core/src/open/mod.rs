@@ -72,6 +72,17 @@ impl fmt::Display for OpenError {
 impl std::error::Error for OpenError {}
 
 impl OpenError {
+    /// The error as one message, to be shown in any language (its English text is the
+    /// error's `Display`); `None` while the error has no message as data yet.
+    pub fn said(&self) -> Option<crate::diagnostics::Said> {
+        match self {
+            OpenError::Plcopen(e) => Some(e.said()),
+            // TODO(imp-misc): `PnmlError::said()` and `ProjectError::said()` are being added
+            // on another branch; these arms will return them.
+            OpenError::Pnml(_) | OpenError::Project(_) => None,
+        }
+    }
+
     /// The 1-based line and column in `text` (the file that gave this error) of what the
     /// error is about, when known.
     pub fn location_in(&self, text: &str) -> Option<(u32, u32)> {
