@@ -800,6 +800,15 @@ mod command_line {
         let check = plc(&["check", &file]);
         assert_eq!(check.status.code(), Some(2));
         assert!(String::from_utf8_lossy(&check.stdout).contains("broken.xml:4:1: error[E0304]: "));
+        // In Polish, the place and the reason (quick-xml's own words stay English).
+        let polish = plc(&["check", "--lang", "pl", &file]);
+        assert!(
+            String::from_utf8_lossy(&polish.stdout).contains(
+                "broken.xml:4:1: error[E0304]: XML nie jest poprawnie sformułowany, wiersz 4, kolumna 1: "
+            ),
+            "{}",
+            String::from_utf8_lossy(&polish.stdout)
+        );
         let missing = plc(&["run", "no-such-file.xml", "--json"]);
         assert_eq!(json(&missing)["diagnostics"][0]["code"], "E0304");
     }
@@ -833,6 +842,12 @@ mod command_line {
         let err = String::from_utf8_lossy(&check.stderr);
         assert!(err.contains("0 error(s), 1 warning(s)"), "{err}");
         assert!(String::from_utf8_lossy(&check.stdout).contains(":731:13: warning[W0031]: "));
+        // `--lang pl` translates the note and keeps its program text.
+        let english = note["message"].as_str().unwrap();
+        let polish = plc(&["check", "--lang", "pl", &file]);
+        let polish = String::from_utf8_lossy(&polish.stdout);
+        let line = polish.lines().find(|l| l.contains(":731:13: warning[W0031]: ")).unwrap();
+        assert!(line.contains("localId 41") && !line.contains(english), "{line}");
     }
 
     #[test]
