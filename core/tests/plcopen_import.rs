@@ -800,6 +800,15 @@ mod command_line {
         let check = plc(&["check", &file]);
         assert_eq!(check.status.code(), Some(2));
         assert!(String::from_utf8_lossy(&check.stdout).contains("broken.xml:4:1: error[E0304]: "));
+        // In Polish, the place and the reason (quick-xml's own words stay English).
+        let polish = plc(&["check", "--lang", "pl", &file]);
+        assert!(
+            String::from_utf8_lossy(&polish.stdout).contains(
+                "broken.xml:4:1: error[E0304]: XML nie jest poprawnie sformułowany, wiersz 4, kolumna 1: "
+            ),
+            "{}",
+            String::from_utf8_lossy(&polish.stdout)
+        );
         let missing = plc(&["run", "no-such-file.xml", "--json"]);
         assert_eq!(json(&missing)["diagnostics"][0]["code"], "E0304");
     }
@@ -833,6 +842,12 @@ mod command_line {
         let err = String::from_utf8_lossy(&check.stderr);
         assert!(err.contains("0 error(s), 1 warning(s)"), "{err}");
         assert!(String::from_utf8_lossy(&check.stdout).contains(":731:13: warning[W0031]: "));
+        // `--lang pl` translates the note and keeps its program text.
+        let english = note["message"].as_str().unwrap();
+        let polish = plc(&["check", "--lang", "pl", &file]);
+        let polish = String::from_utf8_lossy(&polish.stdout);
+        let line = polish.lines().find(|l| l.contains(":731:13: warning[W0031]: ")).unwrap();
+        assert!(line.contains("localId 41") && !line.contains(english), "{line}");
     }
 
     #[test]
@@ -1921,4 +1936,98 @@ fn var_config_entries_of_a_configuration_not_kept_are_noted() {
     assert!(!i.project.source.contains("Line.V1.Open"), "{}", i.project.source);
     let note = i.warnings.iter().find(|w| w.message.contains("Line.V1.Open"));
     assert!(note.is_some_and(|n| n.line > 0), "{:?}", i.warnings);
+}
+
+/// The importer's notes and errors are data (issue 33): each renders in Polish and Czech
+/// with its program text (POU names, element names, `localId`s, variables) kept as it is,
+/// and its English text is the one the importer has always written.
+#[test]
+fn import_notes_and_errors_render_in_polish_and_czech() {
+    use plc_core::i18n::Lang;
+    let said_in = |said: &plc_core::diagnostics::Said, lang| said.message.render(lang);
+
+    // A note: an element of a kind the trainer does not run.
+    let vars = [var("A", "BOOL"), var("Y", "BOOL")].concat();
+    let body = [
+        inv(1, 0, 0, "A"),
+        outv(2, 100, 0, 0, 1, "", "Y"),
+        r#"<vendorElement localId="3"><position x="0" y="50"/></vendorElement>"#.to_string(),
+    ]
+    .concat();
+    let i = import(&fbd_doc(&body, &vars)).unwrap_or_else(|e| panic!("{e}"));
+    let note = &i.warnings[0];
+    let english =
+        "POU Main: <vendorElement> localId 3 is not an element the trainer runs; left out";
+    assert_eq!(note.message, english);
+    assert_eq!(note.said.english, english);
+    assert_eq!(said_in(&note.said, Lang::En), english);
+    assert_eq!(
+        said_in(&note.said, Lang::Pl),
+        "POU Main: <vendorElement> o localId 3 nie jest elementem, który trenażer wykonuje; pominięty"
+    );
+    assert_eq!(
+        said_in(&note.said, Lang::Cs),
+        "POU Main: <vendorElement> s localId 3 není prvek, který trenažér spouští; vynechán"
+    );
+    // The note as JSON (the CLI's report, the page) is what it was: no `said`.
+    let json = serde_json::to_value(note).expect("a note serializes");
+    let keys: Vec<&String> = json.as_object().expect("an object").keys().collect();
+    assert_eq!(keys, ["column", "line", "message"]);
+
+    // An error: the POU, then what is wrong.
+    let no_body =
+        "<project><types><pous><pou name='Main' pouType='program'/></pous></types></project>";
+    let e = import(no_body).unwrap_err();
+    assert_eq!(e.to_string(), "POU Main: no <body>");
+    assert_eq!(e.said().english, e.to_string());
+    assert_eq!(said_in(&e.said(), Lang::Pl), "POU Main: brak <body>");
+    assert_eq!(said_in(&e.said(), Lang::Cs), "POU Main: chybí <body>");
+
+    // An element's error nested in another: the grid's reason and power flow's, both
+    // translated.
+    let bad_contact = "<project><types><pous><pou name='Main' pouType='program'><body><LD><contact/></LD></body></pou></pous></types></project>";
+    let e = import(bad_contact).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "POU Main, element localId ?: a contact without a variable; run by power flow instead: POU Main, element localId ?: a contact without a variable"
+    );
+    assert_eq!(e.said().english, e.to_string());
+    assert_eq!(
+        said_in(&e.said(), Lang::Pl),
+        "POU Main, element o localId ?: styk bez zmiennej; przy działaniu według przepływu mocy: POU Main, element o localId ?: styk bez zmiennej"
+    );
+
+    // Not well-formed XML: the place and the reason.
+    let e = import("<project><types></project>").unwrap_err();
+    assert_eq!(e.said().english, e.to_string());
+    assert!(e.to_string().starts_with("not well-formed XML at line 1, column "), "{e}");
+    let polish = said_in(&e.said(), Lang::Pl);
+    assert!(
+        polish.starts_with("XML nie jest poprawnie sformułowany, wiersz 1, kolumna "),
+        "{polish}"
+    );
+    let e = import("<?xml version='1.0'?><root/>").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "not a PLCopen XML project: the root element is <root>, not <project>"
+    );
+    assert_eq!(
+        said_in(&e.said(), Lang::Cs),
+        "nejde o projekt PLCopen XML: kořenovým elementem je <root>, ne <project>"
+    );
+
+    // A POU left out says why, in any language; opening the file gives the same error.
+    let cfc = doc("", "").replace("<LD></LD>", "<CFC/>");
+    let i = import(&cfc).unwrap_or_else(|e| panic!("{e}"));
+    let skipped = &i.skipped[0];
+    assert_eq!(skipped.reason, "CFC bodies are not supported yet");
+    assert_eq!(skipped.reason_said.english, skipped.reason);
+    assert_eq!(
+        said_in(&skipped.reason_said, Lang::Pl),
+        "treść POU w CFC nie jest jeszcze obsługiwana"
+    );
+    let opened = plc_core::open::open_text("x", no_body).unwrap_err();
+    let said = opened.said();
+    assert_eq!(said.english, opened.to_string());
+    assert_eq!(said_in(&said, Lang::Pl), "POU Main: brak <body>");
 }

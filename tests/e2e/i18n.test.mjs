@@ -93,6 +93,25 @@ END_VAR
 Motor := (Start OR Motor) AND NOT Stopp;
 END_PROGRAM
 `;
+/** A PLCopen project whose program has an interface section the importer skips (line 8). */
+const NOTED = `<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="" productName="" productVersion="" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="Noted"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Main" pouType="program"><interface>
+      <localVars><variable name="Go"><type><BOOL/></type></variable></localVars>
+      <accessVars><variable name="Far"><type><BOOL/></type></variable></accessVars>
+    </interface><body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">Go := NOT Go;</xhtml></ST></body></pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>`;
+
+/** A PNML net whose initial marking is not a number. */
+const BAD_PNML = `<?xml version="1.0"?><pnml xmlns="http://www.pnml.org/version-2009/grammar/pnml">
+<net id="n" type="http://www.pnml.org/version-2009/grammar/ptnet"><name><text>Net</text></name>
+<page id="g"><place id="a"><initialMarking><text>many</text></initialMarking></place></page></net></pnml>`;
+
 /** The program's own names: never translated. */
 const PROGRAM_NAMES = new Set(['Main', 'Start', 'Stop', 'Motor', 'Stopp', 'Latch', 'Cycle', 'Busy', 'Go']);
 
@@ -193,6 +212,42 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
     await page.locator('.report-scenario.failed').first().waitFor();
     assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES), [], 'the exercise and its report');
     await page.screenshot({ path: path.join(root, `docs/screenshots/i18n-${lang}-exercise.png`) });
+    assert.deepEqual(errors, []);
+    await context.close();
+  });
+
+  test(`an imported file's notes and a broken file's error, in ${lang}`, async () => {
+    const context = await app.browser.newContext({ locale, viewport: { width: 1400, height: 1000 } });
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(app.server.url);
+    await page.getByRole('textbox', { name: L(lang, 'ST source', 'editor.st_source') }).waitFor();
+    const input = page.getByLabel(L(lang, 'Import project file', 'header.import_file'));
+    const prefix = (key) => L(lang, EN[key], key).split('{')[0];
+
+    // A PLCopen project with an interface section the trainer does not read: imported,
+    // with a note at the section's place in the file, all in the language shown.
+    await input.setInputFiles({ name: 'notes.xml', mimeType: 'application/xml', buffer: Buffer.from(NOTED) });
+    const imported = page.locator('.banner-info span', { hasText: prefix('header.imported') });
+    await imported.waitFor();
+    const text = await imported.innerText();
+    const at = L(lang, EN['header.import_note_at'], 'header.import_note_at')
+      .replace('{line}', '8').replace('{column}', '7').split('{note}')[0];
+    assert.ok(text.includes(at), `the note's place in ${lang}: ${text}`);
+    assert.ok(text.includes('<accessVars>') && text.includes('Main'), `program text kept: ${text}`);
+    assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES), [], 'the import notes');
+    await page.screenshot({ path: path.join(root, `docs/screenshots/i18n-${lang}-import.png`) });
+
+    // A PNML net whose marking is not a number, and a file that is not well-formed XML: the
+    // errors in the language shown, nothing changed.
+    for (const [name, body] of [['net.pnml', BAD_PNML], ['broken.xml', '<?xml version="1.0"?>\n<project><pou></project>']]) {
+      await input.setInputFiles({ name, mimeType: 'application/xml', buffer: Buffer.from(body) });
+      const failed = page.locator('.banner-error span', { hasText: name });
+      await failed.waitFor();
+      assert.match(await failed.innerText(), pattern(L(lang, EN['header.import_failed'], 'header.import_failed')));
+      assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES), [], `the error of ${name}`);
+    }
     assert.deepEqual(errors, []);
     await context.close();
   });

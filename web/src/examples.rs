@@ -42,7 +42,7 @@ pub fn examples() -> Vec<Example> {
 pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
     let name = naming::humanise(naming::stem(file));
     let mut project = open_plain(&name, text)
-        .map_err(|e| e.to_string())?
+        .map_err(|e| crate::import::open_error_text(&e))?
         .ok_or_else(|| tf(K::state_example_not_project, &[("file", file)]))?
         .project;
     if project.name.trim().is_empty() {

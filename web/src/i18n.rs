@@ -243,6 +243,12 @@ pub fn sentence_text(sentence: Option<&plc_core::exercise::Sentence>, english: &
         .unwrap_or_else(|| english.to_string())
 }
 
+/// A message of the engine (an error as data) in the language shown.
+pub fn said_text(said: plc_core::diagnostics::Said) -> String {
+    let english = said.english.clone();
+    sentence_text(Some(&plc_core::exercise::Sentence::from(said)), &english)
+}
+
 /// The key of a count's words in the form `n` takes in the language shown: `one` for 1;
 /// `few` for 2–4 (in Polish not 12–14, and also 22–24, 32–34 …); else `many`. English has
 /// the same text for `few` and `many`.

@@ -1,13 +1,14 @@
 //! Opening a file the user imports: project files and ST text here, PLCopen XML and PNML
 //! in the import worker (`src/workers/import.rs`), which the page starts only then.
 
-use plc_core::open::open_plain;
+use plc_core::exercise::Sentence;
+use plc_core::open::{open_plain, FileKind, OpenError};
 use plc_core::project::Project;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 
-use crate::i18n::{t, tf, K};
+use crate::i18n::{said_text, sentence_text, t, tf, K};
 
 /// The import worker's name (`src/workers/mod.rs`).
 const WORKER: &str = "import";
@@ -16,10 +17,74 @@ const WORKER: &str = "import";
 pub struct Imported {
     /// The project.
     pub project: Project,
-    /// What the file was read as, for the user ("PLCopen XML").
-    pub kind: String,
+    /// What the file was read as.
+    pub kind: FileKind,
     /// What the import skipped or changed.
-    pub warnings: Vec<String>,
+    pub notes: Vec<Note>,
+}
+
+/// A note on something an import skipped or changed, as the worker sends it: its place in
+/// the file (line 0: the file as a whole), its English text and the note as data.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct Note {
+    /// 1-based line of the element in the file (0: the whole file).
+    #[serde(default)]
+    pub line: u32,
+    /// 1-based column.
+    #[serde(default)]
+    pub column: u32,
+    /// The note in English.
+    #[serde(default)]
+    pub english: String,
+    /// The note as data, shown in the page's language.
+    #[serde(default)]
+    pub sentence: Option<Sentence>,
+}
+
+impl Note {
+    /// The note in the language shown, after its place in the file when it has one.
+    pub fn text(&self) -> String {
+        let note = sentence_text(self.sentence.as_ref(), &self.english);
+        if self.line == 0 {
+            return note;
+        }
+        let (line, column) = (self.line.to_string(), self.column.to_string());
+        tf(K::header_import_note_at, &[("line", &line), ("column", &column), ("note", &note)])
+    }
+}
+
+impl From<&plc_core::plcopen::ImportNote> for Note {
+    fn from(n: &plc_core::plcopen::ImportNote) -> Self {
+        Note {
+            line: n.line,
+            column: n.column,
+            english: n.message.clone(),
+            sentence: Some(Sentence::from(n.said.clone())),
+        }
+    }
+}
+
+/// What a file was read as, in the language shown.
+pub fn kind_text(kind: FileKind) -> &'static str {
+    match kind {
+        FileKind::Project => t(K::header_kind_project),
+        FileKind::Plcopen => t(K::header_kind_plcopen),
+        FileKind::Pnml => t(K::header_kind_pnml),
+        FileKind::St => t(K::header_kind_st),
+    }
+}
+
+/// The file kind whose English description is `description` (as the worker names it).
+fn kind_of(description: &str) -> FileKind {
+    [FileKind::Project, FileKind::Plcopen, FileKind::Pnml, FileKind::St]
+        .into_iter()
+        .find(|k| k.description() == description)
+        .unwrap_or(FileKind::Plcopen)
+}
+
+/// Why a file could not be opened, in the language shown.
+pub fn open_error_text(e: &OpenError) -> String {
+    said_text(e.said())
 }
 
 /// Opens `text` (a file named `stem` without its extension) as a project.
@@ -27,11 +92,11 @@ pub async fn import_text(stem: &str, text: &str) -> Result<Imported, String> {
     match open_plain(stem, text) {
         Ok(Some(opened)) => Ok(Imported {
             project: opened.project,
-            kind: opened.kind.description().to_string(),
-            warnings: opened.warnings.iter().map(ToString::to_string).collect(),
+            kind: opened.kind,
+            notes: opened.warnings.iter().map(Note::from).collect(),
         }),
         Ok(None) => in_worker(stem, text).await,
-        Err(e) => Err(e.to_string()),
+        Err(e) => Err(open_error_text(&e)),
     }
 }
 
@@ -73,7 +138,7 @@ async fn export_in_worker(what: &str, pou: &str, project: &Project) -> Result<St
         return Err(tf(K::state_no_petri_pou, &[("pou", &pou)]));
     }
     match reply.error {
-        Some(e) => Err(e),
+        Some(e) => Err(sentence_text(reply.error_sentence.as_ref(), &e)),
         None => Ok(reply.xml),
     }
 }
@@ -141,12 +206,15 @@ pub async fn ask_worker_raw(name: &str, request: &JsValue) -> Result<JsValue, St
 struct Reply {
     #[serde(default)]
     error: Option<String>,
+    /// The error as data, shown in the page's language.
+    #[serde(default)]
+    error_sentence: Option<Sentence>,
     #[serde(default)]
     project: String,
     #[serde(default)]
     kind: String,
     #[serde(default)]
-    warnings: Vec<String>,
+    notes: Vec<Note>,
     #[serde(default)]
     xml: String,
     /// The Petri net POU asked for is not in the project.
@@ -160,10 +228,10 @@ fn read_reply(reply: &str) -> Result<Imported, String> {
         serde_json::from_str(reply).map_err(|_| t(K::state_importer_no_answer).to_string())?;
 
     if let Some(error) = reply.error {
-        return Err(error);
+        return Err(sentence_text(reply.error_sentence.as_ref(), &error));
     }
-    let project = Project::from_file(&reply.project).map_err(|e| e.to_string())?;
-    Ok(Imported { project, kind: reply.kind, warnings: reply.warnings })
+    let project = Project::from_file(&reply.project).map_err(|e| said_text(e.said()))?;
+    Ok(Imported { project, kind: kind_of(&reply.kind), notes: reply.notes })
 }
 
 #[cfg(test)]
@@ -173,10 +241,11 @@ mod tests {
     #[test]
     fn replies_are_read_or_refused() {
         let p = Project::new("Net");
-        let ok = serde_json::json!({"project": p.to_file(), "kind": "PNML", "warnings": ["w"]});
+        let note = serde_json::json!({"line": 3, "column": 5, "english": "w"});
+        let ok = serde_json::json!({"project": p.to_file(), "kind": "PNML", "notes": [note]});
         let read = read_reply(&ok.to_string()).unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!((read.project.name.as_str(), read.kind.as_str()), ("Net", "PNML"));
-        assert_eq!(read.warnings, ["w"]);
+        assert_eq!((read.project.name.as_str(), read.kind), ("Net", FileKind::Pnml));
+        assert_eq!(read.notes.iter().map(Note::text).collect::<Vec<_>>(), ["line 3, column 5: w"]);
         assert_eq!(
             read_reply(r#"{"error": "bad XML at 1:2"}"#).err().as_deref(),
             Some("bad XML at 1:2")

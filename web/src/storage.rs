@@ -3,6 +3,8 @@
 use plc_core::project::{StorageBackend, StoreError};
 use wasm_bindgen::JsCast;
 
+use crate::i18n::{t, K};
+
 /// `window.localStorage`, mapped to the core's storage trait.
 pub struct LocalStorage {
     storage: Option<web_sys::Storage>,
@@ -18,7 +20,7 @@ impl LocalStorage {
     fn storage(&self) -> Result<&web_sys::Storage, StoreError> {
         self.storage
             .as_ref()
-            .ok_or_else(|| StoreError::Unavailable("local storage is disabled".into()))
+            .ok_or_else(|| StoreError::Unavailable(t(K::state_storage_disabled).into()))
     }
 }
 

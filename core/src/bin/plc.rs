@@ -216,6 +216,8 @@ struct Loaded {
 /// known).
 struct LoadFailure {
     message: String,
+    /// The message as data, when it is (shown in the language asked for).
+    msg: Option<plc_core::diagnostics::Message>,
     line: u32,
     column: u32,
 }
@@ -223,13 +225,15 @@ struct LoadFailure {
 impl LoadFailure {
     /// As a diagnostic of the report.
     fn diagnostic(&self) -> DiagnosticReport {
-        DiagnosticReport::new(
+        let mut d = DiagnosticReport::new(
             plc_core::diagnostics::Severity::Error,
             Code::FileNotOpened,
             self.message.clone(),
             self.line,
             self.column,
-        )
+        );
+        d.msg = self.msg.clone();
+        d
     }
 }
 
@@ -237,6 +241,7 @@ impl LoadFailure {
 fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
     let text = read_source(path).map_err(|message| LoadFailure {
         message: message.replacen("plc: ", "", 1),
+        msg: None,
         line: 0,
         column: 0,
     })?;
@@ -250,7 +255,8 @@ fn open_file(path: &Path) -> Result<Loaded, LoadFailure> {
     }
     let opened = plc_core::open::open_text("project", &text).map_err(|e| {
         let (line, column) = e.location_in(&text).unwrap_or((0, 0));
-        LoadFailure { message: e.to_string(), line, column }
+        let msg = Some(e.said().message);
+        LoadFailure { message: e.to_string(), msg, line, column }
     })?;
     Ok(Loaded {
         input: Input::Project(Box::new(opened.project)),
@@ -274,13 +280,15 @@ fn note_diagnostics(notes: &[plc_core::plcopen::ImportNote]) -> Vec<DiagnosticRe
     notes
         .iter()
         .map(|n| {
-            DiagnosticReport::new(
+            let mut d = DiagnosticReport::new(
                 plc_core::diagnostics::Severity::Warning,
                 Code::ImportChanged,
                 n.message.clone(),
                 n.line,
                 n.column,
-            )
+            );
+            d.msg = Some(n.said.message.clone());
+            d
         })
         .collect()
 }
@@ -356,7 +364,8 @@ fn check(path: &Path, lang: plc_core::i18n::Lang) -> ExitCode {
         Ok(l) => l,
         Err(f) => {
             let d = f.diagnostic();
-            print_diagnostic(path, d.severity, d.line, d.column, &d.code, &d.message);
+            let message = d.render(lang);
+            print_diagnostic(path, d.severity, d.line, d.column, &d.code, &message);
             eprintln!("{}: 1 error(s), 0 warning(s)", path.display());
             return ExitCode::from(2);
         }

@@ -29,8 +29,9 @@ pub struct ChartText {
     pub lines: Vec<(String, Option<String>)>,
     /// `(instance, type)` of every function block instance of the body's network.
     pub instances: Vec<(String, String)>,
-    /// What was left out (a transition wired to no step), by element.
-    pub notes: Vec<(String, String)>,
+    /// What was left out (a transition wired to no step), by element, as data to be shown
+    /// in any language.
+    pub notes: Vec<(String, Said)>,
 }
 
 /// The textual SFC of the SFC network POU `pou`.
@@ -107,13 +108,14 @@ pub fn chart_text(pou: &NetworkPou) -> Result<ChartText, NetError> {
         let from = chart.steps_before(t)?;
         let to = chart.steps_after(t)?;
         if from.is_empty() || to.is_empty() {
-            let side = if from.is_empty() { "no step leads to it" } else { "it leads to no step" };
+            let side = if from.is_empty() {
+                crate::phrase!(NetNoStepLeadsToIt)
+            } else {
+                crate::phrase!(NetLeadsToNoStep)
+            };
             out.notes.push((
                 t.id.clone(),
-                format!(
-                    "POU {name}: transition localId {} is not connected ({side}); skipped",
-                    t.id
-                ),
+                crate::msg!(NetTransitionNotConnected, pou = name, id = &t.id, side = side),
             ));
             continue;
         }

@@ -21,8 +21,9 @@ pub struct Lowered {
     pub statements: Vec<(String, usize)>,
     /// `(instance, type)` of every function block instance (and edge detector) used.
     pub instances: Vec<(String, String)>,
-    /// What was left out (an output variable with no wire), by element index.
-    pub notes: Vec<(usize, String)>,
+    /// What was left out (an output variable with no wire), by element index, as data to
+    /// be shown in any language.
+    pub notes: Vec<(usize, crate::diagnostics::Said)>,
 }
 
 /// Lowers the logical view `els` of a network of POU `pou` to statements: function block calls, output
@@ -50,10 +51,12 @@ pub fn lower(els: &[El], pou: &str) -> Result<Lowered, NetError> {
                 if els[s].conns.is_empty() {
                     notes.push((
                         s,
-                        format!(
-                        "POU {pou}: output variable localId {} ({target}) is not wired; skipped",
-                        els[s].id
-                    ),
+                        crate::msg!(
+                            NetOutputNotWired,
+                            pou = pou,
+                            id = &els[s].id,
+                            variable = target
+                        ),
                     ));
                     continue;
                 }

@@ -72,6 +72,16 @@ impl fmt::Display for OpenError {
 impl std::error::Error for OpenError {}
 
 impl OpenError {
+    /// The error as one message, to be shown in any language (its English text is the
+    /// error's `Display`).
+    pub fn said(&self) -> crate::diagnostics::Said {
+        match self {
+            OpenError::Plcopen(e) => e.said(),
+            OpenError::Pnml(e) => e.said(),
+            OpenError::Project(e) => e.said(),
+        }
+    }
+
     /// The 1-based line and column in `text` (the file that gave this error) of what the
     /// error is about, when known.
     pub fn location_in(&self, text: &str) -> Option<(u32, u32)> {

@@ -4,6 +4,7 @@
 use super::source_out::SourceOut;
 use super::xml::{self, Node};
 use super::{Import, ImportError, ImportNote, SkippedPou};
+use crate::diagnostics::Said;
 use crate::ladder::{LadderPou, LadderPouKind};
 use crate::network::{NetworkLanguage, NetworkPou, NetworkPouKind};
 use crate::project::{Project, Settings, SCHEMA_VERSION};
@@ -12,10 +13,7 @@ use crate::project::{Project, Settings, SCHEMA_VERSION};
 pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     let root = xml::parse(xml_text).map_err(ImportError::Xml)?;
     if root.name != "project" {
-        return Err(ImportError::NotPlcopen(format!(
-            "the root element is <{}>, not <project>",
-            root.name
-        )));
+        return Err(ImportError::NotPlcopen(crate::msg!(PlcopenRootNotProject, name = &root.name)));
     }
     let mut warnings: Vec<ImportNote> = Vec::new();
     let mut skipped: Vec<SkippedPou> = Vec::new();
@@ -34,11 +32,11 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
     if let Some(dts) = types.and_then(|t| t.child("dataTypes")) {
         for dt in dts.children_named("dataType") {
             let tname = dt.attr("name").unwrap_or("").to_string();
-            let err = |message: String| ImportError::DataType { name: tname.clone(), message };
+            let err = |message: Said| ImportError::DataType { name: tname.clone(), message };
             if tname.is_empty() {
-                return Err(err("the dataType has no name".into()));
+                return Err(err(crate::msg!(PlcopenDataTypeNoName)));
             }
-            let base = dt.child("baseType").ok_or_else(|| err("no <baseType>".into()))?;
+            let base = dt.child("baseType").ok_or_else(|| err(crate::msg!(PlcopenNoBaseType)))?;
             let ty = type_text(base).map_err(err)?;
             let init = match dt.child("initialValue") {
                 Some(v) => format!(" := {}", value_text(v).map_err(err)?),
@@ -64,14 +62,22 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             let cname = conf.attr("name").unwrap_or("config");
             for g in conf.children_named("globalVars") {
                 globals.append(var_block(g, "VAR_GLOBAL", &mut warnings).map_err(|message| {
-                    ImportError::Pou { pou: format!("configuration {cname}"), message }
+                    ImportError::Globals {
+                        element: "configuration",
+                        name: cname.to_string(),
+                        message,
+                    }
                 })?);
             }
             for res in conf.children_named("resource") {
                 let rname = res.attr("name").unwrap_or("resource");
                 for g in res.children_named("globalVars") {
                     globals.append(var_block(g, "VAR_GLOBAL", &mut warnings).map_err(
-                        |message| ImportError::Pou { pou: format!("resource {rname}"), message },
+                        |message| ImportError::Globals {
+                            element: "resource",
+                            name: rname.to_string(),
+                            message,
+                        },
                     )?);
                 }
                 if let Some(ms) = res
@@ -141,22 +147,23 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
         // the rail is always on, an element may lead nowhere).
         let off = match &laid_out {
             Err(ImportError::Element { local_id, message, .. }) => {
-                Some(format!("element localId {local_id}: {message}"))
+                Some(crate::msg!(NetElementSays, element = local_id, message = message))
             }
-            Err(other) => Some(other.to_string()),
+            Err(other) => Some(other.said()),
             Ok(ld) => {
                 let grid = LadderPou { rungs: ld.rungs.clone(), ..lp.clone() };
                 crate::ladder::validate_with(&grid, &catalog)
                     .into_iter()
                     .find(|d| GRID_ONLY_RULES.contains(&d.code))
                     .map(|d| {
-                        format!(
-                            "{} at rung {}, row {}, column {}: {}",
-                            d.code,
-                            d.rung + 1,
-                            d.row + 1,
-                            d.column + 1,
-                            d.message
+                        let message = Said { message: d.msg, english: d.message };
+                        crate::msg!(
+                            PlcopenGridRule,
+                            code = d.code.to_string(),
+                            rung = d.rung + 1,
+                            row = d.row + 1,
+                            column = d.column + 1,
+                            message = message
                         )
                     })
             }
@@ -179,16 +186,21 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
             ) {
                 Ok((net, _, left_out)) => {
                     warnings.extend(left_out);
-                    warnings.push(ImportNote::on(body, format!(
-                        "POU {name}: the LD network does not fit the rung grid ({why}); it is kept as drawn in the file and runs by power flow"
-                    )));
+                    warnings.push(ImportNote::on(
+                        body,
+                        crate::msg!(PlcopenLdOffGrid, pou = &name, why = why),
+                    ));
                     off_grid.push((k, net));
                     continue;
                 }
                 // Neither fits: the grid's problem is reported, with the network's.
                 Err(lowering) => {
                     if let Err(ImportError::Element { pou, local_id, message }) = laid_out {
-                        let message = format!("{message}; run by power flow instead: {lowering}");
+                        let message = crate::msg!(
+                            PlcopenNotByPowerFlowEither,
+                            message = message,
+                            lowering = lowering.said()
+                        );
                         return Err(ImportError::Element { pou, local_id, message });
                     }
                 }
@@ -209,10 +221,10 @@ pub fn import(xml_text: &str) -> Result<Import, ImportError> {
                 lp.declarations.push('\n');
             }
             lp.declarations.push_str("END_VAR\n");
-            warnings.push(ImportNote::on(pou_node, format!(
-                "POU {}: data wires from function outputs got variables of their own (see the last VAR block)",
-                lp.name
-            )));
+            warnings.push(ImportNote::on(
+                pou_node,
+                crate::msg!(PlcopenDataWireVariables, pou = &lp.name),
+            ));
         }
     }
     // Removed from the back (indices stay valid), added in the file's order.
@@ -265,7 +277,7 @@ fn config_var_lines<'n>(conf: &'n Node, notes: &mut Vec<ImportNote>) -> Vec<(Str
                 let path = v.attr("instancePathAndName").unwrap_or("");
                 notes.push(ImportNote::on(
                     v,
-                    format!("VAR_CONFIG entry `{path}`: {why}; it was left out"),
+                    crate::msg!(PlcopenVarConfigLeftOut, path = path, why = why),
                 ));
             }
         }
@@ -274,12 +286,12 @@ fn config_var_lines<'n>(conf: &'n Node, notes: &mut Vec<ImportNote>) -> Vec<(Str
 }
 
 /// One `<configVariable>` as a VAR_CONFIG entry: `Line.V1.Open AT %QX1.0 : BOOL := TRUE;`.
-fn config_var_text(v: &Node) -> Result<String, String> {
+fn config_var_text(v: &Node) -> Result<String, Said> {
     let path = v
         .attr("instancePathAndName")
         .map(str::trim)
         .filter(|p| !p.is_empty())
-        .ok_or("it has no instancePathAndName")?;
+        .ok_or_else(|| crate::msg!(PlcopenNoInstancePath))?;
     let path: Vec<String> = path.split('.').map(|n| super::tasks::ident(n.trim())).collect();
     let at = match v.attr("address").map(str::trim).filter(|a| !a.is_empty()) {
         None => String::new(),
@@ -287,10 +299,10 @@ fn config_var_text(v: &Node) -> Result<String, String> {
             Some(rest) if rest.chars().all(|c| c.is_ascii_alphanumeric() || c == '.') => {
                 format!(" AT {a}")
             }
-            _ => return Err(format!("`{a}` is not a complete address such as %QX1.0")),
+            _ => return Err(crate::msg!(PlcopenIncompleteAddress, address = a)),
         },
     };
-    let ty = type_text(v.child("type").ok_or("it has no <type>")?)?;
+    let ty = type_text(v.child("type").ok_or_else(|| crate::msg!(PlcopenNoType))?)?;
     let init = match v.child("initialValue") {
         Some(w) => format!(" := {}", value_text(w)?),
         None => String::new(),
@@ -299,9 +311,15 @@ fn config_var_text(v: &Node) -> Result<String, String> {
 }
 
 /// Leaves the POU `name` out of the import, with a note at its body saying why.
-fn skip_pou(out: &mut PouOut<'_>, body: &Node, name: String, keyword: &str, reason: String) {
-    out.warnings.push(ImportNote::on(body, format!("POU {name}: {reason}; the POU was skipped")));
-    out.skipped.push(SkippedPou { name, kind: keyword.to_string(), reason });
+fn skip_pou(out: &mut PouOut<'_>, body: &Node, name: String, keyword: &str, reason: Said) {
+    out.warnings
+        .push(ImportNote::on(body, crate::msg!(PlcopenPouSkipped, pou = &name, reason = &reason)));
+    out.skipped.push(SkippedPou {
+        name,
+        kind: keyword.to_string(),
+        reason: reason.english.clone(),
+        reason_said: reason,
+    });
 }
 
 /// What kind of network POU a `pouType` makes.
@@ -328,7 +346,7 @@ fn keep_network(
     (body, pou): (&Node, &Node),
 ) -> Result<KeptNetwork, ImportError> {
     let (elements, mut left_out) = super::ld_import::read::read_network(body, name)?;
-    let err = |message: String| ImportError::Pou { pou: name.to_string(), message };
+    let err = |message: Said| ImportError::Pou { pou: name.to_string(), message };
     let (mut actions, mut transitions) = (Vec::new(), Vec::new());
     if language == NetworkLanguage::Sfc {
         actions =
@@ -360,7 +378,8 @@ fn keep_network(
 
 /// A network error as an import error of POU `pou`.
 fn element_error(pou: &str, e: crate::network::NetError) -> ImportError {
-    ImportError::Element { pou: pou.to_string(), local_id: e.element, message: e.message }
+    let message = e.said();
+    ImportError::Element { pou: pou.to_string(), local_id: e.element, message }
 }
 
 /// Adds a network POU to the project being imported.
@@ -413,16 +432,18 @@ fn import_pou<'a>(
 ) -> Result<Option<(&'a Node, &'a Node)>, ImportError> {
     let (source, ladder, warnings) = (&mut *out.source, &mut *out.ladder, &mut *out.warnings);
     let name = pou.attr("name").unwrap_or("").to_string();
-    let err = |message: String| ImportError::Pou { pou: name.clone(), message };
+    let err = |message: Said| ImportError::Pou { pou: name.clone(), message };
     if name.is_empty() {
-        return Err(ImportError::Pou { pou: "(unnamed)".into(), message: "no name".into() });
+        return Err(err(crate::msg!(PlcopenNoName)));
     }
     let pou_type = pou.attr("pouType").unwrap_or("program");
     let (keyword, end) = match pou_type {
         "program" => ("PROGRAM", "END_PROGRAM"),
         "functionBlock" => ("FUNCTION_BLOCK", "END_FUNCTION_BLOCK"),
         "function" => ("FUNCTION", "END_FUNCTION"),
-        other => return Err(err(format!("unknown pouType {other:?}"))),
+        other => {
+            return Err(err(crate::msg!(PlcopenUnknownPouType, pou_type = format!("{other:?}"))))
+        }
     };
     let mut declarations = SourceOut::default();
     let mut return_type = None;
@@ -444,7 +465,7 @@ fn import_pou<'a>(
                 other => {
                     warnings.push(ImportNote::on(
                         block,
-                        format!("POU {name}: interface section <{other}> skipped"),
+                        crate::msg!(PlcopenInterfaceSectionSkipped, pou = &name, section = other),
                     ));
                     continue;
                 }
@@ -452,17 +473,18 @@ fn import_pou<'a>(
             declarations.append(var_block(block, section, warnings).map_err(err)?);
         }
     }
-    let body = pou.child("body").ok_or_else(|| err("no <body>".into()))?;
+    let body = pou.child("body").ok_or_else(|| err(crate::msg!(PlcopenNoBody)))?;
     let lang = body
         .children
         .iter()
         .find(|c| c.name != "documentation" && c.name != "addData")
-        .ok_or_else(|| err("empty <body>".into()))?;
+        .ok_or_else(|| err(crate::msg!(PlcopenEmptyBody)))?;
     if lang.name != "SFC"
         && (pou.child("actions").is_some_and(|a| !a.children.is_empty())
             || pou.child("transitions").is_some_and(|a| !a.children.is_empty()))
     {
-        warnings.push(ImportNote::on(pou, format!("POU {name}: actions and transitions skipped")));
+        warnings
+            .push(ImportNote::on(pou, crate::msg!(PlcopenActionsTransitionsSkipped, pou = &name)));
     }
     match lang.name.as_str() {
         // An IL body is text too: the parser recognises IL by its first line.
@@ -486,7 +508,11 @@ fn import_pou<'a>(
                     add_network(out, net, lines)
                 }
                 Err(e) => {
-                    let reason = format!("its {} body cannot be imported yet ({e})", lang.name);
+                    let reason = crate::msg!(
+                        PlcopenBodyCannotBeImported,
+                        language = &lang.name,
+                        error = e.said()
+                    );
                     skip_pou(out, lang, name, keyword, reason);
                 }
             }
@@ -507,7 +533,7 @@ fn import_pou<'a>(
             return Ok(Some((pou, lang)));
         }
         other => {
-            let reason = format!("{other} bodies are not supported yet");
+            let reason = crate::msg!(PlcopenBodiesNotSupported, language = other);
             skip_pou(out, lang, name, keyword, reason);
         }
     }
@@ -520,9 +546,9 @@ fn pou_header(
     name: &str,
     pou_type: &str,
     return_type: Option<String>,
-) -> Result<String, String> {
+) -> Result<String, Said> {
     if pou_type == "function" {
-        let rt = return_type.ok_or("a function without <returnType>")?;
+        let rt = return_type.ok_or_else(|| crate::msg!(PlcopenFunctionWithoutReturnType))?;
         Ok(format!("{keyword} {name} : {rt}"))
     } else {
         Ok(format!("{keyword} {name}"))
@@ -582,7 +608,7 @@ pub(crate) fn var_block(
     block: &Node,
     section: &str,
     notes: &mut Vec<ImportNote>,
-) -> Result<SourceOut, String> {
+) -> Result<SourceOut, Said> {
     let mut out = String::from(section);
     if block.attr("retain") == Some("true") {
         out.push_str(" RETAIN");
@@ -605,24 +631,28 @@ pub(crate) fn var_block(
 
 /// `name AT %IX0.0 : BOOL := FALSE; (* doc *)`. A TIME initial value written as a whole
 /// number is read as milliseconds, as matiec reads it, with a note in `notes`.
-fn variable_text(v: &Node, notes: &mut Vec<ImportNote>) -> Result<String, String> {
-    let name = v.attr("name").filter(|n| !n.is_empty()).ok_or("a <variable> without a name")?;
+fn variable_text(v: &Node, notes: &mut Vec<ImportNote>) -> Result<String, Said> {
+    let name = v
+        .attr("name")
+        .filter(|n| !n.is_empty())
+        .ok_or_else(|| crate::msg!(PlcopenVariableWithoutName))?;
     let mut out = name.to_string();
     if let Some(addr) = v.attr("address").filter(|a| !a.trim().is_empty()) {
         out.push_str(" AT ");
         out.push_str(addr.trim());
     }
-    let ty = v.child("type").ok_or_else(|| format!("variable {name} has no <type>"))?;
+    let ty = v.child("type").ok_or_else(|| crate::msg!(PlcopenVariableNoType, name = name))?;
     out.push_str(" : ");
-    let type_name = type_text(ty).map_err(|e| format!("variable {name}: {e}"))?;
+    let in_variable = |e: Said| crate::msg!(PlcopenVariableError, name = name, message = e);
+    let type_name = type_text(ty).map_err(in_variable)?;
     out.push_str(&type_name);
     if let Some(init) = v.child("initialValue") {
-        let mut value = value_text(init).map_err(|e| format!("variable {name}: {e}"))?;
+        let mut value = value_text(init).map_err(in_variable)?;
         let is_duration = matches!(type_name.as_str(), "TIME" | "LTIME");
         if is_duration && !value.is_empty() && value.bytes().all(|b| b.is_ascii_digit()) {
             notes.push(ImportNote::on(
                 init,
-                format!("variable {name}: the TIME initial value {value} is read as T#{value}ms"),
+                crate::msg!(PlcopenTimeAsMs, name = name, value = &value),
             ));
             value = format!("T#{value}ms");
         }
@@ -652,16 +682,23 @@ const ELEMENTARY: &[&str] = &[
 ];
 
 /// The ST text of the type held by a `<type>`/`<baseType>`/`<returnType>` wrapper.
-pub(crate) fn type_text(wrapper: &Node) -> Result<String, String> {
-    let t = wrapper.children.first().ok_or_else(|| format!("<{}> is empty", wrapper.name))?;
+pub(crate) fn type_text(wrapper: &Node) -> Result<String, Said> {
+    let t = wrapper
+        .children
+        .first()
+        .ok_or_else(|| crate::msg!(PlcopenWrapperEmpty, name = &wrapper.name))?;
     type_node_text(t)
 }
 
-fn type_node_text(t: &Node) -> Result<String, String> {
+fn type_node_text(t: &Node) -> Result<String, Said> {
+    // The part of `t` named `name`, or `missing`.
+    let part = |name: &str, missing: fn() -> Said| t.child(name).ok_or_else(missing);
     Ok(match t.name.as_str() {
-        "derived" => {
-            t.attr("name").filter(|n| !n.is_empty()).ok_or("<derived> without name")?.into()
-        }
+        "derived" => t
+            .attr("name")
+            .filter(|n| !n.is_empty())
+            .ok_or_else(|| crate::msg!(PlcopenDerivedWithoutName))?
+            .into(),
         "string" | "wstring" => {
             let kw = if t.name == "string" { "STRING" } else { "WSTRING" };
             match t.attr("length") {
@@ -674,36 +711,39 @@ fn type_node_text(t: &Node) -> Result<String, String> {
                 .children_named("dimension")
                 .map(|d| match (d.attr("lower"), d.attr("upper")) {
                     (Some(l), Some(u)) => Ok(format!("{l}..{u}")),
-                    _ => Err("an array <dimension> needs lower and upper".to_string()),
+                    _ => Err(crate::msg!(PlcopenDimensionNeedsBounds)),
                 })
                 .collect::<Result<Vec<_>, _>>()?;
             if dims.is_empty() {
-                return Err("an <array> without <dimension>".into());
+                return Err(crate::msg!(PlcopenArrayWithoutDimension));
             }
-            let base = t.child("baseType").ok_or("an <array> without <baseType>")?;
+            let base = part("baseType", || crate::msg!(PlcopenArrayWithoutBaseType))?;
             format!("ARRAY[{}] OF {}", dims.join(", "), type_text(base)?)
         }
         "subrangeSigned" | "subrangeUnsigned" => {
-            let r = t.child("range").ok_or("a subrange without <range>")?;
-            let (l, u) =
-                r.attr("lower").zip(r.attr("upper")).ok_or("a <range> needs lower and upper")?;
-            let base = t.child("baseType").ok_or("a subrange without <baseType>")?;
+            let r = part("range", || crate::msg!(PlcopenSubrangeWithoutRange))?;
+            let (l, u) = r
+                .attr("lower")
+                .zip(r.attr("upper"))
+                .ok_or_else(|| crate::msg!(PlcopenRangeNeedsBounds))?;
+            let base = part("baseType", || crate::msg!(PlcopenSubrangeWithoutBaseType))?;
             format!("{}({l}..{u})", type_text(base)?)
         }
         "enum" => {
-            let values = t.child("values").ok_or("an <enum> without <values>")?;
+            let values = part("values", || crate::msg!(PlcopenEnumWithoutValuesElement))?;
             let names = values
                 .children_named("value")
                 .map(|v| {
-                    let n = v.attr("name").ok_or("an enum <value> without name")?;
+                    let n =
+                        v.attr("name").ok_or_else(|| crate::msg!(PlcopenEnumValueWithoutName))?;
                     Ok(match v.attr("value") {
                         Some(x) => format!("{n} := {x}"),
                         None => n.to_string(),
                     })
                 })
-                .collect::<Result<Vec<_>, String>>()?;
+                .collect::<Result<Vec<_>, Said>>()?;
             if names.is_empty() {
-                return Err("an <enum> without values".into());
+                return Err(crate::msg!(PlcopenEnumWithoutValues));
             }
             format!("({})", names.join(", "))
         }
@@ -721,7 +761,7 @@ fn type_node_text(t: &Node) -> Result<String, String> {
         }
         // TC6 XML's `pointer` is edition 3's REF_TO.
         "pointer" => {
-            let base = t.child("baseType").ok_or("a <pointer> without <baseType>")?;
+            let base = part("baseType", || crate::msg!(PlcopenPointerWithoutBaseType))?;
             format!("REF_TO {}", type_text(base)?)
         }
         other => {
@@ -731,19 +771,19 @@ fn type_node_text(t: &Node) -> Result<String, String> {
             } else if upper == "TIME_OF_DAY" {
                 "TOD".into()
             } else {
-                return Err(format!("unsupported type <{other}>"));
+                return Err(crate::msg!(PlcopenUnsupportedType, name = other));
             }
         }
     })
 }
 
 /// The ST text of an `<initialValue>` (or an array/struct `<value>`) wrapper.
-pub(crate) fn value_text(wrapper: &Node) -> Result<String, String> {
+pub(crate) fn value_text(wrapper: &Node) -> Result<String, Said> {
     let v = wrapper
         .children
         .iter()
         .find(|c| c.name.ends_with("Value"))
-        .ok_or_else(|| format!("<{}> holds no value", wrapper.name))?;
+        .ok_or_else(|| crate::msg!(PlcopenHoldsNoValue, name = &wrapper.name))?;
     match v.name.as_str() {
         "simpleValue" => Ok(v.attr("value").unwrap_or("").to_string()),
         "arrayValue" => {
@@ -757,20 +797,22 @@ pub(crate) fn value_text(wrapper: &Node) -> Result<String, String> {
                         None => inner,
                     })
                 })
-                .collect::<Result<Vec<_>, String>>()?;
+                .collect::<Result<Vec<_>, Said>>()?;
             Ok(format!("[{}]", items.join(", ")))
         }
         "structValue" => {
             let items = v
                 .children_named("value")
                 .map(|item| {
-                    let m = item.attr("member").ok_or("a struct <value> without member")?;
+                    let m = item
+                        .attr("member")
+                        .ok_or_else(|| crate::msg!(PlcopenStructValueWithoutMember))?;
                     Ok(format!("{m} := {}", value_text(item)?))
                 })
-                .collect::<Result<Vec<_>, String>>()?;
+                .collect::<Result<Vec<_>, Said>>()?;
             Ok(format!("({})", items.join(", ")))
         }
-        other => Err(format!("unsupported initial value <{other}>")),
+        other => Err(crate::msg!(PlcopenUnsupportedInitialValue, name = other)),
     }
 }
 

@@ -27,6 +27,7 @@ mod tasks;
 mod union_find;
 mod xml;
 
+use crate::diagnostics::Said;
 use crate::project::Project;
 use std::fmt;
 
@@ -53,8 +54,11 @@ pub struct Import {
 /// element it is about (line 0 when it is about the file as a whole).
 #[derive(Debug, Clone, PartialEq, Eq, serde::Serialize)]
 pub struct ImportNote {
-    /// What was skipped or changed, and why.
+    /// What was skipped or changed, and why (English: `said.english`).
     pub message: String,
+    /// The note as data, to be shown in any language (`said.message.render(lang)`).
+    #[serde(skip)]
+    pub said: Said,
     /// 1-based line of the element in the file (0: the whole file).
     pub line: u32,
     /// 1-based column.
@@ -63,13 +67,13 @@ pub struct ImportNote {
 
 impl ImportNote {
     /// A note about the element that starts at `line`, `column`.
-    pub fn at(line: u32, column: u32, message: String) -> Self {
-        ImportNote { message, line, column }
+    pub fn at(line: u32, column: u32, said: Said) -> Self {
+        ImportNote { message: said.english.clone(), said, line, column }
     }
 
     /// A note about the element `node`.
-    pub(crate) fn on(node: &xml::Node, message: String) -> Self {
-        ImportNote { message, line: node.line, column: node.column }
+    pub(crate) fn on(node: &xml::Node, said: Said) -> Self {
+        ImportNote::at(node.line, node.column, said)
     }
 }
 
@@ -90,31 +94,45 @@ pub struct SkippedPou {
     pub name: String,
     /// `PROGRAM`, `FUNCTION_BLOCK` or `FUNCTION`.
     pub kind: String,
-    /// Why (`FBD bodies are not supported yet`).
+    /// Why (`FBD bodies are not supported yet`; English: `reason_said.english`).
     pub reason: String,
+    /// Why, as data to be shown in any language.
+    #[serde(skip)]
+    pub reason_said: Said,
 }
 
-/// Why a PLCopen XML document could not be imported.
+/// Why a PLCopen XML document could not be imported. Each message is data
+/// ([`Said`]: its English text and its key with arguments); [`ImportError::said`] gives the
+/// whole error as one message, whose English text is the error's `Display`.
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum ImportError {
     /// The text is not well-formed XML.
     Xml(xml::XmlError),
     /// Well-formed XML, but not a PLCopen `<project>`.
-    NotPlcopen(String),
+    NotPlcopen(Said),
     /// A data type could not be read.
     DataType {
         /// The type's name.
         name: String,
         /// What is wrong.
-        message: String,
+        message: Said,
     },
     /// A POU (its interface or body) could not be read.
     Pou {
-        /// The POU's name.
+        /// The POU's name (empty when the `<pou>` has none: shown as `(unnamed)`).
         pou: String,
         /// What is wrong.
-        message: String,
+        message: Said,
+    },
+    /// The global variables of a `<configuration>` or a `<resource>` could not be read.
+    Globals {
+        /// The element: `configuration` or `resource`.
+        element: &'static str,
+        /// The configuration's or resource's name.
+        name: String,
+        /// What is wrong.
+        message: Said,
     },
     /// A graphical element of a POU body could not be read or laid out.
     Element {
@@ -123,29 +141,47 @@ pub enum ImportError {
         /// The element's `localId`.
         local_id: String,
         /// What is wrong.
-        message: String,
+        message: Said,
     },
 }
 
 impl fmt::Display for ImportError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ImportError::Xml(e) => write!(f, "not well-formed XML at {e}"),
-            ImportError::NotPlcopen(m) => write!(f, "not a PLCopen XML project: {m}"),
-            ImportError::DataType { name, message } => {
-                write!(f, "data type {name}: {message}")
-            }
-            ImportError::Pou { pou, message } => write!(f, "POU {pou}: {message}"),
-            ImportError::Element { pou, local_id, message } => {
-                write!(f, "POU {pou}, element localId {local_id}: {message}")
-            }
-        }
+        f.write_str(&self.said().english)
     }
 }
 
 impl std::error::Error for ImportError {}
 
 impl ImportError {
+    /// The whole error as one message (`not well-formed XML at line 1, column 2: …`, `POU
+    /// Main: no <body>`), to be shown in any language; its English text is the error's
+    /// `Display`.
+    pub fn said(&self) -> Said {
+        match self {
+            ImportError::Xml(e) => crate::msg!(PlcopenNotWellFormed, error = e.said()),
+            ImportError::NotPlcopen(m) => crate::msg!(PlcopenNotPlcopen, message = m),
+            ImportError::DataType { name, message } => {
+                crate::msg!(PlcopenDataTypeError, name = name, message = message)
+            }
+            ImportError::Pou { pou, message } if pou.is_empty() => {
+                crate::msg!(PlcopenUnnamedPouError, message = message)
+            }
+            ImportError::Pou { pou, message } => {
+                crate::msg!(PlcopenPouError, pou = pou, message = message)
+            }
+            ImportError::Globals { element: "configuration", name, message } => {
+                crate::msg!(PlcopenConfigurationError, name = name, message = message)
+            }
+            ImportError::Globals { name, message, .. } => {
+                crate::msg!(PlcopenResourceError, name = name, message = message)
+            }
+            ImportError::Element { pou, local_id, message } => {
+                crate::msg!(PlcopenElementError, pou = pou, local_id = local_id, message = message)
+            }
+        }
+    }
+
     /// The 1-based line and column in the file the error is about, when the error itself
     /// knows it (a well-formedness error); [`ImportError::location_in`] finds the others.
     pub fn location(&self) -> Option<(u32, u32)> {
@@ -168,7 +204,7 @@ impl ImportError {
         };
         let node = match self {
             ImportError::DataType { name, .. } => named("dataType", name),
-            ImportError::Pou { pou, .. } => named("pou", pou),
+            ImportError::Pou { pou, .. } if !pou.is_empty() => named("pou", pou),
             ImportError::Element { pou, local_id, .. } => named("pou", pou).and_then(|p| {
                 find(p, &|n: &xml::Node| n.attr("localId").map(str::trim) == Some(local_id))
             }),

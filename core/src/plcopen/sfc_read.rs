@@ -8,6 +8,7 @@
 use super::ld_import::read::body_st;
 use super::xml::Node;
 use super::ImportNote;
+use crate::diagnostics::Said;
 use crate::network::NamedBody;
 
 /// The named `<action>`s or `<transition>`s (`list` is `"actions"` or `"transitions"`) of
@@ -17,19 +18,36 @@ pub(crate) fn named_bodies(
     list: &str,
     name: &str,
     notes: &mut Vec<ImportNote>,
-) -> Result<Vec<NamedBody>, String> {
-    let item = if list == "actions" { "action" } else { "transition" };
+) -> Result<Vec<NamedBody>, Said> {
+    let actions = list == "actions";
+    let item = if actions { "action" } else { "transition" };
     let mut out = Vec::new();
     for n in pou.child(list).into_iter().flat_map(|a| a.children_named(item)) {
         let bname = n.attr("name").unwrap_or("").trim().to_string();
         if bname.is_empty() {
-            return Err(format!("an {item} without a name"));
+            return Err(if actions {
+                crate::msg!(PlcopenActionWithoutName)
+            } else {
+                crate::msg!(PlcopenTransitionWithoutName)
+            });
         }
-        let body = n.child("body").ok_or_else(|| format!("{item} {bname} has no <body>"))?;
-        if item == "transition" && body.child("ST").is_none() {
-            return Err(format!("transition {bname} is not written in ST (not supported yet)"));
+        let body = n.child("body").ok_or_else(|| {
+            if actions {
+                crate::msg!(PlcopenActionNoBody, name = &bname)
+            } else {
+                crate::msg!(PlcopenTransitionNoBody, name = &bname)
+            }
+        })?;
+        if !actions && body.child("ST").is_none() {
+            return Err(crate::msg!(PlcopenTransitionNotSt, name = &bname));
         }
-        let st = body_st(body, name, notes).map_err(|m| format!("{item} {bname}: {m}"))?;
+        let st = body_st(body, name, notes).map_err(|m| {
+            if actions {
+                crate::msg!(PlcopenActionError, name = &bname, message = m)
+            } else {
+                crate::msg!(PlcopenTransitionError, name = &bname, message = m)
+            }
+        })?;
         out.push(NamedBody { name: bname, st, at: (n.line, n.column) });
     }
     Ok(out)

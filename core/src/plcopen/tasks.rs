@@ -72,10 +72,7 @@ pub(super) fn configuration_text(
     }
     out.push("END_CONFIGURATION\n", None);
     if instances < 2 && !config_vars.is_empty() {
-        notes.push(ImportNote::on(
-            conf,
-            format!("configuration {cname}: its program runs on its own, without the configuration, so its VAR_CONFIG entries (configVars) do not apply"),
-        ));
+        notes.push(ImportNote::on(conf, crate::msg!(PlcopenVarConfigNotApplied, name = cname)));
     }
     (instances > 1).then_some((out, tick))
 }
@@ -92,10 +89,7 @@ fn instance(
     let name = inst.attr("name").unwrap_or("instance");
     let ty = inst.attr("typeName").unwrap_or("");
     if !known(ty) {
-        notes.push(ImportNote::on(
-            inst,
-            format!("program instance {name}: its type `{ty}` is not a PROGRAM of the import, so it does not run"),
-        ));
+        notes.push(ImportNote::on(inst, crate::msg!(PlcopenInstanceNotRun, name = name, ty = ty)));
         return 0;
     }
     let with = task.map(|t| format!(" WITH {}", ident(t))).unwrap_or_default();

@@ -4,6 +4,7 @@
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::Reader;
 
+use crate::diagnostics::Said;
 use crate::limits::MAX_XML_DEPTH;
 
 /// One XML element.
@@ -52,15 +53,23 @@ impl Node {
     }
 }
 
-fn start_node(e: &BytesStart<'_>, at: crate::diagnostics::Location) -> Result<Node, String> {
+fn start_node(e: &BytesStart<'_>, at: crate::diagnostics::Location) -> Result<Node, Said> {
     let name = e.local_name().as_ref().to_string();
     let mut attrs = Vec::new();
     for a in e.attributes() {
-        let a = a.map_err(|err| format!("bad attribute in <{name}>: {err}"))?;
+        let a =
+            a.map_err(|err| crate::msg!(XmlBadAttribute, name = &name, error = err.to_string()))?;
         let key = a.key.local_name().as_ref().to_string();
         let value = a
             .normalized_value(quick_xml::XmlVersion::Implicit1_0)
-            .map_err(|err| format!("bad attribute value {key:?} in <{name}>: {err}"))?
+            .map_err(|err| {
+                crate::msg!(
+                    XmlBadAttributeValue,
+                    key = format!("{key:?}"),
+                    name = &name,
+                    error = err.to_string()
+                )
+            })?
             .into_owned();
         attrs.push((key, value));
     }
@@ -78,17 +87,26 @@ fn start_node(e: &BytesStart<'_>, at: crate::diagnostics::Location) -> Result<No
 /// Why a document is not well-formed XML, and where.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct XmlError {
-    /// What is wrong.
-    pub message: String,
+    /// What is wrong (its English text is `message.english`; the XML reader's own words,
+    /// quick-xml's, stay English in every language).
+    pub message: Said,
     /// 1-based line of the place the reader stopped at.
     pub line: u32,
     /// 1-based column.
     pub column: u32,
 }
 
+impl XmlError {
+    /// The error as one message, `line 1, column 2: …`, to be shown in any language; its
+    /// English text is the error's `Display`.
+    pub fn said(&self) -> Said {
+        crate::msg!(XmlAt, line = self.line, column = self.column, message = &self.message)
+    }
+}
+
 impl std::fmt::Display for XmlError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "line {}, column {}: {}", self.line, self.column, self.message)
+        f.write_str(&self.said().english)
     }
 }
 
@@ -127,18 +145,19 @@ impl Cursor<'_> {
 }
 
 /// [`parse`], keeping in `cursor` the place of the last event read.
-fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, String> {
+fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, Said> {
     let mut reader = Reader::from_str(xml);
     let mut stack: Vec<Node> = Vec::new();
     let mut root: Option<Node> = None;
     loop {
         let pos = reader.buffer_position();
         let at = cursor.advance(usize::try_from(pos).unwrap_or(usize::MAX));
-        let event = reader.read_event().map_err(|e| e.to_string())?;
+        // quick-xml's own words (English in every language).
+        let event = reader.read_event().map_err(|e| Said::from(e.to_string()))?;
         match event {
             Event::Start(e) => {
                 if stack.len() >= MAX_XML_DEPTH {
-                    return Err(format!("elements nested more than {MAX_XML_DEPTH} deep"));
+                    return Err(crate::msg!(XmlNestedTooDeep, depth = MAX_XML_DEPTH));
                 }
                 stack.push(start_node(&e, at)?)
             }
@@ -147,15 +166,15 @@ fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, String> {
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(node),
                     None if root.is_none() => root = Some(node),
-                    None => return Err("more than one root element".into()),
+                    None => return Err(crate::msg!(XmlSeveralRoots)),
                 }
             }
             Event::End(_) => {
-                let node = stack.pop().ok_or("unbalanced end tag")?;
+                let node = stack.pop().ok_or_else(|| crate::msg!(XmlUnbalancedEndTag))?;
                 match stack.last_mut() {
                     Some(parent) => parent.children.push(node),
                     None if root.is_none() => root = Some(node),
-                    None => return Err("more than one root element".into()),
+                    None => return Err(crate::msg!(XmlSeveralRoots)),
                 }
             }
             Event::Text(t) => {
@@ -177,10 +196,12 @@ fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, String> {
                     Ok(None) => {
                         let name = r.into_inner().into_owned();
                         quick_xml::escape::resolve_predefined_entity(&name)
-                            .ok_or_else(|| format!("unknown entity &{name};"))?
+                            .ok_or_else(|| crate::msg!(XmlUnknownEntity, name = &name))?
                             .to_string()
                     }
-                    Err(e) => return Err(format!("bad character reference: {e}")),
+                    Err(e) => {
+                        return Err(crate::msg!(XmlBadCharacterReference, error = e.to_string()))
+                    }
                 };
                 if let Some(top) = stack.last_mut() {
                     top.text.push_str(&resolved);
@@ -191,9 +212,9 @@ fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, String> {
         }
     }
     if !stack.is_empty() {
-        return Err("the document ends inside an element (missing end tags)".into());
+        return Err(crate::msg!(XmlEndsInsideElement));
     }
-    root.ok_or_else(|| "the document has no root element".into())
+    root.ok_or_else(|| crate::msg!(XmlNoRoot))
 }
 
 /// Escapes text for element content and attribute values.

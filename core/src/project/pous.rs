@@ -37,7 +37,9 @@ impl PouError {
         use crate::msg;
         match self {
             PouError::Empty => msg!(PouNameEmpty),
-            PouError::Reserved(n, what) => msg!(PouNameReserved, name = n, what = reserved_phrase(what)),
+            PouError::Reserved(n, what) => {
+                msg!(PouNameReserved, name = n, what = reserved_phrase(what))
+            }
             PouError::NotAName(n) => msg!(PouNotAName, name = n),
             PouError::Taken(n) => msg!(PouNameTaken, name = n),
             PouError::NoSuchPou(n) => msg!(PouNoLadder, name = n),
@@ -368,6 +370,16 @@ mod tests {
             PouError::Reserved("END_VAR".into(), "a keyword of ST")
         );
         assert_eq!(q.add_petri_pou("").unwrap_err(), PouError::Empty);
+        // The same reasons in Polish and Czech, the name as typed.
+        let said =
+            |name: &str, lang| p.check_pou_name(name).unwrap_err().said().message.render(lang);
+        use crate::i18n::Lang;
+        assert_eq!(
+            said("TON", Lang::Pl),
+            "TON to nazwa standardowego bloku funkcyjnego: wybierz inną nazwę"
+        );
+        assert_eq!(said("if", Lang::Cs), "if je klíčové slovo ST: zvolte jiný název");
+        assert_eq!(said("main", Lang::Pl), "projekt ma już POU o nazwie main");
     }
 
     #[test]

@@ -46,15 +46,13 @@ pub(crate) async fn import_file(state: AppState, file: web_sys::File) {
             if !state.add_and_open(opened.project) {
                 return; // the banner says it is open but not saved
             }
-            let kind = opened.kind;
+            let kind = crate::import::kind_text(opened.kind);
             let mut text =
-                tf(K::header_imported, &[("project", &pname), ("name", &name), ("kind", &kind)]);
-            if !opened.warnings.is_empty() {
+                tf(K::header_imported, &[("project", &pname), ("name", &name), ("kind", kind)]);
+            if !opened.notes.is_empty() {
+                let notes: Vec<String> = opened.notes.iter().map(|n| n.text()).collect();
                 text.push(' ');
-                text.push_str(&tf(
-                    K::header_import_notes,
-                    &[("notes", &opened.warnings.join("; "))],
-                ));
+                text.push_str(&tf(K::header_import_notes, &[("notes", &notes.join("; "))]));
             }
             state.info(text);
         }

@@ -87,7 +87,7 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
     // Recomputed where shown (cheap: one name against the project's POU names).
     let problem = move || {
         name.with(|n| state.project.with(|p| p.check_pou_name(n).err()))
-            .map(|e| sentence(&e.to_string()))
+            .map(|e| sentence(&crate::i18n::said_text(e.said())))
     };
     let interface = move || {
         exercises.and_then(|ex| {
@@ -124,7 +124,7 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
         };
         if let Err(e) = added {
             // Checked as typed; the project may have changed meanwhile.
-            state.error(tf(K::pou_not_created, &[("error", &e.to_string())]));
+            state.error(tf(K::pou_not_created, &[("error", &crate::i18n::said_text(e.said()))]));
             return;
         }
         let in_exercise = declared.is_some();

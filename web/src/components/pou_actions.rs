@@ -59,7 +59,9 @@ pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
                 state.save();
                 state.check_now();
             }
-            Err(e) => state.error(tf(K::pou_not_renamed, &[("error", &e.to_string())])),
+            Err(e) => {
+                state.error(tf(K::pou_not_renamed, &[("error", &crate::i18n::said_text(e.said()))]))
+            }
         }
     };
     let delete = move |_| {

@@ -233,7 +233,8 @@ pub fn resume(ex: Exercises, state: AppState) {
             state.replace_contents(project);
             state.info(t(K::exercise_lms_resumed));
         }
-        Err(e) => state.error(tf(K::exercise_lms_unreadable, &[("error", &e.to_string())])),
+        Err(e) => state
+            .error(tf(K::exercise_lms_unreadable, &[("error", &crate::i18n::said_text(e.said()))])),
     }
 }
 

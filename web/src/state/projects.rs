@@ -19,7 +19,7 @@ use wasm_bindgen::JsCast;
 
 use super::{AppState, Notice, NoticeAction};
 use crate::download::download;
-use crate::i18n::{t, tf, K};
+use crate::i18n::{said_text, t, tf, K};
 use crate::storage::LocalStorage;
 
 /// How long a project must have been open before its opening counts as finished.
@@ -71,10 +71,10 @@ impl AppState {
         let store = store();
         match store.list() {
             Ok(list) => self.projects.set(list),
-            Err(e) => self.error(e.to_string()),
+            Err(e) => self.error(said_text(e.said())),
         }
         let mut damaged = std::collections::BTreeMap::new();
-        for (id, reason) in store.damaged().unwrap_or_default() {
+        for (id, reason) in store.damaged_said().unwrap_or_default() {
             damaged.insert(id, reason);
         }
         self.damaged.set(damaged);
@@ -110,7 +110,7 @@ impl AppState {
     fn open_most_recent(&self, interrupted: Option<String>) {
         let store = store();
         self.refresh_list();
-        let damage = store.index_damage().ok().flatten();
+        let damage = store.index_damage_said().ok().flatten().map(said_text);
         let damaged = self.damaged.get_untracked();
         let projects = self.projects.get_untracked();
         let first = projects.iter().find(|p| {
@@ -128,7 +128,7 @@ impl AppState {
                 self.error_with(
                     tf(
                         K::state_cannot_open_kept,
-                        &[("name", &skipped.name), ("reason", &reason.to_string())],
+                        &[("name", &skipped.name), ("reason", &said_text(reason.clone()))],
                     ),
                     vec![
                         NoticeAction::DownloadDamaged(skipped.id.clone()),
@@ -158,7 +158,7 @@ impl AppState {
             Ok(project) => project,
             Err(e) => {
                 clear_fragment();
-                self.error(tf(K::state_shared_unusable, &[("error", &e.to_string())]));
+                self.error(tf(K::state_shared_unusable, &[("error", &said_text(e.said()))]));
                 return false;
             }
         };
@@ -172,7 +172,7 @@ impl AppState {
             }
             // Not stored: the link stays in the address bar so that nothing is lost.
             Err(e) => self.error_with(
-                tf(K::state_shared_not_saved, &[("name", &name), ("error", &e.to_string())]),
+                tf(K::state_shared_not_saved, &[("name", &name), ("error", &said_text(e.said()))]),
                 vec![NoticeAction::Export],
             ),
         }
@@ -199,7 +199,10 @@ impl AppState {
             Ok(()) => true,
             Err(e) => {
                 self.error_with(
-                    tf(K::state_open_not_saved, &[("name", &name), ("error", &e.to_string())]),
+                    tf(
+                        K::state_open_not_saved,
+                        &[("name", &name), ("error", &said_text(e.said()))],
+                    ),
                     vec![NoticeAction::Export],
                 );
                 false
@@ -243,7 +246,10 @@ impl AppState {
             Err(StoreError::Damaged(e)) => {
                 let name = self.name_of(id);
                 self.error_with(
-                    tf(K::state_cannot_open_kept, &[("name", &name), ("reason", &e.to_string())]),
+                    tf(
+                        K::state_cannot_open_kept,
+                        &[("name", &name), ("reason", &said_text(e.said()))],
+                    ),
                     vec![
                         NoticeAction::DownloadDamaged(id.to_string()),
                         NoticeAction::DeleteDamaged(id.to_string()),
@@ -252,7 +258,7 @@ impl AppState {
                 // The list still shows the project that is open.
                 self.project_id.update(|_| {});
             }
-            Err(e) => self.error(e.to_string()),
+            Err(e) => self.error(said_text(e.said())),
         }
     }
 
@@ -275,7 +281,7 @@ impl AppState {
                     self.info(tf(K::state_saved_now, &[("name", &project.name)]));
                 }
                 Err(e) => self.error_with(
-                    tf(K::state_not_saved, &[("error", &e.to_string())]),
+                    tf(K::state_not_saved, &[("error", &said_text(e.said()))]),
                     vec![NoticeAction::Export],
                 ),
             }
@@ -289,7 +295,7 @@ impl AppState {
             }
             Err(StoreError::Conflict { stored, .. }) => self.show_conflict(stored.is_some()),
             Err(e) => self.error_with(
-                tf(K::state_not_saved, &[("error", &e.to_string())]),
+                tf(K::state_not_saved, &[("error", &said_text(e.said()))]),
                 vec![NoticeAction::Export],
             ),
         }
@@ -367,7 +373,7 @@ impl AppState {
                         self.project_rev.set_value(rev);
                         self.save();
                     }
-                    Err(e) => self.error(e.to_string()),
+                    Err(e) => self.error(said_text(e.said())),
                 }
             }
             NoticeAction::SaveAsNew => {
@@ -385,7 +391,7 @@ impl AppState {
                         self.error(e);
                     }
                 }
-                Err(e) => self.error(e.to_string()),
+                Err(e) => self.error(said_text(e.said())),
             },
             NoticeAction::DeleteDamaged(id) => {
                 let name = self.name_of(id);
@@ -394,7 +400,7 @@ impl AppState {
                         self.refresh_list();
                         self.info(tf(K::state_deleted_damaged, &[("name", &name)]));
                     }
-                    Err(e) => self.error(e.to_string()),
+                    Err(e) => self.error(said_text(e.said())),
                 }
             }
             NoticeAction::OpenShared(fragment) => {
@@ -435,7 +441,7 @@ impl AppState {
     pub fn delete_current(&self) {
         if let Some(id) = self.project_id.get_untracked() {
             if let Err(e) = store().delete(&id) {
-                self.error(e.to_string());
+                self.error(said_text(e.said()));
                 return;
             }
         }

@@ -2,26 +2,41 @@
 //! PNML, in a chunk of the app (`split_import_worker.wasm`) that only the import worker
 //! loads (it runs the page's module, so the engine is not downloaded twice). It answers
 //! each message `[file stem, text]` with a JSON string
-//! `{"project": <project file>, "kind": "PLCopen XML" | "PNML" | …, "warnings": [...]}` or
-//! `{"error": "..."}`; the exports `["export-plcopen", "", project file]` and
+//! `{"project": <project file>, "kind": "PLCopen XML" | "PNML" | …, "warnings": [...],
+//! "notes": [...]}` (`warnings` in English, `notes` as data: [`Note`]) or
+//! `{"error": "...", "error_sentence": ...}` (the error in English and as data); the exports `["export-plcopen", "", project file]` and
 //! `["export-pnml", POU name, project file]` are answered with `{"xml": ...}`.
 
+use plc_core::exercise::Sentence;
 use plc_core::open::open_text;
 use plc_core::project::Project;
 use wasm_bindgen::JsValue;
+
+use crate::import::Note;
+
+/// An error's reply: its English text, and the error as data when it is (the page shows it
+/// in its language).
+fn error_json(english: String, said: Option<plc_core::diagnostics::Said>) -> serde_json::Value {
+    match said.map(Sentence::from) {
+        Some(sentence) => serde_json::json!({ "error": english, "error_sentence": sentence }),
+        None => serde_json::json!({ "error": english }),
+    }
+}
 
 /// The reply to one request.
 fn reply(stem: &str, text: &str) -> String {
     let value = match open_text(stem, text) {
         Ok(opened) => {
             let kind = opened.kind.description();
+            let notes: Vec<Note> = opened.warnings.iter().map(Note::from).collect();
             serde_json::json!({
                 "project": opened.project.to_file(),
                 "kind": kind,
                 "warnings": opened.warnings.iter().map(ToString::to_string).collect::<Vec<_>>(),
+                "notes": notes,
             })
         }
-        Err(e) => serde_json::json!({ "error": e.to_string() }),
+        Err(e) => error_json(e.to_string(), Some(e.said())),
     };
     value.to_string()
 }
@@ -43,7 +58,7 @@ fn export_reply(what: &str, pou: &str, project_file: &str) -> String {
             }
         }
         Ok(project) => serde_json::json!({ "xml": plc_core::plcopen::export(&project) }),
-        Err(e) => serde_json::json!({ "error": e.to_string() }),
+        Err(e) => error_json(e.to_string(), Some(e.said())),
     };
     value.to_string()
 }

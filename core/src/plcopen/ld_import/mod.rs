@@ -19,6 +19,7 @@ use std::collections::{BTreeMap, HashMap};
 use super::union_find::UnionFind;
 use super::xml::Node;
 use super::{ImportError, ImportNote};
+use crate::diagnostics::Said;
 use crate::ladder::catalog::Catalog;
 use crate::ladder::{Element, Rung, DEFAULT_COLUMNS, DEFAULT_ROWS};
 use layout::{Grid, Parts, PinJob, Sp};
@@ -81,7 +82,7 @@ pub(crate) fn import_ld(
                 return Err(ImportError::Element {
                     pou: pou.into(),
                     local_id: e.id.clone(),
-                    message: format!("pin {p} is negated or edge-triggered"),
+                    message: crate::msg!(PlcopenPinModified, pin = p),
                 });
             }
         }
@@ -95,13 +96,13 @@ pub(crate) fn import_ld(
             return Err(ImportError::Element {
                 pou: pou.into(),
                 local_id: e.id.clone(),
-                message: "duplicate localId".into(),
+                message: crate::msg!(PlcopenDuplicateLocalId),
             });
         }
     }
     let mut ctx = pins::Ctx { pou, catalog, scope: catalog.scope(declarations) };
     let sorted = pins::sort_pins(&mut els, &mut index, &mut ctx, warnings)?;
-    let err = |id: &str, message: String| ImportError::Element {
+    let err = |id: &str, message: Said| ImportError::Element {
         pou: pou.to_string(),
         local_id: id.to_string(),
         message,
@@ -158,7 +159,7 @@ pub(crate) fn import_ld(
                 if ca >= cb {
                     return Err(err(
                         &els[b].id,
-                        format!("this block reads an output of block localId {} by a data wire, but the grid would run it first", els[a].id),
+                        crate::msg!(PlcopenDataWireRunsFirst, source = &els[a].id),
                     ));
                 }
             }
@@ -167,20 +168,25 @@ pub(crate) fn import_ld(
     }
     for (r, rung) in rungs.iter().enumerate() {
         if rung.rows() > DEFAULT_ROWS as usize || rung.columns() > DEFAULT_COLUMNS as usize {
-            warnings.push(ImportNote::on(ld, format!(
-                "POU {pou}: rung {} needs {}×{} cells, more than the default {DEFAULT_ROWS}×{DEFAULT_COLUMNS} grid",
-                r + 1,
-                rung.rows(),
-                rung.columns()
-            )));
+            warnings.push(ImportNote::on(
+                ld,
+                crate::msg!(
+                    PlcopenRungTooLarge,
+                    pou = pou,
+                    rung = r + 1,
+                    rows = rung.rows(),
+                    columns = rung.columns(),
+                    default_rows = DEFAULT_ROWS,
+                    default_columns = DEFAULT_COLUMNS
+                ),
+            ));
         }
     }
     // Comments and labels go to the first rung below them.
     for e in &els {
         let ((Kind::Comment(text), y) | (Kind::Label(text), y)) = (&e.kind, e.y) else { continue };
         if rungs.is_empty() {
-            let message =
-                format!("POU {pou}: comment or label localId {} has no rung; dropped", e.id);
+            let message = crate::msg!(PlcopenCommentNoRung, pou = pou, id = &e.id);
             warnings.push(ImportNote::at(e.at.0, e.at.1, message));
             continue;
         }
@@ -206,7 +212,7 @@ fn build_graph(
     pou: &str,
     warnings: &mut Vec<ImportNote>,
 ) -> Result<Graph, ImportError> {
-    let err = |id: &str, message: String| ImportError::Element {
+    let err = |id: &str, message: Said| ImportError::Element {
         pou: pou.to_string(),
         local_id: id.to_string(),
         message,
@@ -231,33 +237,31 @@ fn build_graph(
         }
     }
     let source = |c: &Conn, at: &str| -> Result<Option<usize>, ImportError> {
-        let s = *index.get(&c.from).ok_or_else(|| {
-            err(at, format!("connection refers to localId {}, which does not exist", c.from))
-        })?;
+        let s = *index
+            .get(&c.from)
+            .ok_or_else(|| err(at, crate::msg!(PlcopenMissingLocalId, id = &c.from)))?;
         match &els[s].kind {
             Kind::LeftRail => Ok(None),
             Kind::Leaf(_) => Ok(Some(s)),
             Kind::Block(_) => {
-                let el =
-                    blocks.get(&s).ok_or_else(|| err(at, "a block that was not read".into()))?;
+                let el = blocks.get(&s).ok_or_else(|| err(at, crate::msg!(PlcopenBlockNotRead)))?;
                 if let Some(p) = &c.param {
                     let out = el.block.power_output();
                     if !p.eq_ignore_ascii_case(out) {
                         return Err(err(
                             at,
-                            format!("power input wired to output {p} of block localId {}, which is not the output that carries its power ({out})", els[s].id),
+                            crate::msg!(
+                                PlcopenPowerFromOtherOutput,
+                                pin = p,
+                                id = &els[s].id,
+                                output = out
+                            ),
                         ));
                     }
                 }
                 Ok(Some(s))
             }
-            _ => Err(err(
-                at,
-                format!(
-                    "power input wired to localId {}, which is not a rail, contact, coil or block",
-                    els[s].id
-                ),
-            )),
+            _ => Err(err(at, crate::msg!(PlcopenPowerFromNonPower, id = &els[s].id))),
         }
     };
     for i in 0..n {
@@ -317,10 +321,7 @@ fn build_graph(
                 warnings.push(ImportNote::at(
                     els[i].at.0,
                     els[i].at.1,
-                    format!(
-                        "POU {pou}: element localId {} is not connected to the left rail; skipped",
-                        els[i].id
-                    ),
+                    crate::msg!(PlcopenNotConnectedToLeftRail, pou = pou, id = &els[i].id),
                 ));
                 changed = true;
                 continue;
@@ -332,7 +333,7 @@ fn build_graph(
                     warnings.push(ImportNote::at(
                         els[i].at.0,
                         els[i].at.1,
-                        format!("POU {pou}: contact localId {} leads nowhere; skipped", els[i].id),
+                        crate::msg!(PlcopenContactLeadsNowhere, pou = pou, id = &els[i].id),
                     ));
                     changed = true;
                     continue;
@@ -388,8 +389,8 @@ fn layout_network(
     g: &Graph,
     edges: &[usize],
     parts: &Parts<'_>,
-) -> Result<(Rung, Positions), (usize, String)> {
-    let not_sp = "the network is not series-parallel, so it cannot be laid out on the rung grid";
+) -> Result<(Rung, Positions), (usize, Said)> {
+    let not_sp = || crate::msg!(PlcopenNotSeriesParallel);
     // The cone of the coils.
     let mut reach = vec![g.t];
     loop {
@@ -407,13 +408,12 @@ fn layout_network(
         edges.iter().copied().filter(|&i| reach.contains(&g.out_node[i])).collect();
     let first = edges.first().copied().unwrap_or(0);
     if main.is_empty() {
-        return Err((first, "nothing in this network reaches a coil or the right rail".into()));
+        return Err((first, crate::msg!(PlcopenNothingReachesCoil)));
     }
     let work: Vec<(usize, usize, Sp)> =
         main.iter().map(|&i| (g.in_node[i], g.out_node[i], Sp::Leaf(i))).collect();
-    let tree = layout::reduce(work, g.s, g.t, parts)
-        .map_err(|b| (b.unwrap_or(first), not_sp.to_string()))?;
-    let mut grid = layout::main_grid(tree, parts).map_err(|()| (first, not_sp.to_string()))?;
+    let tree = layout::reduce(work, g.s, g.t, parts).map_err(|b| (b.unwrap_or(first), not_sp()))?;
+    let mut grid = layout::main_grid(tree, parts).map_err(|()| (first, not_sp()))?;
     // Wired inputs, block by block as they are placed.
     let mut done: Vec<(usize, usize)> = Vec::new();
     loop {
@@ -428,7 +428,7 @@ fn layout_network(
         done.push(key);
     }
     if let Some(&missing) = edges.iter().find(|i| !grid.pos.contains_key(i)) {
-        return Err((missing, "this element could not be placed on the rung grid".into()));
+        return Err((missing, crate::msg!(PlcopenElementNotPlaced)));
     }
     let rung = layout::into_rung(grid.clone());
     let mut expects = Vec::new();
@@ -445,9 +445,8 @@ fn layout_network(
             blame: b,
         });
     }
-    verify::check(&rung, &grid.pos, &expects).map_err(|i| {
-        (i, "this element's wiring crosses another connection, so it cannot be laid out on the rung grid".to_string())
-    })?;
+    verify::check(&rung, &grid.pos, &expects)
+        .map_err(|i| (i, crate::msg!(PlcopenWiringCrosses)))?;
     Ok((rung, grid.pos))
 }
 
@@ -468,7 +467,7 @@ fn wire_input(
     grid: &mut Grid,
     (b, k): (usize, usize),
     done: &[(usize, usize)],
-) -> Result<(), (usize, String)> {
+) -> Result<(), (usize, Said)> {
     let pin = g.pin_node[&(b, k)];
     let placed = |i: usize| grid.pos.contains_key(&i);
     // The input's own cone: unplaced edges reaching the pin node; taps where it meets the
@@ -503,10 +502,8 @@ fn wire_input(
             work.push((v, u, Sp::Tap(u)));
         }
     }
-    let not_sp =
-        "the network wired to this block's input is not series-parallel, so it cannot be laid out";
-    let tree =
-        layout::reduce(work, v, pin, parts).map_err(|x| (x.unwrap_or(b), not_sp.to_string()))?;
+    let tree = layout::reduce(work, v, pin, parts)
+        .map_err(|x| (x.unwrap_or(b), crate::msg!(PlcopenInputNotSeriesParallel)))?;
     let (rb, cb) = grid.pos[&b];
     let mut pins: Vec<(usize, usize)> = done
         .iter()
@@ -525,7 +522,7 @@ fn wire_input(
             return Ok(());
         }
     }
-    Err((b, "the network wired to this block's input does not fit below the block without crossing other connections".into()))
+    Err((b, crate::msg!(PlcopenInputDoesNotFit)))
 }
 
 /// Places a wired input's tree with its top row on `top` and grows the block to that row.

@@ -10,6 +10,7 @@ use std::collections::HashMap;
 
 use super::super::{ImportError, ImportNote};
 use super::read::{Conn, El, Kind, RawBlock};
+use crate::diagnostics::Said;
 use crate::ladder::catalog::{BlockKind, Catalog, Scope, TypeKey};
 use crate::ladder::{is_comparison, standard_fb_power, Block, CoilKind, ContactKind, Element, Pin};
 
@@ -41,7 +42,7 @@ pub(super) struct Ctx<'a> {
     pub scope: Scope,
 }
 
-fn err(pou: &str, id: &str, message: String) -> ImportError {
+fn err(pou: &str, id: &str, message: Said) -> ImportError {
     ImportError::Element { pou: pou.to_string(), local_id: id.to_string(), message }
 }
 
@@ -89,7 +90,7 @@ fn power_output(
         [a, b, ..] => Err(err(
             pou,
             id,
-            format!("two outputs ({a} and {b}) of this {} carry power to contacts or coils; only one output per block can", raw.type_name),
+            crate::msg!(PlcopenTwoPowerOutputs, first = a, second = b, ty = &raw.type_name),
         )),
     }
 }
@@ -135,14 +136,13 @@ pub(super) fn sort_pins(
     warnings: &mut Vec<ImportNote>,
 ) -> Result<Pins, ImportError> {
     let pou = ctx.pou;
-    let lookup = |index: &HashMap<String, usize>,
-                  c: &Conn,
-                  at: &str|
-     -> Result<usize, ImportError> {
-        index.get(&c.from).copied().ok_or_else(|| {
-            err(pou, at, format!("connection refers to localId {}, which does not exist", c.from))
-        })
-    };
+    let lookup =
+        |index: &HashMap<String, usize>, c: &Conn, at: &str| -> Result<usize, ImportError> {
+            index
+                .get(&c.from)
+                .copied()
+                .ok_or_else(|| err(pou, at, crate::msg!(PlcopenMissingLocalId, id = &c.from)))
+        };
     // Every wire must name an existing element.
     for e in els.iter() {
         let mut all: Vec<&Conn> = e.conns.iter().collect();
@@ -205,25 +205,27 @@ pub(super) fn sort_pins(
                         _ => None,
                     }
                 });
-                let rail_id =
-                    match rail {
-                        Some(r) => els[r].id.clone(),
-                        None => return Err(err(
-                            pou,
-                            &id,
-                            "this block is not wired to any power and the body has no left rail"
-                                .into(),
-                        )),
-                    };
+                let rail_id = match rail {
+                    Some(r) => els[r].id.clone(),
+                    None => return Err(err(pou, &id, crate::msg!(PlcopenBlockNoPower))),
+                };
                 let rail_conn = Conn { from: rail_id, param: None };
                 match var {
                     Some((k, expr)) => {
                         power_pin = raw.inputs[k].0.clone();
                         let cid = format!("{id}.{power_pin}");
                         let at = els[i].at;
-                        warnings.push(ImportNote::at(at.0, at.1, format!(
-                            "POU {pou}: input {power_pin} of block localId {id} reads the variable {expr}; it became a contact {expr} before the block"
-                        )));
+                        warnings.push(ImportNote::at(
+                            at.0,
+                            at.1,
+                            crate::msg!(
+                                PlcopenInputBecameContact,
+                                pou = pou,
+                                pin = &power_pin,
+                                id = &id,
+                                variable = &expr
+                            ),
+                        ));
                         els.push(El {
                             id: cid.clone(),
                             at,
@@ -241,10 +243,16 @@ pub(super) fn sort_pins(
                     }
                     None => {
                         let at = els[i].at;
-                        warnings.push(ImportNote::at(at.0, at.1, format!(
-                            "POU {pou}: block localId {id} ({}) has no power input wired; it was tied to the left rail so it runs on every scan",
-                            raw.type_name
-                        )));
+                        warnings.push(ImportNote::at(
+                            at.0,
+                            at.1,
+                            crate::msg!(
+                                PlcopenBlockTiedToRail,
+                                pou = pou,
+                                id = &id,
+                                ty = &raw.type_name
+                            ),
+                        ));
                         power = vec![rail_conn];
                     }
                 }
@@ -260,7 +268,7 @@ pub(super) fn sort_pins(
                 continue;
             }
             if pin.eq_ignore_ascii_case("EN") {
-                return Err(err(pou, &id, "EN is wired, but not to power".into()));
+                return Err(err(pou, &id, crate::msg!(PlcopenEnNotPower)));
             }
             let srcs: Vec<usize> =
                 conns.iter().map(|c| lookup(index, c, &id)).collect::<Result<_, _>>()?;
@@ -284,11 +292,7 @@ pub(super) fn sort_pins(
                 block.inputs.push(Pin::wired(pin, 0));
                 continue;
             }
-            return Err(err(
-                pou,
-                &id,
-                format!("input {pin} mixes variables, data and power wires; give it one source"),
-            ));
+            return Err(err(pou, &id, crate::msg!(PlcopenInputMixesSources, pin = pin)));
         }
         for (pin, conns) in &raw.in_outs {
             let srcs: Vec<usize> =
@@ -301,17 +305,11 @@ pub(super) fn sort_pins(
                         return Err(err(
                             pou,
                             &id,
-                            format!("in-out {pin} must be wired to a variable"),
+                            crate::msg!(PlcopenInOutNeedsVariable, pin = pin),
                         ))
                     }
                 },
-                _ => {
-                    return Err(err(
-                        pou,
-                        &id,
-                        format!("in-out {pin} has several wires; a VAR_IN_OUT takes one variable"),
-                    ))
-                }
+                _ => return Err(err(pou, &id, crate::msg!(PlcopenInOutSeveralWires, pin = pin))),
             }
         }
         let probe = Block { power_out: None, ..block.clone() };
@@ -361,17 +359,21 @@ fn bind_out_variables(
                 warnings.push(ImportNote::at(
                     at.0,
                     at.1,
-                    format!(
-                        "POU {pou}: outVariable localId {id} ({expr}) is not connected; skipped"
+                    crate::msg!(
+                        PlcopenOutVariableNotConnected,
+                        pou = pou,
+                        id = &id,
+                        variable = &expr
                     ),
                 ));
                 continue;
             }
-            return Err(err(pou, &id, "an outVariable with several connections".into()));
+            return Err(err(pou, &id, crate::msg!(PlcopenOutVariableSeveral)));
         };
-        let s = index.get(&c.from).copied().ok_or_else(|| {
-            err(pou, &id, format!("connection refers to localId {}, which does not exist", c.from))
-        })?;
+        let s = index
+            .get(&c.from)
+            .copied()
+            .ok_or_else(|| err(pou, &id, crate::msg!(PlcopenMissingLocalId, id = &c.from)))?;
         if let Some(b) = pins.blocks.get_mut(&s) {
             let pin =
                 c.param.clone().or_else(|| outs.get(&s).cloned()).unwrap_or_else(|| "OUT".into());
@@ -386,18 +388,22 @@ fn bind_out_variables(
                 let passed = conns.first().and_then(|c| index.get(&c.from)).map(|&v| &els[v].kind);
                 if !matches!(passed, Some(Kind::InVar(e)) if e.eq_ignore_ascii_case(&expr)) {
                     let at = els[i].at;
-                    warnings.push(ImportNote::at(at.0, at.1, format!(
-                        "POU {pou}: outVariable localId {id} ({expr}) is wired to in-out {pin}, which passes another variable; skipped"
-                    )));
+                    warnings.push(ImportNote::at(
+                        at.0,
+                        at.1,
+                        crate::msg!(
+                            PlcopenOutVariableOtherInOut,
+                            pou = pou,
+                            id = &id,
+                            variable = &expr,
+                            pin = &pin
+                        ),
+                    ));
                 }
                 continue;
             }
             if pin.eq_ignore_ascii_case("ENO") {
-                return Err(err(
-                    pou,
-                    &id,
-                    "an outVariable on ENO: put a coil there instead".into(),
-                ));
+                return Err(err(pou, &id, crate::msg!(PlcopenOutVariableOnEno)));
             }
             if !b
                 .block
@@ -412,17 +418,23 @@ fn bind_out_variables(
         match &els[s].kind {
             Kind::LeftRail | Kind::Leaf(_) => {
                 let at = els[i].at;
-                warnings.push(ImportNote::at(at.0, at.1, format!("POU {pou}: outVariable localId {id} ({expr}) is fed by power; it became a coil")));
+                warnings.push(ImportNote::at(
+                    at.0,
+                    at.1,
+                    crate::msg!(
+                        PlcopenOutVariableBecameCoil,
+                        pou = pou,
+                        id = &id,
+                        variable = &expr
+                    ),
+                ));
                 els[i].kind = Kind::Leaf(Element::Coil { kind: CoilKind::Normal, operand: expr });
             }
             _ => {
                 return Err(err(
                     pou,
                     &id,
-                    format!(
-                        "outVariable {expr} is wired to localId {}, which is not a block output",
-                        c.from
-                    ),
+                    crate::msg!(PlcopenOutVariableNotBlockOutput, variable = &expr, id = &c.from),
                 ))
             }
         }
@@ -453,10 +465,7 @@ fn data_operand(
         err(
             ctx.pou,
             &els[s].id,
-            format!(
-                "the type of output {pin} of this {} cannot be told from its inputs, so the data wire from it has no variable; put a variable on the wire",
-                raw.type_name
-            ),
+            crate::msg!(PlcopenOutputTypeUnknown, pin = &pin, ty = &raw.type_name),
         )
     })?;
     let base: String = format!("{}_{}_{}", raw.type_name, els[s].id, pin)

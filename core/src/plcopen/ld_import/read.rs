@@ -4,6 +4,7 @@
 
 use super::super::xml::Node;
 use super::super::{ImportError, ImportNote};
+use crate::diagnostics::Said;
 use crate::ladder::{CoilKind, ContactKind};
 pub(crate) use crate::network::logical::{Conn, El, Kind, RawBlock};
 use crate::network::model::{
@@ -80,14 +81,14 @@ fn block_pins(
     n: &Node,
     type_name: &str,
     section: &str,
-    err: &dyn Fn(String) -> ImportError,
+    err: &dyn Fn(Said) -> ImportError,
 ) -> Result<Vec<Pin>, ImportError> {
     let mut out = Vec::new();
     let Some(sec) = n.child(section) else { return Ok(out) };
     for v in sec.children_named("variable") {
         let name = v.attr("formalParameter").unwrap_or("").trim().to_string();
         if name.is_empty() {
-            return Err(err(format!("a block pin in <{section}> without formalParameter")));
+            return Err(err(crate::msg!(PlcopenPinWithoutFormalParameter, section = section)));
         }
         let edge = v.attr("edge").unwrap_or("none");
         let redundant = edge_is_redundant(type_name, &name, edge);
@@ -117,7 +118,7 @@ pub(crate) fn read_network(
     let mut notes = Vec::new();
     for n in &body.children {
         let id = n.attr("localId").unwrap_or("").trim().to_string();
-        let err = |message: String| ImportError::Element {
+        let err = |message: Said| ImportError::Element {
             pou: pou.to_string(),
             local_id: if id.is_empty() { "?".into() } else { id.clone() },
             message,
@@ -130,7 +131,7 @@ pub(crate) fn read_network(
             "contact" => {
                 let operand = text_of(n, "variable");
                 if operand.is_empty() {
-                    return Err(err("a contact without a variable".into()));
+                    return Err(err(crate::msg!(PlcopenContactWithoutVariable)));
                 }
                 let contact = match (n.attr("edge"), n.attr("negated") == Some("true")) {
                     (Some("rising"), _) => ContactKind::Rising,
@@ -143,7 +144,7 @@ pub(crate) fn read_network(
             "coil" => {
                 let operand = text_of(n, "variable");
                 if operand.is_empty() {
-                    return Err(err("a coil without a variable".into()));
+                    return Err(err(crate::msg!(PlcopenCoilWithoutVariable)));
                 }
                 let coil = match (n.attr("storage"), n.attr("edge"), n.attr("negated")) {
                     (Some("set"), _, _) => CoilKind::Set,
@@ -158,7 +159,7 @@ pub(crate) fn read_network(
             "block" => {
                 let type_name = n.attr("typeName").unwrap_or("").trim().to_string();
                 if type_name.is_empty() {
-                    return Err(err("a block without typeName".into()));
+                    return Err(err(crate::msg!(PlcopenBlockWithoutTypeName)));
                 }
                 let instance = n
                     .attr("instanceName")
@@ -184,7 +185,7 @@ pub(crate) fn read_network(
             "connector" | "continuation" => {
                 let name = n.attr("name").unwrap_or("").trim().to_string();
                 if name.is_empty() {
-                    return Err(err(format!("a <{}> without a name", n.name)));
+                    return Err(err(crate::msg!(PlcopenElementWithoutName, element = &n.name)));
                 }
                 if n.name == "connector" {
                     NetKind::Connector { name }
@@ -197,18 +198,17 @@ pub(crate) fn read_network(
                 chart_element(n, &mut inputs, &mut outputs, &mut notes, pou).map_err(err)?
             }
             other => {
-                let id = if id.is_empty() { String::new() } else { format!(" localId {id}") };
-                notes.push(ImportNote::on(
-                    n,
-                    format!(
-                        "POU {pou}: <{other}>{id} is not an element the trainer runs; left out"
-                    ),
-                ));
+                let said = if id.is_empty() {
+                    crate::msg!(PlcopenNotRunLeftOutNoId, pou = pou, element = other)
+                } else {
+                    crate::msg!(PlcopenNotRunLeftOut, pou = pou, element = other, id = &id)
+                };
+                notes.push(ImportNote::on(n, said));
                 continue;
             }
         };
         if id.is_empty() && !matches!(kind, NetKind::Comment { .. }) {
-            return Err(err(format!("<{}> without localId", n.name)));
+            return Err(err(crate::msg!(PlcopenElementWithoutLocalId, element = &n.name)));
         }
         let position = n.child("position");
         els.push(NetElement {
@@ -248,15 +248,16 @@ fn chart_element(
     outputs: &mut Vec<Pin>,
     notes: &mut Vec<ImportNote>,
     pou: &str,
-) -> Result<NetKind, String> {
+) -> Result<NetKind, Said> {
     let pin = |name: &str, p: &Node, wires: Vec<Wire>| {
         let (dx, dy) = rel(p);
         Pin { name: name.into(), dx, dy, wires, modifier: None, in_out: false }
     };
-    let named = |attr: &str, what: &str| {
+    // The attribute `attr`, or `missing` when it is absent or blank.
+    let named = |attr: &str, missing: fn() -> Said| {
         let v = n.attr(attr).map(str::trim).unwrap_or("");
         if v.is_empty() {
-            Err(format!("{what} without a {attr}"))
+            Err(missing())
         } else {
             Ok(v.to_string())
         }
@@ -267,30 +268,31 @@ fn chart_element(
                 outputs.push(pin("action", p, Vec::new()));
             }
             NetKind::Step {
-                name: named("name", "a step")?,
+                name: named("name", || crate::msg!(PlcopenStepWithoutName))?,
                 initial: n.attr("initialStep") == Some("true"),
             }
         }
-        "macroStep" => return Err("macro steps are not supported yet".into()),
+        "macroStep" => return Err(crate::msg!(PlcopenMacroStepsNotSupported)),
         "transition" => {
-            let c = n.child("condition").ok_or("a transition without <condition>")?;
+            let c = n
+                .child("condition")
+                .ok_or_else(|| crate::msg!(PlcopenTransitionWithoutCondition))?;
             let condition = if let Some(p) = c.child("connectionPointIn") {
                 inputs.push(pin("condition", p, wires_of(p)));
                 SfcCondition::Wired
             } else if let Some(inline) = c.child("inline") {
-                let st = inline
-                    .child("ST")
-                    .ok_or("an inline condition not written in ST (not supported yet)")?;
+                let st =
+                    inline.child("ST").ok_or_else(|| crate::msg!(PlcopenInlineConditionNotSt))?;
                 SfcCondition::Inline { st: st.deep_text().replace("\r\n", "\n").trim().to_string() }
             } else if let Some(r) = c.child("reference") {
                 SfcCondition::Reference { name: r.attr("name").unwrap_or("").trim().to_string() }
             } else {
-                return Err("a condition with neither a wire, inline ST nor a reference".into());
+                return Err(crate::msg!(PlcopenConditionWithoutSource));
             };
             let priority = match n.attr("priority").map(str::trim).filter(|p| !p.is_empty()) {
-                Some(p) => {
-                    Some(p.parse().map_err(|_| format!("priority {p:?} is not a whole number"))?)
-                }
+                Some(p) => Some(p.parse().map_err(|_| {
+                    crate::msg!(PlcopenPriorityNotWholeNumber, priority = format!("{p:?}"))
+                })?),
                 None => None,
             };
             NetKind::Transition { condition, negated: c.attr("negated") == Some("true"), priority }
@@ -299,21 +301,23 @@ fn chart_element(
         "selectionConvergence" => NetKind::SelectionConvergence,
         "simultaneousDivergence" => NetKind::SimultaneousDivergence,
         "simultaneousConvergence" => NetKind::SimultaneousConvergence,
-        "jumpStep" => NetKind::JumpStep { target: named("targetName", "a jump")? },
+        "jumpStep" => NetKind::JumpStep {
+            target: named("targetName", || crate::msg!(PlcopenJumpWithoutTarget))?,
+        },
         _ => {
             let mut actions = Vec::new();
             for a in n.children_named("action") {
                 let action = if let Some(r) = a.child("reference") {
                     let name = r.attr("name").unwrap_or("").trim().to_string();
                     if name.is_empty() {
-                        return Err("an action with neither a name nor a body".into());
+                        return Err(crate::msg!(PlcopenActionWithoutNameOrBody));
                     }
                     SfcActionBody::Reference { name }
                 } else if let Some(body) = a.child("inline") {
                     let st = body_st(body, pou, notes)?;
                     SfcActionBody::Inline { st }
                 } else {
-                    return Err("an action with neither a name nor a body".into());
+                    return Err(crate::msg!(PlcopenActionWithoutNameOrBody));
                 };
                 let text = |attr: &str| {
                     a.attr(attr).map(str::trim).filter(|d| !d.is_empty()).map(str::to_string)
@@ -331,26 +335,22 @@ fn chart_element(
 }
 
 /// The ST of an action or transition `<body>` (or an `<inline>` block), FBD lowered.
-pub(crate) fn body_st(
-    body: &Node,
-    pou: &str,
-    notes: &mut Vec<ImportNote>,
-) -> Result<String, String> {
+pub(crate) fn body_st(body: &Node, pou: &str, notes: &mut Vec<ImportNote>) -> Result<String, Said> {
     if let Some(st) = body.child("ST") {
         return Ok(st.deep_text().replace("\r\n", "\n"));
     }
     if let Some(fbd) = body.child("FBD") {
-        let (els, left_out) = read_elements(fbd, pou).map_err(|e| e.to_string())?;
-        let lowered = crate::network::lower(&els, pou).map_err(|e| e.to_string())?;
-        notes.push(ImportNote::on(
-            fbd,
-            format!("POU {pou}: an FBD action body is kept as the ST it runs as"),
-        ));
+        let (els, left_out) = read_elements(fbd, pou).map_err(|e| e.said())?;
+        let lowered = crate::network::lower(&els, pou)
+            .map_err(|e| crate::msg!(NetElementSays, element = &e.element, message = e.said()))?;
+        notes.push(ImportNote::on(fbd, crate::msg!(PlcopenFbdActionAsSt, pou = pou)));
         notes.extend(left_out);
         return Ok(lowered.statements.into_iter().map(|(s, _)| s).collect());
     }
-    let lang = body.children.first().map_or("empty", |c| c.name.as_str());
-    Err(format!("an action body in {lang} (not supported yet)"))
+    Err(match body.children.first() {
+        Some(lang) => crate::msg!(PlcopenActionBodyLanguage, language = &lang.name),
+        None => crate::msg!(PlcopenActionBodyEmpty),
+    })
 }
 
 /// Reads the elements of an LD or FBD body, with connectors and continuations resolved,
@@ -362,8 +362,8 @@ pub(crate) fn read_elements(
     let (network, notes) = read_network(body, pou)?;
     let els = crate::network::logical(&network).map_err(|e| ImportError::Element {
         pou: pou.to_string(),
+        message: e.said(),
         local_id: e.element,
-        message: e.message,
     })?;
     Ok((els, notes))
 }
