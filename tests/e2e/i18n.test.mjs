@@ -152,6 +152,10 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
 
     // The ladder editor.
     await page.getByRole('button', { name: L(lang, 'New ladder POU') }).click();
+    // A reserved name is refused, and the dialog says why in the language shown.
+    await page.getByRole('textbox', { name: L(lang, 'POU name') }).fill('TON');
+    await page.locator('.field-error', { hasText: 'TON' }).waitFor();
+    assert.deepEqual(await englishLeft(page, lang, PROGRAM_NAMES, comments), [], 'the New POU dialog');
     await page.getByRole('textbox', { name: L(lang, 'POU name') }).fill('Latch');
     await page.getByRole('button', { name: L(lang, 'Create') }).click();
     const ladder = page.getByRole('region', { name: new RegExp(`Latch$`) }).first();

@@ -27,6 +27,8 @@ mod tasks;
 mod union_find;
 mod xml;
 
+pub(crate) use xml::reader_said;
+
 use crate::diagnostics::Said;
 use crate::project::Project;
 use std::fmt;

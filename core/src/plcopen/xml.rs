@@ -152,8 +152,7 @@ fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, Said> {
     loop {
         let pos = reader.buffer_position();
         let at = cursor.advance(usize::try_from(pos).unwrap_or(usize::MAX));
-        // quick-xml's own words (English in every language).
-        let event = reader.read_event().map_err(|e| Said::from(e.to_string()))?;
+        let event = reader.read_event().map_err(|e| reader_said(&e))?;
         match event {
             Event::Start(e) => {
                 if stack.len() >= MAX_XML_DEPTH {
@@ -220,4 +219,83 @@ fn parse_at(xml: &str, cursor: &mut Cursor<'_>) -> Result<Node, Said> {
 /// Escapes text for element content and attribute values.
 pub(crate) fn esc(s: &str) -> String {
     quick_xml::escape::escape(s).into_owned()
+}
+
+/// quick-xml's error as a message: its words (English `Display`, kept exactly) in the
+/// language asked for the errors a hand-edited file meets; any other stays quick-xml's text.
+pub(crate) fn reader_said(e: &quick_xml::Error) -> Said {
+    use crate::msg;
+    use quick_xml::errors::{IllFormedError as I, SyntaxError as S};
+    match e {
+        quick_xml::Error::Syntax(s) => {
+            let what = match s {
+                S::InvalidBangMarkup => msg!(XmlqInvalidBangMarkup),
+                S::UnclosedPI => msg!(XmlqUnclosedPi),
+                S::UnclosedXmlDecl => msg!(XmlqUnclosedXmlDecl),
+                S::UnclosedComment => msg!(XmlqUnclosedComment),
+                S::UnclosedDoctype => msg!(XmlqUnclosedDoctype),
+                S::UnclosedCData => msg!(XmlqUnclosedCdata),
+                S::UnclosedTag => msg!(XmlqUnclosedTag),
+                S::UnclosedSingleQuotedAttributeValue => msg!(XmlqUnclosedSingleQuoted),
+                S::UnclosedDoubleQuotedAttributeValue => msg!(XmlqUnclosedDoubleQuoted),
+            };
+            msg!(XmlqSyntax, what = what)
+        }
+        quick_xml::Error::IllFormed(i) => {
+            let what = match i {
+                I::MissingEndTag(tag) => msg!(XmlqMissingEndTag, tag = tag),
+                I::UnmatchedEndTag(tag) => msg!(XmlqUnmatchedEndTag, tag = tag),
+                I::MismatchedEndTag { expected, found } => {
+                    msg!(XmlqMismatchedEndTag, expected = expected, found = found)
+                }
+                I::DoubleHyphenInComment => msg!(XmlqDoubleHyphenInComment),
+                I::UnclosedReference => msg!(XmlqUnclosedReference),
+                other => Said::from(other.to_string()),
+            };
+            msg!(XmlqIllFormed, what = what)
+        }
+        other => Said::from(other.to_string()),
+    }
+}
+
+#[cfg(test)]
+mod reader_tests {
+    use super::*;
+    use crate::i18n::Lang;
+
+    #[test]
+    fn quick_xml_errors_read_in_polish_and_czech_and_as_quick_xml_in_english() {
+        let cases = [
+            "<?xml version=\"1.0\"?>\n<project><pou></project>",
+            "<a><!-- x",
+            "<a b=\"1></a>",
+            "<a></a></b>",
+            "<a",
+        ];
+        for text in cases {
+            let mut reader = Reader::from_str(text);
+            let e = loop {
+                match reader.read_event() {
+                    Err(e) => break e,
+                    Ok(Event::Eof) => panic!("{text} reads"),
+                    Ok(_) => {}
+                }
+            };
+            let said = reader_said(&e);
+            assert_eq!(said.english, e.to_string(), "{text}");
+            let polish = said.message.render(Lang::Pl);
+            assert_ne!(polish, said.english, "{text}: {polish}");
+            assert!(!polish.contains("not found") && !polish.contains("expected"), "{polish}");
+        }
+        let mut reader = Reader::from_str("<project><pou></project>");
+        let e = loop {
+            if let Err(e) = reader.read_event() {
+                break e;
+            }
+        };
+        assert_eq!(
+            reader_said(&e).message.render(Lang::Cs),
+            "chybně utvořený dokument: očekáván `</pou>`, ale nalezen `</project>`"
+        );
+    }
 }

@@ -76,7 +76,7 @@ pub(super) fn parse(xml: &str) -> Result<Element, PnmlError> {
     loop {
         let offset = reader.buffer_position() as usize;
         let event = reader.read_event().map_err(|e| {
-            let said = msg!(PnmlMalformedXml, error = e.to_string());
+            let said = msg!(PnmlMalformedXml, error = crate::plcopen::reader_said(&e));
             PnmlError::at(&index, reader.buffer_position() as usize, said)
         })?;
         let finished = match event {
