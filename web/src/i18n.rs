@@ -245,8 +245,7 @@ pub fn sentence_text(sentence: Option<&plc_core::exercise::Sentence>, english: &
 
 /// A message of the engine (an error as data) in the language shown.
 pub fn said_text(said: plc_core::diagnostics::Said) -> String {
-    let english = said.english.clone();
-    sentence_text(Some(&plc_core::exercise::Sentence::from(said)), &english)
+    message_text(&said.message, None, &said.english)
 }
 
 /// The key of a count's words in the form `n` takes in the language shown: `one` for 1;

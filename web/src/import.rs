@@ -132,13 +132,13 @@ async fn export_in_worker(what: &str, pou: &str, project: &Project) -> Result<St
         &JsValue::from_str(pou),
         &JsValue::from_str(&project.to_file()),
     );
-    let reply: Reply = serde_json::from_str(&ask_worker(&request).await?)
+    let reply: ExportReply = serde_json::from_str(&ask_worker(&request).await?)
         .map_err(|_| t(K::state_exporter_no_answer).to_string())?;
     if let Some(pou) = reply.no_pou {
         return Err(tf(K::state_no_petri_pou, &[("pou", &pou)]));
     }
     match reply.error {
-        Some(e) => Err(sentence_text(reply.error_sentence.as_ref(), &e)),
+        Some(e) => Err(e),
         None => Ok(reply.xml),
     }
 }
@@ -201,7 +201,7 @@ pub async fn ask_worker_raw(name: &str, request: &JsValue) -> Result<JsValue, St
     answer
 }
 
-/// The worker's answer.
+/// The worker's answer to an import.
 #[derive(serde::Deserialize)]
 struct Reply {
     #[serde(default)]
@@ -215,6 +215,15 @@ struct Reply {
     kind: String,
     #[serde(default)]
     notes: Vec<Note>,
+}
+
+/// The worker's answer to an export: a reply of its own, so that the first load (which
+/// has the Export buttons) holds none of the import's reading of notes and sentences. Its
+/// only error is the page's own project failing to read back, shown in English.
+#[derive(serde::Deserialize)]
+struct ExportReply {
+    #[serde(default)]
+    error: Option<String>,
     #[serde(default)]
     xml: String,
     /// The Petri net POU asked for is not in the project.

@@ -130,7 +130,7 @@ pub struct AppState {
     /// change is never overwritten).
     project_rev: StoredValue<Option<u64>>,
     /// Stored projects that cannot be opened: id → why.
-    pub damaged: RwSignal<BTreeMap<String, plc_core::diagnostics::Said>>,
+    pub damaged: RwSignal<BTreeMap<String, String>>,
     /// Every stored project.
     pub projects: RwSignal<Vec<ProjectSummary>>,
     /// The diagnostics of the last build.

@@ -75,7 +75,7 @@ impl AppState {
         }
         let mut damaged = std::collections::BTreeMap::new();
         for (id, reason) in store.damaged_said().unwrap_or_default() {
-            damaged.insert(id, reason);
+            damaged.insert(id, said_text(reason));
         }
         self.damaged.set(damaged);
     }
@@ -126,10 +126,7 @@ impl AppState {
         if let Some(skipped) = projects.first().filter(|p| first.is_none_or(|f| f.id != p.id)) {
             if let Some(reason) = damaged.get(&skipped.id) {
                 self.error_with(
-                    tf(
-                        K::state_cannot_open_kept,
-                        &[("name", &skipped.name), ("reason", &said_text(reason.clone()))],
-                    ),
+                    tf(K::state_cannot_open_kept, &[("name", &skipped.name), ("reason", reason)]),
                     vec![
                         NoticeAction::DownloadDamaged(skipped.id.clone()),
                         NoticeAction::DeleteDamaged(skipped.id.clone()),

@@ -16,11 +16,8 @@ use crate::import::Note;
 
 /// An error's reply: its English text, and the error as data when it is (the page shows it
 /// in its language).
-fn error_json(english: String, said: Option<plc_core::diagnostics::Said>) -> serde_json::Value {
-    match said.map(Sentence::from) {
-        Some(sentence) => serde_json::json!({ "error": english, "error_sentence": sentence }),
-        None => serde_json::json!({ "error": english }),
-    }
+fn error_json(english: String, said: plc_core::diagnostics::Said) -> serde_json::Value {
+    serde_json::json!({ "error": english, "error_sentence": Sentence::from(said) })
 }
 
 /// The reply to one request.
@@ -36,7 +33,7 @@ fn reply(stem: &str, text: &str) -> String {
                 "notes": notes,
             })
         }
-        Err(e) => error_json(e.to_string(), Some(e.said())),
+        Err(e) => error_json(e.to_string(), e.said()),
     };
     value.to_string()
 }
@@ -58,7 +55,7 @@ fn export_reply(what: &str, pou: &str, project_file: &str) -> String {
             }
         }
         Ok(project) => serde_json::json!({ "xml": plc_core::plcopen::export(&project) }),
-        Err(e) => error_json(e.to_string(), Some(e.said())),
+        Err(e) => serde_json::json!({ "error": e.to_string() }),
     };
     value.to_string()
 }
