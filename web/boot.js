@@ -34,7 +34,15 @@ if ('serviceWorker' in navigator) {
     if (!reloading) { reloading = true; location.reload(); }
   });
   const register = async () => {
-    const registration = await container.register('./sw.js');
+    let registration;
+    try {
+      registration = await container.register('./sw.js');
+    } catch {
+      // Service workers refused (a browser setting, a private window): the page works
+      // online as it does without them.
+      return;
+    }
+    if (!registration) return;
     // A first visit has no controller: the build being cached is the one on screen.
     const waiting = (worker) => { if (worker && container.controller) offer(worker); };
     waiting(registration.waiting);

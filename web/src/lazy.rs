@@ -22,6 +22,7 @@ use leptos::prelude::*;
 use leptos::wasm_split::wasm_split;
 use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
 use plc_core::semantic::{IlPass, SfcPass};
+use plc_core::sim::{BreakpointId, SimError, Simulator};
 
 use crate::i18n::{t, K};
 
@@ -379,6 +380,10 @@ pub type NetworkWatches = fn(&plc_core::network::NetworkPou) -> Vec<((String, St
 thread_local! {
     /// The passes for diagram POUs loaded so far (`plc_core::build::Lowerings`).
     static PASSES: Cell<Lowerings> = const { Cell::new(Lowerings::NONE) };
+    /// The engine's checker and compiler, once loaded.
+    static ENGINE: Cell<Option<Engine>> = const { Cell::new(None) };
+    /// The engine's chunk is being fetched.
+    static ENGINE_LOADING: Cell<bool> = const { Cell::new(false) };
     /// The network watches, loaded with the network pass.
     static WATCHES: Cell<Option<NetworkWatches>> = const { Cell::new(None) };
 }
@@ -393,6 +398,75 @@ pub fn network_watches() -> Option<NetworkWatches> {
 /// (`plc_core::build::build_project_by`).
 pub fn lowerings() -> Lowerings {
     PASSES.with(Cell::get)
+}
+
+/// The engine's checker and compiler (a chunk fetched right after the first screen).
+#[derive(Clone, Copy)]
+pub struct Engine {
+    /// Builds a project with the passes loaded.
+    pub build: fn(&plc_core::project::Project, &Lowerings) -> plc_core::build::ProjectBuild,
+    /// Powers a simulator on for a PROGRAM of a build, with its plant.
+    pub simulator: PowerOn,
+    /// Holds a variable at a value typed as an IEC literal.
+    pub hold: SimText,
+    /// Forces a variable to a value typed as an IEC literal.
+    pub force: SimText,
+    /// Writes a value typed as an IEC literal once.
+    pub write: SimText,
+    /// Watches an ST expression.
+    pub add_watch: fn(&mut Simulator, &str) -> Result<(), SimError>,
+    /// Adds a breakpoint on an ST condition.
+    pub add_breakpoint: fn(&mut Simulator, &str) -> Result<BreakpointId, SimError>,
+}
+
+/// Powers a simulator on for PROGRAM `name` of a build (or the first), with its plant.
+pub type PowerOn = fn(
+    &plc_core::build::ProjectBuild,
+    Option<&str>,
+    Option<&str>,
+) -> Result<Simulator, plc_core::build::ProjectDiagnostic>;
+
+/// A simulator operation on a variable with a value typed as text.
+pub type SimText = fn(&mut Simulator, &str, &str) -> Result<(), SimError>;
+
+/// The engine, once loaded.
+pub fn engine() -> Option<Engine> {
+    ENGINE.with(Cell::get)
+}
+
+/// Whether the engine's chunk is being fetched.
+pub fn engine_loading() -> bool {
+    ENGINE_LOADING.with(Cell::get)
+}
+
+/// Fetches the engine's chunk (the page does as it starts, with its first check).
+pub async fn load_engine() -> Result<(), LoadFailed> {
+    if engine().is_some() {
+        return Ok(());
+    }
+    ENGINE_LOADING.with(|l| l.set(true));
+    let loaded = engine_chunk().await;
+    ENGINE_LOADING.with(|l| l.set(false));
+    let engine = loaded?;
+    ENGINE.with(|c| c.set(Some(engine)));
+    Ok(())
+}
+
+/// The engine's checker and compiler and the simulator's operations that read ST, a chunk
+/// of their own (`engine`, fetched as the page starts): the first screen is drawn without
+/// them. The simulator's scanning and reading stay in the main module (the panels call
+/// them on every frame); every operation that parses or compiles ST is here.
+#[wasm_split(engine, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn engine_chunk() -> Result<Engine, LoadFailed> {
+    Ok(Engine {
+        build: plc_core::build::build_project_by,
+        simulator: |b, name, plant| b.simulator_with_plant(name, plant),
+        hold: Simulator::hold,
+        force: Simulator::force,
+        write: Simulator::write,
+        add_watch: Simulator::add_watch,
+        add_breakpoint: Simulator::add_breakpoint,
+    })
 }
 
 /// Fetches the editor of a new ladder (`petri` false) or Petri net POU and the pass that

@@ -22,7 +22,8 @@ pub fn Controls() -> impl IntoView {
     // With errors the buttons stay enabled: pressing one says what to fix (and offers the
     // last version that built) instead of silently running an older build.
     let has_errors = move || state.diagnostics.with(|ds| ds.iter().any(|d| d.error));
-    let can_scan = move || (has_sim() || has_errors()) && !faulted();
+    // While the engine loads, Run and Step are offered: they are done once it is here.
+    let can_scan = move || (!state.engine_ready.get() || has_sim() || has_errors()) && !faulted();
     let version = move || version_text(state.stale.get(), mode.get()).unwrap_or_default();
     let running = move || mode.get() == RunMode::Running;
     let scans_per_step = RwSignal::new(10u64);
@@ -35,7 +36,9 @@ pub fn Controls() -> impl IntoView {
     });
 
     let status = move || {
-        if !has_sim() {
+        if !state.engine_ready.get() {
+            (t(K::sim_loading), "status status-stopped")
+        } else if !has_sim() {
             (t(K::sim_no_program), "status status-stopped")
         } else if faulted() {
             (t(K::sim_fault), "status status-fault")

@@ -125,7 +125,9 @@ pub fn IoPanel() -> impl IntoView {
                     }}
                     {move || {
                         let inputs = vars.with(|v| v.0.clone());
-                        if inputs.is_empty() {
+                        if !state.engine_ready.get() {
+                            view! { <p class="muted">{t(K::lazy_loading_checker)}</p> }.into_any()
+                        } else if inputs.is_empty() {
                             view! { <p class="muted">{t(K::sim_no_inputs)}</p> }.into_any()
                         } else {
                             inputs.into_iter().map(|v| match (v.kind, v.from_plant.is_some()) {
@@ -141,7 +143,9 @@ pub fn IoPanel() -> impl IntoView {
                     <h3>{t(K::sim_outputs)}</h3>
                     {move || {
                         let outputs = vars.with(|v| v.1.clone());
-                        if outputs.is_empty() {
+                        if !state.engine_ready.get() {
+                            view! { <p class="muted">{t(K::lazy_loading_checker)}</p> }.into_any()
+                        } else if outputs.is_empty() {
                             view! { <p class="muted">{t(K::sim_no_outputs)}</p> }.into_any()
                         } else {
                             outputs.into_iter().map(|v| match v.kind {

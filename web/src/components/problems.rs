@@ -100,6 +100,9 @@ impl Fix {
 pub fn Problems() -> impl IntoView {
     let state = expect_context::<AppState>();
     let summary = move || {
+        if !state.engine_ready.get() {
+            return String::new();
+        }
         state.diagnostics.with(|ds| {
             let errors = ds.iter().filter(|d| d.error).count();
             format!(
@@ -114,6 +117,10 @@ pub fn Problems() -> impl IntoView {
     };
     let list = move || {
         let ds = state.diagnostics.get();
+        if !state.engine_ready.get() {
+            return view! { <p class="ed-ok" role="status">{t(K::lazy_loading_checker)}</p> }
+                .into_any();
+        }
         if ds.is_empty() {
             return view! { <p class="ed-ok">{t(K::editor_no_problems)}</p> }.into_any();
         }

@@ -205,10 +205,11 @@ fn VarRow(row: Row) -> impl IntoView {
         state.leave_past_then(move || {
             let result = path.with_value(|p| {
                 state.with_sim_mut(|s| {
+                    let Some(engine) = crate::lazy::engine() else { return Ok(()) };
                     if s.forced().any(|(f, _)| f.eq_ignore_ascii_case(p)) {
-                        s.force(p, &text)
+                        (engine.force)(s, p, &text)
                     } else {
-                        s.write(p, &text)
+                        (engine.write)(s, p, &text)
                     }
                 })
             });
@@ -224,9 +225,11 @@ fn VarRow(row: Row) -> impl IntoView {
         state.leave_past_then(move || {
             if unforce {
                 path.with_value(|p| state.with_sim_mut(|s| s.unforce(p)));
-            } else if let Some(Err(e)) =
-                path.with_value(|p| state.with_sim_mut(|s| s.force(p, &text)))
-            {
+            } else if let Some(Err(e)) = path.with_value(|p| {
+                state.with_sim_mut(|s| {
+                    crate::lazy::engine().map_or(Ok(()), |e| (e.force)(s, p, &text))
+                })
+            }) {
                 state.error(e.to_string());
             } else {
                 editing.set(false);

@@ -3,7 +3,7 @@
 //! mapping the running program's active CASE branches back to ST lines and Petri net code.
 
 use leptos::prelude::*;
-use plc_core::build::{build_project_by, ProjectBuild, ProjectDiagnostic, Site};
+use plc_core::build::{ProjectBuild, ProjectDiagnostic, Site};
 use plc_core::diagnostics::Severity;
 use plc_core::sim::Simulator;
 
@@ -109,6 +109,26 @@ impl AppState {
         let project = self.project.get_untracked();
         let lowerings = crate::lazy::lowerings();
         let lacks = lowerings.lacks(&project);
+        let Some(engine) = crate::lazy::engine() else {
+            // The checker and compiler come in a chunk the page fetches as it starts: the
+            // check (and a Run or Step pressed meanwhile) is done when it is here.
+            self.check_pending.set_value(true);
+            if crate::lazy::engine_loading() {
+                return;
+            }
+            let state = *self;
+            leptos::task::spawn_local(async move {
+                match crate::lazy::load_engine().await {
+                    Ok(()) => {
+                        state.engine_ready.set(true);
+                        state.check_now();
+                        state.scan_wished();
+                    }
+                    Err(_) => state.error(t(K::lazy_failed_checker)),
+                }
+            });
+            return;
+        };
         if !lacks.is_empty() {
             let state = *self;
             leptos::task::spawn_local(async move {
@@ -125,7 +145,7 @@ impl AppState {
             return;
         }
         self.check_pending.set_value(false);
-        let build = build_project_by(&project, &lowerings);
+        let build = (engine.build)(&project, &lowerings);
         self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
         let charts: Vec<String> =
             plc_core::sfc::outline::outlines(&project.source).into_iter().map(|o| o.pou).collect();
@@ -153,15 +173,15 @@ impl AppState {
             self.bump();
             return;
         };
-        match build.simulator_with_plant(Some(&chosen), project.settings.plant.as_deref()) {
+        match (engine.simulator)(&build, Some(&chosen), project.settings.plant.as_deref()) {
             Ok(mut sim) => {
                 sim.set_cycle_ns(
                     plc_core::limits::cycle_ns(project.settings.cycle_ms).unwrap_or(10_000_000),
                 );
                 for (name, value) in self.held.get_untracked() {
-                    let _ = sim.hold(&name, &value);
+                    let _ = (engine.hold)(&mut sim, &name, &value);
                 }
-                self.restore_sim_settings(&mut sim);
+                self.restore_sim_settings(&mut sim, engine);
                 // The history the page can go back through (issue 36); a program too
                 // large for the recording's budget runs without it.
                 let _ = sim.set_recording(true);
@@ -171,7 +191,7 @@ impl AppState {
                 let net = project.networks.iter().find(|n| n.name.eq_ignore_ascii_case(&chosen));
                 if let (Some(net), Some(watches)) = (net, crate::lazy::network_watches()) {
                     for (_, text) in watches(net) {
-                        let _ = sim.add_watch(&text);
+                        let _ = (engine.add_watch)(&mut sim, &text);
                     }
                 }
                 let places = build.source.as_ref().and_then(|s| {
@@ -250,14 +270,14 @@ impl AppState {
 
     /// Re-adds the project's breakpoints and timeline variables to a fresh simulator
     /// (conditions or paths that no longer fit the program are kept but inactive).
-    fn restore_sim_settings(&self, sim: &mut Simulator) {
+    fn restore_sim_settings(&self, sim: &mut Simulator, engine: crate::lazy::Engine) {
         let (conditions, traced) = self
             .project
             .with_untracked(|p| (p.settings.breakpoints.clone(), p.settings.traced.clone()));
         let list = conditions
             .into_iter()
             .map(|c| {
-                let id = sim.add_breakpoint(&c).ok();
+                let id = (engine.add_breakpoint)(sim, &c).ok();
                 (c, id)
             })
             .collect();

@@ -33,6 +33,15 @@ const CHECK_DELAY: std::time::Duration = std::time::Duration::from_millis(300);
 pub const TRACE_CAPACITY: usize = 20_000;
 
 /// Whether the PLC is scanning.
+/// A scan the user asked for before the engine was loaded.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ScanWish {
+    /// Run.
+    Run,
+    /// Step or Step N: this many scans.
+    Step(u64),
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RunMode {
     /// Not scanning (after Reset, or no program).
@@ -153,6 +162,11 @@ pub struct AppState {
     check_pending: StoredValue<bool>,
     /// Bumped by every Step and Step N that scanned (the guided tour waits for one).
     pub steps_taken: RwSignal<u64>,
+    /// The engine's checker and compiler are loaded (a chunk the page fetches as it starts:
+    /// `crate::lazy::load_engine`); until then the panels say so.
+    pub engine_ready: RwSignal<bool>,
+    /// Run or Step pressed while the engine was loading: done once it is.
+    scan_when_ready: StoredValue<Option<ScanWish>>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
     /// and Petri net elements).
     pub sim_build: StoredValue<Option<ProjectBuild>>,
@@ -234,6 +248,8 @@ impl AppState {
             run_old: RwSignal::new(false),
             check_pending: StoredValue::new(false),
             steps_taken: RwSignal::new(0),
+            engine_ready: RwSignal::new(crate::lazy::engine().is_some()),
+            scan_when_ready: StoredValue::new(None),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),
             run_mode: RwSignal::new(RunMode::Stopped),
@@ -366,10 +382,12 @@ impl AppState {
         if condition.is_empty() {
             return Err(t(K::state_breakpoint_empty).to_string());
         }
-        let id = match self.with_sim_mut(|s| s.add_breakpoint(condition)) {
-            None => return Err(t(K::state_breakpoint_errors).to_string()),
-            Some(Err(e)) => return Err(e.to_string()),
-            Some(Ok(id)) => id,
+        let id = match self
+            .with_sim_mut(|s| crate::lazy::engine().map(|e| (e.add_breakpoint)(s, condition)))
+        {
+            None | Some(None) => return Err(t(K::state_breakpoint_errors).to_string()),
+            Some(Some(Err(e))) => return Err(e.to_string()),
+            Some(Some(Ok(id))) => id,
         };
         self.breakpoints.update(|b| b.push((condition.to_string(), Some(id))));
         self.project.update(|p| p.settings.breakpoints.push(condition.to_string()));
@@ -424,7 +442,9 @@ impl AppState {
         });
         let (state, name, literal) = (*self, name.to_string(), literal.to_string());
         self.leave_past_then(move || {
-            if let Some(Err(e)) = state.with_sim_mut(|s| s.hold(&name, &literal)) {
+            if let Some(Err(e)) = state.with_sim_mut(|s| {
+                crate::lazy::engine().map_or(Ok(()), |e| (e.hold)(s, &name, &literal))
+            }) {
                 state.error(e.to_string());
             }
         });

@@ -11,7 +11,7 @@ use plc_core::export::value_number;
 use plc_core::petri::PlaceMap;
 use plc_core::sim::{Readout, ScanOutcome, SimState, Simulator};
 
-use super::{AppState, Notice, RunMode, Speed};
+use super::{AppState, Notice, RunMode, ScanWish, Speed};
 use crate::i18n::{t, tf, K};
 
 /// The wall time one batch of scans aims at, in milliseconds.
@@ -115,6 +115,35 @@ impl AppState {
         }
     }
 
+    /// True when the engine is still loading: the scan `wish` is done once it is (and the
+    /// project checked), and the banner says so.
+    fn wait_for_engine(&self, wish: ScanWish) -> bool {
+        if self.engine_ready.get_untracked() {
+            return false;
+        }
+        self.scan_when_ready.set_value(Some(wish));
+        self.info(t(K::lazy_loading_run_when_ready));
+        self.check_now();
+        true
+    }
+
+    /// Does the Run or Step pressed while the engine was loading.
+    pub(super) fn scan_wished(&self) {
+        let Some(wish) = self.scan_when_ready.try_update_value(Option::take).flatten() else {
+            return;
+        };
+        let waiting = self.notice.with_untracked(|n| {
+            n.as_ref().is_some_and(|n| n.text == t(K::lazy_loading_run_when_ready))
+        });
+        if waiting {
+            self.notice.set(None);
+        }
+        match wish {
+            ScanWish::Run => self.run(),
+            ScanWish::Step(n) => self.step(n),
+        }
+    }
+
     /// Runs `n` scans now (Step, Step N).
     pub fn step(&self, n: u64) {
         // In the past, Step moves through the recording.
@@ -122,7 +151,7 @@ impl AppState {
             self.step_forward(n);
             return;
         }
-        if !self.may_scan() {
+        if self.wait_for_engine(ScanWish::Step(n)) || !self.may_scan() {
             return;
         }
         if self.run_mode.get_untracked() == RunMode::Running {
@@ -143,7 +172,7 @@ impl AppState {
     /// Starts scanning every animation frame (not an older build than the text on the
     /// screen unless the user chose it: see `gate.rs`).
     pub fn run(&self) {
-        if !self.may_scan() {
+        if self.wait_for_engine(ScanWish::Run) || !self.may_scan() {
             return;
         }
         let faulted = self.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);

@@ -1,0 +1,69 @@
+// The first screen before the engine (issue 32): the checker and the compiler are a chunk
+// the page fetches as it starts (`engine`, docs/loading.md), so the editor and the panels
+// come first. Until the chunk is here the panels say it is loading (never "No program" or
+// "No problems found", which would not be true yet), Run is offered and, pressed, runs
+// once the engine has checked the program.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { fileURLToPath } from 'node:url';
+import path from 'node:path';
+import { startServer } from './server.mjs';
+import { launch } from './browser.mjs';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+let browser;
+let server;
+
+before(async () => {
+  browser = await launch();
+  server = await startServer(path.join(root, 'dist'));
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+test('the editor comes before the engine; Run pressed while it loads runs once it is here', async () => {
+  // No service worker: every file comes through the network, where the engine's chunk is
+  // held back until the test lets it go.
+  const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  let asked = 0;
+  await context.route('**/split_engine.wasm', async (route) => {
+    asked++;
+    await held;
+    await route.continue();
+  });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(server.url);
+
+  const editor = page.getByRole('textbox', { name: 'ST source' });
+  await editor.waitFor();
+  assert.match(await editor.inputValue(), /PROGRAM Main/, 'the starting project is in the editor');
+  await page.getByText('Loading the checker and the simulator…').first().waitFor();
+  await page.getByRole('status', { name: 'PLC state: Loading…' }).waitFor();
+  assert.equal(await page.getByText('No problems found.').count(), 0, 'no verdict before the check');
+  assert.equal(asked, 1, 'the engine was asked for once, as the page started');
+
+  // Typing works meanwhile; Run is offered and says it waits.
+  await editor.press('Control+End');
+  await page.keyboard.type('\n(* typed while the engine loads *)');
+  assert.match(await editor.inputValue(), /typed while the engine loads/);
+  const run = page.getByRole('button', { name: 'Run', exact: true });
+  assert.equal(await run.isEnabled(), true);
+  await run.click();
+  await page.getByRole('alert').filter({ hasText: 'The simulator is loading; it starts as soon as it is ready.' }).waitFor();
+
+  release();
+  await page.getByRole('status', { name: 'PLC state: Running' }).waitFor();
+  await page.getByText('No problems found.').waitFor();
+  assert.equal(await page.getByRole('alert').filter({ hasText: 'The simulator is loading' }).count(), 0, 'the banner went with the wait');
+  await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
+  await page.getByRole('img', { name: 'Motor: ON' }).waitFor();
+  assert.equal(asked, 1, 'fetched once');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
