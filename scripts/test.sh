@@ -31,7 +31,7 @@ node --test tests/e2e/
 # Firefox ESR through puppeteer-core over WebDriver BiDi, and WebKitGTK's MiniBrowser
 # through WebKitWebDriver, under a virtual X display (it has no headless mode). Each
 # engine's suite takes a few minutes (the README says how long).
-engine_flows=(student ladder petri exercise offline language)
+engine_flows=(driver student ladder petri exercise offline language)
 # A test that hangs (an engine that stops answering its driver) fails after 5 minutes
 # instead of holding CI until its own limit.
 engine_timeout=--test-timeout=300000

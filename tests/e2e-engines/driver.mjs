@@ -71,9 +71,22 @@ export class Locator {
     return (await this.session.backend.run('names', this.query)).value;
   }
 
+  /**
+   * Presses the element with the real pointer. A press the page moved away from (a scroll
+   * or redraw between finding the point and pressing) is stopped before the page sees it
+   * and made again where the element is now (`guardPress` in page.mjs).
+   */
   async click(opts = {}) {
-    const p = await this.op('point', opts.offset ? { dx: opts.offset.x, dy: opts.offset.y } : undefined, 'click');
-    await this.session.backend.pointer([{ type: 'move', ...p }, { type: 'down' }, { type: 'up' }]);
+    const arg = { guard: !this.session.dialogExpected, ...(opts.offset ? { dx: opts.offset.x, dy: opts.offset.y } : {}) };
+    await this.session.until(`click ${describe(this.query)}`, async () => {
+      const p = await this.session.backend.run('point', this.query, arg);
+      if (!p.ok) return p;
+      await this.session.backend.pointer([{ type: 'move', ...p.value }, { type: 'down' }, { type: 'up' }]);
+      if (!arg.guard) return { ok: true };
+      // A click that navigated has nothing to report: it arrived.
+      const r = await this.session.backend.run('pressed', this.query).catch(() => ({ value: { hit: null } }));
+      return r.value?.hit === false ? { ok: false, why: `the press landed on ${r.value.on}` } : { ok: true };
+    });
   }
 
   /** The middle of the element, in viewport pixels (scrolled into view, not covered). */
@@ -250,7 +263,15 @@ export class Session {
   errors() { return this.backend.errors(); }
 
   /** Accepts (or dismisses) the confirm() that `action` opens. */
-  answerDialog(accept, action) { return this.backend.answerDialog(accept, action); }
+  async answerDialog(accept, action) {
+    // A press that opens a dialog is not checked afterwards (the page is blocked by it).
+    this.dialogExpected = true;
+    try {
+      return await this.backend.answerDialog(accept, action);
+    } finally {
+      this.dialogExpected = false;
+    }
+  }
 
   /** Another tab of the same profile (same storage), as a Session of its own. */
   async newTab() { return new Session(this.engine, await this.backend.newTab()); }

@@ -259,6 +259,34 @@ export function pageOp(op, q, arg) {
     return fn(el);
   };
 
+  // Guards the press about to be made at (x, y) on `el`, as a person's press lands where
+  // the element is when the finger comes down: if the page moved between finding the
+  // point and the press (a scroll, a redraw), the press would land on something else. The
+  // first event of the press decides: on the element (found anew, it may have been redrawn)
+  // it goes through untouched; elsewhere the whole press is stopped before the page sees it
+  // and the driver presses again where the element is now.
+  function guardPress(el, x, y) {
+    window.__e2ePress?.off();
+    const types = ['pointerdown', 'mousedown', 'pointerup', 'mouseup', 'click', 'auxclick', 'contextmenu'];
+    const g = { hit: null, on: null };
+    const on = (e) => {
+      if (g.hit === null) {
+        const now = resolve(q);
+        const target = typeof now === 'string' ? el : now;
+        const inside = (t) => t && (t.contains(e.target) || t.labels?.[0]?.contains(e.target));
+        g.hit = Boolean(inside(target) || inside(el));
+        g.on = g.hit ? null : `${describe(e.target)} at (${Math.round(x)}, ${Math.round(y)})`;
+        if (g.hit) { g.off(); return; }
+      }
+      e.preventDefault();
+      e.stopImmediatePropagation();
+      if (e.type === 'click') g.off();
+    };
+    g.off = () => { for (const t of types) window.removeEventListener(t, on, true); };
+    for (const t of types) window.addEventListener(t, on, true);
+    window.__e2ePress = g;
+  }
+
   switch (op) {
     case 'count': {
       const found = candidates(q);
@@ -291,8 +319,17 @@ export function pageOp(op, q, arg) {
         return { ok: false, why: `${show(q)} is covered at (${Math.round(x)}, ${Math.round(y)}) by ${hit ? describe(hit) : 'nothing'}` };
       }
       if (el.disabled) return { ok: false, why: `${show(q)} is disabled` };
+      if (arg?.guard) guardPress(el, x, y);
       return { ok: true, value: { x, y } };
     });
+    case 'pressed': {
+      // What the guarded press hit: true, false (it landed elsewhere and was stopped), or
+      // null (no press arrived, or the page was replaced).
+      const g = window.__e2ePress;
+      window.__e2ePress = undefined;
+      g?.off();
+      return { ok: true, value: g ? { hit: g.hit, on: g.on } : { hit: null } };
+    }
     case 'box': return one((el) => {
       const r0 = el.getBoundingClientRect();
       if (arg?.scroll !== false && (r0.top < 0 || r0.bottom > innerHeight)) el.scrollIntoView({ block: 'center' });

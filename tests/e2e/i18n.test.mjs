@@ -93,6 +93,17 @@ END_VAR
 Motor := (Start OR Motor) AND NOT Stopp;
 END_PROGRAM
 `;
+/** A fresh browser in `locale` on the page, its editor shown; page errors collected. */
+async function openIn(locale, lang) {
+  const context = await app.browser.newContext({ locale, viewport: { width: 1400, height: 1000 } });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(app.server.url);
+  await page.getByRole('textbox', { name: L(lang, 'ST source', 'editor.st_source') }).waitFor();
+  return { context, page, errors };
+}
+
 /** A PLCopen project whose program has an interface section the importer skips (line 8). */
 const NOTED = `<?xml version="1.0" encoding="utf-8"?>
 <project xmlns="http://www.plcopen.org/xml/tc6_0201">
@@ -200,12 +211,7 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
   });
 
   test(`an exercise with a failed Check, in ${lang}`, async () => {
-    const context = await app.browser.newContext({ locale, viewport: { width: 1400, height: 1000 } });
-    const page = await context.newPage();
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(e.message));
-    await page.goto(app.server.url);
-    await page.getByRole('textbox', { name: L(lang, 'ST source', 'editor.st_source') }).waitFor();
+    const { context, page, errors } = await openIn(locale, lang);
     await page.getByRole('button', { name: L(lang, 'Exercises', 'header.exercises'), exact: true }).click();
     await page.locator('.catalogue-item[data-exercise="latch"] button').first().click();
     const panel = page.getByRole('region', { name: L(lang, 'Exercise', 'exercise.exercise') });
@@ -221,12 +227,7 @@ for (const [locale, lang] of [['pl-PL', 'pl'], ['cs-CZ', 'cs']]) {
   });
 
   test(`an imported file's notes and a broken file's error, in ${lang}`, async () => {
-    const context = await app.browser.newContext({ locale, viewport: { width: 1400, height: 1000 } });
-    const page = await context.newPage();
-    const errors = [];
-    page.on('pageerror', (e) => errors.push(e.message));
-    await page.goto(app.server.url);
-    await page.getByRole('textbox', { name: L(lang, 'ST source', 'editor.st_source') }).waitFor();
+    const { context, page, errors } = await openIn(locale, lang);
     const input = page.getByLabel(L(lang, 'Import project file', 'header.import_file'));
     const prefix = (key) => L(lang, EN[key], key).split('{')[0];
 

@@ -7,7 +7,7 @@ use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
 
-use crate::i18n::{shown_lang, t, tf, K};
+use crate::i18n::{said_text, shown_lang, t, tf, K};
 
 mod naming {
     #![allow(dead_code)]
@@ -42,7 +42,7 @@ pub fn examples() -> Vec<Example> {
 pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
     let name = naming::humanise(naming::stem(file));
     let mut project = open_plain(&name, text)
-        .map_err(|e| crate::import::open_error_text(&e))?
+        .map_err(|e| said_text(e.said()))?
         .ok_or_else(|| tf(K::state_example_not_project, &[("file", file)]))?
         .project;
     if project.name.trim().is_empty() {

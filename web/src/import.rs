@@ -2,7 +2,7 @@
 //! in the import worker (`src/workers/import.rs`), which the page starts only then.
 
 use plc_core::exercise::Sentence;
-use plc_core::open::{open_plain, FileKind, OpenError};
+use plc_core::open::{open_plain, FileKind};
 use plc_core::project::Project;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
@@ -82,11 +82,6 @@ fn kind_of(description: &str) -> FileKind {
         .unwrap_or(FileKind::Plcopen)
 }
 
-/// Why a file could not be opened, in the language shown.
-pub fn open_error_text(e: &OpenError) -> String {
-    said_text(e.said())
-}
-
 /// Opens `text` (a file named `stem` without its extension) as a project.
 pub async fn import_text(stem: &str, text: &str) -> Result<Imported, String> {
     match open_plain(stem, text) {
@@ -96,7 +91,7 @@ pub async fn import_text(stem: &str, text: &str) -> Result<Imported, String> {
             notes: opened.warnings.iter().map(Note::from).collect(),
         }),
         Ok(None) => in_worker(stem, text).await,
-        Err(e) => Err(open_error_text(&e)),
+        Err(e) => Err(said_text(e.said())),
     }
 }
 

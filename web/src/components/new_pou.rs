@@ -10,7 +10,7 @@ use plc_core::exercise::interface_declarations;
 use plc_core::ladder::LadderPouKind;
 
 use crate::exercises::Exercises;
-use crate::i18n::{t, tf, K};
+use crate::i18n::{said_text, t, tf, K};
 use crate::lazy;
 use crate::state::{AppState, PouView};
 
@@ -87,7 +87,7 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
     // Recomputed where shown (cheap: one name against the project's POU names).
     let problem = move || {
         name.with(|n| state.project.with(|p| p.check_pou_name(n).err()))
-            .map(|e| sentence(&crate::i18n::said_text(e.said())))
+            .map(|e| sentence(&said_text(e.said())))
     };
     let interface = move || {
         exercises.and_then(|ex| {
@@ -124,7 +124,7 @@ pub fn NewPouDialog(petri: bool, open: RwSignal<bool>) -> impl IntoView {
         };
         if let Err(e) = added {
             // Checked as typed; the project may have changed meanwhile.
-            state.error(tf(K::pou_not_created, &[("error", &crate::i18n::said_text(e.said()))]));
+            state.error(tf(K::pou_not_created, &[("error", &said_text(e.said()))]));
             return;
         }
         let in_exercise = declared.is_some();

@@ -4,7 +4,7 @@
 
 use leptos::prelude::*;
 
-use crate::i18n::{t, tf, K};
+use crate::i18n::{said_text, t, tf, K};
 use crate::state::{AppState, PouView};
 
 /// Which kind of diagram POU the actions are for.
@@ -59,9 +59,7 @@ pub fn PouActions(kind: DiagramKind, name: String) -> impl IntoView {
                 state.save();
                 state.check_now();
             }
-            Err(e) => {
-                state.error(tf(K::pou_not_renamed, &[("error", &crate::i18n::said_text(e.said()))]))
-            }
+            Err(e) => state.error(tf(K::pou_not_renamed, &[("error", &said_text(e.said()))])),
         }
     };
     let delete = move |_| {

@@ -17,7 +17,7 @@ use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
 
 use super::Exercises;
-use crate::i18n::{t, tf, K};
+use crate::i18n::{said_text, t, tf, K};
 use crate::state::AppState;
 
 /// How many windows up the discovery climbs before it gives up.
@@ -233,8 +233,7 @@ pub fn resume(ex: Exercises, state: AppState) {
             state.replace_contents(project);
             state.info(t(K::exercise_lms_resumed));
         }
-        Err(e) => state
-            .error(tf(K::exercise_lms_unreadable, &[("error", &crate::i18n::said_text(e.said()))])),
+        Err(e) => state.error(tf(K::exercise_lms_unreadable, &[("error", &said_text(e.said()))])),
     }
 }
 
