@@ -67,3 +67,39 @@ test('the editor comes before the engine; Run pressed while it loads runs once i
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+/** Kills the page's renderer, as a crash or a hang the user ends would. */
+async function crash(page) {
+  const cdp = await page.context().newCDPSession(page);
+  cdp.send('Page.crash').catch(() => {});
+  await page.waitForEvent('crash');
+}
+
+test('a project that stops the page when the engine, come late, checks it is not opened again', async () => {
+  const context = await browser.newContext({ serviceWorkers: 'block' });
+  let page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('No problems found.').waitFor();
+  await page.close();
+
+  // The stored project opens; the engine comes only after the page has run for a while
+  // (longer than an opening takes to settle), and the check it then makes stops the page.
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  await context.route('**/split_engine.wasm', async (route) => { await held; await route.continue(); });
+  page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('Loading the checker and the simulator…').first().waitFor();
+  await page.waitForTimeout(4000);
+  release();
+  await page.getByText('No problems found.').waitFor();
+  await crash(page);
+
+  page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(server.url);
+  await page.getByRole('alert').filter({ hasText: '“My first project” stopped the page the last time it was opened' }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -177,18 +177,25 @@ impl AppState {
         true
     }
 
-    /// Removes the opening mark once the page has kept running for a while.
+    /// Removes the opening mark once the page has kept running for a while after the
+    /// project was checked (the check waits for the engine's chunk, which on a slow network
+    /// may come later than that while).
     fn settle_opening(&self) {
+        let state = *self;
         set_timeout(
-            || {
-                let _ = store().clear_opening();
+            move || match state.engine_ready.try_get_untracked() {
+                Some(false) => state.settle_opening(),
+                _ => {
+                    let _ = store().clear_opening();
+                }
             },
             OPENING_SETTLES,
         );
     }
 
     /// Opens `project` and stores it as a new project (checked before it is stored, so a
-    /// project that stops the page is never stored). Returns whether it was stored; when
+    /// project that stops the page is never stored; before the engine is here it is
+    /// stored first and checked when the engine comes). Returns whether it was stored; when
     /// not, it stays open unsaved and the banner says why, with an Export button.
     pub fn add_and_open(&self, project: Project) -> bool {
         let name = project.name.clone();
