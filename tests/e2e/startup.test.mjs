@@ -103,3 +103,36 @@ test('a project that stops the page when the engine, come late, checks it is not
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('a view picked while the engine loads stays when the engine comes', async () => {
+  const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
+  let page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('No problems found.').waitFor();
+  // The project's main view is its ST PROGRAM; it also has a ladder PROGRAM.
+  await page.getByRole('button', { name: 'New ladder POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill('Latch');
+  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
+  await page.getByRole('button', { name: 'Create' }).click();
+  await page.getByRole('region', { name: 'Ladder diagram Latch' }).waitFor();
+  await page.getByRole('button', { name: 'ST source' }).click();
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  await page.waitForFunction(() => (localStorage.getItem('plc-trainer/v1/index') ?? '').length > 0);
+  await page.close();
+
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  await context.route('**/split_engine.wasm', async (route) => { await held; await route.continue(); });
+  page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('Loading the checker and the simulator…').first().waitFor();
+  await page.getByRole('button', { name: 'Ladder diagram Latch' }).click();
+  const ladder = page.getByRole('region', { name: 'Ladder diagram Latch' });
+  await ladder.waitFor();
+  release();
+  await page.getByText('No problems found.').waitFor();
+  await page.getByRole('status', { name: /^PLC state: (Stopped|Paused)$/ }).waitFor();
+  assert.equal(await ladder.isVisible(), true, 'the ladder diagram picked stays shown');
+  assert.equal(await page.getByRole('textbox', { name: 'ST source' }).isVisible(), false);
+  await context.close();
+});

@@ -78,8 +78,22 @@ impl DiagView {
 }
 
 thread_local! {
-    /// `show_main_view` waits for the build that loads the project's passes.
-    static MAIN_VIEW_PENDING: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// `show_main_view` waits for the engine and the build that loads the project's
+    /// passes: the view shown when it was asked for (a view the user picks meanwhile is
+    /// kept).
+    static MAIN_VIEW_PENDING: std::cell::RefCell<Option<PouView>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+impl AppState {
+    /// Shows the main view asked for before the engine or the passes were here, unless the
+    /// user has picked another view since.
+    fn show_pending_main_view(&self) {
+        let Some(asked_in) = MAIN_VIEW_PENDING.with(|p| p.borrow_mut().take()) else { return };
+        if self.view.get_untracked() == asked_in {
+            self.show_main_view();
+        }
+    }
 }
 
 /// The 1-based line of byte `offset` in `text`.
@@ -122,6 +136,7 @@ impl AppState {
                     Ok(()) => {
                         state.engine_ready.set(true);
                         state.check_now();
+                        state.show_pending_main_view();
                         state.scan_wished();
                     }
                     Err(_) => state.error(t(K::lazy_failed_checker)),
@@ -135,9 +150,7 @@ impl AppState {
                 match crate::lazy::load_lowerings(&lacks).await {
                     Ok(()) => {
                         state.check_now();
-                        if MAIN_VIEW_PENDING.with(|p| p.replace(false)) {
-                            state.show_main_view();
-                        }
+                        state.show_pending_main_view();
                     }
                     Err(e) => state.error(tf(K::state_check_failed, &[("error", &e.to_string())])),
                 }
@@ -239,8 +252,10 @@ impl AppState {
     /// without ST text), else the ST editor.
     pub fn show_main_view(&self) {
         // Which PROGRAM runs is known once the project is built (see `check_now`).
-        if !self.project.with_untracked(|p| crate::lazy::lowerings().lacks(p).is_empty()) {
-            MAIN_VIEW_PENDING.with(|p| p.set(true));
+        let lacks = self.project.with_untracked(|p| !crate::lazy::lowerings().lacks(p).is_empty());
+        if lacks || !self.engine_ready.get_untracked() {
+            let shown = self.view.get_untracked();
+            MAIN_VIEW_PENDING.with(|p| *p.borrow_mut() = Some(shown));
             return;
         }
         let running = self.running.get_untracked();
