@@ -259,6 +259,9 @@ export function pageOp(op, q, arg) {
     return fn(el);
   };
 
+  // Whether a press on `node` is a press on `el` (inside it, or on its label).
+  const pressesOn = (el, node) => Boolean(el.contains(node) || el.labels?.[0]?.contains(node));
+
   // Guards the press about to be made at (x, y) on `el`, as a person's press lands where
   // the element is when the finger comes down: if the page moved between finding the
   // point and the press (a scroll, a redraw), the press would land on something else. The
@@ -273,8 +276,7 @@ export function pageOp(op, q, arg) {
       if (g.hit === null) {
         const now = resolve(q);
         const target = typeof now === 'string' ? el : now;
-        const inside = (t) => t && (t.contains(e.target) || t.labels?.[0]?.contains(e.target));
-        g.hit = Boolean(inside(target) || inside(el));
+        g.hit = pressesOn(target, e.target) || pressesOn(el, e.target);
         g.on = g.hit ? null : `${describe(e.target)} at (${Math.round(x)}, ${Math.round(y)})`;
         if (g.hit) { g.off(); return; }
       }
@@ -314,8 +316,7 @@ export function pageOp(op, q, arg) {
       const x = r.left + r.width / 2 + (arg?.dx ?? 0);
       const y = r.top + r.height / 2 + (arg?.dy ?? 0);
       const hit = document.elementFromPoint(x, y);
-      const label = el.labels?.[0];
-      if (!hit || !(el.contains(hit) || (label && label.contains(hit)))) {
+      if (!hit || !pressesOn(el, hit)) {
         return { ok: false, why: `${show(q)} is covered at (${Math.round(x)}, ${Math.round(y)}) by ${hit ? describe(hit) : 'nothing'}` };
       }
       if (el.disabled) return { ok: false, why: `${show(q)} is disabled` };
