@@ -198,11 +198,69 @@ pub struct Step {
     pub at: String,
     /// Input → value (a TOML boolean or number, or an IEC literal as a string).
     #[serde(default)]
-    pub set: BTreeMap<String, toml::Value>,
+    pub set: BTreeMap<String, SetValue>,
     /// A power cycle at `at`, before the inputs are set: `warm` (RETAIN variables keep
     /// their values) or `cold` (everything back to its initial value). Held inputs stay.
     #[serde(default)]
     pub restart: Option<Restart>,
+}
+
+/// The value a step sets an input to: a boolean, an integer or a float as TOML writes
+/// them, or an IEC literal as a string (`T#2s`, `16#FF`). Read by hand rather than as a
+/// `toml::Value`, so that the exercise's built form (JSON) reads without the TOML crate,
+/// and an array, a table or a date is refused where the file gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SetValue {
+    /// `true` / `false`.
+    Bool(bool),
+    /// A whole number.
+    Int(i64),
+    /// A number with a fraction or an exponent.
+    Float(f64),
+    /// An IEC literal, as written.
+    Literal(String),
+}
+
+impl SetValue {
+    /// The IEC literal the simulator takes.
+    pub fn literal(&self) -> String {
+        match self {
+            SetValue::Bool(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
+            SetValue::Int(i) => i.to_string(),
+            SetValue::Float(f) => format!("{f:?}"),
+            SetValue::Literal(s) => s.clone(),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for SetValue {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct Visitor;
+        impl serde::de::Visitor<'_> for Visitor {
+            type Value = SetValue;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a boolean, a number or an IEC literal in quotes")
+            }
+            fn visit_bool<E: serde::de::Error>(self, v: bool) -> Result<SetValue, E> {
+                Ok(SetValue::Bool(v))
+            }
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<SetValue, E> {
+                Ok(SetValue::Int(v))
+            }
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<SetValue, E> {
+                i64::try_from(v).map(SetValue::Int).map_err(|_| {
+                    E::invalid_value(serde::de::Unexpected::Unsigned(v), &"a 64-bit integer")
+                })
+            }
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<SetValue, E> {
+                Ok(SetValue::Float(v))
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<SetValue, E> {
+                Ok(SetValue::Literal(v.to_string()))
+            }
+        }
+        d.deserialize_any(Visitor)
+    }
 }
 
 /// The kind of a restart a step asks for.

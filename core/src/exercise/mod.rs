@@ -20,7 +20,7 @@ mod view;
 pub use built_form::{built_form, is_built, BUILT_PREFIX};
 pub use format::{
     parse_duration, scenarios_from_toml, time_text, Direction, Exercise, ExerciseError, Expect,
-    Expectation, InterfaceVar, Random, RandomInput, Restart, Scenario, Step,
+    Expectation, InterfaceVar, Random, RandomInput, Restart, Scenario, SetValue, Step,
 };
 pub use grade::{
     grade, grade_by, grade_with, Failure, GradeOptions, Report, Sample, ScenarioReport,

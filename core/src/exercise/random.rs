@@ -75,17 +75,6 @@ pub fn events(s: &Scenario, seed: u64) -> Result<Vec<Event>, ExerciseError> {
     Ok(out)
 }
 
-/// A TOML value as the IEC literal the simulator takes.
-fn literal(v: &toml::Value) -> String {
-    match v {
-        toml::Value::Boolean(b) => if *b { "TRUE" } else { "FALSE" }.to_string(),
-        toml::Value::Integer(i) => i.to_string(),
-        toml::Value::Float(f) => format!("{f:?}"),
-        toml::Value::String(s) => s.clone(),
-        other => other.to_string(),
-    }
-}
-
 /// The events of a scenario's fixed steps, in time order.
 pub fn step_events(s: &Scenario) -> Vec<Event> {
     let mut out = Vec::new();
@@ -99,7 +88,7 @@ pub fn step_events(s: &Scenario) -> Vec<Event> {
             out.push((at, RESTART.to_string(), kind.to_string()));
         }
         for (name, value) in &step.set {
-            out.push((at, name.clone(), literal(value)));
+            out.push((at, name.clone(), value.literal()));
         }
     }
     crate::order::sort_by_key(&mut out, |e| e.0);

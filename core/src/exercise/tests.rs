@@ -703,3 +703,43 @@ END_PROGRAM
         "program deklaruje Motor v jiné sekci, než cvičení požaduje (VAR_OUTPUT Motor : BOOL, nebo VAR Motor AT %Q… : BOOL)"
     );
 }
+
+#[test]
+fn a_step_sets_booleans_numbers_and_literals_and_refuses_anything_else() {
+    let file = LATCH.replace(
+        "{ at = \"0s\", set = { Start = false, Stop = false } }",
+        "{ at = \"0s\", set = { Start = false, Stop = true, N = 7, X = 1.0, Y = -2.5e3, T = \"T#2s\" } }",
+    );
+    let e = Exercise::from_toml(&file).unwrap();
+    let at_zero: Vec<(String, String)> = random::step_events(&e.scenarios[0])
+        .into_iter()
+        .filter(|(at, _, _)| *at == 0)
+        .map(|(_, name, value)| (name, value))
+        .collect();
+    let pair = |n: &str, v: &str| (n.to_string(), v.to_string());
+    assert_eq!(
+        at_zero,
+        [
+            pair("N", "7"),
+            pair("Start", "FALSE"),
+            pair("Stop", "TRUE"),
+            pair("T", "T#2s"),
+            pair("X", "1.0"),
+            pair("Y", "-2500.0")
+        ]
+    );
+    // The built form (JSON) reads the same values.
+    let built = built_form(&file, |md| md.to_string()).unwrap();
+    let (from_json, _) = Exercise::from_built(&built).unwrap();
+    assert_eq!(from_json.scenarios[0].steps, e.scenarios[0].steps);
+    // An array, a table or a date is not a value an input takes: refused where it stands.
+    for bad in ["[1, 2]", "{ a = 1 }", "1979-05-27T07:32:00Z"] {
+        let file = LATCH.replace("set = { Start = true }", &format!("set = {{ Start = {bad} }}"));
+        let err = Exercise::from_toml(&file).unwrap_err();
+        assert!(err.message.starts_with("line 32, column 35: "), "{bad}: {err}");
+        assert!(
+            err.message.contains("a boolean, a number or an IEC literal in quotes"),
+            "{bad}: {err}"
+        );
+    }
+}
