@@ -2,8 +2,9 @@
 # Builds the release site into dist/ (static files with relative URLs; works from any
 # sub-path), reports each part's transfer size (gzip -9) and fails when the first load is
 # over the budget the README states ("size budget: **N KB**"), when a part loaded on first
-# use is over 200 KB, or when the first load holds ladder-editor, Petri-editor or exporter
-# code (scripts/site.mjs). See docs/loading.md.
+# use is over 200 KB, when opening an exercise adds over 150 KB, or when the first load
+# holds ladder-editor, Petri-editor or exporter code (scripts/site.mjs). See
+# docs/loading.md.
 #
 #   1. Trunk builds the page and its CSS and copies the static files (no Rust).
 #   2. cargo builds the app (web/, `wasm-release` profile) keeping its relocations.

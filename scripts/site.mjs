@@ -6,9 +6,10 @@
 //   node scripts/site.mjs finish DIST WORK     writes DIST/sw.js (the service worker, from
 //       web/sw.js) with the build's id and file list, prints every part of the site with
 //       its gzip -9 size and fails when the first load is over the README's budget, a part
-//       loaded on first use is over 200 KB, or the first load holds code it must not
-//       (ladder editor, Petri net editor, exporters: found by function name in
-//       WORK/main-names.wasm, the main module before wasm-opt drops the names).
+//       loaded on first use is over 200 KB, opening an exercise adds over 150 KB, or the
+//       first load holds code it must not (ladder editor, Petri net editor, exporters:
+//       found by function name in WORK/main-names.wasm, the main module before wasm-opt
+//       drops the names).
 import { readFileSync, writeFileSync, readdirSync, statSync, mkdirSync, copyFileSync } from 'node:fs';
 import { createHash } from 'node:crypto';
 import { dirname, join, relative, sep } from 'node:path';
@@ -18,6 +19,8 @@ import { fileURLToPath } from 'node:url';
 const root = fileURLToPath(new URL('..', import.meta.url));
 const [mode, dist = 'dist', work = 'target/site'] = process.argv.slice(2);
 const LAZY_LIMIT = 200 * 1024;
+/** What opening an exercise may add to the first load and the parts fetched at start. */
+const EXERCISE_LIMIT = 150 * 1024;
 /**
  * The parts the page fetches as soon as it starts, while the first screen is drawn (the
  * engine's checker and compiler: web/src/lazy.rs, `load_engine`). They are not in the first
@@ -229,6 +232,12 @@ function finish() {
   if (exerciseFiles.length === 0) problems.push(`no shipped exercises in ${folder}/exercises/`);
   const exerciseTotal = [...exercise].filter((f) => !fetched.has(f)).reduce((n, f) => n + sizeOf(f), largest);
   console.log(`  ${'opening an exercise adds (largest exercise file)'.padEnd(46)} ${String(exerciseTotal).padStart(8)} bytes gzipped (${kb(exerciseTotal)})`);
+  if (exerciseTotal > EXERCISE_LIMIT) problems.push(`opening an exercise adds ${kb(exerciseTotal)}, over ${kb(EXERCISE_LIMIT)}`);
+  // The grader (in the worker) and the report's view (in the page) come at the first Check.
+  const check = [...partFiles('exercise_grader'), ...partFiles('exercise_report')]
+    .filter((f) => !fetched.has(f) && !exercise.has(f));
+  const checkTotal = [...new Set(check)].reduce((n, f) => n + sizeOf(f), 0);
+  console.log(`  ${'the first Check adds'.padEnd(46)} ${String(checkTotal).padStart(8)} bytes gzipped (${kb(checkTotal)})`);
   const all = files.filter((f) => /\.(wasm|js|css)$/.test(f)).reduce((n, f) => n + sizeOf(f), 0);
   console.log(`  ${'the whole app (wasm, js, css)'.padEnd(46)} ${String(all).padStart(8)} bytes gzipped (${kb(all)})`);
 

@@ -54,6 +54,7 @@ pub enum What {
     NetworkView,
     ExerciseCatalogue,
     Exercise,
+    Report,
     Explanation,
     PlantScene,
 }
@@ -70,6 +71,7 @@ impl What {
             What::NetworkView => K::lazy_loading_network_view,
             What::ExerciseCatalogue => K::lazy_loading_exercise_catalogue,
             What::Exercise => K::lazy_loading_exercise,
+            What::Report => K::lazy_loading_report,
             What::Explanation => K::lazy_loading_explanation,
             What::PlantScene => K::lazy_loading_plant_scene,
         }
@@ -86,6 +88,7 @@ impl What {
             What::NetworkView => K::lazy_failed_network_view,
             What::ExerciseCatalogue => K::lazy_failed_exercise_catalogue,
             What::Exercise => K::lazy_failed_exercise,
+            What::Report => K::lazy_failed_report,
             What::Explanation => K::lazy_failed_explanation,
             What::PlantScene => K::lazy_failed_plant_scene,
         }
@@ -108,7 +111,7 @@ impl What {
     fn sheet(self) -> Option<&'static str> {
         match self {
             What::Recording | What::Explanation => None,
-            What::Exercise | What::ExerciseCatalogue => Some("exercises.css"),
+            What::Exercise | What::ExerciseCatalogue | What::Report => Some("exercises.css"),
             What::NewPouDialog
             | What::LadderEditor
             | What::PetriEditor
@@ -251,6 +254,20 @@ pub fn read_exercise_reply(
     Ok(serde_json::from_str(&text).ok())
 }
 
+/// Reads the report of a check (the exercise worker's `Graded` answer): its decoder comes
+/// with the report's view, fetched at the first check rather than when an exercise opens.
+#[wasm_split(exercise_report, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn read_report(text: String) -> Result<Result<plc_core::exercise::Report, String>, LoadFailed> {
+    Ok(serde_json::from_str(&text).map_err(|e| e.to_string()))
+}
+
+/// The report of the last check (`exercises::report`).
+#[wasm_split(exercise_report, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn report_view() -> Result<AnyView, LoadFailed> {
+    use crate::exercises::report::ReportView;
+    Ok(view! { <ReportView/> }.into_any())
+}
+
 /// Opening an exercise: asking the worker, fetching its starter, opening the attempt. The
 /// returned future does it (its code is in this chunk too).
 #[wasm_split(exercise_ui, wasm_split_path = ::leptos::wasm_split, fallible)]
@@ -302,6 +319,17 @@ pub fn scorm_resume(
     Ok(())
 }
 
+/// Reports a graded attempt to the LMS (the score, passed or not, the attempt kept).
+#[wasm_split(scorm, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn scorm_report(
+    state: crate::state::AppState,
+    id: String,
+    report: plc_core::exercise::Report,
+) -> Result<(), LoadFailed> {
+    crate::exercises::scorm::report(state, &id, &report);
+    Ok(())
+}
+
 /// The timeline as a file, CSV (`csv`) or VCD for GTKWave; `None` before a program runs.
 #[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn timeline_file(
@@ -326,6 +354,22 @@ pub fn variables_file(state: crate::state::AppState) -> Result<Option<String>, L
 #[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
 pub fn share_fragment(project: plc_core::project::Project) -> Result<String, LoadFailed> {
     Ok(plc_core::project::encode_share(&project))
+}
+
+/// The fragment of a link that carries the exercise `link` (`x=…`): the same DEFLATE
+/// writer, fetched only when the student shares the exercise.
+#[wasm_split(exports, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn exercise_fragment(link: plc_core::exercise::ExerciseLink) -> Result<String, LoadFailed> {
+    Ok(link.fragment())
+}
+
+/// What an exercise link's fragment (`x=…`) carries, its exercise not read yet: the
+/// share links' reader, fetched by the exercise worker only to open such a link.
+#[wasm_split(share_reader, wasm_split_path = ::leptos::wasm_split, fallible)]
+pub fn read_exercise_link(
+    fragment: String,
+) -> Result<Result<plc_core::exercise::ExerciseLink, String>, LoadFailed> {
+    Ok(plc_core::exercise::ExerciseLink::unpack(&fragment).map_err(|e| e.to_string()))
 }
 
 /// The project in a share link's fragment (`#p=…`): its base64 and DEFLATE reader is

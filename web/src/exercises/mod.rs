@@ -7,7 +7,7 @@ mod catalogue;
 mod handin;
 mod panel;
 pub mod protocol;
-mod report;
+pub mod report;
 pub(crate) mod scorm;
 mod store;
 
@@ -20,6 +20,7 @@ use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
 
 use crate::i18n::{t, tf, K};
+use crate::lazy::LoadFailed;
 use crate::state::{clear_fragment, AppState};
 pub use catalogue::Catalogue;
 use handin::HandInActions;
@@ -317,11 +318,27 @@ impl Exercises {
             let reply = ask(&request).await;
             self.checking.set(false);
             match reply {
-                Ok(Reply::Graded(report)) => {
+                Ok(Reply::Graded(text)) => {
+                    let report = match crate::lazy::read_report(text).await {
+                        Ok(Ok(report)) => report,
+                        Ok(Err(e)) => {
+                            return state.error(tf(K::exercise_check_failed, &[("error", &e)]))
+                        }
+                        Err(e) => {
+                            let e = e.to_string();
+                            return state.error(tf(K::exercise_check_failed, &[("error", &e)]));
+                        }
+                    };
                     if report.error.is_none() && report.score == report.total {
                         self.passed.set(store::mark_passed(&open.opened.view.id));
                     }
-                    scorm::report(state, &open.opened.view.id, &report);
+                    if scorm::in_session() {
+                        // The SCORM chunk is here already: the session's launch fetched it.
+                        let (id, graded) = (open.opened.view.id.clone(), report.clone());
+                        if let Err(e) = crate::lazy::scorm_report(state, id, graded).await {
+                            state.error(e.to_string());
+                        }
+                    }
                     self.report.set(Some(report));
                 }
                 Err(e) => state.error(tf(K::exercise_check_failed, &[("error", &e)])),
@@ -411,8 +428,9 @@ impl Exercises {
         true
     }
 
-    /// The link that carries the open exercise.
-    pub fn link(self) -> Option<String> {
+    /// The link that carries the open exercise (its DEFLATE writer is a chunk, fetched
+    /// now: `Err` when it cannot be).
+    pub async fn link(self) -> Option<Result<String, LoadFailed>> {
         let open = self.open.get_untracked()?;
         let base = web_sys::window()
             .and_then(|w| w.location().href().ok())
@@ -420,7 +438,8 @@ impl Exercises {
             .unwrap_or_default();
         // The `?exercise=` query would open the file at that address instead.
         let base = base.split('?').next().unwrap_or_default().to_string();
-        Some(format!("{base}#{}", open.opened.fragment))
+        let fragment = crate::lazy::exercise_fragment(open.opened.link).await;
+        Some(fragment.map(|fragment| format!("{base}#{fragment}")))
     }
 }
 

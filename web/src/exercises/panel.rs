@@ -8,10 +8,10 @@ use plc_core::exercise::{graded_program, Direction};
 use plc_core::project::ProgramPou;
 use wasm_bindgen::JsCast;
 
-use super::report::ReportView;
 use super::{language_name, starter_language_name, Exercises, Screen};
 use crate::components::share_box::{copy_to_clipboard, ShareBox};
 use crate::i18n::{t, tf, K};
+use crate::lazy::{lazy_view, What};
 use crate::state::{plural, AppState};
 
 /// The open exercise (nothing when the open project is not an attempt).
@@ -20,10 +20,16 @@ pub fn ExercisePanel() -> impl IntoView {
     let state = expect_context::<AppState>();
     let ex = expect_context::<Exercises>();
     let shown = expect_context::<crate::i18n::I18n>().shown;
+    // The report's view is a chunk of its own, fetched at the first check.
+    let has_report = Memo::new(move |_| ex.report.with(Option::is_some));
     let share = move |_| {
-        let Some(link) = ex.link() else { return };
-        ex.share_link.set(Some(link.clone()));
         leptos::task::spawn_local(async move {
+            let link = match ex.link().await {
+                Some(Ok(link)) => link,
+                Some(Err(e)) => return state.error(e.to_string()),
+                None => return,
+            };
+            ex.share_link.set(Some(link.clone()));
             if copy_to_clipboard(&link).await {
                 state.info(t(K::exercise_link_copied));
             }
@@ -135,7 +141,7 @@ pub fn ExercisePanel() -> impl IntoView {
                         <p class="exercise-scenarios">{tf(K::exercise_scenarios, &[("scenarios", &scenarios)])}</p>
 
                     </details>
-                    <ReportView/>
+                    {move || has_report.get().then(|| lazy_view(What::Report, crate::lazy::report_view))}
                 </section>
             }
         })

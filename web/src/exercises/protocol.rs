@@ -3,7 +3,7 @@
 //! page's own module (the TOML reader, the Markdown renderer and the grader are not in the
 //! first load). Both sides send one JSON text per message.
 
-use plc_core::exercise::{ExerciseLink, ExerciseView, Report};
+use plc_core::exercise::{ExerciseLink, ExerciseView};
 use serde::{Deserialize, Serialize};
 
 /// What the page asks.
@@ -44,8 +44,10 @@ pub enum Request {
 pub enum Reply {
     /// An exercise opened.
     Opened(Box<Opened>),
-    /// An attempt graded.
-    Graded(Report),
+    /// An attempt graded: its report as JSON text, read by the page with the report's
+    /// view (`lazy::read_report`, a chunk fetched at the first check), so that opening an
+    /// exercise does not bring the report's decoder.
+    Graded(String),
     /// Why the request could not be done (worded by the page, in the language shown).
     Error(Failure),
 }
@@ -129,8 +131,6 @@ pub struct Opened {
     pub link: ExerciseLink,
     /// Where the file came from (`?exercise=URL`), if anywhere.
     pub base: Option<String>,
-    /// The fragment of a link that carries it (`x=…`, without `#`).
-    pub fragment: String,
     /// The starter in each language the student may start in, in the exercise's order:
     /// the file it names opened, or one made from the interface. Empty while `missing`
     /// is not.

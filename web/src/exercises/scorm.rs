@@ -177,6 +177,12 @@ impl Session {
     }
 }
 
+/// Whether the page is a launched activity that has not finished (cheap: the page asks
+/// before it fetches this chunk to report a score).
+pub fn in_session() -> bool {
+    SESSION.with(|s| s.borrow().as_ref().is_some_and(|s| !s.finished))
+}
+
 /// Runs `f` on the session, if the page is a launched activity that has not finished.
 fn with_session<R>(f: impl FnOnce(&mut Session) -> R) -> Option<R> {
     SESSION.with(|s| s.borrow_mut().as_mut().filter(|s| !s.finished).map(f))

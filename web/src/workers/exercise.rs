@@ -11,16 +11,11 @@
 //! is read by a chunk of its own (`exercise_toml`), fetched only then.
 
 use crate::exercises::protocol::{Failure, Opened, Reply, Request, StarterFile};
-use plc_core::exercise::{
-    grade_by, is_built, Exercise, ExerciseLink, ExerciseView, GradeOptions, SITE_FILE_LIST,
-};
+use plc_core::exercise::{is_built, Exercise, ExerciseLink, ExerciseView, SITE_FILE_LIST};
 use plc_core::open::open_plain;
 use plc_core::project::Project;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
-
-/// Scans shown around a failure on the page's timeline.
-const PAGE_WINDOW: usize = 100;
 
 /// The reply to one request.
 async fn answer(request: Request) -> Reply {
@@ -30,11 +25,12 @@ async fn answer(request: Request) -> Reply {
             Err(e) => Reply::Error(e),
         },
         Request::File { link, base } => open(link, base).await,
-        Request::Link(fragment) => match ExerciseLink::unpack(&fragment) {
-            Ok(link) => match read(&link.exercise, None).await {
+        Request::Link(fragment) => match crate::lazy::read_exercise_link(fragment).await {
+            Ok(Ok(link)) => match read(&link.exercise, None).await {
                 Ok(_) => open(link, None).await,
                 Err(e) => Reply::Error(Failure::LinkUnusable(e)),
             },
+            Ok(Err(e)) => Reply::Error(Failure::Plain(e)),
             Err(e) => Reply::Error(Failure::Plain(e.to_string())),
         },
         Request::Grade { exercise, project } => {
@@ -51,9 +47,9 @@ async fn answer(request: Request) -> Reply {
                 Ok(passes) => passes,
                 Err(e) => return Reply::Error(Failure::CannotGrade(e.to_string())),
             };
-            let options = GradeOptions { window: PAGE_WINDOW };
-            match grade_by(&exercise, &project, options, &passes) {
-                Ok(report) => Reply::Graded(report),
+            match super::grade_report(exercise, project, passes).await {
+                Ok(Ok(report)) => Reply::Graded(report),
+                Ok(Err(e)) => Reply::Error(Failure::CannotGrade(e)),
                 Err(e) => Reply::Error(Failure::CannotGrade(e.to_string())),
             }
         }
@@ -168,8 +164,6 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
         Err(e) => return Reply::Error(Failure::FileUnusable(e)),
     };
     let link = link.arranged(&exercise);
-    // The exercise was read just now: the link carries nothing the page would refuse.
-    let fragment = link.fragment();
     let missing: Vec<String> = exercise
         .starter_files()
         .into_iter()
@@ -225,7 +219,7 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
         }
     }
     let view = ExerciseView::with_statement(&exercise, statement_html);
-    Reply::Opened(Box::new(Opened { view, link, base, fragment, starters, missing }))
+    Reply::Opened(Box::new(Opened { view, link, base, starters, missing }))
 }
 
 /// The reply to a message's text.
@@ -244,6 +238,12 @@ mod tests {
 
     fn ask(request: Request) -> Reply {
         serde_json::from_str(&reply(&serde_json::to_string(&request).unwrap())).unwrap()
+    }
+
+    /// The report a `Graded` reply carries (as JSON text, as the page reads it).
+    fn report_of(reply: Reply) -> plc_core::exercise::Report {
+        let Reply::Graded(text) = reply else { panic!("{reply:?}") };
+        serde_json::from_str(&text).unwrap()
     }
 
     /// `reply_text` run to its end (natively nothing in it waits).
@@ -301,7 +301,7 @@ mod tests {
         assert_eq!(v.localised(Lang::En).title, "A button lights a lamp");
         let exercise = opened.link.exercise.clone();
         let project = opened.starters[0].project.clone();
-        let Reply::Graded(report) = ask(Request::Grade { exercise, project }) else { panic!() };
+        let report = report_of(ask(Request::Grade { exercise, project }));
         let r = v.localised_report(Lang::Cs, report);
         assert_eq!(r.scenarios[0].name, "Stisk a puštění");
         assert!(r.scenarios[0].hint.as_deref().unwrap().starts_with("Zapisuje se Lamp"));
@@ -324,7 +324,7 @@ mod tests {
             exercise: opened.link.exercise.clone(),
             project: solved.to_file(),
         });
-        let Reply::Graded(report) = graded else { panic!("{graded:?}") };
+        let report = report_of(graded);
         assert_eq!(report.score, report.total, "{report:?}");
     }
 
@@ -335,11 +335,12 @@ mod tests {
             exercise: opened.link.exercise.clone(),
             project: opened.starters[0].project.clone(),
         });
-        let Reply::Graded(report) = graded else { panic!("{graded:?}") };
+        let report = report_of(graded);
         assert!(report.score < report.total);
         let failure = report.scenarios.iter().find_map(|s| s.failure.as_ref()).unwrap();
         assert!(failure.window.len() > 11, "the page's window is wide");
-        let Reply::Opened(again) = ask(Request::Link(format!("#{}", opened.fragment))) else {
+        let Reply::Opened(again) = ask(Request::Link(format!("#{}", opened.link.fragment())))
+        else {
             panic!()
         };
         assert_eq!(again.view, opened.view);
@@ -361,12 +362,10 @@ mod tests {
             Project::from_file(include_str!("../../../exercises/latch/reference-ld.plcproj.json"))
                 .unwrap();
         solved.ladder[0].rungs = reference.ladder[0].rungs.clone();
-        let Reply::Graded(report) = ask(Request::Grade {
+        let report = report_of(ask(Request::Grade {
             exercise: opened.link.exercise.clone(),
             project: solved.to_file(),
-        }) else {
-            panic!()
-        };
+        }));
         assert_eq!((report.score, report.total), (3, 3));
         assert_eq!(report.checked_line().unwrap(), "Checked PROGRAM Main (ladder)");
         // A file given without its starter names it as missing (the page fetches it).

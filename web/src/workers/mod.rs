@@ -55,6 +55,24 @@ fn read_toml(
     Ok(Exercise::from_toml(&text).map(|e| e.rendered(base.as_deref())).map_err(|e| e.to_string()))
 }
 
+/// Scans shown around a failure on the page's timeline.
+const PAGE_WINDOW: usize = 100;
+
+/// Grades an attempt and writes its report as JSON (the grader's runs and the report's
+/// writer: a chunk of their own, fetched at the first check, not when an exercise opens).
+#[wasm_split(exercise_grader, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn grade_report(
+    exercise: plc_core::exercise::Exercise,
+    project: plc_core::project::Project,
+    passes: plc_core::build::Lowerings,
+) -> Result<Result<String, String>, LoadFailed> {
+    use plc_core::exercise::{grade_by, GradeOptions};
+    let options = GradeOptions { window: PAGE_WINDOW };
+    Ok(grade_by(&exercise, &project, options, &passes)
+        .map_err(|e| e.to_string())
+        .and_then(|report| serde_json::to_string(&report).map_err(|e| e.to_string())))
+}
+
 /// Packs a SCORM 1.2 package of an exercise with the site's files (the manifest and the
 /// ZIP writer: a chunk of their own, fetched only for `Export SCORM package`).
 #[wasm_split(scorm_package, wasm_split_path = ::leptos::wasm_split, fallible)]
