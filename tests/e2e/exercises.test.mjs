@@ -191,3 +191,35 @@ test('?exercise=URL opens an exercise file from another host; a broken file or l
   await host.close();
   await context.close();
 });
+
+test('the grader and the report come at the first Check; when they cannot be fetched Check says so and works the next time', async () => {
+  const errors = [];
+  const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1400, height: 1000 } });
+  const page = await context.newPage();
+  page.on('pageerror', (e) => errors.push(e.message));
+  const chunks = [];
+  context.on('request', (r) => { if (r.url().endsWith('.wasm')) chunks.push(r.url().split('/').pop()); });
+  let offline = true;
+  await context.route('**/split_exercise_report.wasm', (route) => (offline ? route.abort() : route.continue()));
+  await page.goto(server.url);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  await page.getByRole('button', { name: 'Exercises', exact: true }).click();
+  await page.getByRole('list', { name: 'Exercise list' }).getByRole('button', { name: 'Start/stop motor latch' }).click();
+  await page.getByRole('button', { name: 'Check', exact: true }).waitFor();
+  for (const chunk of ['split_exercise_grader.wasm', 'split_exercise_report.wasm']) {
+    assert.ok(!chunks.includes(chunk), `${chunk} is not fetched to open an exercise (${chunks.join(' ')})`);
+  }
+  await write(page, RIGHT);
+
+  await page.getByRole('button', { name: 'Check', exact: true }).click();
+  await page.getByText('Could not check: a part of the app could not be loaded (is the network off?)').waitFor();
+  assert.equal(await page.getByRole('region', { name: 'Report' }).count(), 0);
+  assert.equal(await page.getByRole('textbox', { name: 'ST source' }).inputValue(), RIGHT, 'the attempt is kept');
+
+  offline = false;
+  const report = await check(page);
+  await report.getByText('Score 3 of 3: every scenario passes. Well done!').waitFor();
+  assert.ok(chunks.includes('split_exercise_grader.wasm'), 'the worker fetched the grader');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
