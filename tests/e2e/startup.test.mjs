@@ -136,3 +136,34 @@ test('a view picked while the engine loads stays when the engine comes', async (
   assert.equal(await page.getByRole('textbox', { name: 'ST source' }).isVisible(), false);
   await context.close();
 });
+
+test('a share link shows that it opens, never another project, until its reader comes', async () => {
+  const PROGRAM = 'PROGRAM Shared\nVAR_INPUT Go : BOOL; END_VAR\nVAR_OUTPUT Lamp : BOOL; END_VAR\nLamp := Go;\nEND_PROGRAM\n';
+  const sharing = await browser.newContext({ serviceWorkers: 'block' });
+  const first = await sharing.newPage();
+  await first.goto(server.url);
+  await first.getByRole('button', { name: 'New project' }).click();
+  await first.getByRole('textbox', { name: 'ST source' }).fill(PROGRAM);
+  await first.waitForTimeout(500);
+  await first.getByRole('button', { name: 'Share' }).click();
+  const link = await first.getByRole('textbox', { name: 'Share link' }).inputValue();
+  await sharing.close();
+
+  // A fresh browser opens the link; the link's reader (a chunk) is held back.
+  const context = await browser.newContext({ serviceWorkers: 'block' });
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  await context.route('**/split_share_reader.wasm', async (route) => { await held; await route.continue(); });
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(link);
+  await page.getByRole('status').filter({ hasText: 'Opening the shared project…' }).waitFor();
+  assert.equal(await page.getByRole('textbox', { name: 'ST source' }).isVisible(), false, 'no other project to type into meanwhile');
+  release();
+  const editor = page.getByRole('textbox', { name: 'ST source' });
+  await editor.waitFor();
+  assert.equal(await editor.inputValue(), PROGRAM);
+  assert.deepEqual(errors, []);
+  await context.close();
+});

@@ -170,9 +170,15 @@ fn NewPou(petri: bool) -> impl IntoView {
 pub fn PouPane() -> impl IntoView {
     let state = expect_context::<AppState>();
     let view = Memo::new(move |_| state.view.get());
+    let opening = state.opening_shared;
     view! {
         <Navigator/>
-        <div class="pou-st" style:display=move || if view.get() == PouView::St { "" } else { "none" }>
+        {move || opening.get().then(|| view! {
+            <p class="lazy-loading" role="status">{t(K::state_opening_shared)}</p>
+        })}
+        <div class="pou-st" style:display=move || {
+            if view.get() == PouView::St && !opening.get() { "" } else { "none" }
+        }>
             <Editor/>
         </div>
         {move || match view.get() {

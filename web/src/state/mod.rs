@@ -165,6 +165,9 @@ pub struct AppState {
     /// The engine's checker and compiler are loaded (a chunk the page fetches as it starts:
     /// `crate::lazy::load_engine`); until then the panels say so.
     pub engine_ready: RwSignal<bool>,
+    /// The page was opened by a share link whose project is being read (its reader is a
+    /// chunk): the editor waits for it rather than show another project meanwhile.
+    pub opening_shared: RwSignal<bool>,
     /// Run or Step pressed while the engine was loading: done once it is.
     scan_when_ready: StoredValue<Option<ScanWish>>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
@@ -249,6 +252,7 @@ impl AppState {
             check_pending: StoredValue::new(false),
             steps_taken: RwSignal::new(0),
             engine_ready: RwSignal::new(crate::lazy::engine().is_some()),
+            opening_shared: RwSignal::new(false),
             scan_when_ready: StoredValue::new(None),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),

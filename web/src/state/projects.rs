@@ -94,10 +94,12 @@ impl AppState {
             } else {
                 // The link's reader (base64 and DEFLATE) is a chunk fetched only for links.
                 let state = *self;
+                state.opening_shared.set(true);
                 leptos::task::spawn_local(async move {
                     if !state.open_shared(&hash).await {
                         state.open_most_recent(interrupted);
                     }
+                    state.opening_shared.set(false);
                 });
                 return;
             }
