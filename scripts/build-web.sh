@@ -11,8 +11,8 @@
 #   3. wasm-split cuts it at the `#[wasm_split]` functions (web/src/lazy.rs,
 #      web/src/workers/mod.rs): the main module (the first load) and the chunks fetched on
 #      first use, with the JS that links them (`__wasm_split.js`).
-#   4. wasm-bindgen binds the main module; wasm-opt -Oz shrinks it and each chunk; terser
-#      minifies the JS.
+#   4. wasm-bindgen binds the main module; wasm-opt -Oz shrinks it and each chunk; the
+#      engine's files go into one (scripts/pack.mjs); terser minifies the JS.
 #   5. scripts/site.mjs puts it all into dist/app-<hash>/, starts it from index.html, writes
 #      the service worker dist/sw.js with the build's file list and id, and checks sizes.
 set -euo pipefail
@@ -51,6 +51,8 @@ for f in "$work"/split/split_*.wasm "$work"/split/chunk_*.wasm; do
 done
 wait "$main_opt"
 cp "$work/split/__wasm_split.js" web/boot.js web/worker.js "$work/app/"
+# The engine, fetched as the page starts, in one file rather than its 74 (scripts/pack.mjs).
+node scripts/pack.mjs "$work" engine
 # The diagrams' and the exercises' style sheets come with their views (web/src/lazy.rs).
 cp public/views.css public/exercises.css "$work/app/"
 cp -r "$out_dir/exercises" "$work/app/exercises"

@@ -205,8 +205,11 @@ function finish() {
   const problems = [];
   const parts = splits();
   const worker = `${folder}/worker.js`;
+  // Files packed into one (scripts/pack.mjs) are fetched as their pack.
+  const packs = JSON.parse(readFileSync(join(work, 'packs.json'), 'utf8'));
+  const packOf = new Map(Object.entries(packs).flatMap(([pack, held]) => held.map((f) => [f, pack])));
   const partFiles = (name) => {
-    const own = (parts.get(name) ?? []).map((f) => `${folder}/${f}`);
+    const own = [...new Set((parts.get(name) ?? []).map((f) => packOf.get(f) ?? f))].map((f) => `${folder}/${f}`);
     return name.endsWith('_worker') ? [worker, ...own] : own;
   };
   // Fetched right after the first load, whatever the student does.

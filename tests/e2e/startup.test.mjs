@@ -30,7 +30,7 @@ test('the editor comes before the engine; Run pressed while it loads runs once i
   let release;
   const held = new Promise((resolve) => { release = resolve; });
   let asked = 0;
-  await context.route('**/split_engine.wasm', async (route) => {
+  await context.route('**/pack_engine.wasm', async (route) => {
     asked++;
     await held;
     await route.continue();
@@ -86,7 +86,7 @@ test('a project that stops the page when the engine, come late, checks it is not
   // (longer than an opening takes to settle), and the check it then makes stops the page.
   let release;
   const held = new Promise((resolve) => { release = resolve; });
-  await context.route('**/split_engine.wasm', async (route) => { await held; await route.continue(); });
+  await context.route('**/pack_engine.wasm', async (route) => { await held; await route.continue(); });
   page = await context.newPage();
   await page.goto(server.url);
   await page.getByText('Loading the checker and the simulator…').first().waitFor();
@@ -122,14 +122,17 @@ test('a view picked while the engine loads stays when the engine comes', async (
 
   let release;
   const held = new Promise((resolve) => { release = resolve; });
-  await context.route('**/split_engine.wasm', async (route) => { await held; await route.continue(); });
+  await context.route('**/pack_engine.wasm', async (route) => { await held; await route.continue(); });
   page = await context.newPage();
   await page.goto(server.url);
   await page.getByText('Loading the checker and the simulator…').first().waitFor();
   await page.getByRole('button', { name: 'Ladder diagram Latch' }).click();
+  // The ladder editor's chunks share code with the engine, which comes in one file: the
+  // editor shows once that file is here.
+  await page.getByText('Loading the ladder editor…').waitFor();
+  release();
   const ladder = page.getByRole('region', { name: 'Ladder diagram Latch' });
   await ladder.waitFor();
-  release();
   await page.getByText('No problems found.').waitFor();
   await page.getByRole('status', { name: /^PLC state: (Stopped|Paused)$/ }).waitFor();
   assert.equal(await ladder.isVisible(), true, 'the ladder diagram picked stays shown');
