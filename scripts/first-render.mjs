@@ -9,8 +9,12 @@
 //   ladder editor from `Create` in `New ladder POU` to the rung grid on screen, the first
 //                 time in the page (its chunk fetched then), on the 9 Mbit/s profile.
 //
+// The files are served gzipped (-9), as a static host serves them and as the sizes are
+// counted; `--raw` serves them uncompressed (the figures before 2026-12-06 were so).
+//
 // Prints each figure's median and slowest run. Usage: node scripts/first-render.mjs [runs]
-// (default 5) [--only NAME] where NAME is loopback, 9mbit, 1.6mbit, second or ladder.
+// (default 5) [--only NAME] [--raw] where NAME is loopback, 9mbit, 1.6mbit, second or
+// ladder.
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { startServer } from '../tests/e2e/server.mjs';
@@ -120,7 +124,8 @@ async function ladderOpen(browser, url, profile) {
   return ms;
 }
 
-const server = await startServer(path.join(root, 'dist'));
+// Compressed as a static host sends it (gzip -9); `--raw` serves the files as they are.
+const server = await startServer(path.join(root, 'dist'), '/trainer/', {}, { gzip: !args.includes('--raw') });
 const browser = await launch();
 const figures = [];
 const measure = async (name, label, once) => {
