@@ -15,6 +15,7 @@
 // about twelve round trips, and the next part asked for (the ladder editor) waited behind.
 import { readFileSync, writeFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
+import { splitParts } from './wasm-split-parts.mjs';
 
 const [work, ...names] = process.argv.slice(2);
 if (!work || names.length === 0) {
@@ -24,22 +25,6 @@ if (!work || names.length === 0) {
 const app = join(work, 'app');
 const jsPath = join(app, '__wasm_split.js');
 let js = readFileSync(jsPath, 'utf8');
-
-/** split name → its own file and the chunk files it needs, from the link JS. */
-function splits(source) {
-  const chunks = new Map();
-  for (const m of source.matchAll(/const (__chunk_\d+) = makeLoad\(\(\) => \{\s*const src = fetch\(new URL\("\.\/([^"]+)"/g)) {
-    chunks.set(m[1], m[2]);
-  }
-  const out = new Map();
-  const exportRe = /export const __wasm_split_load_(\w+) = wrapAsyncCb\(makeLoad\(([\s\S]*?)\n?, \[([^\]]*)\]\)\)/g;
-  for (const m of source.matchAll(exportRe)) {
-    const own = /"\.\/([^"]+\.wasm)"/.exec(m[2]);
-    const deps = m[3].split(',').map((s) => s.trim()).filter(Boolean).map((c) => chunks.get(c));
-    out.set(m[1], [...(own ? [own[1]] : []), ...deps]);
-  }
-  return out;
-}
 
 /** `n` as unsigned LEB128. */
 function leb(n) {
@@ -64,7 +49,7 @@ function packOf(files) {
   return Buffer.concat(parts);
 }
 
-const all = splits(js);
+const all = splitParts(js);
 const packed = new Map(); // file → pack
 const packs = {};
 for (const name of names) {

@@ -15,6 +15,7 @@ import { createHash } from 'node:crypto';
 import { dirname, join, relative, sep } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
+import { splitParts } from './wasm-split-parts.mjs';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const [mode, dist = 'dist', work = 'target/site'] = process.argv.slice(2);
@@ -83,19 +84,7 @@ function assemble() {
 
 /** split name → the chunk files it needs (its own and the shared ones), from the link JS. */
 function splits() {
-  const js = readFileSync(join(work, 'split', '__wasm_split.js'), 'utf8');
-  const chunks = new Map();
-  for (const m of js.matchAll(/const (__chunk_\d+) = makeLoad\(\(\) => \{\s*const src = fetch\(new URL\("\.\/([^"]+)"/g)) {
-    chunks.set(m[1], m[2]);
-  }
-  const out = new Map();
-  const exportRe = /export const __wasm_split_load_(\w+) = wrapAsyncCb\(makeLoad\(([\s\S]*?)\n?, \[([^\]]*)\]\)\)/g;
-  for (const m of js.matchAll(exportRe)) {
-    const own = /"\.\/([^"]+\.wasm)"/.exec(m[2]);
-    const deps = m[3].split(',').map((s) => s.trim()).filter(Boolean).map((c) => chunks.get(c));
-    out.set(m[1], [...(own ? [own[1]] : []), ...deps]);
-  }
-  return out;
+  return splitParts(readFileSync(join(work, 'split', '__wasm_split.js'), 'utf8'));
 }
 
 /** The code the first load must not hold: path prefixes of Rust functions. */
