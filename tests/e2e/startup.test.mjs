@@ -23,18 +23,24 @@ after(async () => {
   await server?.close();
 });
 
-test('the editor comes before the engine; Run pressed while it loads runs once it is here', async () => {
-  // No service worker: every file comes through the network, where the engine's chunk is
-  // held back until the test lets it go.
-  const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
+/** Holds back every request for `pattern` until `release()`; `asked()` counts them. */
+async function holdBack(context, pattern) {
   let release;
   const held = new Promise((resolve) => { release = resolve; });
   let asked = 0;
-  await context.route('**/pack_engine.wasm', async (route) => {
+  await context.route(pattern, async (route) => {
     asked++;
     await held;
     await route.continue();
   });
+  return { release, asked: () => asked };
+}
+
+test('the editor comes before the engine; Run pressed while it loads runs once it is here', async () => {
+  // No service worker: every file comes through the network, where the engine's chunk is
+  // held back until the test lets it go.
+  const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
+  const { release, asked } = await holdBack(context, '**/pack_engine.wasm');
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
@@ -46,7 +52,7 @@ test('the editor comes before the engine; Run pressed while it loads runs once i
   await page.getByText('Loading the checker and the simulator…').first().waitFor();
   await page.getByRole('status', { name: 'PLC state: Loading…' }).waitFor();
   assert.equal(await page.getByText('No problems found.').count(), 0, 'no verdict before the check');
-  assert.equal(asked, 1, 'the engine was asked for once, as the page started');
+  assert.equal(asked(), 1, 'the engine was asked for once, as the page started');
 
   // Typing works meanwhile; Run is offered and says it waits.
   await editor.press('Control+End');
@@ -63,7 +69,7 @@ test('the editor comes before the engine; Run pressed while it loads runs once i
   assert.equal(await page.getByRole('alert').filter({ hasText: 'The simulator is loading' }).count(), 0, 'the banner went with the wait');
   await page.getByRole('checkbox', { name: 'Start', exact: true }).check();
   await page.getByRole('img', { name: 'Motor: ON' }).waitFor();
-  assert.equal(asked, 1, 'fetched once');
+  assert.equal(asked(), 1, 'fetched once');
   assert.deepEqual(errors, []);
   await context.close();
 });
@@ -84,9 +90,7 @@ test('a project that stops the page when the engine, come late, checks it is not
 
   // The stored project opens; the engine comes only after the page has run for a while
   // (longer than an opening takes to settle), and the check it then makes stops the page.
-  let release;
-  const held = new Promise((resolve) => { release = resolve; });
-  await context.route('**/pack_engine.wasm', async (route) => { await held; await route.continue(); });
+  const { release } = await holdBack(context, '**/pack_engine.wasm');
   page = await context.newPage();
   await page.goto(server.url);
   await page.getByText('Loading the checker and the simulator…').first().waitFor();
@@ -120,9 +124,7 @@ test('a view picked while the engine loads stays when the engine comes', async (
   await page.waitForFunction(() => (localStorage.getItem('plc-trainer/v1/index') ?? '').length > 0);
   await page.close();
 
-  let release;
-  const held = new Promise((resolve) => { release = resolve; });
-  await context.route('**/pack_engine.wasm', async (route) => { await held; await route.continue(); });
+  const { release } = await holdBack(context, '**/pack_engine.wasm');
   page = await context.newPage();
   await page.goto(server.url);
   await page.getByText('Loading the checker and the simulator…').first().waitFor();
@@ -154,9 +156,7 @@ test('a share link shows that it opens, never another project, until its reader 
 
   // A fresh browser opens the link; the link's reader (a chunk) is held back.
   const context = await browser.newContext({ serviceWorkers: 'block' });
-  let release;
-  const held = new Promise((resolve) => { release = resolve; });
-  await context.route('**/split_share_reader.wasm', async (route) => { await held; await route.continue(); });
+  const { release } = await holdBack(context, '**/split_share_reader.wasm');
   const page = await context.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));

@@ -319,14 +319,11 @@ impl Exercises {
             self.checking.set(false);
             match reply {
                 Ok(Reply::Graded(text)) => {
-                    let report = match crate::lazy::read_report(text).await {
-                        Ok(Ok(report)) => report,
-                        Ok(Err(e)) => {
-                            return state.error(tf(K::exercise_check_failed, &[("error", &e)]))
-                        }
+                    let read = crate::lazy::read_report(text).await;
+                    let report = match read.map_err(|e| e.to_string()).and_then(|r| r) {
+                        Ok(report) => report,
                         Err(e) => {
-                            let e = e.to_string();
-                            return state.error(tf(K::exercise_check_failed, &[("error", &e)]));
+                            return state.error(tf(K::exercise_check_failed, &[("error", &e)]))
                         }
                     };
                     if report.error.is_none() && report.score == report.total {
