@@ -103,6 +103,10 @@ const FORBIDDEN = [
   // Fetched at start (`engine`), while the first screen is drawn.
   ['the ST checker', 'plc_core::semantic::check'],
   ['the compiler', 'plc_core::compile::'],
+  ['the ST parser', 'plc_core::syntax::parser::Parser'],
+  ['the virtual machine', 'plc_core::vm::machine::'],
+  ['the fast scan path', 'plc_core::vm::fast::'],
+  ['the standard functions', 'plc_core::vm::builtins::'],
 ];
 
 /** Each function of a wasm module with a name section: its Rust path and code size. */

@@ -22,7 +22,7 @@ use leptos::prelude::*;
 use leptos::wasm_split::wasm_split;
 use plc_core::build::{LadderLowering, Lowerings, NetworkPass, PetriPass};
 use plc_core::semantic::{IlPass, SfcPass};
-use plc_core::sim::{BreakpointId, SimError, Simulator};
+use plc_core::sim::{BreakpointId, ScanOutcome, SimError, Simulator};
 
 use crate::i18n::{t, K};
 
@@ -444,11 +444,27 @@ pub fn lowerings() -> Lowerings {
     PASSES.with(Cell::get)
 }
 
-/// The engine's checker and compiler (a chunk fetched right after the first screen).
+/// The engine: the ST parser, checker and compiler and the virtual machine that runs the
+/// scans (a chunk fetched right after the first screen: the page holds simulators, reads
+/// and draws them, and calls the engine's code through these).
 #[derive(Clone, Copy)]
 pub struct Engine {
     /// Builds a project with the passes loaded.
     pub build: fn(&plc_core::project::Project, &Lowerings) -> plc_core::build::ProjectBuild,
+    /// The passes a project needs that are not loaded yet (`Lowerings::lacks`: it parses
+    /// the ST source for SFC and IL bodies).
+    pub lacks: fn(&Lowerings, &plc_core::project::Project) -> Vec<&'static str>,
+    /// The POUs of an ST source that are written as SFC charts.
+    pub charts: fn(&str) -> Vec<String>,
+    /// Runs scans (the virtual machine).
+    pub run_scans: fn(&mut Simulator, u64) -> ScanOutcome,
+    /// Cold restart (the first scan runs).
+    pub cold_restart: fn(&mut Simulator),
+    /// Warm restart, RETAIN kept (the first scan runs).
+    pub warm_restart: fn(&mut Simulator),
+    /// The ST source with a declaration of a variable added for its use at a span
+    /// (`syntax::fix::declare_variable`: it parses the source).
+    pub declare: fn(&str, plc_core::diagnostics::Span, &str, &str) -> Option<String>,
     /// Powers a simulator on for a PROGRAM of a build, with its plant.
     pub simulator: PowerOn,
     /// Holds a variable at a value typed as an IEC literal.
@@ -496,14 +512,23 @@ pub async fn load_engine() -> Result<(), LoadFailed> {
     Ok(())
 }
 
-/// The engine's checker and compiler and the simulator's operations that read ST, a chunk
-/// of their own (`engine`, fetched as the page starts): the first screen is drawn without
-/// them. The simulator's scanning and reading stay in the main module (the panels call
-/// them on every frame); every operation that parses or compiles ST is here.
+/// The engine's parser, checker, compiler and virtual machine, and the simulator's
+/// operations that read ST, a chunk of their own (`engine`, fetched as the page starts):
+/// the first screen is drawn without them. Only reading a simulator's variables and trace
+/// stays in the main module (the panels do it on every frame); every operation that
+/// parses, compiles or scans is here.
 #[wasm_split(engine, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn engine_chunk() -> Result<Engine, LoadFailed> {
     Ok(Engine {
         build: plc_core::build::build_project_by,
+        lacks: Lowerings::lacks,
+        charts: |source| {
+            plc_core::sfc::outline::outlines(source).into_iter().map(|o| o.pou).collect()
+        },
+        run_scans: Simulator::run_scans,
+        cold_restart: Simulator::cold_restart,
+        warm_restart: Simulator::warm_restart,
+        declare: plc_core::syntax::fix::declare_variable,
         simulator: |b, name, plant| b.simulator_with_plant(name, plant),
         hold: Simulator::hold,
         force: Simulator::force,

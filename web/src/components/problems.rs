@@ -73,7 +73,9 @@ impl Fix {
             }
             Fix::StDeclare { span, name, ty } => {
                 let source = state.project.with_untracked(|p| p.source.clone());
-                match plc_core::syntax::fix::declare_variable(&source, span, &name, &ty) {
+                // A problem to fix comes from a check, which the engine did.
+                let Some(engine) = crate::lazy::engine() else { return };
+                match (engine.declare)(&source, span, &name, &ty) {
                     Some(text) => {
                         // The caret stays on the use, which moved down by the new line.
                         let caret = span.start as usize + (text.len() - source.len());

@@ -122,7 +122,6 @@ impl AppState {
     pub fn check_now(&self) {
         let project = self.project.get_untracked();
         let lowerings = crate::lazy::lowerings();
-        let lacks = lowerings.lacks(&project);
         let Some(engine) = crate::lazy::engine() else {
             // The checker and compiler come in a chunk the page fetches as it starts: the
             // check (and a Run or Step pressed meanwhile) is done when it is here.
@@ -144,6 +143,7 @@ impl AppState {
             });
             return;
         };
+        let lacks = (engine.lacks)(&lowerings, &project);
         if !lacks.is_empty() {
             let state = *self;
             leptos::task::spawn_local(async move {
@@ -160,8 +160,7 @@ impl AppState {
         self.check_pending.set_value(false);
         let build = (engine.build)(&project, &lowerings);
         self.diagnostics.set(build.diagnostics.iter().map(DiagView::new).collect());
-        let charts: Vec<String> =
-            plc_core::sfc::outline::outlines(&project.source).into_iter().map(|o| o.pou).collect();
+        let charts = (engine.charts)(&project.source);
         if self.sfc_charts.with_untracked(|c| *c != charts) {
             self.sfc_charts.set(charts);
         }
@@ -252,8 +251,12 @@ impl AppState {
     /// without ST text), else the ST editor.
     pub fn show_main_view(&self) {
         // Which PROGRAM runs is known once the project is built (see `check_now`).
-        let lacks = self.project.with_untracked(|p| !crate::lazy::lowerings().lacks(p).is_empty());
-        if lacks || !self.engine_ready.get_untracked() {
+        let lacks = |engine: crate::lazy::Engine| {
+            self.project
+                .with_untracked(|p| !(engine.lacks)(&crate::lazy::lowerings(), p).is_empty())
+        };
+        let ready = self.engine_ready.get_untracked().then(crate::lazy::engine).flatten();
+        if ready.is_none_or(lacks) {
             let shown = self.view.get_untracked();
             MAIN_VIEW_PENDING.with(|p| *p.borrow_mut() = Some(shown));
             return;

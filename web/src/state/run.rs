@@ -32,10 +32,11 @@ pub fn marking_of(sim: &dyn Readout, places: &PlaceMap) -> Vec<u32> {
 impl AppState {
     /// Runs `n` scans, noting the marking before the last one.
     fn scan_batch(&self, sim: &mut Simulator, n: u64) -> ScanOutcome {
-        if n == 0 {
+        // A simulator is made by the engine, so the engine is here.
+        let Some(engine) = crate::lazy::engine().filter(|_| n > 0) else {
             return ScanOutcome::Completed;
-        }
-        let outcome = sim.run_scans(n - 1);
+        };
+        let outcome = (engine.run_scans)(sim, n - 1);
         if outcome != ScanOutcome::Completed {
             return outcome;
         }
@@ -43,7 +44,7 @@ impl AppState {
             .running_places
             .with_value(|p| p.as_ref().map(|p| (sim.scan_count(), marking_of(sim, p))));
         self.marking_before_last.set_value(before);
-        sim.run_scans(1)
+        (engine.run_scans)(sim, 1)
     }
 
     /// Runs a batch of `n` scans and sizes the next batch from how long it took, so that a
@@ -210,14 +211,18 @@ impl AppState {
     /// Cold restart.
     pub fn reset(&self) {
         self.run_mode.set(RunMode::Stopped);
-        self.with_sim_mut(Simulator::cold_restart);
+        if let Some(engine) = crate::lazy::engine() {
+            self.with_sim_mut(engine.cold_restart);
+        }
         self.after_restart();
     }
 
     /// Warm restart (RETAIN kept).
     pub fn warm_restart(&self) {
         self.run_mode.set(RunMode::Stopped);
-        self.with_sim_mut(Simulator::warm_restart);
+        if let Some(engine) = crate::lazy::engine() {
+            self.with_sim_mut(engine.warm_restart);
+        }
         self.after_restart();
     }
 
