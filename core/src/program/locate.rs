@@ -20,7 +20,7 @@ fn parse(path: &str) -> Option<Vec<Step<'_>>> {
     let mut first = true;
     while !rest.is_empty() {
         if let Some(r) = rest.strip_prefix('[') {
-            let close = r.find(']')?;
+            let close = r.bytes().position(|b| b == b']')?;
             let idx: Option<Vec<i64>> =
                 r[..close].split(',').map(|t| t.trim().parse::<i64>().ok()).collect();
             steps.push(Step::Index(idx?));
@@ -29,7 +29,9 @@ fn parse(path: &str) -> Option<Vec<Step<'_>>> {
         }
         let r = if first { rest } else { rest.strip_prefix('.')? };
         first = false;
-        let end = r.find(['.', '[']).unwrap_or(r.len());
+        // Bytes, not chars: the page and the plants locate by name on every scan, and a
+        // search for a set of chars is many times slower in the size-optimised wasm build.
+        let end = r.bytes().position(|b| b == b'.' || b == b'[').unwrap_or(r.len());
         let word = r[..end].trim();
         if word.is_empty() {
             return None;
@@ -44,23 +46,38 @@ fn parse(path: &str) -> Option<Vec<Step<'_>>> {
     Some(steps)
 }
 
+/// The slot of the main program's variable or the global named `name` (a program's own
+/// variable first).
+fn variable(exe: &Executable, name: &str) -> Option<Slot> {
+    // The length first: a cheap test that rules out most names without a call.
+    let named = |global: bool| {
+        exe.vars.iter().find(|v| {
+            v.global == global
+                && v.var.name.len() == name.len()
+                && v.var.name.eq_ignore_ascii_case(name)
+        })
+    };
+    let entry = named(false).or_else(|| named(true))?;
+    (entry.var.section != VarSection::InOut).then_some(entry.slot)
+}
+
 /// See [`Executable::locate`].
 pub(crate) fn locate(exe: &Executable, path: &str) -> Option<Slot> {
+    // A plain name (the panels and the plants read most variables so, on every scan) is
+    // looked up without taking the path apart.
+    let plain = path.trim();
+    if !plain.is_empty() && plain.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_') {
+        if plain.bytes().all(|b| b.is_ascii_digit()) {
+            return None;
+        }
+        return variable(exe, plain);
+    }
     let steps = parse(path)?;
     let mut it = steps.into_iter();
     let Some(Step::Name(first)) = it.next() else {
         return None;
     };
-    let entry = exe
-        .vars
-        .iter()
-        .filter(|v| !v.global)
-        .chain(exe.vars.iter().filter(|v| v.global))
-        .find(|v| v.var.name.eq_ignore_ascii_case(first))?;
-    if entry.var.section == VarSection::InOut {
-        return None;
-    }
-    let mut slot = entry.slot;
+    let mut slot = variable(exe, first)?;
     for step in it {
         if slot.bit.is_some() {
             return None;

@@ -642,3 +642,30 @@ END_CONFIGURATION";
     s.cold_restart();
     assert_eq!((int(&s, "Line.V1.Setpoint"), int(&s, "Line.V1.Kept")), (50, 7));
 }
+
+/// The locator's plain-name path (no dots, no brackets) finds what the full path parser
+/// finds: any case, spaces around, the program's own variable before a global of the same
+/// name; a number, an empty path or a name not declared is no variable.
+#[test]
+fn a_plain_name_is_located_as_the_path_parser_locates_it() {
+    let mut s = sim("
+VAR_GLOBAL Level : INT := 5; Shared : INT := 7; END_VAR
+PROGRAM Main
+VAR Level : INT := 1; Word_1 : WORD := 16#8000; END_VAR
+Level := Level + 1;
+END_PROGRAM");
+    s.scan();
+    assert_eq!(int(&s, "level"), 2, "the program's Level, not the global");
+    assert_eq!(int(&s, "  LEVEL "), 2);
+    assert_eq!(int(&s, "shared"), 7);
+    assert!(boolean(&s, "word_1.15"), "a bit of a plain name still goes through the parser");
+    for missing in ["", "   ", "15", "Nope", "Level2", "Lev el"] {
+        assert!(
+            matches!(s.read(missing), Err(SimError::UnknownVariable(_))),
+            "{missing:?} is no variable"
+        );
+    }
+    s.hold_value("LEVEL", Value::Int(40, semantic::Elem::Int)).unwrap();
+    s.scan();
+    assert_eq!(int(&s, "Level"), 41);
+}
