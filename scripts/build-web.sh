@@ -52,7 +52,8 @@ done
 wait "$main_opt"
 cp "$work/split/__wasm_split.js" web/boot.js web/worker.js "$work/app/"
 # The engine, fetched as the page starts, in one file rather than its 74 (scripts/pack.mjs).
-node scripts/pack.mjs "$work" engine
+# The diagram models' readers (a stored ladder project opens with them) do not wait for it.
+node scripts/pack.mjs "$work" engine --apart project_reader
 # The diagrams' and the exercises' style sheets come with their views (web/src/lazy.rs).
 cp public/views.css public/exercises.css "$work/app/"
 cp -r "$out_dir/exercises" "$work/app/exercises"

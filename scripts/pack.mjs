@@ -1,7 +1,7 @@
 // One file for a part that wasm-split cut into many (docs/loading.md, "One file for the
 // engine"): scripts/build-web.sh runs it on the app folder before the JS is minified.
 //
-//   node scripts/pack.mjs WORK SPLIT...
+//   node scripts/pack.mjs WORK SPLIT... [--apart OTHER...]
 //
 // For each SPLIT (a `#[wasm_split]` name, e.g. `engine`), the split's own module and every
 // chunk it needs go into WORK/app/pack_SPLIT.wasm, and leave the folder: a wasm module made
@@ -9,6 +9,9 @@
 // it as wasm). WORK/app/__wasm_split.js then fetches those files from the pack, one fetch
 // for all, and every other file as before. A chunk is packed once, with the first SPLIT
 // that needs it. WORK/packs.json lists what each pack holds (scripts/site.mjs reads it).
+// A chunk that a split named after `--apart` needs too stays a file of its own, so that
+// OTHER never waits for a pack (the readers of a stored project's diagram POUs, fetched
+// as the page starts when the project has such POUs, share code with the engine).
 //
 // Why: wasm-split makes one chunk for each set of splits that share code, so the engine was
 // 74 files; on a 60 ms network with six connections per host they held the connections for
@@ -17,9 +20,12 @@ import { readFileSync, writeFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { splitParts } from './wasm-split-parts.mjs';
 
-const [work, ...names] = process.argv.slice(2);
+const [work, ...rest] = process.argv.slice(2);
+const cut = rest.indexOf('--apart');
+const names = cut < 0 ? rest : rest.slice(0, cut);
+const apartNames = cut < 0 ? [] : rest.slice(cut + 1);
 if (!work || names.length === 0) {
-  console.error('usage: node scripts/pack.mjs WORK SPLIT...');
+  console.error('usage: node scripts/pack.mjs WORK SPLIT... [--apart OTHER...]');
   process.exit(2);
 }
 const app = join(work, 'app');
@@ -50,13 +56,17 @@ function packOf(files) {
 }
 
 const all = splitParts(js);
+const apart = new Set(apartNames.flatMap((name) => {
+  if (!all.has(name)) throw new Error(`no split named ${name} in ${jsPath}`);
+  return all.get(name);
+}));
 const packed = new Map(); // file → pack
 const packs = {};
 for (const name of names) {
   const files = all.get(name);
   if (!files) throw new Error(`no split named ${name} in ${jsPath}`);
   const pack = `pack_${name}.wasm`;
-  const mine = files.filter((f) => !packed.has(f));
+  const mine = files.filter((f) => !packed.has(f) && !apart.has(f));
   writeFileSync(join(app, pack), packOf(mine.map((f) => [f, readFileSync(join(app, f))])));
   for (const f of mine) {
     packed.set(f, pack);

@@ -107,6 +107,10 @@ const FORBIDDEN = [
   ['the virtual machine', 'plc_core::vm::machine::'],
   ['the fast scan path', 'plc_core::vm::fast::'],
   ['the standard functions', 'plc_core::vm::builtins::'],
+  // Fetched with the first project that has diagram POUs (`project_reader`).
+  ['the ladder model\'s reader', 'plc_core::ladder::model::_::_<impl serde_core::de::Deserialize'],
+  ['the network model\'s reader', 'plc_core::network::model::_::_<impl serde_core::de::Deserialize'],
+  ['the Petri net model\'s reader', 'plc_core::petri::model::_::_<impl serde_core::de::Deserialize'],
 ];
 
 /** Each function of a wasm module with a name section: its Rust path and code size. */

@@ -170,3 +170,55 @@ test('a share link shows that it opens, never another project, until its reader 
   assert.deepEqual(errors, []);
   await context.close();
 });
+
+test('a stored ladder project says it opens until its diagrams\' readers come, then opens whole', async () => {
+  const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
+  let page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('No problems found.').waitFor();
+  await page.getByRole('button', { name: 'New ladder POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill('Latch');
+  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
+  await page.getByRole('button', { name: 'Create' }).click();
+  await page.getByRole('region', { name: 'Ladder diagram Latch' }).waitFor();
+  await page.waitForFunction(() => Object.keys(localStorage).some((k) => {
+    const text = k.includes('/project/') ? localStorage.getItem(k) : '';
+    return text.includes('"ladder"') && text.includes('Latch');
+  }));
+  await page.close();
+
+  // The project's ladder POU is read by a chunk the first screen does not hold.
+  const { release, asked } = await holdBack(context, '**/split_project_reader.wasm');
+  page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(server.url);
+  await page.getByRole('status').filter({ hasText: 'Opening the project…' }).waitFor();
+  assert.equal(asked(), 1);
+  assert.equal(await page.getByRole('textbox', { name: 'ST source' }).isVisible(), false, 'no other project to type into meanwhile');
+  release();
+  // The project opens whole: its ST PROGRAM in the editor, its ladder POU a view away.
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  await page.getByRole('button', { name: 'Ladder diagram Latch' }).click();
+  await page.getByRole('region', { name: 'Ladder diagram Latch' }).waitFor();
+  await page.getByText('No problems found.').waitFor();
+  assert.equal(await page.getByRole('status').filter({ hasText: 'Opening the project…' }).count(), 0);
+  // A project with only ST never fetches the readers.
+  await page.getByRole('button', { name: 'New project' }).click();
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  await page.waitForTimeout(500);
+  await page.close();
+  assert.deepEqual(errors, []);
+  await context.close();
+
+  const fresh = await browser.newContext({ serviceWorkers: 'block' });
+  let fetched = 0;
+  await fresh.route('**/split_project_reader.wasm', (route) => { fetched++; return route.continue(); });
+  page = await fresh.newPage();
+  await page.goto(server.url);
+  await page.getByText('No problems found.').waitFor();
+  await page.reload();
+  await page.getByText('No problems found.').waitFor();
+  assert.equal(fetched, 0, 'an ST project opens without the diagrams\' readers');
+  await fresh.close();
+});

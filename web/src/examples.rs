@@ -2,7 +2,7 @@
 //! time by `build.rs`, and opening one as a new project. The files are copied next to the
 //! page (`examples/` in `dist/`) and fetched when chosen.
 
-use plc_core::open::open_plain;
+use plc_core::open::open_plain_by;
 use plc_core::project::Project;
 use wasm_bindgen::JsCast;
 use wasm_bindgen_futures::JsFuture;
@@ -41,7 +41,7 @@ pub fn examples() -> Vec<Example> {
 /// The example `file` (its text) as a new project.
 pub fn project_of(file: &str, text: &str) -> Result<Project, String> {
     let name = naming::humanise(naming::stem(file));
-    let mut project = open_plain(&name, text)
+    let mut project = open_plain_by(&name, text, crate::lazy::project_reader())
         .map_err(|e| said_text(e.said()))?
         .ok_or_else(|| tf(K::state_example_not_project, &[("file", file)]))?
         .project;
@@ -72,7 +72,10 @@ pub async fn open(file: &str) -> Result<Project, String> {
         ));
     }
     let text = JsFuture::from(response.text().map_err(fail)?).await.map_err(fail)?;
-    let mut project = project_of(file, &text.as_string().unwrap_or_default())?;
+    let text = text.as_string().unwrap_or_default();
+    // A ladder or Petri net example needs the diagram models' readers (a chunk).
+    crate::lazy::readers_for(&text).await.map_err(|e| e.to_string())?;
+    let mut project = project_of(file, &text)?;
     if shown_lang() != plc_core::i18n::Lang::En {
         project.name = t(key).to_string();
     }

@@ -2,7 +2,7 @@
 //! in the import worker (`src/workers/import.rs`), which the page starts only then.
 
 use plc_core::exercise::Sentence;
-use plc_core::open::{open_plain, FileKind};
+use plc_core::open::{open_plain_by, FileKind};
 use plc_core::project::Project;
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::{JsCast, JsValue};
@@ -84,7 +84,8 @@ fn kind_of(description: &str) -> FileKind {
 
 /// Opens `text` (a file named `stem` without its extension) as a project.
 pub async fn import_text(stem: &str, text: &str) -> Result<Imported, String> {
-    match open_plain(stem, text) {
+    crate::lazy::readers_for(text).await.map_err(|e| e.to_string())?;
+    match open_plain_by(stem, text, crate::lazy::project_reader()) {
         Ok(Some(opened)) => Ok(Imported {
             project: opened.project,
             kind: opened.kind,
@@ -141,7 +142,11 @@ async fn export_in_worker(what: &str, pou: &str, project: &Project) -> Result<St
 /// Runs the import worker on one file and reads its answer.
 async fn in_worker(stem: &str, text: &str) -> Result<Imported, String> {
     let request = js_sys::Array::of2(&JsValue::from_str(stem), &JsValue::from_str(text));
-    read_reply(&ask_worker(&request).await?)
+    let reply = ask_worker(&request).await?;
+    if let Ok(Reply { project, .. }) = serde_json::from_str::<Reply>(&reply) {
+        crate::lazy::readers_for(&project).await.map_err(|e| e.to_string())?;
+    }
+    read_reply(&reply)
 }
 
 /// Sends `request` to a fresh import worker and returns its answer.
@@ -234,7 +239,7 @@ fn read_reply(reply: &str) -> Result<Imported, String> {
     if let Some(error) = reply.error {
         return Err(sentence_text(reply.error_sentence.as_ref(), &error));
     }
-    let project = Project::from_file(&reply.project).map_err(|e| said_text(e.said()))?;
+    let project = crate::lazy::project_reader()(&reply.project).map_err(|e| said_text(e.said()))?;
     Ok(Imported { project, kind: kind_of(&reply.kind), notes: reply.notes })
 }
 

@@ -430,6 +430,8 @@ thread_local! {
     static ENGINE_LOADING: Cell<bool> = const { Cell::new(false) };
     /// The network watches, loaded with the network pass.
     static WATCHES: Cell<Option<NetworkWatches>> = const { Cell::new(None) };
+    /// The project reader with the diagram models' readers, once loaded.
+    static READER: Cell<Option<plc_core::project::ProjectReader>> = const { Cell::new(None) };
 }
 
 /// The network watches, once the network pass is loaded (it is before a project with a
@@ -488,6 +490,45 @@ pub type PowerOn = fn(
 
 /// A simulator operation on a variable with a value typed as text.
 pub type SimText = fn(&mut Simulator, &str, &str) -> Result<(), SimError>;
+
+/// How the page reads a stored project: with the diagram models' readers once they are
+/// here, else without them (a project with diagram POUs then waits for them:
+/// `AppState::open`).
+pub fn project_reader() -> plc_core::project::ProjectReader {
+    // Natively (the tests) there are no chunks: the whole reader is there.
+    #[cfg(not(target_arch = "wasm32"))]
+    return plc_core::project::Project::from_file;
+    #[cfg(target_arch = "wasm32")]
+    READER.with(Cell::get).unwrap_or(plc_core::project::Project::from_file_without_diagrams)
+}
+
+/// Fetches the diagram models' readers when `text` is a project file with diagram POUs
+/// (once for the page): [`project_reader`] then reads it whole.
+pub async fn readers_for(text: &str) -> Result<(), LoadFailed> {
+    use plc_core::project::{Project, ProjectError};
+    let lacking =
+        Project::from_file_without_diagrams(text) == Err(ProjectError::NeedsDiagramReaders);
+    if lacking && READER.with(Cell::get).is_none() {
+        load_project_reader().await?;
+    }
+    Ok(())
+}
+
+/// Fetches the readers of the diagram POUs' models (ladder, network, Petri net), the
+/// first time a stored project with such POUs is opened.
+pub async fn load_project_reader() -> Result<(), LoadFailed> {
+    let reader = project_reader_chunk().await?;
+    READER.with(|r| r.set(Some(reader)));
+    Ok(())
+}
+
+/// Reads a project file with its diagram POUs (`Project::from_file`): the readers of the
+/// ladder, network and Petri net models are a chunk of their own, which a project with
+/// only ST never fetches.
+#[wasm_split(project_reader, wasm_split_path = ::leptos::wasm_split, fallible)]
+fn project_reader_chunk() -> Result<plc_core::project::ProjectReader, LoadFailed> {
+    Ok(plc_core::project::Project::from_file)
+}
 
 /// The engine, once loaded.
 pub fn engine() -> Option<Engine> {

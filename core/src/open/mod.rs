@@ -111,9 +111,20 @@ pub fn file_kind(text: &str) -> FileKind {
 /// only this (the web page) stays small; `Ok(None)` for PLCopen XML and PNML, which need
 /// [`open_text`] (the web page runs it in a worker, loaded when a file needs it).
 pub fn open_plain(name: &str, text: &str) -> Result<Option<Opened>, OpenError> {
+    open_plain_by(name, text, Project::from_file)
+}
+
+/// [`open_plain`] reading a project file with `read` (the web page reads without the
+/// diagram models' readers until a file needs them:
+/// [`Project::from_file_without_diagrams`]).
+pub fn open_plain_by(
+    name: &str,
+    text: &str,
+    read: crate::project::ProjectReader,
+) -> Result<Option<Opened>, OpenError> {
     let kind = file_kind(text);
     let project = match kind {
-        FileKind::Project => Project::from_file(text).map_err(OpenError::Project)?,
+        FileKind::Project => read(text).map_err(OpenError::Project)?,
         FileKind::St => {
             let mut project = Project::new(name);
             project.source = text.to_string();
@@ -133,7 +144,16 @@ pub fn open_plain(name: &str, text: &str) -> Result<Option<Opened>, OpenError> {
 /// Opens `text` as a project. `name` names the project when the file has no name of its
 /// own (ST text: usually the file name without its extension).
 pub fn open_text(name: &str, text: &str) -> Result<Opened, OpenError> {
-    if let Some(opened) = open_plain(name, text)? {
+    open_text_by(name, text, Project::from_file)
+}
+
+/// [`open_text`] reading a project file with `read` (see [`open_plain_by`]).
+pub fn open_text_by(
+    name: &str,
+    text: &str,
+    read: crate::project::ProjectReader,
+) -> Result<Opened, OpenError> {
+    if let Some(opened) = open_plain_by(name, text, read)? {
         return Ok(opened);
     }
     if file_kind(text) == FileKind::Pnml {

@@ -18,7 +18,8 @@ pub use pous::PouError;
 pub use programs::{PouLanguage, ProgramPou};
 pub use scene::{Scene, Widget, WidgetKind};
 pub use store::{
-    MemoryBackend, Opened, ProjectStore, ProjectSummary, StorageBackend, StoreError, STORE_LAYOUT,
+    MemoryBackend, Opened, ProjectReader, ProjectStore, ProjectSummary, StorageBackend, StoreError,
+    STORE_LAYOUT,
 };
 
 use crate::diagnostics::Said;
@@ -140,31 +141,101 @@ impl Project {
     /// straight from the text: a detour through `serde_json::Value` would compile every
     /// model type's reader a second time (about 12 KB of the web app's download).
     pub fn from_file(text: &str) -> Result<Project, ProjectError> {
-        /// Only the schema version (every other field is skipped).
+        read_file(text, |text| serde_json::from_str::<Project>(text).map(Some))
+    }
+
+    /// Reads a project file as [`Project::from_file`] does, without the readers of the
+    /// diagram POUs' models (the web app's first screen is drawn without them): a file
+    /// with ladder, network or Petri net POUs is [`ProjectError::NeedsDiagramReaders`],
+    /// to be read with [`Project::from_file`] once they are loaded (unless the rest of it
+    /// is damaged: that is said at once). A file without diagram POUs reads as
+    /// `from_file` reads it, to the same project or the same error.
+    pub fn from_file_without_diagrams(text: &str) -> Result<Project, ProjectError> {
+        read_file(text, |text| serde_json::from_str::<NoDiagrams>(text).map(NoDiagrams::project))
+    }
+
+    /// The name a project file gives, read without the rest of it.
+    pub fn name_in_file(text: &str) -> Option<String> {
+        /// Only the name (every other field is skipped).
         #[derive(Deserialize)]
-        struct Header {
-            schema: Option<u64>,
+        struct Named {
+            name: String,
         }
-        let header: Header = serde_json::from_str(text).map_err(|e| match e.classify() {
-            serde_json::error::Category::Data => ProjectError::NotAProject,
-            _ => ProjectError::NotJson(e.to_string()),
-        })?;
-        let schema = header.schema.ok_or(ProjectError::NotAProject)?;
-        if schema > SCHEMA_VERSION as u64 {
-            return Err(ProjectError::TooNew(schema));
+        serde_json::from_str::<Named>(text).ok().map(|n| n.name)
+    }
+}
+
+/// Reads a project file with `read` (`None`: a diagram POU it cannot read), checking the
+/// schema version first and the settings after.
+fn read_file(
+    text: &str,
+    read: impl FnOnce(&str) -> Result<Option<Project>, serde_json::Error>,
+) -> Result<Project, ProjectError> {
+    /// Only the schema version (every other field is skipped).
+    #[derive(Deserialize)]
+    struct Header {
+        schema: Option<u64>,
+    }
+    let header: Header = serde_json::from_str(text).map_err(|e| match e.classify() {
+        serde_json::error::Category::Data => ProjectError::NotAProject,
+        _ => ProjectError::NotJson(e.to_string()),
+    })?;
+    let schema = header.schema.ok_or(ProjectError::NotAProject)?;
+    if schema > SCHEMA_VERSION as u64 {
+        return Err(ProjectError::TooNew(schema));
+    }
+    // serde_json's own words (English, naming the field) are shown as they are.
+    let mut project = read(text)
+        .map_err(|e| ProjectError::Invalid(Said::from(e.to_string())))?
+        .ok_or(ProjectError::NeedsDiagramReaders)?;
+    crate::limits::cycle_ns(project.settings.cycle_ms).map_err(|e| {
+        ProjectError::Invalid(crate::msg!(
+            ProjectFieldProblem,
+            field = "settings.cycle_ms",
+            problem = e
+        ))
+    })?;
+    project.schema = SCHEMA_VERSION;
+    Ok(project)
+}
+
+/// A project file read as [`Project`] is, its diagram POUs only counted: its field list
+/// and attributes are `Project`'s (the conversion in [`NoDiagrams::project`] names every
+/// field of `Project`, so a field added there does not compile until it is added here).
+#[derive(Deserialize)]
+struct NoDiagrams {
+    schema: u32,
+    name: String,
+    source: String,
+    #[serde(default)]
+    settings: Settings,
+    #[serde(default)]
+    ladder: Vec<serde::de::IgnoredAny>,
+    #[serde(default)]
+    petri: Vec<serde::de::IgnoredAny>,
+    #[serde(default)]
+    networks: Vec<serde::de::IgnoredAny>,
+    #[serde(default)]
+    scene: Option<Scene>,
+}
+
+impl NoDiagrams {
+    /// The project, or `None` when the file has diagram POUs.
+    fn project(self) -> Option<Project> {
+        let NoDiagrams { schema, name, source, settings, ladder, petri, networks, scene } = self;
+        if !(ladder.is_empty() && petri.is_empty() && networks.is_empty()) {
+            return None;
         }
-        // serde_json's own words (English, naming the field) are shown as they are.
-        let mut project: Project = serde_json::from_str(text)
-            .map_err(|e| ProjectError::Invalid(Said::from(e.to_string())))?;
-        crate::limits::cycle_ns(project.settings.cycle_ms).map_err(|e| {
-            ProjectError::Invalid(crate::msg!(
-                ProjectFieldProblem,
-                field = "settings.cycle_ms",
-                problem = e
-            ))
-        })?;
-        project.schema = SCHEMA_VERSION;
-        Ok(project)
+        Some(Project {
+            schema,
+            name,
+            source,
+            settings,
+            ladder: Vec::new(),
+            petri: Vec::new(),
+            networks: Vec::new(),
+            scene,
+        })
     }
 }
 
@@ -236,6 +307,9 @@ pub enum ProjectError {
     /// A project with missing or malformed fields: why, as a message (serde_json's own
     /// words are an untranslated text, [`Said::from`]).
     Invalid(Said),
+    /// A project with diagram POUs read by [`Project::from_file_without_diagrams`]: not
+    /// damaged, to be read again once the diagram models' readers are loaded.
+    NeedsDiagramReaders,
 }
 
 impl ProjectError {
@@ -246,6 +320,7 @@ impl ProjectError {
             ProjectError::NotAProject => crate::msg!(ProjectNotAProject),
             ProjectError::TooNew(v) => crate::msg!(ProjectTooNew, schema = v),
             ProjectError::Invalid(reason) => crate::msg!(ProjectDamaged, reason = reason),
+            ProjectError::NeedsDiagramReaders => crate::msg!(ProjectNeedsDiagramReaders),
         }
     }
 }

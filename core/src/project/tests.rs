@@ -137,3 +137,51 @@ fn project_files_are_indented_exactly_as_serde_json_pretty_prints() {
     odd.source = "x := '\"';\n(* {a: [1, 2]} *)".into();
     assert_eq!(odd.to_file(), serde_json::to_string_pretty(&odd).unwrap());
 }
+
+/// The first screen's reader (no diagram models' readers) reads a project without
+/// diagram POUs as `from_file` does, says so for one with them, and never calls a file
+/// damaged that `from_file` reads.
+#[test]
+fn a_project_read_without_the_diagram_readers_is_the_same_or_asks_for_them() {
+    let with_scene = include_str!("../../../examples/tank-plant.plcproj.json");
+    let mut traced = Project::new("Latch");
+    traced.settings.traced = vec!["Motor".into()];
+    traced.settings.program = Some("Main".into());
+    for text in [with_scene.to_string(), traced.to_file()] {
+        let full = Project::from_file(&text).unwrap();
+        assert_eq!(Project::from_file_without_diagrams(&text), Ok(full));
+    }
+    let bad = [
+        "not json",
+        "{}",
+        r#"{"schema": 99}"#,
+        r#"{"schema": 1, "name": 3}"#,
+        r#"{"schema": 1, "name": "a", "source": "x", "settings": {"cycle_ms": 0}}"#,
+        r#"{"schema": 1, "name": "a", "source": "x", "ladder": 5}"#,
+    ];
+    for text in bad {
+        assert_eq!(Project::from_file_without_diagrams(text), Project::from_file(text), "{text}");
+    }
+    for text in [
+        include_str!("../../../examples/latch-ladder.plcproj.json"),
+        include_str!("../../../examples/weighing-plant.plcproj.json"),
+    ] {
+        assert!(Project::from_file(text).is_ok());
+        assert_eq!(
+            Project::from_file_without_diagrams(text),
+            Err(ProjectError::NeedsDiagramReaders)
+        );
+    }
+    // A network POU is not looked at: whether it is sound is for `from_file` to say.
+    let network = r#"{"schema": 1, "name": "a", "source": "", "networks": [{}]}"#;
+    assert!(matches!(Project::from_file(network), Err(ProjectError::Invalid(_))));
+    assert_eq!(
+        Project::from_file_without_diagrams(network),
+        Err(ProjectError::NeedsDiagramReaders)
+    );
+    assert_eq!(
+        Project::name_in_file(with_scene).as_deref(),
+        Some("Tank with level switches (ST plant)")
+    );
+    assert_eq!(Project::name_in_file("{}"), None);
+}

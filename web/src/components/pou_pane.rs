@@ -170,14 +170,19 @@ fn NewPou(petri: bool) -> impl IntoView {
 pub fn PouPane() -> impl IntoView {
     let state = expect_context::<AppState>();
     let view = Memo::new(move |_| state.view.get());
-    let opening = state.opening_shared;
+    let opening = move || state.opening_shared.get() || state.opening_stored.get();
     view! {
         <Navigator/>
-        {move || opening.get().then(|| view! {
-            <p class="lazy-loading" role="status">{t(K::state_opening_shared)}</p>
-        })}
+        {move || {
+            let words = if state.opening_shared.get() {
+                K::state_opening_shared
+            } else {
+                K::state_opening_project
+            };
+            opening().then(|| view! { <p class="lazy-loading" role="status">{t(words)}</p> })
+        }}
         <div class="pou-st" style:display=move || {
-            if view.get() == PouView::St && !opening.get() { "" } else { "none" }
+            if view.get() == PouView::St && !opening() { "" } else { "none" }
         }>
             <Editor/>
         </div>

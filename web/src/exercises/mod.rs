@@ -242,6 +242,13 @@ impl Exercises {
                 Ok(_) => return,
             };
         }
+        // A starter with diagram POUs is read with their models' readers (a chunk).
+        for starter in &opened.starters {
+            if let Err(e) = crate::lazy::readers_for(&starter.project).await {
+                state.error(tf(K::exercise_open_failed, &[("error", &e.to_string())]));
+                return;
+            }
+        }
         let shipped = matches!(request, Request::Shipped(_));
         self.attach(state, opened, shipped);
     }
@@ -405,7 +412,7 @@ impl Exercises {
             .opened
             .starters
             .iter()
-            .filter_map(|s| Project::from_file(&s.project).ok())
+            .filter_map(|s| crate::lazy::project_reader()(&s.project).ok())
             .any(|s| work(&s) == current);
         if !untouched {
             let question = tf(
@@ -447,7 +454,7 @@ fn starter_project(opened: &Opened, language: Option<&str>) -> Option<Project> {
         Some(code) => opened.starters.iter().find(|s| s.language == code)?,
         None => opened.starters.first()?,
     };
-    let mut project = Project::from_file(&starter.project).ok()?;
+    let mut project = crate::lazy::project_reader()(&starter.project).ok()?;
     project.name =
         tf(K::exercise_project_name, &[("title", opened.view.title_in(crate::i18n::shown_lang()))]);
     Some(project)

@@ -86,6 +86,22 @@ thread_local! {
 }
 
 impl AppState {
+    /// Fetches the engine's chunk (once for the page: a second caller waits for the same
+    /// fetch) and, the first time it comes, checks the project, shows the main view and
+    /// does a Run or Step pressed meanwhile. False when it could not be fetched.
+    pub(super) async fn engine_arrived(&self) -> bool {
+        if crate::lazy::load_engine().await.is_err() {
+            return false;
+        }
+        if !self.engine_ready.get_untracked() {
+            self.engine_ready.set(true);
+            self.check_now();
+            self.show_pending_main_view();
+            self.scan_wished();
+        }
+        true
+    }
+
     /// Shows the main view asked for before the engine or the passes were here, unless the
     /// user has picked another view since.
     fn show_pending_main_view(&self) {
@@ -120,6 +136,11 @@ impl AppState {
     /// chunk each, fetched the first time: `crate::lazy::load_lowerings`); until then the
     /// panels keep what they show.
     pub fn check_now(&self) {
+        if self.opening_stored.get_untracked() {
+            // The project shown is not the one being opened: it is checked once open.
+            self.check_pending.set_value(true);
+            return;
+        }
         let project = self.project.get_untracked();
         let lowerings = crate::lazy::lowerings();
         let Some(engine) = crate::lazy::engine() else {
@@ -131,14 +152,8 @@ impl AppState {
             }
             let state = *self;
             leptos::task::spawn_local(async move {
-                match crate::lazy::load_engine().await {
-                    Ok(()) => {
-                        state.engine_ready.set(true);
-                        state.check_now();
-                        state.show_pending_main_view();
-                        state.scan_wished();
-                    }
-                    Err(_) => state.error(t(K::lazy_failed_checker)),
+                if !state.engine_arrived().await {
+                    state.error(t(K::lazy_failed_checker));
                 }
             });
             return;

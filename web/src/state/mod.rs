@@ -108,6 +108,9 @@ pub enum NoticeAction {
     DeleteDamaged(String),
     /// Open a share link (the URL fragment) held back after it stopped the page.
     OpenShared(String),
+    /// Open a stored project again (by id) whose diagram POUs' readers could not be
+    /// fetched.
+    OpenStored(String),
     /// Run the build the simulator holds although the project has errors since.
     RunLastBuilt,
 }
@@ -123,6 +126,7 @@ impl NoticeAction {
             NoticeAction::DownloadDamaged(_) => t(K::state_download_damaged),
             NoticeAction::DeleteDamaged(_) => t(K::state_delete_damaged),
             NoticeAction::OpenShared(_) => t(K::state_open_shared),
+            NoticeAction::OpenStored(_) => t(K::lazy_retry),
             NoticeAction::RunLastBuilt => t(K::state_run_last_built),
         }
     }
@@ -168,6 +172,9 @@ pub struct AppState {
     /// The page was opened by a share link whose project is being read (its reader is a
     /// chunk): the editor waits for it rather than show another project meanwhile.
     pub opening_shared: RwSignal<bool>,
+    /// A stored project with diagram POUs is being opened: their models' readers come
+    /// with the engine's chunk, and the editor waits for them.
+    pub opening_stored: RwSignal<bool>,
     /// Run or Step pressed while the engine was loading: done once it is.
     scan_when_ready: StoredValue<Option<ScanWish>>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
@@ -253,6 +260,7 @@ impl AppState {
             steps_taken: RwSignal::new(0),
             engine_ready: RwSignal::new(crate::lazy::engine().is_some()),
             opening_shared: RwSignal::new(false),
+            opening_stored: RwSignal::new(false),
             scan_when_ready: StoredValue::new(None),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),

@@ -13,7 +13,7 @@
 //!   stopped while opening one does not open it again on reload.
 
 use leptos::prelude::*;
-use plc_core::project::{Project, ProjectStore, StoreError};
+use plc_core::project::{Project, ProjectError, ProjectStore, StoreError};
 use wasm_bindgen::closure::Closure;
 use wasm_bindgen::JsCast;
 
@@ -38,7 +38,7 @@ fn now_ms() -> u64 {
 }
 
 fn store() -> ProjectStore<LocalStorage> {
-    ProjectStore::new(LocalStorage::open())
+    ProjectStore::with_reader(LocalStorage::open(), crate::lazy::project_reader())
 }
 
 /// A file name for a project: its name without characters file systems refuse.
@@ -249,6 +249,34 @@ impl AppState {
                 self.show_main_view();
                 self.settle_opening();
             }
+            // Its diagram POUs' readers are a chunk, fetched the first time: the editor
+            // says `Opening the project…` until then.
+            Err(StoreError::Damaged(ProjectError::NeedsDiagramReaders)) => {
+                let (state, id) = (*self, id.to_string());
+                self.opening_stored.set(true);
+                // The engine comes meanwhile (nothing is checked until the project opens).
+                leptos::task::spawn_local(async move {
+                    if !state.engine_arrived().await {
+                        state.error(t(K::lazy_failed_checker));
+                    }
+                });
+                leptos::task::spawn_local(async move {
+                    let loaded = crate::lazy::load_project_reader().await;
+                    state.opening_stored.set(false);
+                    if loaded.is_ok() {
+                        // Projects with diagram POUs are looked at for damage now too.
+                        state.refresh_list();
+                        state.open(&id);
+                    } else {
+                        let name = state.name_of(&id);
+                        let reason = said_text(ProjectError::NeedsDiagramReaders.said());
+                        state.error_with(
+                            tf(K::state_cannot_open_kept, &[("name", &name), ("reason", &reason)]),
+                            vec![NoticeAction::OpenStored(id)],
+                        );
+                    }
+                });
+            }
             Err(StoreError::Damaged(e)) => {
                 let name = self.name_of(id);
                 self.error_with(
@@ -414,6 +442,10 @@ impl AppState {
                 leptos::task::spawn_local(async move {
                     state.open_shared(&fragment).await;
                 });
+            }
+            NoticeAction::OpenStored(id) => {
+                self.notice.set(None);
+                self.open(id);
             }
         }
     }

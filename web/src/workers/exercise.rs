@@ -12,7 +12,7 @@
 
 use crate::exercises::protocol::{Failure, Opened, Reply, Request, StarterFile};
 use plc_core::exercise::{is_built, Exercise, ExerciseLink, ExerciseView, SITE_FILE_LIST};
-use plc_core::open::open_plain;
+use plc_core::open::open_plain_by;
 use plc_core::project::Project;
 use wasm_bindgen::{JsCast, JsValue};
 use wasm_bindgen_futures::JsFuture;
@@ -38,7 +38,11 @@ async fn answer(request: Request) -> Reply {
                 Ok((e, _)) => e,
                 Err(e) => return Reply::Error(Failure::FileUnusable(e)),
             };
-            let project = match Project::from_file(&project) {
+            // A submission with diagram POUs is read with their models' readers (a chunk).
+            if let Err(e) = crate::lazy::readers_for(&project).await {
+                return Reply::Error(Failure::CannotGrade(e.to_string()));
+            }
+            let project = match crate::lazy::project_reader()(&project) {
                 Ok(p) => p,
                 Err(e) => return Reply::Error(Failure::ProjectUnreadable(e.to_string())),
             };
@@ -179,7 +183,10 @@ async fn open(link: ExerciseLink, base: Option<String>) -> Reply {
         for name in exercise.starter_files() {
             let Some(file) = link.file(name) else { continue };
             let stem = file.name.split('.').next().unwrap_or("starter");
-            let opened = match open_plain(stem, &file.text) {
+            if let Err(e) = crate::lazy::readers_for(&file.text).await {
+                return Reply::Error(Failure::StarterBroken(e.to_string()));
+            }
+            let opened = match open_plain_by(stem, &file.text, crate::lazy::project_reader()) {
                 Ok(Some(opened)) => Ok(opened.project),
                 Ok(None) => match super::open_xml(stem.to_string(), file.text.clone()).await {
                     Ok(r) => r.map(|o| o.project),

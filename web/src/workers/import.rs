@@ -8,8 +8,7 @@
 //! `["export-pnml", POU name, project file]` are answered with `{"xml": ...}`.
 
 use plc_core::exercise::Sentence;
-use plc_core::open::open_text;
-use plc_core::project::Project;
+use plc_core::open::open_text_by;
 use wasm_bindgen::JsValue;
 
 use crate::import::Note;
@@ -22,7 +21,9 @@ fn error_json(english: String, said: plc_core::diagnostics::Said) -> serde_json:
 
 /// The reply to one request.
 fn reply(stem: &str, text: &str) -> String {
-    let value = match open_text(stem, text) {
+    // The page reads project files and ST itself (`import::import_text`): what comes here
+    // is XML, read without the diagram models' readers.
+    let value = match open_text_by(stem, text, crate::lazy::project_reader()) {
         Ok(opened) => {
             let kind = opened.kind.description();
             let notes: Vec<Note> = opened.warnings.iter().map(Note::from).collect();
@@ -41,7 +42,7 @@ fn reply(stem: &str, text: &str) -> String {
 /// The reply to an export request: the project file as PLCopen XML (`what` is
 /// `export-plcopen`), or its Petri net POU `pou` as PNML (`export-pnml`).
 fn export_reply(what: &str, pou: &str, project_file: &str) -> String {
-    let value = match Project::from_file(project_file) {
+    let value = match crate::lazy::project_reader()(project_file) {
         Ok(project) if what == "export-pnml" => {
             match project.petri.iter().find(|p| p.name.eq_ignore_ascii_case(pou)) {
                 Some(net) => serde_json::json!({ "xml": plc_core::pnml::export(net) }),
@@ -61,13 +62,18 @@ fn export_reply(what: &str, pou: &str, project_file: &str) -> String {
 }
 
 /// The answer to one message of the page.
-pub fn answer(request: &JsValue) -> String {
+pub async fn answer(request: &JsValue) -> String {
     let request = js_sys::Array::from(request);
     let first = request.get(0).as_string().unwrap_or_default();
     let second = request.get(1).as_string().unwrap_or_default();
     let export = matches!(first.as_str(), "export-plcopen" | "export-pnml");
     if request.length() == 3 && export {
-        export_reply(&first, &second, &request.get(2).as_string().unwrap_or_default())
+        let file = request.get(2).as_string().unwrap_or_default();
+        // A project with diagram POUs is read with their models' readers (a chunk).
+        if let Err(e) = crate::lazy::readers_for(&file).await {
+            return serde_json::json!({ "error": e.to_string() }).to_string();
+        }
+        export_reply(&first, &second, &file)
     } else {
         reply(&first, &second)
     }
@@ -88,7 +94,7 @@ mod tests {
         let bad: serde_json::Value =
             serde_json::from_str(&reply("x", "<?xml version=\"1.0\"?><nope")).unwrap_or_default();
         assert!(bad["error"].as_str().is_some_and(|e| !e.is_empty()), "{bad}");
-        let mut project = super::Project::new("P");
+        let mut project = plc_core::project::Project::new("P");
         let xml: serde_json::Value =
             serde_json::from_str(&super::export_reply("export-plcopen", "", &project.to_file()))
                 .unwrap_or_default();

@@ -26,7 +26,7 @@ type Answer = fn(JsValue) -> Pin<Box<dyn Future<Output = JsValue>>>;
 /// The import worker's answer to one message.
 #[wasm_split(import_worker, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn import_answer() -> Result<Answer, LoadFailed> {
-    Ok(|request| Box::pin(async move { JsValue::from_str(&import::answer(&request)) }))
+    Ok(|request| Box::pin(async move { JsValue::from_str(&import::answer(&request).await) }))
 }
 
 /// The exercise worker's answer to one message.
@@ -39,7 +39,9 @@ fn exercise_answer() -> Result<Answer, LoadFailed> {
 /// the import worker's code reaches them too, so both workers share it).
 #[wasm_split(xml_reader, wasm_split_path = ::leptos::wasm_split, fallible)]
 fn open_xml(stem: String, text: String) -> Result<Result<Opened, String>, LoadFailed> {
-    Ok(plc_core::open::open_text(&stem, &text).map_err(|e| e.to_string()))
+    // Called for XML only (`open_plain_by` reads the rest), so no project file is read.
+    let read = plc_core::project::Project::from_file_without_diagrams;
+    Ok(plc_core::open::open_text_by(&stem, &text, read).map_err(|e| e.to_string()))
 }
 
 /// Reads an exercise file in TOML and renders its statement, relative links against

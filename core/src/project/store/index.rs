@@ -115,7 +115,7 @@ fn rebuild<B: StorageBackend + ?Sized>(backend: &B) -> Result<Index, StoreError>
     let mut projects = Vec::new();
     for (id, (rev, key)) in latest {
         let text = backend.get(&key)?.unwrap_or_default();
-        let name = Project::from_file(&text).map(|p| p.name).unwrap_or_else(|_| id.clone());
+        let name = Project::name_in_file(&text).unwrap_or_else(|| id.clone());
         let modified_ms =
             id.strip_prefix('p').and_then(|h| u64::from_str_radix(h, 16).ok()).unwrap_or(0);
         projects.push(ProjectSummary { id, name, modified_ms, rev });

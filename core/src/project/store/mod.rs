@@ -118,16 +118,29 @@ pub struct Opened {
     pub rev: u64,
 }
 
+/// How a store reads a project's text ([`Project::from_file`], or
+/// [`Project::from_file_without_diagrams`] before the diagram models' readers are there).
+pub type ProjectReader = fn(&str) -> Result<Project, ProjectError>;
+
 /// The project list over a storage backend.
 #[derive(Debug)]
 pub struct ProjectStore<B: StorageBackend> {
     backend: B,
+    read: ProjectReader,
 }
 
 impl<B: StorageBackend> ProjectStore<B> {
     /// A store over `backend`.
     pub fn new(backend: B) -> Self {
-        ProjectStore { backend }
+        Self::with_reader(backend, Project::from_file)
+    }
+
+    /// A store over `backend` that reads projects with `read`. With
+    /// [`Project::from_file_without_diagrams`], a project with diagram POUs opens as
+    /// [`StoreError::Damaged`]`(`[`ProjectError::NeedsDiagramReaders`]`)` and is not listed
+    /// as damaged.
+    pub fn with_reader(backend: B, read: ProjectReader) -> Self {
+        ProjectStore { backend, read }
     }
 
     /// The backend (for tests).
@@ -192,7 +205,7 @@ impl<B: StorageBackend> ProjectStore<B> {
     pub fn open(&self, id: &str) -> Result<Opened, StoreError> {
         let rev = self.current_rev(id)?.ok_or_else(|| StoreError::NotFound(id.to_string()))?;
         let text = self.raw(id)?;
-        let project = Project::from_file(&text).map_err(StoreError::Damaged)?;
+        let project = (self.read)(&text).map_err(StoreError::Damaged)?;
         Ok(Opened { project, rev })
     }
 
@@ -219,7 +232,11 @@ impl<B: StorageBackend> ProjectStore<B> {
         for p in self.read_index()?.index.projects {
             let problem = match self.backend.get(&project_key(&p.id, p.rev))? {
                 None => Some(missing_text(&p.id, p.rev)),
-                Some(text) => Project::from_file(&text).err().map(StoreError::Damaged),
+                Some(text) => match (self.read)(&text) {
+                    // Not known yet: read again with the diagram models' readers.
+                    Ok(_) | Err(ProjectError::NeedsDiagramReaders) => None,
+                    Err(e) => Some(StoreError::Damaged(e)),
+                },
             };
             if let Some(e) = problem {
                 out.push((p.id, e.said()));

@@ -273,3 +273,23 @@ fn an_opening_that_never_finished_is_remembered() {
     assert!(ProjectStore::<MemoryBackend>::is_store_key("plc-trainer/v1/index"));
     assert!(!ProjectStore::<MemoryBackend>::is_store_key("other"));
 }
+
+/// A store that reads without the diagram models' readers (the web app's first screen)
+/// opens a project with diagram POUs as "needs the readers", never lists it as damaged,
+/// and a store with them opens it; a project without diagram POUs opens either way.
+#[test]
+fn a_store_without_the_diagram_readers_neither_opens_nor_damages_a_ladder_project() {
+    let mut full = store();
+    let ladder =
+        Project::from_file(include_str!("../../../../examples/latch-ladder.plcproj.json")).unwrap();
+    let (with, _) = full.add(&ladder, 1).unwrap();
+    let (without, _) = full.add(&named("Plain"), 2).unwrap();
+    let light =
+        ProjectStore::with_reader(full.backend().clone(), Project::from_file_without_diagrams);
+    assert_eq!(light.open(&with), Err(StoreError::Damaged(ProjectError::NeedsDiagramReaders)));
+    assert_eq!(light.damaged().unwrap(), Vec::<(String, String)>::new());
+    assert_eq!(light.load(&without).unwrap(), named("Plain"));
+    assert_eq!(full.load(&with).unwrap(), ladder);
+    let names: Vec<String> = light.list().unwrap().into_iter().map(|p| p.name).collect();
+    assert_eq!(names, ["Plain", ladder.name.as_str()]);
+}
