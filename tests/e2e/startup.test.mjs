@@ -222,3 +222,37 @@ test('a stored ladder project says it opens until its diagrams\' readers come, t
   assert.equal(fetched, 0, 'an ST project opens without the diagrams\' readers');
   await fresh.close();
 });
+
+test('a project picked while a stored ladder project opens stays open when the readers come', async () => {
+  const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
+  let page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('No problems found.').waitFor();
+  // Two stored projects: "My first project" (ST only), then a newer one with a ladder POU.
+  await page.getByRole('button', { name: 'New project' }).click();
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  await page.getByRole('button', { name: 'New ladder POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill('Latch');
+  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
+  await page.getByRole('button', { name: 'Create' }).click();
+  await page.getByRole('region', { name: 'Ladder diagram Latch' }).waitFor();
+  await page.waitForFunction(() => Object.keys(localStorage).some((k) => {
+    const text = k.includes('/project/') ? localStorage.getItem(k) : '';
+    return text.includes('"ladder"') && text.includes('Latch');
+  }));
+  await page.close();
+
+  const { release } = await holdBack(context, '**/split_project_reader.wasm');
+  page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByRole('status').filter({ hasText: 'Opening the project…' }).waitFor();
+  // The student picks the ST project meanwhile.
+  await page.getByRole('combobox', { name: 'Open project' }).selectOption({ label: 'My first project' });
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  release();
+  await page.waitForTimeout(1500);
+  assert.equal(await page.locator('.project-name').textContent(), 'My first project');
+  assert.equal(await page.getByRole('textbox', { name: 'ST source' }).isVisible(), true);
+  assert.equal(await page.getByRole('button', { name: 'Ladder diagram Latch' }).count(), 0, 'the ladder project did not open over it');
+  await context.close();
+});

@@ -136,7 +136,7 @@ impl AppState {
     /// chunk each, fetched the first time: `crate::lazy::load_lowerings`); until then the
     /// panels keep what they show.
     pub fn check_now(&self) {
-        if self.opening_stored.get_untracked() {
+        if self.opening_stored.with_untracked(Option::is_some) {
             // The project shown is not the one being opened: it is checked once open.
             self.check_pending.set_value(true);
             return;

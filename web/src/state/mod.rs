@@ -172,9 +172,10 @@ pub struct AppState {
     /// The page was opened by a share link whose project is being read (its reader is a
     /// chunk): the editor waits for it rather than show another project meanwhile.
     pub opening_shared: RwSignal<bool>,
-    /// A stored project with diagram POUs is being opened: their models' readers come
-    /// with the engine's chunk, and the editor waits for them.
-    pub opening_stored: RwSignal<bool>,
+    /// The stored project with diagram POUs being opened (by id): their models' readers
+    /// are a chunk, and the editor waits for them. Another project opened meanwhile
+    /// takes its place.
+    pub opening_stored: RwSignal<Option<String>>,
     /// Run or Step pressed while the engine was loading: done once it is.
     scan_when_ready: StoredValue<Option<ScanWish>>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
@@ -260,7 +261,7 @@ impl AppState {
             steps_taken: RwSignal::new(0),
             engine_ready: RwSignal::new(crate::lazy::engine().is_some()),
             opening_shared: RwSignal::new(false),
-            opening_stored: RwSignal::new(false),
+            opening_stored: RwSignal::new(None),
             scan_when_ready: StoredValue::new(None),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),

@@ -219,6 +219,7 @@ impl AppState {
     /// Opens `project`, checks it, then stores it as a new project. When storing fails
     /// it stays open with no id, so no later save can write it over another project.
     fn open_as_new(&self, project: Project) -> Result<(), StoreError> {
+        self.opening_stored.set(None);
         self.project.set(project.clone());
         self.project_id.set(None);
         self.project_rev.set_value(None);
@@ -241,6 +242,8 @@ impl AppState {
         match store.open(id) {
             Ok(opened) => {
                 let _ = store.mark_opening(id);
+                // A stored project still waiting for its readers does not open over this.
+                self.opening_stored.set(None);
                 self.project.set(opened.project);
                 self.project_id.set(Some(id.to_string()));
                 self.project_rev.set_value(Some(opened.rev));
@@ -253,7 +256,7 @@ impl AppState {
             // says `Opening the project…` until then.
             Err(StoreError::Damaged(ProjectError::NeedsDiagramReaders)) => {
                 let (state, id) = (*self, id.to_string());
-                self.opening_stored.set(true);
+                self.opening_stored.set(Some(id.clone()));
                 // The engine comes meanwhile (nothing is checked until the project opens).
                 leptos::task::spawn_local(async move {
                     if !state.engine_arrived().await {
@@ -262,7 +265,11 @@ impl AppState {
                 });
                 leptos::task::spawn_local(async move {
                     let loaded = crate::lazy::load_project_reader().await;
-                    state.opening_stored.set(false);
+                    if state.opening_stored.get_untracked().as_deref() != Some(id.as_str()) {
+                        // Another project was opened meanwhile: it stays.
+                        return;
+                    }
+                    state.opening_stored.set(None);
                     if loaded.is_ok() {
                         // Projects with diagram POUs are looked at for damage now too.
                         state.refresh_list();
