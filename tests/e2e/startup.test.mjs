@@ -36,6 +36,19 @@ async function holdBack(context, pattern) {
   return { release, asked: () => asked };
 }
 
+/** Adds the ladder PROGRAM `Latch` to the open project and waits until it is stored. */
+async function addStoredLadderPou(page) {
+  await page.getByRole('button', { name: 'New ladder POU' }).click();
+  await page.getByRole('textbox', { name: 'POU name' }).fill('Latch');
+  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
+  await page.getByRole('button', { name: 'Create' }).click();
+  await page.getByRole('region', { name: 'Ladder diagram Latch' }).waitFor();
+  await page.waitForFunction(() => Object.keys(localStorage).some((k) => {
+    const text = k.includes('/project/') ? localStorage.getItem(k) : '';
+    return text.includes('"ladder"') && text.includes('Latch');
+  }));
+}
+
 test('the editor comes before the engine; Run pressed while it loads runs once it is here', async () => {
   // No service worker: every file comes through the network, where the engine's chunk is
   // held back until the test lets it go.
@@ -176,15 +189,7 @@ test('a stored ladder project says it opens until its diagrams\' readers come, t
   let page = await context.newPage();
   await page.goto(server.url);
   await page.getByText('No problems found.').waitFor();
-  await page.getByRole('button', { name: 'New ladder POU' }).click();
-  await page.getByRole('textbox', { name: 'POU name' }).fill('Latch');
-  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
-  await page.getByRole('button', { name: 'Create' }).click();
-  await page.getByRole('region', { name: 'Ladder diagram Latch' }).waitFor();
-  await page.waitForFunction(() => Object.keys(localStorage).some((k) => {
-    const text = k.includes('/project/') ? localStorage.getItem(k) : '';
-    return text.includes('"ladder"') && text.includes('Latch');
-  }));
+  await addStoredLadderPou(page);
   await page.close();
 
   // The project's ladder POU is read by a chunk the first screen does not hold.
@@ -231,15 +236,7 @@ test('a project picked while a stored ladder project opens stays open when the r
   // Two stored projects: "My first project" (ST only), then a newer one with a ladder POU.
   await page.getByRole('button', { name: 'New project' }).click();
   await page.getByRole('textbox', { name: 'ST source' }).waitFor();
-  await page.getByRole('button', { name: 'New ladder POU' }).click();
-  await page.getByRole('textbox', { name: 'POU name' }).fill('Latch');
-  await page.getByRole('combobox', { name: 'POU kind' }).selectOption('PROGRAM');
-  await page.getByRole('button', { name: 'Create' }).click();
-  await page.getByRole('region', { name: 'Ladder diagram Latch' }).waitFor();
-  await page.waitForFunction(() => Object.keys(localStorage).some((k) => {
-    const text = k.includes('/project/') ? localStorage.getItem(k) : '';
-    return text.includes('"ladder"') && text.includes('Latch');
-  }));
+  await addStoredLadderPou(page);
   await page.close();
 
   const { release } = await holdBack(context, '**/split_project_reader.wasm');
