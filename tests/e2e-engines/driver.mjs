@@ -21,6 +21,16 @@ const LAUNCH_MS = 30000;
 
 const delay = (ms) => new Promise((r) => setTimeout(r, ms));
 
+/** Run in the page: the texts of its alerts, status lines and loading states. */
+function PAGE_STATE() {
+  const seen = [];
+  for (const el of document.querySelectorAll('[role=alert], [role=status], .lazy-loading, .lazy-failed, .banner')) {
+    const text = (el.textContent ?? '').replace(/\s+/g, ' ').trim();
+    if (text && !el.closest('[hidden]') && !seen.includes(text)) seen.push(text);
+  }
+  return seen.map((t) => t.slice(0, 200));
+}
+
 const toQuery = (q) => {
   const out = { ...q };
   if (q.name instanceof RegExp) out.name = { re: q.name.source, flags: q.name.flags };
@@ -202,8 +212,26 @@ export class Session {
       }
       if (r.ok) return r.value;
       last = r.why;
-      if (Date.now() > end) throw new Error(`${this.engine.name}: ${what}: not done after ${timeout} ms: ${last}`);
+      if (Date.now() > end) {
+        throw new Error(`${this.engine.name}: ${what}: not done after ${timeout} ms: ${last}${await this.whatItShows()}`);
+      }
       await delay(POLL_MS);
+    }
+  }
+
+  /**
+   * What the page shows that may say why a wait failed (its banners, alerts and loading
+   * states, its uncaught errors), as a suffix for the failure's message; '' when it says
+   * nothing or cannot be asked.
+   */
+  async whatItShows() {
+    try {
+      const said = await this.backend.evaluate(`(${PAGE_STATE.toString()})()`);
+      const errors = await this.backend.errors();
+      const parts = [...(said ?? []), ...errors.map((e) => `error: ${e}`)];
+      return parts.length ? `; the page shows: ${parts.join(' | ').slice(0, 1500)}` : '';
+    } catch {
+      return '';
     }
   }
 
