@@ -13,13 +13,42 @@ const FILES = %FILES%;
 const CACHE = `plc-trainer-${BUILD}`;
 const KNOWN = new Set(FILES);
 
+/**
+ * How many files the install fetches at a time. The browser gives a site a few connections;
+ * fetching every file at once queued whatever the page and its workers asked for meanwhile
+ * (the exercise the student opened, a chunk) behind the whole site.
+ */
+const AT_ONCE = 2;
+
 self.addEventListener('install', (event) => {
-  event.waitUntil(
-    caches.open(CACHE).then((cache) =>
-      // `reload`: from the server, never from the HTTP cache (which may hold another build).
-      cache.addAll(FILES.map((file) => new Request(file, { cache: 'reload' })))),
-  );
+  event.waitUntil(precache());
 });
+
+/** Fetches every file of the build into its cache, `AT_ONCE` at a time; fails if one fails. */
+async function precache() {
+  const cache = await caches.open(CACHE);
+  const queue = [...FILES];
+  let failed = null;
+  const fetchSome = async () => {
+    while (failed === null && queue.length > 0) {
+      const file = queue.shift();
+      try {
+        // `reload`: from the server, never from the HTTP cache (which may hold another build).
+        const response = await fetch(new Request(file, { cache: 'reload' }));
+        if (!response.ok) throw new Error(`${file}: HTTP ${response.status}`);
+        await cache.put(file, response);
+      } catch (e) {
+        failed ??= e;
+      }
+    }
+  };
+  await Promise.all(Array.from({ length: AT_ONCE }, fetchSome));
+  if (failed !== null) {
+    // Not installed: the next visit starts again from an empty cache.
+    await caches.delete(CACHE);
+    throw failed;
+  }
+}
 
 self.addEventListener('activate', (event) => {
   event.waitUntil(

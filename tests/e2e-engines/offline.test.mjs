@@ -7,7 +7,9 @@
 // output and passes.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { suite, openApp, withSession, noErrors, shot } from './harness.mjs';
+import path from 'node:path';
+import { suite, openApp, withSession, noErrors, shot, root } from './harness.mjs';
+import { startServer } from './server.mjs';
 
 const env = suite();
 
@@ -57,4 +59,31 @@ test('after one visit the trainer opens, runs an example and checks an exercise 
     }
     await noErrors(s);
   });
+});
+
+// Caching the site (some 330 files) must not hold up what the student asks for meanwhile:
+// on a first visit over a network with some latency, an exercise opens (its views, the
+// exercise worker and its code, the exercise file) while the service worker is still
+// installing. When it fetched every file at once, the page's and the worker's requests
+// waited behind all of them (WebKit: over a minute on a loaded machine).
+test('on a first visit an exercise opens while the service worker is still caching the site', async () => {
+  const server = await startServer(path.join(root, 'dist'), '/trainer/', {}, { delayMs: 60 });
+  try {
+    await withSession(openApp(env, { url: server.url }), async (s) => {
+      const supported = await s.evaluate(() => 'serviceWorker' in navigator && window.isSecureContext);
+      if (!supported) {
+        console.log(`# ${env.engine.label} has no service workers: nothing is cached meanwhile`);
+        return;
+      }
+      const installing = () => navigator.serviceWorker.getRegistration().then((r) => Boolean(r?.installing));
+      await s.waitUntil(installing, null, { what: 'the service worker installing' });
+      await s.role('button', 'Exercises').click();
+      await s.role('list', 'Exercise list').role('button', 'Start/stop motor latch').click();
+      await s.role('region', 'Exercise').role('heading', 'Start/stop motor latch').waitFor();
+      assert.ok(await s.evaluate(installing), 'the exercise opened only once the whole site was cached');
+      await noErrors(s);
+    });
+  } finally {
+    await server.close();
+  }
 });

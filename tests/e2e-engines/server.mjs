@@ -12,11 +12,15 @@ const TYPES = {
   '.webmanifest': 'application/manifest+json', '.png': 'image/png', '.toml': 'text/plain; charset=utf-8',
 };
 
-/** Serves `root` under `prefix`; `headers` go on every answer (e.g. CORS). */
-export async function startServer(root, prefix = '/trainer/', headers = {}) {
+/**
+ * Serves `root` under `prefix`; `headers` go on every answer (e.g. CORS). With `delayMs`,
+ * every answer waits that long first, as over a network with that much latency.
+ */
+export async function startServer(root, prefix = '/trainer/', headers = {}, { delayMs = 0 } = {}) {
   let offline = false;
   const sockets = new Set();
   const server = http.createServer(async (req, res) => {
+    if (delayMs > 0) await new Promise((r) => setTimeout(r, delayMs));
     if (offline) { req.socket.destroy(); return; }
     const url = new URL(req.url, 'http://localhost');
     if (!url.pathname.startsWith(prefix)) { res.writeHead(404); res.end(); return; }
