@@ -38,8 +38,12 @@ fi
 # 1 MB stack out first, growing down towards 0, and the data after it, at 1 MB: that KB is
 # reached only by a stack 1023 KB deep), so wasm-opt may fold small constant offsets into
 # loads and stores; 3 KB less to download (gzip).
+# -ocimfs=50: a function with one caller is inlined into it only when small. By default
+# wasm-opt inlines every such function, which made the VM's `Machine::run` 35 KB, which
+# V8's optimising compiler took 75-100 ms to compile while B5 ran it unoptimised
+# (BENCHMARKS.md, B5 in Chromium); the module is no larger.
 wasm_opt() {
-  wasm-opt -Oz --low-memory-unused --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+  wasm-opt -Oz -ocimfs=50 --low-memory-unused --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
     --enable-mutable-globals --enable-reference-types --enable-multivalue "$1" -o "$2" \
     2> >(grep -v 'unknown name subsection' >&2)
 }
