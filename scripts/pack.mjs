@@ -6,8 +6,8 @@
 // For each SPLIT (a `#[wasm_split]` name, e.g. `engine`), the split's own module and every
 // chunk it needs go into WORK/app/pack_SPLIT.wasm, and leave the folder: a wasm module made
 // of custom sections only, one per file, named by the file (so a host serves and compresses
-// it as wasm). WORK/app/__wasm_split.js then fetches those files from the pack, one fetch
-// for all, and every other file as before. A chunk is packed once, with the first SPLIT
+// it as wasm). WORK/app/__wasm_split.js, written again as a table (scripts/split-table.mjs),
+// then fetches those files from the pack, one fetch for all, and every other file as before. A chunk is packed once, with the first SPLIT
 // that needs it. WORK/packs.json lists what each pack holds (scripts/site.mjs reads it).
 // A chunk that a split named after `--apart` needs too stays a file of its own, so that
 // OTHER never waits for a pack (the readers of a stored project's diagram POUs, fetched
@@ -19,6 +19,7 @@
 import { readFileSync, writeFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { splitParts } from './wasm-split-parts.mjs';
+import { tableForm } from './split-table.mjs';
 
 const [work, ...rest] = process.argv.slice(2);
 const cut = rest.indexOf('--apart');
@@ -116,17 +117,6 @@ function __fromPack(pack, name) {
   return __openPack(pack).then((files) => new Response(files.get(name), { headers: { "content-type": "application/wasm" } }));
 }
 `;
-const fetchRe = /fetch\(new URL\("\.\/([^"]+\.wasm)", import\.meta\.url\)\)/g;
-const replaced = new Set();
-js = js.replace(fetchRe, (call, file) => {
-  const pack = packed.get(file);
-  if (pack === undefined) return call;
-  replaced.add(file);
-  return `__fromPack(${JSON.stringify(pack)}, ${JSON.stringify(file)})`;
-});
-for (const f of packed.keys()) if (!replaced.has(f)) throw new Error(`${jsPath} does not fetch ${f}`);
-const firstImport = /^import [^\n]*\n/m;
-if (!firstImport.test(js)) throw new Error(`no import line in ${jsPath} to put the pack loader after`);
-js = js.replace(firstImport, (line) => line + loader);
+js = tableForm(js, loader, packed);
 writeFileSync(jsPath, js);
 writeFileSync(join(work, 'packs.json'), `${JSON.stringify(packs, null, 1)}\n`);
