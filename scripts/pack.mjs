@@ -7,8 +7,8 @@
 // chunk it needs go into WORK/app/pack_SPLIT.wasm, and leave the folder: a wasm module made
 // of custom sections only, one per file, named by the file (so a host serves and compresses
 // it as wasm). WORK/app/__wasm_split.js, written again as a table (scripts/split-table.mjs),
-// then fetches those files from the pack, one fetch for all, and every other file as before. A chunk is packed once, with the first SPLIT
-// that needs it. WORK/packs.json lists what each pack holds (scripts/site.mjs reads it).
+// then fetches those files from the pack, one fetch for all, and every other file as
+// before. A chunk is packed once, with the first SPLIT that needs it. WORK/packs.json lists what each pack holds (scripts/site.mjs reads it).
 // A chunk that a split named after `--apart` needs too stays a file of its own, so that
 // OTHER never waits for a pack (the readers of a stored project's diagram POUs, fetched
 // as the page starts when the project has such POUs, share code with the engine).

@@ -1,7 +1,8 @@
 // wasm-split's loader (`__wasm_split.js`, scripts/build-web.sh step 3) written as a table:
 // one function fetches any file, and each split names its chunks by number, in place of
 // one closure per chunk (365 of them, 4.4 KB of the first load gzipped; 2.6 KB as a table).
-// scripts/pack.mjs writes it, with the files it packed fetched from their pack.
+// scripts/pack.mjs writes it, with the files it packed fetched from their pack. (What each
+// split needs is read from wasm-split's own form by scripts/wasm-split-parts.mjs, before this.)
 
 const HEAD_END = /\/\*[^*]*\*\/\nconst __chunk_\d+ = /;
 const CHUNK = /(?:\/\*[^*]*\*\/\n)?const __chunk_(\d+) = makeLoad\(\(\) => \{\s*const src = fetch\(new URL\("\.\/chunk_\1\.wasm", import\.meta\.url\)\);\s*src\.catch\(\(\) => \{\}\);\s*return async \(imports\) => \(WebAssembly\.instantiateStreaming\(src, imports\)\);\s*\}\s*, \[\]\);\n?/g;
