@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 export PATH="$PWD/node_modules/.bin:$HOME/.cargo/bin:$PATH"
 source scripts/wasm-build.sh
 out=${BENCH_OUT:-target/bench-browser}
-cargo build -q -p plc-core --example bench_wasm --target wasm32-unknown-unknown --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}"
+wasm_cargo build -q -p plc-core --example bench_wasm --target wasm32-unknown-unknown --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}"
 wasm-bindgen --target web --no-typescript --out-dir "$out" \
   "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/$WASM_PROFILE/examples/bench_wasm.wasm"
 wasm_opt "$out/bench_wasm_bg.wasm" "$out/bench_wasm_bg.wasm"

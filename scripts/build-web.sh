@@ -7,7 +7,8 @@
 # docs/loading.md.
 #
 #   1. Trunk builds the page and its CSS and copies the static files (no Rust).
-#   2. cargo builds the app (web/, `wasm-release` profile) keeping its relocations.
+#   2. cargo builds the app (web/, `wasm-release` profile) keeping its relocations, with the
+#      standard library built for size along with it (scripts/wasm-build.sh).
 #   3. wasm-split cuts it at the `#[wasm_split]` functions (web/src/lazy.rs,
 #      web/src/workers/mod.rs): the main module (the first load) and the chunks fetched on
 #      first use, with the JS that links them (`__wasm_split.js`).
@@ -28,7 +29,7 @@ mkdir -p "$work/split" "$work/app"
 source scripts/wasm-build.sh
 # The JSON messages name the build script's output folder, where web/build.rs writes the
 # shipped exercises in their built form (exercises/ID.json, fetched by the exercise worker).
-cargo build --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}" --target wasm32-unknown-unknown -p plc-web --bin plc-web \
+wasm_cargo build --profile "$WASM_PROFILE" "${wasm_cargo_flags[@]}" --target wasm32-unknown-unknown -p plc-web --bin plc-web \
   --message-format=json-render-diagnostics >"$work/cargo.json"
 out_dir=$(node -e '
   for (const line of require("fs").readFileSync(process.argv[1], "utf8").split("\n")) {

@@ -16,7 +16,22 @@ done
 for rust_src in "$(rustc --print sysroot)"/lib/rustlib/src/rust; do
   [ -d "$rust_src" ] && wasm_path_remaps+=" --remap-path-prefix=$rust_src=~rust"
 done
-export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components -C link-args=--emit-relocs $wasm_path_remaps"
+# The standard library is built with the app (cargo's build-std) rather than taken prebuilt:
+# at the profile's opt-level z (the prebuilt one is compiled for speed), with its
+# `optimize_for_size` code, and with panics that trap at once (`-Cpanic=immediate-abort`: no
+# message formatting, no table of source locations). A panic is a bug (no user input may
+# cause one) and stopped the page before too (wasm has no unwinding); now it does so without
+# a message on the console, and web/boot.js tells the page it stopped. These are unstable
+# options of the stable compiler: `wasm_cargo` allows them (RUSTC_BOOTSTRAP=1) for its own
+# cargo run only (the compiler then takes itself for a nightly one, whose default symbol
+# names scripts/site.mjs cannot read: `legacy` keeps the names it checks the first load by);
+# build-std needs the rust-src component (scripts/setup.sh). What each saves:
+# BENCHMARKS.md, "The standard library built with the app".
+export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components -C link-args=--emit-relocs $wasm_path_remaps -Zunstable-options -Cpanic=immediate-abort -Csymbol-mangling-version=legacy"
+# cargo for the site's wasm: `wasm_cargo build --target wasm32-unknown-unknown …`.
+wasm_cargo() {
+  RUSTC_BOOTSTRAP=1 cargo "$@" -Zbuild-std=std,panic_abort -Zbuild-std-features=optimize_for_size
+}
 # The site's cargo profile (Cargo.toml: size for the UI, speed for the engine).
 WASM_PROFILE=wasm-release
 # To measure the engine at another opt-level (BENCHMARKS.md, "The engine at speed"), set

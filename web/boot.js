@@ -4,6 +4,15 @@
 // for offline use and offers a new version when one is deployed.
 import init, * as bindings from './plc-web.js';
 
+// A trap in the app's wasm stops the page: in the release build a panic is one (it traps at
+// once, with no panic hook: scripts/wasm-build.sh). Marked here, so that leaving the page
+// then does not count as a clean exit (web/src/state/projects.rs, `stopped`).
+const trapped = (error) => {
+  if (error instanceof WebAssembly.RuntimeError) globalThis.plcStopped = true;
+};
+addEventListener('error', (event) => trapped(event.error));
+addEventListener('unhandledrejection', (event) => trapped(event.reason));
+
 // The folder of this build's files (`app-<build id>/`), for the workers and the chunks.
 globalThis.plcAppBase = new URL('./', import.meta.url).href;
 const wasm = await init();

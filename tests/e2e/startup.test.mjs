@@ -121,6 +121,32 @@ test('a project that stops the page when the engine, come late, checks it is not
   await context.close();
 });
 
+test('a trap of the app while a project opens counts as the page stopping: the project is not opened again', async () => {
+  const context = await browser.newContext({ serviceWorkers: 'block' });
+  let page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('No problems found.').waitFor();
+  await page.close();
+
+  // The stored project is still opening (the engine held back, so the opening cannot
+  // settle) when the app's wasm traps, as a panic does in the release build (it traps at
+  // once, with no panic hook); the page is then left as a user leaves it, by reloading.
+  const { release } = await holdBack(context, '**/pack_engine.wasm');
+  page = await context.newPage();
+  await page.goto(server.url);
+  await page.getByText('Loading the checker and the simulator…').first().waitFor();
+  const trapped = page.waitForEvent('pageerror');
+  await page.evaluate(() => setTimeout(() => { throw new WebAssembly.RuntimeError('unreachable'); }));
+  await trapped;
+  release();
+  const errors = [];
+  await page.reload();
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.getByRole('alert').filter({ hasText: '“My first project” stopped the page the last time it was opened' }).waitFor();
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a view picked while the engine loads stays when the engine comes', async () => {
   const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
   let page = await context.newPage();

@@ -28,6 +28,14 @@ const OPENING_SETTLES: std::time::Duration = std::time::Duration::from_secs(3);
 /// Set by the panic hook: the page stopped, so leaving it must not count as a clean exit.
 static PANICKED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
+/// Whether the page stopped: a panic the hook saw, or a trap of the wasm module (the release
+/// build's panics trap without a hook; web/boot.js marks `plcStopped`).
+fn stopped() -> bool {
+    PANICKED.load(std::sync::atomic::Ordering::SeqCst)
+        || js_sys::Reflect::get(&js_sys::global(), &"plcStopped".into())
+            .is_ok_and(|v| v.is_truthy())
+}
+
 /// Notes that the app panicked (called from the panic hook before the instance stops).
 pub fn note_panic() {
     PANICKED.store(true, std::sync::atomic::Ordering::SeqCst);
@@ -186,6 +194,7 @@ impl AppState {
         let state = *self;
         set_timeout(
             move || match state.engine_ready.try_get_untracked() {
+                _ if stopped() => {}
                 Some(false) => state.settle_opening(),
                 _ => {
                     let _ = store().clear_opening();
@@ -386,7 +395,7 @@ impl AppState {
         listener.forget();
         // Leaving the page normally (reload, close) is not a page that stopped.
         let leaving = Closure::<dyn Fn()>::new(|| {
-            if !PANICKED.load(std::sync::atomic::Ordering::SeqCst) {
+            if !stopped() {
                 let _ = store().clear_opening();
             }
         });
