@@ -12,8 +12,9 @@
 #   3. wasm-split cuts it at the `#[wasm_split]` functions (web/src/lazy.rs,
 #      web/src/workers/mod.rs): the main module (the first load) and the chunks fetched on
 #      first use, with the JS that links them (`__wasm_split.js`).
-#   4. wasm-bindgen binds the main module; wasm-opt -Oz shrinks it and each chunk; the
-#      engine's files go into one (scripts/pack.mjs); terser minifies the JS.
+#   4. wasm-bindgen binds the main module; wasm-opt -Oz shrinks it and each chunk; the main
+#      module's imports get short names (scripts/minify-imports.mjs); the engine's files go
+#      into one (scripts/pack.mjs); terser minifies the JS.
 #   5. scripts/site.mjs puts it all into dist/app-<hash>/, starts it from index.html, writes
 #      the service worker dist/sw.js with the build's file list and id, and checks sizes.
 set -euo pipefail
@@ -51,6 +52,8 @@ for f in "$work"/split/split_*.wasm "$work"/split/chunk_*.wasm; do
   wasm_opt "$f" "$work/app/$(basename "$f")"
 done
 wait "$main_opt"
+# The main module's imports from its glue, by short names in both (scripts/minify-imports.mjs).
+node scripts/minify-imports.mjs "$work/app/plc-web_bg.wasm" "$work/app/plc-web.js"
 cp "$work/split/__wasm_split.js" web/boot.js web/worker.js "$work/app/"
 # The engine, fetched as the page starts, in one file rather than its 74 (scripts/pack.mjs).
 # The diagram models' readers (a stored ladder project opens with them) do not wait for it.

@@ -242,7 +242,7 @@ fn NumberInput(var: IoVar) -> impl IntoView {
     let name = StoredValue::new(var.name.clone());
     let value = move || name.with_value(|n| read_number(state, n));
     let write = move |text: String| {
-        let Ok(x) = text.trim().parse::<f64>() else {
+        let Some(x) = crate::dom::number_of(&text) else {
             state.error(tf(K::sim_not_a_number, &[("text", text.trim())]));
             return;
         };
@@ -255,7 +255,7 @@ fn NumberInput(var: IoVar) -> impl IntoView {
         _ => "1".to_string(),
     };
     let set_limit = move |sig: RwSignal<f64>, text: String| {
-        if let Ok(x) = text.trim().parse::<f64>() {
+        if let Some(x) = crate::dom::number_of(&text) {
             if x.is_finite() {
                 sig.set(x);
             }
