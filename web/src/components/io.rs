@@ -240,7 +240,9 @@ fn NumberInput(var: IoVar) -> impl IntoView {
     let hi = RwSignal::new(hi0);
     let fixed = var.range.is_some();
     let name = StoredValue::new(var.name.clone());
-    let value = move || name.with_value(|n| read_number(state, n));
+    // The text shown changes only when the value does: the boxes are not written again on
+    // every scan of a run, which wiped out what a student was typing.
+    let shown = Memo::new(move |_| number_text(name.with_value(|n| read_number(state, n)), kind));
     let write = move |text: String| {
         let Some(x) = crate::dom::number_of(&text) else {
             state.error(tf(K::sim_not_a_number, &[("text", text.trim())]));
@@ -267,10 +269,10 @@ fn NumberInput(var: IoVar) -> impl IntoView {
             <input type="range" id=format!("io-{}", var.name) aria-label=var.name.clone()
                 prop:min=move || lo.get().to_string() prop:max=move || hi.get().to_string()
                 prop:step=step
-                prop:value=move || number_text(value(), kind)
+                prop:value=shown
                 on:input=move |ev| write(event_target_value(&ev))/>
             <input type="number" class="num" aria-label=tf(K::sim_value_of, &[("name", &var.name)])
-                prop:value=move || number_text(value(), kind)
+                prop:value=shown
                 on:change=move |ev| write(event_target_value(&ev))/>
             {(!fixed).then(|| view! {
                 <span class="limits">
