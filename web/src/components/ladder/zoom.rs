@@ -66,7 +66,7 @@ impl ViewPrefs {
             .get(ZOOM_KEY)
             .ok()
             .flatten()
-            .and_then(|z| z.trim().parse::<f64>().ok())
+            .and_then(|z| crate::dom::number_of(&z))
             .map_or(MIN_ZOOM, clamp_zoom);
         let side = store.get(SIDE_KEY).ok().flatten().as_deref() != Some("hidden");
         ViewPrefs { zoom: RwSignal::new(zoom), side: RwSignal::new(side) }
