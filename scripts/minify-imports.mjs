@@ -11,6 +11,7 @@
 // `"./plc-web_bg.js"` object exactly once, and every such key an import, or the script
 // fails (a new wasm-bindgen writing its glue differently stops the build, never the page).
 import { readFileSync, writeFileSync } from 'node:fs';
+import { leb, readLeb } from './leb.mjs';
 
 const GLUE_MODULE = './plc-web_bg.js';
 
@@ -18,31 +19,6 @@ const [wasmPath, gluePath] = process.argv.slice(2);
 if (!wasmPath || !gluePath) {
   console.error('usage: node scripts/minify-imports.mjs MODULE.wasm GLUE.js');
   process.exit(2);
-}
-
-/** Reads an unsigned LEB128 at `at`: [value, next offset]. */
-function readLeb(bytes, at) {
-  let value = 0;
-  let shift = 0;
-  let byte;
-  do {
-    byte = bytes[at++];
-    value += (byte & 0x7f) * 2 ** shift;
-    shift += 7;
-  } while (byte & 0x80);
-  return [value, at];
-}
-
-/** `n` as unsigned LEB128. */
-function leb(n) {
-  const out = [];
-  do {
-    let byte = n & 0x7f;
-    n = Math.floor(n / 128);
-    if (n) byte |= 0x80;
-    out.push(byte);
-  } while (n);
-  return Buffer.from(out);
 }
 
 /** A length-prefixed name. */

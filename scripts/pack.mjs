@@ -20,6 +20,7 @@ import { readFileSync, writeFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { splitParts } from './wasm-split-parts.mjs';
 import { tableForm } from './split-table.mjs';
+import { leb } from './leb.mjs';
 
 const [work, ...rest] = process.argv.slice(2);
 const cut = rest.indexOf('--apart');
@@ -32,18 +33,6 @@ if (!work || names.length === 0) {
 const app = join(work, 'app');
 const jsPath = join(app, '__wasm_split.js');
 let js = readFileSync(jsPath, 'utf8');
-
-/** `n` as unsigned LEB128. */
-function leb(n) {
-  const out = [];
-  do {
-    let byte = n & 0x7f;
-    n >>>= 7;
-    if (n) byte |= 0x80;
-    out.push(byte);
-  } while (n);
-  return Buffer.from(out);
-}
 
 /** A wasm module holding `files` (name → bytes) as custom sections. */
 function packOf(files) {

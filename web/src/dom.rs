@@ -8,10 +8,10 @@ pub fn by_id<T: JsCast>(id: &str) -> Option<T> {
     web_sys::window()?.document()?.get_element_by_id(id)?.dyn_into().ok()
 }
 
-/// The number in a number or range input's text, as the browser reads it (`Number(text)`):
-/// for the decimal texts these inputs hold, the same double Rust's parser gives, without
-/// that parser and its 11 KB table of powers in the first load (BENCHMARKS.md). `None` for
-/// an empty text or one that is not a number.
+/// The number in a text the page wrote or a number or range input holds, as the browser
+/// reads it (`Number(text)`): for such decimal texts, the same double Rust's parser gives,
+/// without that parser and its 11 KB table of powers in the first load (BENCHMARKS.md).
+/// `None` for an empty text or one that is not a number.
 pub fn number_of(text: &str) -> Option<f64> {
     let text = text.trim();
     if text.is_empty() {
