@@ -29,6 +29,8 @@ node -e '
   const n = native.B5.native_ms;
   browser.B5.native_ms = n;
   browser.B5.ratio = browser.B5.chromium_ms / n;
+  browser.B5.ratio_settled = browser.B5.chromium_settled_ms / n;
+  browser.B5.ratio_steady = browser.B5.chromium_steady_ms / n;
   browser.module = { gzip_bytes: Number(process.argv[3]), core_opt_level: process.argv[4] || "profile" };
   console.log(JSON.stringify(browser));
 ' "$browser" "$native" "$gz_bytes" "${WASM_CORE_OPT_LEVEL:-}"
