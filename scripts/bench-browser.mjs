@@ -88,10 +88,9 @@ try {
   }, quick ? { scans: 3600, lines: 200 } : { scans: 360000, lines: 5000 });
   await browser.close();
   // B5 once more in a fresh browser, the page left idle for half a second between the
-  // compile and the run, as a student's page is before Run is pressed: V8 finishes
-  // optimising the compiler's own hot functions (the parser, the allocator) in the
-  // background meanwhile, work that otherwise competes with the timed hour
-  // (BENCHMARKS.md, "B5's first hour, taken apart").
+  // compile and the run, as a student's page is before Run is pressed: by then the
+  // freshly launched browser has finished starting up, work that otherwise competes with
+  // the timed hour (BENCHMARKS.md, "B5's first hour, taken apart").
   const fresh = await launch();
   try {
     const page = await fresh.newPage();
