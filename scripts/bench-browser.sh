@@ -3,8 +3,9 @@
 # as the site is built (scripts/wasm-build.sh: the `wasm-release` profile with its
 # per-package opt-levels, the same flags, the same wasm-opt pass), binds it with
 # wasm-bindgen, times it in a page driven by playwright-core (scripts/bench-browser.mjs),
-# then runs the native B5 beside it (`plc bench --only B5`, release build). Prints one JSON
-# object with both; see BENCHMARKS.md. Needs what scripts/setup.sh installs: the wasm32
+# which runs the native B5 beside each browser round (`plc bench --only B5`, release build).
+# Prints one JSON object with both; see BENCHMARKS.md. Arguments go to bench-browser.mjs
+# (`--quick`, `--rounds N`). Needs what scripts/setup.sh installs: the wasm32
 # target, the wasm-bindgen CLI, Debian's Chromium and the npm packages (npm ci).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,19 +19,11 @@ wasm_opt "$out/bench_wasm_bg.wasm" "$out/bench_wasm_bg.wasm"
 # The module's transfer size (gzip -9), to weigh the engine's opt-level against B5.
 gz_bytes=$(node -e 'console.log(require("zlib").gzipSync(require("fs").readFileSync(process.argv[1]), { level: 9 }).length)' "$out/bench_wasm_bg.wasm")
 [ -d node_modules/playwright-core ] || npm ci --no-audit --no-fund
-browser=$(node scripts/bench-browser.mjs "$out" "$@")
-# The native figure beside it, on the same machine at the same moment.
-unset CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS
-quick=()
-for a in "$@"; do [ "$a" = "--quick" ] && quick=(--quick); done
-native=$(cargo run -q --release -p plc-core --bin plc -- bench --json --only B5 "${quick[@]}")
+# The native binary, built without the wasm32 flags, for the native B5 beside each round.
+(unset CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS; cargo build -q --release -p plc-core --bin plc)
+browser=$(PLC_NATIVE="${CARGO_TARGET_DIR:-target}/release/plc" node scripts/bench-browser.mjs "$out" "$@")
 node -e '
-  const [browser, native] = process.argv.slice(1, 3).map((s) => JSON.parse(s));
-  const n = native.B5.native_ms;
-  browser.B5.native_ms = n;
-  browser.B5.ratio = browser.B5.chromium_ms / n;
-  browser.B5.ratio_settled = browser.B5.chromium_settled_ms / n;
-  browser.B5.ratio_steady = browser.B5.chromium_steady_ms / n;
-  browser.module = { gzip_bytes: Number(process.argv[3]), core_opt_level: process.argv[4] || "profile" };
+  const browser = JSON.parse(process.argv[1]);
+  browser.module = { gzip_bytes: Number(process.argv[2]), core_opt_level: process.argv[3] || "profile" };
   console.log(JSON.stringify(browser));
-' "$browser" "$native" "$gz_bytes" "${WASM_CORE_OPT_LEVEL:-}"
+' "$browser" "$gz_bytes" "${WASM_CORE_OPT_LEVEL:-}"

@@ -72,6 +72,13 @@ pub(crate) fn locate(exe: &Executable, path: &str) -> Option<Slot> {
         }
         return variable(exe, plain);
     }
+    locate_path(exe, path)
+}
+
+/// [`locate`] for a path of more than one step (kept out of line: the plain names that are
+/// looked up on every scan then run, and V8 optimises, only the small part).
+#[inline(never)]
+fn locate_path(exe: &Executable, path: &str) -> Option<Slot> {
     let steps = parse(path)?;
     let mut it = steps.into_iter();
     let Some(Step::Name(first)) = it.next() else {

@@ -92,7 +92,23 @@ pub fn read(mem: &Memory, exe: &Executable, slot: &Slot) -> Value {
     read_at(mem, exe, slot.addr, slot.ty)
 }
 
+/// Reads the value of type `ty` at `addr`: a single cell here, anything larger out of line
+/// ([`read_composite`]), so that the plants and panels, which read single values on every
+/// scan, run (and V8 optimises) only the small part.
 fn read_at(mem: &Memory, exe: &Executable, addr: u32, ty: Type) -> Value {
+    match ty {
+        Type::Elem(_) | Type::Enum(_) => Value::from_bits(
+            ty,
+            mem.cells.get(addr as usize).copied().unwrap_or(0),
+            &exe.type_table,
+        ),
+        _ => read_composite(mem, exe, addr, ty),
+    }
+}
+
+/// [`read_at`] for strings, arrays, structures, function block instances and references.
+#[inline(never)]
+fn read_composite(mem: &Memory, exe: &Executable, addr: u32, ty: Type) -> Value {
     let cell = |a: u32| mem.cells.get(a as usize).copied().unwrap_or(0);
     match ty {
         Type::Elem(_) | Type::Enum(_) => Value::from_bits(ty, cell(addr), &exe.type_table),
@@ -241,6 +257,8 @@ pub fn write(
     write_at(mem, exe, slot.addr, slot.ty, value)
 }
 
+/// Writes `value` as a value of type `ty` at `addr`: a single cell here, anything larger
+/// out of line ([`write_composite`]), as [`read_at`] does.
 fn write_at(
     mem: &mut Memory,
     exe: &Executable,
@@ -248,9 +266,19 @@ fn write_at(
     ty: Type,
     value: &Value,
 ) -> Result<(), WriteError> {
+    match ty {
+        Type::Elem(_) | Type::Enum(_) | Type::Ref(_) => {
+            let bits = cell_bits(exe, ty, value)?;
+            mem.set(addr as usize, bits).map_err(|_| WriteError::BadAddress)
+        }
+        _ => write_composite(mem, exe, addr, ty, value),
+    }
+}
+
+/// The bits of the cell that holds `value` as a value of the single-cell type `ty`.
+fn cell_bits(exe: &Executable, ty: Type, value: &Value) -> Result<u64, WriteError> {
     let expected = || exe.type_table.display(ty).to_string();
-    let mismatch = || WriteError::TypeMismatch { expected: expected() };
-    let bits = match (ty, value) {
+    Ok(match (ty, value) {
         (Type::Elem(Elem::Bool), Value::Bool(b)) => u64::from(*b),
         (Type::Elem(e), Value::Int(value, _)) if e.is_integral() || e == Elem::Bool => {
             let (lo, hi) = e.int_range();
@@ -269,14 +297,28 @@ fn write_at(
         // Only NULL: an address typed in could point at a cell of another type.
         (Type::Ref(_), Value::Ref(None)) => 0,
         (Type::Enum(_), Value::Int(value, _)) => *value as i64 as u64,
+        _ => return Err(WriteError::TypeMismatch { expected: expected() }),
+    })
+}
+
+/// [`write_at`] for strings, arrays and structures.
+#[inline(never)]
+fn write_composite(
+    mem: &mut Memory,
+    exe: &Executable,
+    addr: u32,
+    ty: Type,
+    value: &Value,
+) -> Result<(), WriteError> {
+    let expected = || exe.type_table.display(ty).to_string();
+    let mismatch = || WriteError::TypeMismatch { expected: expected() };
+    match (ty, value) {
         (Type::Str { wide: false, .. }, Value::Str(b)) => {
-            return write_str(&mut mem.cells, addr as usize, b, 1)
-                .map_err(|_| WriteError::BadAddress);
+            write_str(&mut mem.cells, addr as usize, b, 1).map_err(|_| WriteError::BadAddress)
         }
         (Type::Str { wide: true, .. }, Value::WStr(u)) => {
             let b: Vec<u8> = u.iter().flat_map(|c| c.to_le_bytes()).collect();
-            return write_str(&mut mem.cells, addr as usize, &b, 2)
-                .map_err(|_| WriteError::BadAddress);
+            write_str(&mut mem.cells, addr as usize, &b, 2).map_err(|_| WriteError::BadAddress)
         }
         (Type::Array(a), Value::Array(items)) => {
             let def = exe.type_table.arrays.get(a as usize).ok_or(WriteError::BadAddress)?;
@@ -289,7 +331,7 @@ fn write_at(
             for (k, v) in flat.into_iter().enumerate() {
                 write_at(mem, exe, addr + k as u32 * es, def.element, v)?;
             }
-            return Ok(());
+            Ok(())
         }
         (Type::Struct(s), Value::Struct(fields)) => {
             let def = exe.type_table.structs.get(s as usize).ok_or(WriteError::BadAddress)?;
@@ -302,11 +344,10 @@ fn write_at(
                     .ok_or_else(mismatch)?;
                 write_at(mem, exe, addr + offs[i], def.fields[i].ty, v)?;
             }
-            return Ok(());
+            Ok(())
         }
-        _ => return Err(mismatch()),
-    };
-    mem.set(addr as usize, bits).map_err(|_| WriteError::BadAddress)
+        _ => Err(mismatch()),
+    }
 }
 
 fn flatten<'a>(items: &'a [Value], out: &mut Vec<&'a Value>) {
