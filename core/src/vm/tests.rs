@@ -326,6 +326,12 @@ fn write_and_read_values() {
     let t = exe.locate("t").expect("t");
     write(m.memory_mut(), &exe, &t, &st_val("abcdef")).expect("writes");
     assert_eq!(value(&m, &exe, "t"), st_val("abc"));
+    // A value of the wrong kind is refused both ways, a single cell and a composite one.
+    let mismatch = |r| matches!(r, Err(WriteError::TypeMismatch { .. }));
+    assert!(mismatch(write(m.memory_mut(), &exe, &slot, &st_val("1"))), "text into SINT");
+    assert!(mismatch(write(m.memory_mut(), &exe, &t, &Value::Bool(true))), "BOOL into STRING");
+    assert!(mismatch(write(m.memory_mut(), &exe, &a, &int_val(1, Elem::Int))), "INT into ARRAY");
+    assert_eq!(value(&m, &exe, "t"), st_val("abc"));
     let bit = exe.locate("w.7").expect("bit");
     write(m.memory_mut(), &exe, &bit, &Value::Bool(true)).expect("writes");
     assert_eq!(get(&m, &exe, "w"), 128);
