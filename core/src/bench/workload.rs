@@ -70,6 +70,12 @@ impl WeighingPlant {
     pub const DRAIN: i128 = 8;
 
     /// Reads the valves the last scan set and puts the new weight on the input.
+    ///
+    /// Never inlined into [`run_weighing`]'s loop: V8 keeps running a wasm function in the
+    /// code it was entered with (it has no on-stack replacement for wasm), so work inlined
+    /// into a loop that runs the whole hour in one call would stay in the baseline code all
+    /// hour, where a function called once per scan is optimised after a few thousand scans.
+    #[inline(never)]
     pub fn step(&mut self, sim: &mut Simulator) -> Result<(), BenchError> {
         let on = |sim: &Simulator, name: &str| -> Result<bool, BenchError> {
             Ok(matches!(sim.read(name).map_err(err)?, Value::Bool(true)))

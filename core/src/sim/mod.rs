@@ -407,6 +407,10 @@ impl Simulator {
         outcome
     }
 
+    /// One scan of [`Simulator::run_scans`] and its kin, kept out of their loops: in the
+    /// browser a loop that runs many scans in one call stays in the code it was entered
+    /// with, and only what it calls gets the optimising compiler's code (BENCHMARKS.md, B5).
+    #[inline(never)]
     fn scan_once(&mut self) -> ScanOutcome {
         if let Err(info) = self.scan_hooked(&mut NoHook) {
             return ScanOutcome::Fault(info);

@@ -284,6 +284,8 @@ pub(super) fn run<const TRUSTED: bool, H: Hook>(
 
 /// The fault of an instruction [`run`] stopped at with [`Exit::Fault`], found by checking
 /// its operands in the order `run` does.
+#[cold]
+#[inline(never)]
 pub(super) fn diagnose(op: &Op, t: Tables<'_>, cells: &[u64], base: u32) -> Fault {
     let reg = |x: u32| cells.get(base.wrapping_add(x) as usize).copied().ok_or(BAD);
     let site = |k: u32, idx: u32| -> Result<u64, Fault> {

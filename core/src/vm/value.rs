@@ -111,7 +111,7 @@ fn read_at(mem: &Memory, exe: &Executable, addr: u32, ty: Type) -> Value {
 fn read_composite(mem: &Memory, exe: &Executable, addr: u32, ty: Type) -> Value {
     let cell = |a: u32| mem.cells.get(a as usize).copied().unwrap_or(0);
     match ty {
-        Type::Elem(_) | Type::Enum(_) => Value::from_bits(ty, cell(addr), &exe.type_table),
+        Type::Elem(_) | Type::Enum(_) => read_at(mem, exe, addr, ty),
         Type::Str { wide, .. } => {
             let mut b = Vec::new();
             let _ = read_str_into(&mem.cells, addr as usize, &mut b);
