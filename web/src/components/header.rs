@@ -246,6 +246,7 @@ pub fn Header() -> impl IntoView {
         let file = input.files().and_then(|f| f.get(0));
         input.set_value("");
         if let Some(file) = file {
+            state.opening_new_project();
             leptos::task::spawn_local(async move {
                 let name = file.name();
                 match crate::lazy::import_file(state, file).await {
@@ -255,6 +256,7 @@ pub fn Header() -> impl IntoView {
                         &[("name", &name), ("error", t(K::lazy_load_failed))],
                     )),
                 }
+                state.opened_new_project();
             });
         }
     };
@@ -334,6 +336,7 @@ pub fn Header() -> impl IntoView {
                             if file.is_empty() {
                                 return;
                             }
+                            state.opening_new_project();
                             leptos::task::spawn_local(async move {
                                 let opened = match crate::lazy::open_example(file).await {
                                     Ok(opening) => opening.await,
@@ -348,6 +351,7 @@ pub fn Header() -> impl IntoView {
                                     }
                                     Err(e) => state.error(tf(K::header_example_failed, &[("error", &e.to_string())])),
                                 }
+                                state.opened_new_project();
                             });
                         }>
                         <option value="" selected=true>{t(K::header_open_example_choose)}</option>

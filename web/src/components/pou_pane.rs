@@ -170,7 +170,11 @@ fn NewPou(petri: bool) -> impl IntoView {
 pub fn PouPane() -> impl IntoView {
     let state = expect_context::<AppState>();
     let view = Memo::new(move |_| state.view.get());
-    let opening = move || state.opening_shared.get() || state.opening_stored.with(Option::is_some);
+    let opening = move || {
+        state.opening_shared.get()
+            || state.opening_stored.with(Option::is_some)
+            || state.opening_new.get() > 0
+    };
     view! {
         <Navigator/>
         {move || {

@@ -176,7 +176,13 @@ pub struct AppState {
     /// are a chunk, and the editor waits for them. Another project opened meanwhile
     /// takes its place.
     pub opening_stored: RwSignal<Option<String>>,
-    /// Run or Step pressed while the engine was loading: done once it is.
+    /// How many imported files and examples are being opened as new projects (each
+    /// fetches its code, and an example its file, first): the editor says so, and a Run
+    /// or Step pressed meanwhile is done on the project once it is open
+    /// ([`AppState::opening_new_project`]).
+    pub opening_new: RwSignal<u32>,
+    /// Run or Step pressed while the engine was loading or a project opening: done once
+    /// it is here.
     scan_when_ready: StoredValue<Option<ScanWish>>,
     /// The build the simulator comes from (to map its code back to ST lines, ladder cells
     /// and Petri net elements).
@@ -262,6 +268,7 @@ impl AppState {
             engine_ready: RwSignal::new(crate::lazy::engine().is_some()),
             opening_shared: RwSignal::new(false),
             opening_stored: RwSignal::new(None),
+            opening_new: RwSignal::new(0),
             scan_when_ready: StoredValue::new(None),
             sim_build: StoredValue::new(None),
             sim_version: RwSignal::new(0),

@@ -108,6 +108,7 @@ impl AppState {
                         state.open_most_recent(interrupted);
                     }
                     state.opening_shared.set(false);
+                    state.scan_wished();
                 });
                 return;
             }
@@ -222,6 +223,23 @@ impl AppState {
                 );
                 false
             }
+        }
+    }
+
+    /// An imported file or an example starts opening as a new project (its code, and an
+    /// example's file, are fetched first): called in the gesture's handler, and
+    /// [`AppState::opened_new_project`] when it is open or could not be. Meanwhile the
+    /// editor says `Opening the project…` and a Run or Step pressed waits for it.
+    pub fn opening_new_project(&self) {
+        self.opening_new.update(|n| *n += 1);
+    }
+
+    /// An opening begun by [`AppState::opening_new_project`] is over: when it was the last,
+    /// a Run or Step pressed meanwhile is done on the project now open.
+    pub fn opened_new_project(&self) {
+        self.opening_new.update(|n| *n = n.saturating_sub(1));
+        if self.opening_new.get_untracked() == 0 {
+            self.scan_wished();
         }
     }
 

@@ -116,25 +116,37 @@ impl AppState {
         }
     }
 
-    /// True when the engine is still loading: the scan `wish` is done once it is (and the
-    /// project checked), and the banner says so.
-    fn wait_for_engine(&self, wish: ScanWish) -> bool {
-        if self.engine_ready.get_untracked() {
+    /// True when the engine is still loading, or a project is being opened in place of
+    /// the one shown (an imported file, an example, a share link): the scan `wish` is done
+    /// once the engine is here (and the project checked) and the project open, on that
+    /// project and never on the one about to go; the banner says what it waits for.
+    fn wait_until_ready(&self, wish: ScanWish) -> bool {
+        let engine_ready = self.engine_ready.get_untracked();
+        let opening = self.opening_new.get_untracked() > 0 || self.opening_shared.get_untracked();
+        if engine_ready && !opening {
             return false;
         }
         self.scan_when_ready.set_value(Some(wish));
-        self.info(t(K::lazy_loading_run_when_ready));
-        self.check_now();
+        self.info(t(if opening {
+            K::state_opening_project
+        } else {
+            K::lazy_loading_run_when_ready
+        }));
+        if !engine_ready {
+            self.check_now();
+        }
         true
     }
 
-    /// Does the Run or Step pressed while the engine was loading.
+    /// Does the Run or Step pressed while the engine was loading or a project opening.
     pub(super) fn scan_wished(&self) {
         let Some(wish) = self.scan_when_ready.try_update_value(Option::take).flatten() else {
             return;
         };
         let waiting = self.notice.with_untracked(|n| {
-            n.as_ref().is_some_and(|n| n.text == t(K::lazy_loading_run_when_ready))
+            n.as_ref().is_some_and(|n| {
+                n.text == t(K::lazy_loading_run_when_ready) || n.text == t(K::state_opening_project)
+            })
         });
         if waiting {
             self.notice.set(None);
@@ -152,7 +164,7 @@ impl AppState {
             self.step_forward(n);
             return;
         }
-        if self.wait_for_engine(ScanWish::Step(n)) || !self.may_scan() {
+        if self.wait_until_ready(ScanWish::Step(n)) || !self.may_scan() {
             return;
         }
         if self.run_mode.get_untracked() == RunMode::Running {
@@ -173,7 +185,7 @@ impl AppState {
     /// Starts scanning every animation frame (not an older build than the text on the
     /// screen unless the user chose it: see `gate.rs`).
     pub fn run(&self) {
-        if self.wait_for_engine(ScanWish::Run) || !self.may_scan() {
+        if self.wait_until_ready(ScanWish::Run) || !self.may_scan() {
             return;
         }
         let faulted = self.with_sim(|s| matches!(s.state(), SimState::Faulted(_))).unwrap_or(false);
