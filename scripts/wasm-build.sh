@@ -27,7 +27,8 @@ done
 # names scripts/site.mjs cannot read: `legacy` keeps the names it checks the first load by);
 # build-std needs the rust-src component (scripts/setup.sh). What each saves:
 # BENCHMARKS.md, "The standard library built with the app".
-export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components -C link-args=--emit-relocs $wasm_path_remaps -Zunstable-options -Cpanic=immediate-abort -Csymbol-mangling-version=legacy"
+# `--cfg plc_speed` compiles the scan loop's functions for speed (core/src/lib.rs).
+export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="--cfg erase_components --cfg plc_speed -C link-args=--emit-relocs $wasm_path_remaps -Zunstable-options -Cpanic=immediate-abort -Csymbol-mangling-version=legacy"
 # cargo for the site's wasm: `wasm_cargo build --target wasm32-unknown-unknown …`.
 wasm_cargo() {
   RUSTC_BOOTSTRAP=1 cargo "$@" -Zbuild-std=std,panic_abort -Zbuild-std-features=optimize_for_size

@@ -25,6 +25,12 @@
 //! `sfc`): reach them through the modules above.
 
 #![deny(missing_docs)]
+// The site's wasm is built for size (opt-level z); the scan loop's few functions are
+// compiled for speed there (`#[cfg_attr(plc_speed, optimize(speed))]`). The attribute is
+// unstable: only that build, which already runs the compiler with RUSTC_BOOTSTRAP for
+// build-std, sets `--cfg plc_speed` (scripts/wasm-build.sh). BENCHMARKS.md, "The scan
+// loop compiled for speed", says what it costs and gives.
+#![cfg_attr(plc_speed, feature(optimize_attribute))]
 #![deny(clippy::unwrap_used)]
 
 #[cfg(feature = "bench")]

@@ -424,6 +424,7 @@ impl Simulator {
 
     /// The scan itself, with `hook` told of every write: held and forced values, the
     /// program (and the tasks' instances, and the plant), forced values again.
+    #[cfg_attr(plc_speed, optimize(speed))]
     fn scan_hooked<H: Hook>(&mut self, hook: &mut H) -> Result<(), FaultInfo> {
         if let SimState::Faulted(info) = &self.state {
             return Err(info.clone());

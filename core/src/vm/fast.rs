@@ -51,6 +51,7 @@ pub(super) enum Exit {
 /// `hook` sees every instruction before and after it runs (the traced scans of "why");
 /// with [`super::trace::NoHook`] those calls are compiled out.
 #[inline(never)]
+#[cfg_attr(plc_speed, optimize(speed))]
 pub(super) fn run<const TRUSTED: bool, H: Hook>(
     t: Tables<'_>,
     cells: &mut [u64],

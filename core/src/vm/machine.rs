@@ -254,6 +254,7 @@ impl Machine {
         RuntimeError { fault, span, pou }
     }
 
+    #[cfg_attr(plc_speed, optimize(speed))]
     fn exec<H: Hook>(
         &mut self,
         exe: &Executable,
