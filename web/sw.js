@@ -20,9 +20,32 @@ const KNOWN = new Set(FILES);
  */
 const AT_ONCE = 2;
 
+/** The page's own address (the scope: the folder of this file), without a query. */
+const PAGE = new URL('./', self.location.href);
+
 self.addEventListener('install', (event) => {
-  event.waitUntil(precache());
+  event.waitUntil(Promise.all([route(event), precache()]));
 });
+
+/**
+ * Where the browser has the static routing API (Chromium), it answers from the cache itself,
+ * without starting this worker's script or running its fetch handler, both for the page at
+ * its plain address and for every file the page, its chunks and its workers ask for (a miss
+ * goes to the network, as in the handler below). A second visit then waits for neither the
+ * worker's start nor a round trip through it (docs/loading.md, "The service worker").
+ * Elsewhere, and for the page with a query (`?exercise=…`), the fetch handler answers.
+ */
+async function route(event) {
+  try {
+    await event.addRoutes?.([
+      { condition: { requestMode: 'navigate', urlPattern: { pathname: PAGE.pathname, search: '' } }, source: { cacheName: CACHE } },
+      { condition: { requestMode: 'navigate' }, source: 'fetch-event' },
+      { condition: { requestMethod: 'GET' }, source: { cacheName: CACHE } },
+    ]);
+  } catch {
+    // A browser whose router takes other rules: the fetch handler answers everything.
+  }
+}
 
 /** Fetches every file of the build into its cache, `AT_ONCE` at a time; fails if one fails. */
 async function precache() {
@@ -36,6 +59,8 @@ async function precache() {
         // `reload`: from the server, never from the HTTP cache (which may hold another build).
         const response = await fetch(new Request(file, { cache: 'reload' }));
         if (!response.ok) throw new Error(`${file}: HTTP ${response.status}`);
+        // The page also under its plain address, which the router looks up as it is.
+        if (file === 'index.html') await cache.put(PAGE, response.clone());
         await cache.put(file, response);
       } catch (e) {
         failed ??= e;

@@ -108,6 +108,48 @@ test('after one visit the trainer opens and works with the network off', async (
   await context.close();
 });
 
+test('a second visit is answered from the cache by the browser itself, the page with a query by the worker', async () => {
+  // Chromium's static routing (web/sw.js, `route`): the page at its plain address and the
+  // build's files come out of the build's cache without the worker's fetch handler, so a
+  // second visit waits neither for the worker to start nor for a round trip through it.
+  const server = await serve(path.join(root, 'dist'));
+  const context = await browser.newContext();
+  const first = await context.newPage();
+  await first.goto(server.url);
+  await first.getByRole('textbox', { name: 'ST source' }).waitFor();
+  await cached(first);
+  await first.close();
+
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(server.url);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  const looked = await page.evaluate(() => {
+    const name = (e) => e.name.split('/').pop() || 'the page';
+    const entries = [
+      ...performance.getEntriesByType('navigation'),
+      ...performance.getEntriesByType('resource').filter((e) => /\.(css|js|wasm)$/.test(e.name)),
+    ];
+    return entries.map((e) => [name(e), e.workerCacheLookupStart > 0]);
+  });
+  const names = looked.map(([n]) => n);
+  for (const file of ['the page', 'boot.js', 'plc-web.js', 'plc-web_bg.wasm']) {
+    assert.ok(names.includes(file), `${file} was asked for: ${names}`);
+  }
+  const missed = looked.filter(([, router]) => !router).map(([n]) => n);
+  assert.deepEqual(missed, [], 'every one answered by the router from the cache');
+
+  // Offline, the page with a query (which the router leaves to the worker) opens too.
+  await context.setOffline(true);
+  await page.goto(`${server.url}?from=bookmark`);
+  await page.getByRole('textbox', { name: 'ST source' }).waitFor();
+  const query = await page.evaluate(() => performance.getEntriesByType('navigation')[0].workerCacheLookupStart);
+  assert.equal(query, 0, 'the page with a query comes through the fetch handler');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a new deploy is offered with New version available and Reload, then runs alone', async () => {
   // A copy of the site, so that "deploying" a new build does not touch dist/.
   const site = await mkdtemp(path.join(tmpdir(), 'plc-site-'));

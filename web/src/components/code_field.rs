@@ -18,7 +18,7 @@ use crate::i18n::{t, tf, K};
 
 /// Pause after the last keystroke before the text is handed over.
 const COMMIT_DELAY: Duration = Duration::from_millis(300);
-/// Must match `--ed-line` and `--ed-pad` in editor.css.
+/// Must match `--ed-line` and `--ed-pad` in style.css.
 const LINE_PX: usize = 20;
 const PAD_PX: usize = 8;
 

@@ -25,7 +25,7 @@ use crate::i18n::{t, tf, K};
 use crate::state::{AppState, PouView};
 use text::{byte_to_utf16, line_col, offset_of, utf16_to_byte, Edit, LineInfo, Mark};
 
-/// Row height of the editor in pixels (must match `--ed-line` in editor.css).
+/// Row height of the editor in pixels (must match `--ed-line` in style.css).
 const LINE_PX: i32 = 20;
 /// Padding of the text area and the layers in pixels (must match `--ed-pad`).
 const PAD_PX: i32 = 8;

@@ -10,7 +10,7 @@ use leptos::prelude::*;
 use crate::components::editor::text::{gutter_html, highlight_html};
 use crate::i18n::{t, K};
 
-/// Line height of the code view in pixels (must match `--code-line` in editor.css).
+/// Line height of the code view in pixels (must match `--code-line` in style.css).
 const LINE_PX: f64 = 18.0;
 /// Top padding of the code view in pixels (must match `--code-pad`).
 const PAD_PX: f64 = 6.0;
