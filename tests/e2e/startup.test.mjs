@@ -210,6 +210,43 @@ test('a share link shows that it opens, never another project, until its reader 
   await context.close();
 });
 
+test('Run pressed while a share link opens runs the shared project once it is open', async () => {
+  const PROGRAM = 'PROGRAM Shared\nVAR n : INT; END_VAR\nn := n + 1;\nEND_PROGRAM\n';
+  const sharing = await browser.newContext({ serviceWorkers: 'block' });
+  const first = await sharing.newPage();
+  await first.goto(server.url);
+  await first.getByRole('button', { name: 'New project' }).click();
+  await first.getByRole('textbox', { name: 'ST source' }).fill(PROGRAM);
+  await first.waitForTimeout(500);
+  await first.getByRole('button', { name: 'Share' }).click();
+  const link = await first.getByRole('textbox', { name: 'Share link' }).inputValue();
+  await sharing.close();
+
+  // A fresh browser opens the link with its reader held back, and Run is pressed meanwhile.
+  const context = await browser.newContext({ serviceWorkers: 'block' });
+  const { release } = await holdBack(context, '**/split_share_reader.wasm');
+  const page = await context.newPage();
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(String(e)));
+  await page.goto(link);
+  await page.getByRole('status').filter({ hasText: 'Opening the shared project…' }).waitFor();
+  await page.getByRole('button', { name: 'Run', exact: true }).click();
+  await page.getByRole('alert').filter({ hasText: 'Opening the project…' }).waitFor();
+  assert.equal(await page.getByRole('status', { name: 'PLC state: Running' }).count(), 0, 'nothing runs before the project is open');
+  release();
+  await page.getByRole('status', { name: 'PLC state: Running' }).waitFor();
+  assert.equal(await page.getByRole('textbox', { name: 'ST source' }).inputValue(), PROGRAM);
+  const vars = page.getByRole('region', { name: 'Variables' });
+  await vars.getByRole('rowheader', { name: 'n', exact: true }).waitFor();
+  // The shared project keeps running.
+  const scans = page.getByLabel('Scan count');
+  const before = Number(await scans.textContent());
+  await page.waitForFunction((n) => Number(document.querySelector('[aria-label="Scan count"]')?.textContent) > n + 5, before);
+  assert.equal(await page.getByRole('alert').filter({ hasText: 'Opening the project…' }).count(), 0, 'the banner went with the wait');
+  assert.deepEqual(errors, []);
+  await context.close();
+});
+
 test('a stored ladder project says it opens until its diagrams\' readers come, then opens whole', async () => {
   const context = await browser.newContext({ serviceWorkers: 'block', viewport: { width: 1280, height: 900 } });
   let page = await context.newPage();
